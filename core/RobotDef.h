@@ -1,0 +1,30 @@
+#pragma once
+// Definition of the differential-drive ego robot. Defaults are the study's robot.
+
+namespace parksim {
+
+struct RobotDef {
+  /// Footprint length along the heading, m.
+  double length_m = 0.080;
+  /// Footprint width across the heading, m.
+  double width_m = 0.085;
+  /// Distance from the reference point (axle middle) forward to the front edge, m.
+  /// The body reaches length_m - front_overhang_m behind the reference point.
+  double front_overhang_m = 0.010;
+  /// Distance between the two wheels' contact points, m.
+  double wheel_base_m = 0.085;
+  /// Wheel radius, m.
+  double wheel_radius_m = 0.020;
+  /// Largest wheel angular speed magnitude, rad/s.
+  double max_wheel_speed_radps = 10.0;
+  /// Largest wheel angular acceleration magnitude, rad/s^2.
+  double max_wheel_accel_radps2 = 40.0;
+  /// Body height, used by physics and rendering, m.
+  double height_m = 0.050;
+
+  /// Offset of the footprint's centre from the reference point along the heading, m
+  /// (negative: the centre lies behind the axle).
+  double footprintCenterOffset() const { return front_overhang_m - 0.5 * length_m; }
+};
+
+}  // namespace parksim

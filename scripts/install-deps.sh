@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages parksim needs, only those missing. Run as root.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config ninja-build
+  libbullet-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
+  libnanoflann-dev libosmesa6-dev libstb-dev zlib1g-dev fonts-dejavu-core
+  libgtest-dev libgmock-dev libbenchmark-dev libompl-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "install-deps: missing packages (${missing[*]}); run as root or install them with apt-get" >&2
+  exit 1
+fi
+
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}"
