@@ -6,7 +6,7 @@ packages=(
   build-essential cmake pkg-config ninja-build
   libbullet-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libnanoflann-dev libosmesa6-dev libstb-dev zlib1g-dev fonts-dejavu-core
-  libgtest-dev libgmock-dev libbenchmark-dev libompl-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libompl-dev ffmpeg
 )
 
 missing=()

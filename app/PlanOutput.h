@@ -1,0 +1,36 @@
+#pragma once
+// Shared by `parksim plan` and `parksim run`: planner options on the command line, and the
+// plan's files (trajectory.csv, plan.json).
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "core/Scenario.h"
+#include "planner/PlanScenario.h"
+
+namespace parksim::app {
+
+/// Options every planning command takes: --planner, --seed, --max-iterations.
+struct PlanCliOptions {
+  std::string planner = "rrt-goal-connect";
+  std::uint64_t seed = 1;
+  int max_iterations = 2000;
+
+  /// Registers the options on `sub`.
+  void addTo(CLI::App& sub);
+  /// The planning setup these options select for `scenario`. Throws Error on bad values.
+  PlanSetup toSetup(const Scenario& scenario) const;
+};
+
+/// plan.json's content: status, planner, seed, iterations, tree_size, per-phase times,
+/// planning_time_s, path_length_m, cusps, final pose error.
+nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
+                           const PlanResult& result);
+
+/// Writes DIR/trajectory.csv (only if solved) and DIR/plan.json, creating DIR.
+void writePlanFiles(const std::string& dir, const Scenario& scenario, const PlanSetup& setup,
+                    const PlanResult& result);
+
+}  // namespace parksim::app

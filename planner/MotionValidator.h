@@ -1,0 +1,44 @@
+#pragma once
+// Motion validation without gaps. Between two trajectory points the robot follows an exact arc;
+// the validator checks poses along it so densely that no point of the footprint moves more than
+// `resolution_m` between two checks, and checks the footprint grown by resolution_m / 2. Every
+// point of the swept area between two checked poses then lies inside one of the grown
+// footprints, so a trajectory accepted here is free at every instant (conservative by at most
+// resolution_m / 2).
+
+#include "core/FootprintChecker.h"
+#include "core/RobotDef.h"
+#include "core/Trajectory.h"
+
+namespace parksim {
+
+struct MotionValidatorDef {
+  /// Largest distance any footprint point travels between two checks, m.
+  double resolution_m = 0.001;
+};
+
+class MotionValidator {
+ public:
+  MotionValidator(const FootprintChecker& checker, const RobotDef& robot,
+                  const MotionValidatorDef& def = {});
+
+  /// True when the whole trajectory, including its first and last pose, is collision-free.
+  bool isValid(const Trajectory& traj) const;
+
+  /// The pose the check uses for a single state (grown footprint).
+  bool isValid(const Pose2& pose) const;
+
+  /// Number of footprint queries made so far.
+  long queries() const { return queries_; }
+
+  const MotionValidatorDef& def() const { return def_; }
+
+ private:
+  const FootprintChecker& checker_;
+  RobotDef robot_;
+  MotionValidatorDef def_;
+  double radius_;  // farthest footprint point from the reference point, m
+  mutable long queries_ = 0;
+};
+
+}  // namespace parksim

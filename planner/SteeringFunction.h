@@ -1,0 +1,35 @@
+#pragma once
+// Steering: a trajectory from one pose toward another, with the wheel speeds that drive it.
+// The planner sees only this interface, so steering functions are interchangeable per run.
+
+#include "core/DiffDrive.h"
+#include "core/Pose2.h"
+#include "core/Trajectory.h"
+
+namespace parksim {
+
+enum class SteerMode {
+  kFixedHorizon,  ///< drive toward the target for at most a fixed time (grows the tree)
+  kToGoal,        ///< drive until the target pose is reached within tolerance, or give up
+};
+
+struct SteerResult {
+  /// Starts at `from` with t = 0 and ends with zero wheel speeds. Each point's wheel speeds,
+  /// held for its period and integrated exactly, give the next point's pose.
+  Trajectory trajectory;
+  /// kToGoal: the last pose is within the steering's goal tolerance of `to`.
+  /// kFixedHorizon: the target was reached before the horizon.
+  bool reached = false;
+};
+
+class SteeringFunction {
+ public:
+  virtual ~SteeringFunction() = default;
+
+  /// `from_wheels` are the wheel speeds the robot has on arrival at `from`; steering respects
+  /// the acceleration limit from there. Every call ends in bounded time.
+  virtual SteerResult steer(const Pose2& from, const WheelSpeeds& from_wheels, const Pose2& to,
+                            SteerMode mode) const = 0;
+};
+
+}  // namespace parksim
