@@ -51,17 +51,17 @@ struct GoalRegion {
 /// Physical parameters for the dynamics world. Defaults are documented here and may be
 /// overridden under `physics:` in the world file.
 struct PhysicsDef {
-  double time_step_s = 1.0 / 240.0;      ///< fixed simulation step, s
-  int solver_iterations = 50;            ///< constraint solver iterations per step
-  double gravity_mps2 = 9.81;            ///< m/s^2, pointing down
-  double chassis_mass_kg = 0.20;         ///< ego chassis mass, kg
-  double wheel_mass_kg = 0.02;           ///< each driven wheel, kg
-  double wheel_friction = 1.0;           ///< Coulomb friction coefficient of the wheels
-  double support_friction = 0.0;         ///< passive support (slider) friction coefficient
-  double ground_friction = 1.0;          ///< ground friction coefficient
-  double max_wheel_torque_nm = 0.2;      ///< motor torque limit per wheel, N m
-  double parked_robot_mass_kg = 0.25;    ///< each parked robot, kg (dynamic, can be pushed)
-  double obstacle_friction = 0.5;        ///< walls, islands and parked robots
+  double time_step_s = 1.0 / 240.0;    ///< fixed simulation step, s
+  int solver_iterations = 50;          ///< constraint solver iterations per step
+  double gravity_mps2 = 9.81;          ///< m/s^2, pointing down
+  double chassis_mass_kg = 0.20;       ///< ego chassis mass, kg
+  double wheel_mass_kg = 0.02;         ///< each driven wheel, kg
+  double wheel_friction = 1.0;         ///< Coulomb friction coefficient of the wheels
+  double support_friction = 0.0;       ///< passive support (slider) friction coefficient
+  double ground_friction = 1.0;        ///< ground friction coefficient
+  double max_wheel_torque_nm = 0.2;    ///< motor torque limit per wheel, N m
+  double parked_robot_mass_kg = 0.25;  ///< each parked robot, kg (dynamic, can be pushed)
+  double obstacle_friction = 0.5;      ///< walls, islands and parked robots
 };
 
 struct Scenario {

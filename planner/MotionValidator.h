@@ -4,10 +4,13 @@
 // `resolution_m` between two checks, and checks the footprint grown by resolution_m / 2. Every
 // point of the swept area between two checked poses then lies inside one of the grown
 // footprints, so a trajectory accepted here is free at every instant (conservative by at most
-// resolution_m / 2).
+// resolution_m / 2). The reference point must also stay inside the lot bounds, shrunk by
+// resolution_m / 2 for the same reason: the study's lot has no boundary walls, and without this a
+// trajectory could leave the lot to get around its obstacles.
 
 #include "core/FootprintChecker.h"
 #include "core/RobotDef.h"
+#include "core/Scenario.h"
 #include "core/Trajectory.h"
 
 namespace parksim {
@@ -19,13 +22,13 @@ struct MotionValidatorDef {
 
 class MotionValidator {
  public:
-  MotionValidator(const FootprintChecker& checker, const RobotDef& robot,
+  MotionValidator(const FootprintChecker& checker, const RobotDef& robot, const LotBounds& lot,
                   const MotionValidatorDef& def = {});
 
   /// True when the whole trajectory, including its first and last pose, is collision-free.
   bool isValid(const Trajectory& traj) const;
 
-  /// The pose the check uses for a single state (grown footprint).
+  /// The check made for a single state: grown footprint free, reference point inside the lot.
   bool isValid(const Pose2& pose) const;
 
   /// Number of footprint queries made so far.
@@ -36,6 +39,7 @@ class MotionValidator {
  private:
   const FootprintChecker& checker_;
   RobotDef robot_;
+  LotBounds inner_;  // lot bounds shrunk by resolution_m / 2
   MotionValidatorDef def_;
   double radius_;  // farthest footprint point from the reference point, m
   mutable long queries_ = 0;

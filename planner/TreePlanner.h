@@ -27,15 +27,15 @@ PlannerKind plannerKindFromString(const std::string& name);
 
 struct PlannerDef {
   PlannerKind kind = PlannerKind::kRrtGoalConnect;
-  std::uint64_t seed = 1;      ///< seeds the planner's own RNG (std::mt19937_64)
-  int max_iterations = 2000;   ///< iteration budget (the study's max_step)
-  double goal_bias = 0.05;     ///< probability of sampling the goal pose instead of a random one
+  std::uint64_t seed = 1;         ///< seeds the planner's own RNG (std::mt19937_64)
+  int max_iterations = 2000;      ///< iteration budget (the study's max_step)
+  double goal_bias = 0.05;        ///< probability of sampling the goal pose instead of a random one
   double connect_radius_m = 0.1;  ///< kRrt: SE(2) distance to the goal that triggers a to-goal try
   /// Length that turns heading into distance in the SE(2) metric, m: poses are embedded as
   /// (x, y, l cos theta, l sin theta). 0 selects the footprint radius, so a heading change moves
   /// the metric by the chord the farthest footprint corner travels.
   double heading_length_m = 0.0;
-  bool record_tree = true;     ///< keep every tree edge in the result (for figures)
+  bool record_tree = true;  ///< keep every tree edge in the result (for figures)
 };
 
 enum class PlanStatus {
@@ -59,18 +59,18 @@ struct PhaseTimes {
 
 struct PlanStats {
   int iterations = 0;
-  int tree_size = 0;            ///< nodes, including the start
-  int goal_attempts = 0;        ///< to-goal trajectories tried
-  long collision_queries = 0;   ///< footprint queries
+  int tree_size = 0;           ///< nodes, including the start
+  int goal_attempts = 0;       ///< to-goal trajectories tried
+  long collision_queries = 0;  ///< footprint queries
   PhaseTimes times;
 };
 
 struct PlanResult {
   PlanStatus status = PlanStatus::kIterationLimit;
-  std::string message;          ///< one line: why it failed, or a summary when solved
-  Trajectory trajectory;        ///< start to goal, exactly as validated; empty unless solved
-  std::vector<Pose2> waypoints;          ///< tree nodes along the solution, start first
-  std::vector<Trajectory> tree_edges;    ///< every edge added to the tree, if recorded
+  std::string message;                 ///< one line: why it failed, or a summary when solved
+  Trajectory trajectory;               ///< start to goal, exactly as validated; empty unless solved
+  std::vector<Pose2> waypoints;        ///< tree nodes along the solution, start first
+  std::vector<Trajectory> tree_edges;  ///< every edge added to the tree, if recorded
   PlanStats stats;
 
   bool solved() const { return status == PlanStatus::kSolved; }
