@@ -1,0 +1,522 @@
+#include "scenario/ScenarioReader.h"
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <string_view>
+
+#include <gtest/gtest.h>
+
+#include "core/Angle.h"
+#include "core/Error.h"
+#include "core/Geometry.h"
+
+namespace parksim {
+namespace {
+
+// Lines 1-3 of most test documents; a 2 m x 2 m lot.
+constexpr std::string_view kHead =
+    "format: parksim-world/1\n"
+    "name: t\n"
+    "lot: {x_min: 0, y_min: 0, x_max: 2, y_max: 2}\n";
+// Lines 4-5 after kHead.
+constexpr std::string_view kStartGoal =
+    "start: [0.5, 0.5, 0]\n"
+    "goal: {pose: [1.5, 1.5, 90]}\n";
+
+std::string valid(std::string_view extra = "") {
+  return std::string(kHead) + std::string(kStartGoal) + std::string(extra);
+}
+
+std::string errorOf(std::string_view yaml) {
+  try {
+    parseScenario(yaml, "t.yaml");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+// ---- Accepted input and defaults -------------------------------------------------------------
+
+TEST(ScenarioReader, MinimalFileGetsEveryDefault) {
+  const Scenario s = parseScenario(valid(), "mem.yaml");
+  EXPECT_EQ(s.name, "t");
+  EXPECT_EQ(s.source_path, "mem.yaml");
+  EXPECT_EQ(s.lot.x_max_m, 2.0);
+  EXPECT_TRUE(s.obstacles.empty());
+  EXPECT_EQ(s.start, (Pose2{0.5, 0.5, 0.0}));
+  EXPECT_EQ(s.goal.pose.x, 1.5);
+  EXPECT_EQ(s.goal.pose.theta, degToRad(90.0));
+  EXPECT_EQ(s.goal.position_tolerance_m, 0.001);
+  EXPECT_EQ(s.goal.heading_tolerance_rad, degToRad(0.5));
+  EXPECT_FALSE(s.goal.either_heading);
+
+  const RobotDef r;
+  EXPECT_EQ(s.robot.length_m, r.length_m);
+  EXPECT_EQ(s.robot.width_m, r.width_m);
+  EXPECT_EQ(s.robot.front_overhang_m, r.front_overhang_m);
+  EXPECT_EQ(s.robot.wheel_base_m, r.wheel_base_m);
+  EXPECT_EQ(s.robot.wheel_radius_m, r.wheel_radius_m);
+  EXPECT_EQ(s.robot.max_wheel_speed_radps, r.max_wheel_speed_radps);
+  EXPECT_EQ(s.robot.max_wheel_accel_radps2, r.max_wheel_accel_radps2);
+  EXPECT_EQ(s.robot.height_m, r.height_m);
+
+  const PhysicsDef p;
+  EXPECT_EQ(s.physics.time_step_s, p.time_step_s);
+  EXPECT_EQ(s.physics.solver_iterations, p.solver_iterations);
+  EXPECT_EQ(s.physics.gravity_mps2, p.gravity_mps2);
+  EXPECT_EQ(s.physics.chassis_mass_kg, p.chassis_mass_kg);
+  EXPECT_EQ(s.physics.wheel_mass_kg, p.wheel_mass_kg);
+  EXPECT_EQ(s.physics.wheel_friction, p.wheel_friction);
+  EXPECT_EQ(s.physics.support_friction, p.support_friction);
+  EXPECT_EQ(s.physics.ground_friction, p.ground_friction);
+  EXPECT_EQ(s.physics.max_wheel_torque_nm, p.max_wheel_torque_nm);
+  EXPECT_EQ(s.physics.parked_robot_mass_kg, p.parked_robot_mass_kg);
+  EXPECT_EQ(s.physics.obstacle_friction, p.obstacle_friction);
+}
+
+TEST(ScenarioReader, ObstacleDefaultsAreZeroYawAndTenCentimetres) {
+  const Scenario s =
+      parseScenario(valid("obstacles:\n"
+                          "  - {name: b, kind: box, center: [1.0, 0.2], size: [0.4, 0.1]}\n"),
+                    "t.yaml");
+  ASSERT_EQ(s.obstacles.size(), 1u);
+  const Obstacle& o = s.obstacles[0];
+  EXPECT_EQ(o.name, "b");
+  EXPECT_EQ(o.kind, ObstacleKind::kBox);
+  EXPECT_EQ(o.box.center, Eigen::Vector2d(1.0, 0.2));
+  EXPECT_EQ(o.box.half_extents, Eigen::Vector2d(0.2, 0.05));
+  EXPECT_EQ(o.box.yaw, 0.0);
+  EXPECT_EQ(o.height_m, 0.1);
+}
+
+TEST(ScenarioReader, EveryOptionalKeyOverridesItsField) {
+  const Scenario s = parseScenario(
+      "format: parksim-world/1\n"
+      "name: all\n"
+      "lot: {x_min: -1, y_min: -2, x_max: 3, y_max: 4}\n"
+      // Parked robots before the robot: they must still use the overridden robot.
+      "parked_robots:\n"
+      "  - {name: p, pose: [2.0, 3.0, 180]}\n"
+      "  - {name: q, pose: [2.0, 3.0, 0], height: 0.3}\n"
+      "robot: {length: 0.2, width: 0.1, front_overhang: 0.05, wheel_base: 0.09,\n"
+      "        wheel_radius: 0.03, max_wheel_speed_radps: 5, max_wheel_accel_radps2: 7,\n"
+      "        height: 0.07}\n"
+      "physics: {time_step_s: 0.01, solver_iterations: 20, gravity_mps2: 1.6,\n"
+      "          chassis_mass_kg: 1, wheel_mass_kg: 0.1, wheel_friction: 0.8,\n"
+      "          support_friction: 0.05, ground_friction: 0.9, max_wheel_torque_nm: 0.5,\n"
+      "          parked_robot_mass_kg: 2, obstacle_friction: 0}\n"
+      "obstacles:\n"
+      "  - {name: c, kind: curb, center: [0, 3], size: [0.5, 0.02], yaw_deg: 30, height: 0.02}\n"
+      "  - {name: w, kind: wall, center: [3, 0], size: [0.1, 1]}\n"
+      "  - {name: i, kind: island, center: [1, 1], size: [0.2, 0.2]}\n"
+      "start: [-1, -2, -45]\n"
+      "goal: {pose: [3, 4, 45], position_tolerance: 0.01, heading_tolerance_deg: 2,\n"
+      "       either_heading: true}\n",
+      "all.yaml");
+  EXPECT_EQ(s.robot.length_m, 0.2);
+  EXPECT_EQ(s.robot.width_m, 0.1);
+  EXPECT_EQ(s.robot.front_overhang_m, 0.05);
+  EXPECT_EQ(s.robot.wheel_base_m, 0.09);
+  EXPECT_EQ(s.robot.wheel_radius_m, 0.03);
+  EXPECT_EQ(s.robot.max_wheel_speed_radps, 5.0);
+  EXPECT_EQ(s.robot.max_wheel_accel_radps2, 7.0);
+  EXPECT_EQ(s.robot.height_m, 0.07);
+
+  EXPECT_EQ(s.physics.time_step_s, 0.01);
+  EXPECT_EQ(s.physics.solver_iterations, 20);
+  EXPECT_EQ(s.physics.gravity_mps2, 1.6);
+  EXPECT_EQ(s.physics.chassis_mass_kg, 1.0);
+  EXPECT_EQ(s.physics.wheel_mass_kg, 0.1);
+  EXPECT_EQ(s.physics.wheel_friction, 0.8);
+  EXPECT_EQ(s.physics.support_friction, 0.05);
+  EXPECT_EQ(s.physics.ground_friction, 0.9);
+  EXPECT_EQ(s.physics.max_wheel_torque_nm, 0.5);
+  EXPECT_EQ(s.physics.parked_robot_mass_kg, 2.0);
+  EXPECT_EQ(s.physics.obstacle_friction, 0.0);
+
+  // Obstacles first in file order, then parked robots in file order.
+  ASSERT_EQ(s.obstacles.size(), 5u);
+  EXPECT_EQ(s.obstacles[0].kind, ObstacleKind::kCurb);
+  EXPECT_EQ(s.obstacles[0].box.yaw, degToRad(30.0));
+  EXPECT_EQ(s.obstacles[0].height_m, 0.02);
+  EXPECT_EQ(s.obstacles[1].kind, ObstacleKind::kWall);
+  EXPECT_EQ(s.obstacles[2].kind, ObstacleKind::kIsland);
+
+  const Obstacle& p = s.obstacles[3];
+  EXPECT_EQ(p.name, "p");
+  EXPECT_EQ(p.kind, ObstacleKind::kParkedRobot);
+  EXPECT_EQ(p.height_m, 0.07);  // the robot's height unless given
+  const OrientedBox expected = footprintAt(s.robot, {2.0, 3.0, degToRad(180.0)});
+  EXPECT_EQ(p.box.center, expected.center);
+  EXPECT_NEAR(p.box.center.x(), 2.05, 1e-12);  // reference point 5 cm behind the centre
+  EXPECT_EQ(p.box.half_extents, Eigen::Vector2d(0.1, 0.05));
+  EXPECT_EQ(p.box.yaw, degToRad(180.0));
+  EXPECT_EQ(s.obstacles[4].height_m, 0.3);
+
+  EXPECT_EQ(s.start.theta, degToRad(-45.0));
+  EXPECT_EQ(s.goal.position_tolerance_m, 0.01);
+  EXPECT_EQ(s.goal.heading_tolerance_rad, degToRad(2.0));
+  EXPECT_TRUE(s.goal.either_heading);
+}
+
+TEST(ScenarioReader, ParkedRobotFootprintPlacesTheReferencePointTenMillimetresBehindTheFront) {
+  // The study's table row 8: x 0.70..0.78, y 1.115..1.2 is a robot facing +x at (0.77, 1.1575).
+  const Scenario s = parseScenario(
+      "format: parksim-world/1\nname: t\nlot: {x_min: 0, y_min: 0, x_max: 1.8, y_max: 1.2}\n"
+      "parked_robots: [{name: r8, pose: [0.77, 1.1575, 0]}]\n"
+      "start: [0.1, 0.1, 90]\ngoal: {pose: [1.2, 1.16, 0]}\n",
+      "t.yaml");
+  const OrientedBox& b = s.obstacles.at(0).box;
+  EXPECT_NEAR(b.center.x(), 0.74, 1e-12);
+  EXPECT_NEAR(b.center.y(), 1.1575, 1e-12);
+  EXPECT_NEAR(b.half_extents.x(), 0.04, 1e-12);
+  EXPECT_NEAR(b.half_extents.y(), 0.0425, 1e-12);
+}
+
+TEST(ScenarioReader, AcceptsWhatIsOnlyUnusual) {
+  // Touching an obstacle is not overlapping it. With this robot (binary fractions, so the
+  // contact is exact) the footprint at (0.5, 0.5, 0) spans x 0.125..0.625, and the box
+  // starts at x = 0.625.
+  EXPECT_EQ(errorOf(valid("robot: {length: 0.5, width: 0.25, front_overhang: 0.125}\n"
+                          "obstacles: [{name: a, kind: box, center: [0.75, 0.5], "
+                          "size: [0.25, 0.25]}]\n")),
+            "(accepted)");
+  // Parked robots overlapping each other and an obstacle are allowed.
+  EXPECT_EQ(errorOf(valid("obstacles: [{name: a, kind: box, center: [1, 1], size: [0.2, 0.2]}]\n"
+                          "parked_robots: [{name: p, pose: [1, 1, 0]}, "
+                          "{name: q, pose: [1.01, 1, 0]}]\n")),
+            "(accepted)");
+  // The lot bounds the reference point only: a footprint may reach past them.
+  EXPECT_EQ(errorOf(std::string(kHead) + "start: [0, 0, 0]\ngoal: {pose: [2, 2, 0]}\n"),
+            "(accepted)");
+  // Zero friction and zero front overhang are real designs; '+' signs and True are YAML.
+  EXPECT_EQ(errorOf(valid("physics: {support_friction: 0, wheel_friction: +0.5}\n"
+                          "robot: {front_overhang: 0}\n")),
+            "(accepted)");
+  EXPECT_EQ(errorOf(std::string(kHead) +
+                    "start: [0.5, 0.5, 0]\ngoal: {pose: [1.5, 1.5, 90], either_heading: True}\n"),
+            "(accepted)");
+  // Empty lists are lists.
+  EXPECT_EQ(errorOf(valid("obstacles: []\nparked_robots: []\n")), "(accepted)");
+}
+
+TEST(ScenarioReader, HeadingsAreStoredAsWrittenInRadians) {
+  const Scenario s = parseScenario(
+      std::string(kHead) + "start: [0.5, 0.5, 270]\ngoal: {pose: [1.5, 1.5, -180]}\n", "t.yaml");
+  EXPECT_EQ(s.start.theta, degToRad(270.0));
+  EXPECT_EQ(s.goal.pose.theta, degToRad(-180.0));
+}
+
+// ---- Files ---------------------------------------------------------------------------------
+
+class ScenarioFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::path(::testing::TempDir()) /
+           ("parksim_scenario_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::string write(const std::string& name, std::string_view text) {
+    const std::string path = (dir_ / name).string();
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+
+  std::filesystem::path dir_;
+};
+
+TEST_F(ScenarioFile, LoadsAndRemembersItsPath) {
+  const std::string path = write("w.yaml", valid());
+  const Scenario s = loadScenario(path);
+  EXPECT_EQ(s.source_path, path);
+  EXPECT_EQ(s.name, "t");
+}
+
+TEST_F(ScenarioFile, ErrorsNameTheFileAsGiven) {
+  const std::string path = write("bad.yaml", valid("obstacles: [{name: a}]\n"));
+  try {
+    loadScenario(path);
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), path + ":6: obstacles[0].kind: missing required field");
+  }
+}
+
+TEST_F(ScenarioFile, MissingFileIsReported) {
+  const std::string path = (dir_ / "absent.yaml").string();
+  try {
+    loadScenario(path);
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": cannot open: No such file or directory");
+  }
+}
+
+TEST_F(ScenarioFile, DirectoryIsReported) {
+  try {
+    loadScenario(dir_.string());
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), dir_.string() + ": cannot open: is a directory");
+  }
+}
+
+// ---- Rejected input: every case with its exact one-line message -----------------------------
+
+struct BadCase {
+  const char* name;
+  std::string yaml;
+  const char* message;
+};
+
+class RejectsBadInput : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(RejectsBadInput, WithExactMessage) {
+  EXPECT_EQ(errorOf(GetParam().yaml), GetParam().message);
+}
+
+std::string head(std::string_view rest) { return std::string(kHead) + std::string(rest); }
+
+const BadCase kBadCases[] = {
+    // Document and syntax.
+    {"EmptyFile", "",
+     "t.yaml:1: (document): empty; a world file is a map that starts with format: "
+     "parksim-world/1"},
+    {"OnlyComments", "# nothing here\n",
+     "t.yaml:1: (document): empty; a world file is a map that starts with format: "
+     "parksim-world/1"},
+    {"RootIsAList", "- format\n- name\n", "t.yaml:1: (document): must be a map, got a list of 2"},
+    {"TwoDocuments", valid("---\nname: u\n"),
+     "t.yaml:7: (document): a world file holds one YAML document, found 2"},
+    {"UnclosedFlowList", head("start: [0.5, 0.5, 0\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:5: (syntax): end of sequence flow not found"},
+    {"BadIndentation", "format: parksim-world/1\nname: t\n  lot: 3\n",
+     "t.yaml:3: (syntax): illegal map value"},
+
+    // Format.
+    {"WrongFormat", "format: parksim-world/2\nname: t\n",
+     "t.yaml:1: format: expected \"parksim-world/1\", got \"parksim-world/2\""},
+    {"WrongFormatIsReportedBeforeUnknownKeys", "format: parksim-world/2\nnew_key: 1\n",
+     "t.yaml:1: format: expected \"parksim-world/1\", got \"parksim-world/2\""},
+    {"MissingFormat", "name: t\n", "t.yaml:1: format: missing required field"},
+
+    // Missing required fields.
+    {"MissingName", "format: parksim-world/1\n", "t.yaml:1: name: missing required field"},
+    {"MissingLot", "format: parksim-world/1\nname: t\n", "t.yaml:1: lot: missing required field"},
+    {"MissingStart", head("goal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:1: start: missing required field"},
+    {"MissingGoal", head("start: [0.5, 0.5, 0]\n"), "t.yaml:1: goal: missing required field"},
+    {"MissingGoalPose", head("start: [0.5, 0.5, 0]\ngoal:\n  either_heading: true\n"),
+     "t.yaml:5: goal.pose: missing required field"},
+    {"MissingLotBound", "format: parksim-world/1\nname: t\nlot: {x_min: 0, y_min: 0, x_max: 2}\n",
+     "t.yaml:3: lot.y_max: missing required field"},
+    {"MissingObstacleSize", valid("obstacles:\n  - {name: a, kind: box, center: [1, 1]}\n"),
+     "t.yaml:7: obstacles[0].size: missing required field"},
+    {"MissingObstacleName", valid("obstacles:\n  - kind: box\n"),
+     "t.yaml:7: obstacles[0].name: missing required field"},
+    {"MissingParkedRobotPose", valid("parked_robots:\n  - name: p\n"),
+     "t.yaml:7: parked_robots[0].pose: missing required field"},
+
+    // Unknown fields, at every level.
+    {"UnknownTopLevelField", valid("nmae: t\n"),
+     "t.yaml:6: nmae: unknown field; expected one of: format, name, lot, robot, obstacles, "
+     "parked_robots, start, goal, physics"},
+    {"UnknownLotField", "format: parksim-world/1\nname: t\nlot: {x_min: 0, y_min: 0, z_max: 1}\n",
+     "t.yaml:3: lot.z_max: unknown field; expected one of: x_min, y_min, x_max, y_max"},
+    {"UnknownRobotField", valid("robot:\n  length: 0.08\n  lenght: 0.09\n"),
+     "t.yaml:8: robot.lenght: unknown field; expected one of: length, width, front_overhang, "
+     "wheel_base, wheel_radius, max_wheel_speed_radps, max_wheel_accel_radps2, height"},
+    {"UnknownPhysicsFieldWithoutUnitSuffix", valid("physics: {time_step: 0.01}\n"),
+     "t.yaml:6: physics.time_step: unknown field; expected one of: time_step_s, "
+     "solver_iterations, gravity_mps2, chassis_mass_kg, wheel_mass_kg, wheel_friction, "
+     "support_friction, ground_friction, max_wheel_torque_nm, parked_robot_mass_kg, "
+     "obstacle_friction"},
+    {"UnknownGoalField", head("start: [0.5, 0.5, 0]\ngoal: {pose: [1.5, 1.5, 90], tolerance: 1}\n"),
+     "t.yaml:5: goal.tolerance: unknown field; expected one of: pose, position_tolerance, "
+     "heading_tolerance_deg, either_heading"},
+    {"UnknownObstacleField", valid("obstacles:\n  - name: a\n    kind: box\n    colour: red\n"),
+     "t.yaml:9: obstacles[0].colour: unknown field; expected one of: name, kind, center, size, "
+     "yaw_deg, height"},
+    {"UnknownParkedRobotField",
+     valid("parked_robots:\n  - {name: p, pose: [1, 1, 0]}\n  - {name: q, yaw_deg: 3}\n"),
+     "t.yaml:8: parked_robots[1].yaw_deg: unknown field; expected one of: name, pose, height"},
+    {"DuplicateKey", valid("lot: {x_min: 0, y_min: 0, x_max: 3, y_max: 3}\n"),
+     "t.yaml:6: lot: duplicate key"},
+    {"DuplicateNestedKey",
+     head("start: [0.5, 0.5, 0]\ngoal:\n  pose: [1, 1, 0]\n  pose: [1, 2, 0]\n"),
+     "t.yaml:7: goal.pose: duplicate key"},
+
+    // Wrong types.
+    {"TextWhereNumberExpected", head("start: [0.5, abc, 0]\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start[1]: must be a number, got abc"},
+    {"QuotedNumber", head("start: [\"0.5\", 0.5, 0]\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start[0]: must be a number, got the string \"0.5\""},
+    {"NumberWithTrailingText", head("start: [0.5m, 0.5, 0]\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start[0]: must be a number, got 0.5m"},
+    {"PoseTooShort", head("start: [0.5, 0.5]\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start: must be a list [x, y, yaw_deg] of 3 numbers, got a list of 2"},
+    {"PoseAsMap", head("start: {x: 0.5, y: 0.5, yaw_deg: 0}\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start: must be a list [x, y, yaw_deg] of 3 numbers, got a map"},
+    {"PoseEmpty", head("start:\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start: must be a list [x, y, yaw_deg] of 3 numbers, got null"},
+    {"SizeTooLong", valid("obstacles: [{name: a, kind: box, center: [1, 1], size: [1, 2, 3]}]\n"),
+     "t.yaml:6: obstacles[0].size: must be a list [sx, sy] of 2 numbers, got a list of 3"},
+    {"LotAsList", "format: parksim-world/1\nname: t\nlot: [0, 0, 2, 2]\n",
+     "t.yaml:3: lot: must be a map, got a list of 4"},
+    {"ObstaclesAsMap", valid("obstacles: {name: a}\n"),
+     "t.yaml:6: obstacles: must be a list, got a map"},
+    {"ObstacleAsScalar", valid("obstacles:\n  - wall\n"),
+     "t.yaml:7: obstacles[0]: must be a map, got wall"},
+    {"RobotAsScalar", valid("robot: small\n"), "t.yaml:6: robot: must be a map, got small"},
+    {"NameAsList", "format: parksim-world/1\nname: [a, b]\n",
+     "t.yaml:2: name: must be a string, got a list of 2"},
+    {"EmptyName", "format: parksim-world/1\nname: \"\"\n", "t.yaml:2: name: must not be empty"},
+    {"YesIsNotABoolean",
+     head("start: [0.5, 0.5, 0]\ngoal:\n  pose: [1.5, 1.5, 90]\n  either_heading: yes\n"),
+     "t.yaml:7: goal.either_heading: must be true or false, got yes"},
+    {"FractionalSolverIterations", valid("physics: {solver_iterations: 2.5}\n"),
+     "t.yaml:6: physics.solver_iterations: must be an integer, got 2.5"},
+
+    // Zero or negative sizes, lengths, tolerances, masses, time step.
+    {"NegativeObstacleSize",
+     valid("obstacles:\n"
+           "  - {name: a, kind: wall, center: [1, 1], size: [0.1, 0.1]}\n"
+           "  - {name: b, kind: wall, center: [1, 1], size: [0.1, 0.1]}\n"
+           "  - name: c\n"
+           "    kind: curb\n"
+           "    center: [1, 1]\n"
+           "    size: [-0.1,\n"
+           "           0.1]\n"),
+     "t.yaml:12: obstacles[2].size[0]: must be positive, got -0.1"},
+    {"ZeroObstacleSize", valid("obstacles: [{name: a, kind: box, center: [1, 1], size: [1, 0]}]\n"),
+     "t.yaml:6: obstacles[0].size[1]: must be positive, got 0"},
+    {"ZeroObstacleHeight",
+     valid("obstacles: [{name: a, kind: box, center: [1, 1], size: [1, 1], height: 0}]\n"),
+     "t.yaml:6: obstacles[0].height: must be positive, got 0"},
+    {"NegativeParkedRobotHeight",
+     valid("parked_robots: [{name: p, pose: [1, 1, 0], height: -1}]\n"),
+     "t.yaml:6: parked_robots[0].height: must be positive, got -1"},
+    {"ZeroRobotLength", valid("robot: {length: 0}\n"),
+     "t.yaml:6: robot.length: must be positive, got 0"},
+    {"NegativeRobotWidth", valid("robot: {width: -0.085}\n"),
+     "t.yaml:6: robot.width: must be positive, got -0.085"},
+    {"ZeroWheelBase", valid("robot: {wheel_base: 0}\n"),
+     "t.yaml:6: robot.wheel_base: must be positive, got 0"},
+    {"NegativeWheelRadius", valid("robot: {wheel_radius: -0.02}\n"),
+     "t.yaml:6: robot.wheel_radius: must be positive, got -0.02"},
+    {"ZeroMaxWheelSpeed", valid("robot: {max_wheel_speed_radps: 0}\n"),
+     "t.yaml:6: robot.max_wheel_speed_radps: must be positive, got 0"},
+    {"ZeroMaxWheelAccel", valid("robot: {max_wheel_accel_radps2: 0}\n"),
+     "t.yaml:6: robot.max_wheel_accel_radps2: must be positive, got 0"},
+    {"ZeroRobotHeight", valid("robot: {height: 0}\n"),
+     "t.yaml:6: robot.height: must be positive, got 0"},
+    {"NegativeFrontOverhang", valid("robot: {front_overhang: -0.01}\n"),
+     "t.yaml:6: robot.front_overhang: must be zero or positive, got -0.01"},
+    {"FrontOverhangBeyondLength", valid("robot: {length: 0.08, front_overhang: 0.1}\n"),
+     "t.yaml:6: robot.front_overhang: must not exceed robot.length (0.08), got 0.1"},
+    {"LengthShorterThanDefaultOverhang", valid("robot:\n  length: 0.005\n"),
+     "t.yaml:7: robot.length: must be at least robot.front_overhang (0.01), got 0.005"},
+    {"ZeroPositionTolerance",
+     head("start: [0.5, 0.5, 0]\ngoal: {pose: [1.5, 1.5, 90], position_tolerance: 0}\n"),
+     "t.yaml:5: goal.position_tolerance: must be positive, got 0"},
+    {"NegativeHeadingTolerance",
+     head("start: [0.5, 0.5, 0]\ngoal: {pose: [1.5, 1.5, 90], heading_tolerance_deg: -1}\n"),
+     "t.yaml:5: goal.heading_tolerance_deg: must be positive, got -1"},
+    {"ZeroTimeStep", valid("physics:\n  time_step_s: 0\n"),
+     "t.yaml:7: physics.time_step_s: must be positive, got 0"},
+    {"ZeroSolverIterations", valid("physics: {solver_iterations: 0}\n"),
+     "t.yaml:6: physics.solver_iterations: must be positive, got 0"},
+    {"ZeroGravity", valid("physics: {gravity_mps2: 0}\n"),
+     "t.yaml:6: physics.gravity_mps2: must be positive, got 0"},
+    {"NegativeChassisMass", valid("physics: {chassis_mass_kg: -0.2}\n"),
+     "t.yaml:6: physics.chassis_mass_kg: must be positive, got -0.2"},
+    {"ZeroWheelMass", valid("physics: {wheel_mass_kg: 0}\n"),
+     "t.yaml:6: physics.wheel_mass_kg: must be positive, got 0"},
+    {"ZeroParkedRobotMass", valid("physics: {parked_robot_mass_kg: 0}\n"),
+     "t.yaml:6: physics.parked_robot_mass_kg: must be positive, got 0"},
+    {"ZeroMaxTorque", valid("physics: {max_wheel_torque_nm: 0}\n"),
+     "t.yaml:6: physics.max_wheel_torque_nm: must be positive, got 0"},
+    {"NegativeFriction", valid("physics: {ground_friction: -0.1}\n"),
+     "t.yaml:6: physics.ground_friction: must be zero or positive, got -0.1"},
+
+    // NaN and infinities.
+    {"NanInPose", head("start: [.nan, 0.5, 0]\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start[0]: must be a finite number, got .nan"},
+    {"NanSpelledAsCpp", head("start: [0.5, 0.5, nan]\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start[2]: must be a finite number, got nan"},
+    {"InfInSize", valid("obstacles: [{name: a, kind: box, center: [1, 1], size: [.inf, 1]}]\n"),
+     "t.yaml:6: obstacles[0].size[0]: must be a finite number, got .inf"},
+    {"MinusInfInLot",
+     "format: parksim-world/1\nname: t\nlot: {x_min: -.inf, y_min: 0, x_max: 2, "
+     "y_max: 2}\n",
+     "t.yaml:3: lot.x_min: must be a finite number, got -.inf"},
+    {"NanTolerance",
+     head("start: [0.5, 0.5, 0]\ngoal: {pose: [1.5, 1.5, 90], heading_tolerance_deg: .NaN}\n"),
+     "t.yaml:5: goal.heading_tolerance_deg: must be a finite number, got .NaN"},
+    {"InfTimeStep", valid("physics: {time_step_s: .Inf}\n"),
+     "t.yaml:6: physics.time_step_s: must be a finite number, got .Inf"},
+    {"InfYaw",
+     valid("obstacles: [{name: a, kind: box, center: [1, 1], size: [1, 1], "
+           "yaw_deg: +.inf}]\n"),
+     "t.yaml:6: obstacles[0].yaw_deg: must be a finite number, got +.inf"},
+
+    // Lot.
+    {"LotXMaxEqualsXMin",
+     "format: parksim-world/1\nname: t\nlot: {x_min: 0, y_min: 0, x_max: 0, "
+     "y_max: 2}\n",
+     "t.yaml:3: lot.x_max: must be greater than lot.x_min (0), got 0"},
+    {"LotYMaxBelowYMin",
+     "format: parksim-world/1\nname: t\nlot:\n  x_min: 0\n  y_min: 1.5\n  x_max: 2\n  y_max: 1\n",
+     "t.yaml:7: lot.y_max: must be greater than lot.y_min (1.5), got 1"},
+
+    // Start and goal placement.
+    {"StartOutsideLot", head("start: [2.5, 0.5, 0]\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start: reference point (2.5, 0.5) is outside the lot [0, 2] x [0, 2]"},
+    {"GoalOutsideLot", head("start: [0.5, 0.5, 0]\ngoal:\n  pose: [1.5, -0.1, 90]\n"),
+     "t.yaml:6: goal.pose: reference point (1.5, -0.1) is outside the lot [0, 2] x [0, 2]"},
+    {"StartInCollision",
+     valid("obstacles:\n"
+           "  - {name: far, kind: wall, center: [1.9, 0.1], size: [0.1, 0.1]}\n"
+           "  - {name: pillar, kind: box, center: [0.6, 0.5], size: [0.2, 0.2]}\n"),
+     "t.yaml:4: start: robot footprint overlaps obstacle \"pillar\""},
+    {"StartInCollisionWithRotatedObstacle",
+     // The footprint's front edge is at x = 0.51; the diamond's left corner, 0.0707 left of
+     // its centre, is at x ~ 0.509: 1 mm inside, though its own edges lean away.
+     valid("obstacles: [{name: diamond, kind: box, center: [0.58, 0.5], size: [0.1, 0.1], "
+           "yaw_deg: 45}]\n"),
+     "t.yaml:4: start: robot footprint overlaps obstacle \"diamond\""},
+    {"GoalInCollisionWithParkedRobot",
+     valid("parked_robots:\n  - {name: neighbour, pose: [1.55, 1.5, 90]}\n"),
+     "t.yaml:5: goal.pose: robot footprint overlaps obstacle \"neighbour\""},
+
+    // Names and kinds.
+    {"DuplicateNameAcrossLists",
+     valid("obstacles:\n  - {name: a, kind: box, center: [1, 0.1], size: [0.1, 0.1]}\n"
+           "parked_robots:\n  - {name: a, pose: [1.8, 0.2, 0]}\n"),
+     "t.yaml:9: parked_robots[0].name: duplicate name \"a\" (already used at line 7)"},
+    {"DuplicateObstacleName",
+     valid("obstacles:\n  - {name: a, kind: box, center: [1, 0.1], size: [0.1, 0.1]}\n"
+           "  - {name: a, kind: box, center: [1, 0.3], size: [0.1, 0.1]}\n"),
+     "t.yaml:8: obstacles[1].name: duplicate name \"a\" (already used at line 7)"},
+    {"UnknownKind", valid("obstacles: [{name: a, kind: wal, center: [1, 1], size: [1, 1]}]\n"),
+     "t.yaml:6: obstacles[0].kind: unknown kind \"wal\"; expected one of: wall, curb, island, "
+     "box"},
+    {"ParkedRobotKindInObstacles",
+     valid("obstacles: [{name: a, kind: parked_robot, center: [1, 1], size: [1, 1]}]\n"),
+     "t.yaml:6: obstacles[0].kind: parked robots are listed under parked_robots, with a pose "
+     "instead of a size"},
+};
+
+INSTANTIATE_TEST_SUITE_P(ScenarioReader, RejectsBadInput, ::testing::ValuesIn(kBadCases),
+                         [](const ::testing::TestParamInfo<BadCase>& param_info) {
+                           return std::string(param_info.param.name);
+                         });
+
+}  // namespace
+}  // namespace parksim
