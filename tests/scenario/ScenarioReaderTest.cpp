@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <string_view>
 
@@ -265,6 +266,27 @@ TEST_F(ScenarioFile, DirectoryIsReported) {
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()), dir_.string() + ": cannot open: is a directory");
   }
+}
+
+TEST_F(ScenarioFile, DocumentationExampleIsAValidWorld) {
+  // Keeps docs/world-format.md honest: its complete example must load as documented.
+  std::ifstream in(std::string(PARKSIM_SOURCE_DIR) + "/docs/world-format.md");
+  ASSERT_TRUE(in) << "docs/world-format.md is missing";
+  const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t section = doc.find("## A complete example");
+  ASSERT_NE(section, std::string::npos);
+  const std::size_t begin = doc.find("```yaml\n", section);
+  ASSERT_NE(begin, std::string::npos);
+  const std::size_t end = doc.find("```", begin + 8);
+  ASSERT_NE(end, std::string::npos);
+  const Scenario s = parseScenario(doc.substr(begin + 8, end - begin - 8), "example.yaml");
+  EXPECT_EQ(s.name, "one_space");
+  EXPECT_EQ(s.robot.max_wheel_speed_radps, 8.0);
+  ASSERT_EQ(s.obstacles.size(), 3u);
+  EXPECT_EQ(s.obstacles[1].box.yaw, degToRad(10.0));
+  EXPECT_EQ(s.obstacles[2].kind, ObstacleKind::kParkedRobot);
+  EXPECT_TRUE(s.goal.either_heading);
+  EXPECT_EQ(s.physics.solver_iterations, 80);
 }
 
 // ---- Rejected input: every case with its exact one-line message -----------------------------
