@@ -20,8 +20,12 @@ const char* toString(PlannerKind kind) {
   return "?";
 }
 
+std::vector<PlannerKind> allPlannerKinds() {
+  return {PlannerKind::kRrt, PlannerKind::kRrtGoalConnect};
+}
+
 PlannerKind plannerKindFromString(const std::string& name) {
-  for (PlannerKind k : {PlannerKind::kRrt, PlannerKind::kRrtGoalConnect}) {
+  for (PlannerKind k : allPlannerKinds()) {
     if (name == toString(k)) return k;
   }
   throw Error("unknown planner '" + name + "' (expected rrt or rrt-goal-connect)");
@@ -121,6 +125,7 @@ PlanResult TreePlanner::solve(const Pose2& start, const GoalRegion& goal) const 
     if (result.trajectory.empty()) result.trajectory.points.push_back({0.0, start, {}});
     result.trajectory.append(to_goal.trajectory);
     result.waypoints.push_back(to_goal.trajectory.points.back().pose);
+    result.stats.first_solution_s = std::chrono::duration<double>(Clock::now() - t_begin).count();
     return true;
   };
 
@@ -130,8 +135,17 @@ PlanResult TreePlanner::solve(const Pose2& start, const GoalRegion& goal) const 
   };
 
   bool solved = wantsGoalTry(0) && tryGoal(0);
+  auto outOfTime = [&] {
+    return def_.max_time_s > 0.0 &&
+           std::chrono::duration<double>(Clock::now() - t_begin).count() > def_.max_time_s;
+  };
+  bool timed_out = false;
   int it = 0;
   for (; !solved && it < def_.max_iterations; ++it) {
+    if (outOfTime()) {
+      timed_out = true;
+      break;
+    }
     Pose2 sample;
     {
       PhaseTimer timer(times.sampling_s);
@@ -171,6 +185,10 @@ PlanResult TreePlanner::solve(const Pose2& start, const GoalRegion& goal) const 
   result.stats.iterations = it;
   result.stats.tree_size = static_cast<int>(nodes.size());
   if (def_.record_tree) result.tree_edges = std::move(edges);
+  if (!solved && timed_out) {
+    return finish(PlanStatus::kTimeLimit, "no collision-free trajectory to the goal within " +
+                                              std::to_string(def_.max_time_s) + " s");
+  }
   if (!solved) {
     return finish(PlanStatus::kIterationLimit, "no collision-free trajectory to the goal within " +
                                                    std::to_string(def_.max_iterations) +

@@ -22,6 +22,8 @@ namespace parksim {
 enum class PlannerKind { kRrt, kRrtGoalConnect };
 
 const char* toString(PlannerKind kind);
+/// Every planner kind, in a fixed order (for benchmarks and help texts).
+std::vector<PlannerKind> allPlannerKinds();
 /// Parses "rrt" or "rrt-goal-connect"; throws Error otherwise.
 PlannerKind plannerKindFromString(const std::string& name);
 
@@ -35,12 +37,17 @@ struct PlannerDef {
   /// (x, y, l cos theta, l sin theta). 0 selects the footprint radius, so a heading change moves
   /// the metric by the chord the farthest footprint corner travels.
   double heading_length_m = 0.0;
+  /// Wall-time budget, s; 0 = none. For benchmarks only: results then depend on machine load,
+  /// so tests and reproducible runs use max_iterations alone.
+  double max_time_s = 0.0;
   bool record_tree = true;  ///< keep every tree edge in the result (for figures)
 };
 
 enum class PlanStatus {
   kSolved,
   kIterationLimit,  ///< no valid trajectory to the goal within max_iterations
+  kTimeLimit,       ///< no valid trajectory to the goal within max_time_s
+  kTimeLimit,       ///< no valid trajectory to the goal within max_time_s
   kInvalidStart,    ///< the start footprint collides
   kInvalidGoal,     ///< the goal footprint collides
 };
@@ -59,9 +66,10 @@ struct PhaseTimes {
 
 struct PlanStats {
   int iterations = 0;
-  int tree_size = 0;           ///< nodes, including the start
-  int goal_attempts = 0;       ///< to-goal trajectories tried
-  long collision_queries = 0;  ///< footprint queries
+  int tree_size = 0;               ///< nodes, including the start
+  int goal_attempts = 0;           ///< to-goal trajectories tried
+  long collision_queries = 0;      ///< footprint queries
+  double first_solution_s = -1.0;  ///< wall time to the first solution, s; -1 if none
   PhaseTimes times;
 };
 
