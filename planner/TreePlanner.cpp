@@ -12,10 +12,8 @@ namespace parksim {
 
 const char* toString(PlannerKind kind) {
   switch (kind) {
-    case PlannerKind::kRrt:
-      return "rrt";
-    case PlannerKind::kRrtGoalConnect:
-      return "rrt-goal-connect";
+    case PlannerKind::kRrt: return "rrt";
+    case PlannerKind::kRrtGoalConnect: return "rrt-goal-connect";
   }
   return "?";
 }
@@ -33,14 +31,11 @@ PlannerKind plannerKindFromString(const std::string& name) {
 
 const char* toString(PlanStatus status) {
   switch (status) {
-    case PlanStatus::kSolved:
-      return "solved";
-    case PlanStatus::kIterationLimit:
-      return "iteration_limit";
-    case PlanStatus::kInvalidStart:
-      return "invalid_start";
-    case PlanStatus::kInvalidGoal:
-      return "invalid_goal";
+    case PlanStatus::kSolved: return "solved";
+    case PlanStatus::kIterationLimit: return "iteration_limit";
+    case PlanStatus::kTimeLimit: return "time_limit";
+    case PlanStatus::kInvalidStart: return "invalid_start";
+    case PlanStatus::kInvalidGoal: return "invalid_goal";
   }
   return "?";
 }

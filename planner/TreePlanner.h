@@ -47,7 +47,6 @@ enum class PlanStatus {
   kSolved,
   kIterationLimit,  ///< no valid trajectory to the goal within max_iterations
   kTimeLimit,       ///< no valid trajectory to the goal within max_time_s
-  kTimeLimit,       ///< no valid trajectory to the goal within max_time_s
   kInvalidStart,    ///< the start footprint collides
   kInvalidGoal,     ///< the goal footprint collides
 };
