@@ -1,0 +1,48 @@
+// parksim plan WORLD: plan a parking manoeuvre and write trajectory.csv and plan.json.
+
+#include <cstdio>
+#include <string>
+
+#include "app/Command.h"
+#include "app/PlanOutput.h"
+#include "collision/BulletCollisionWorld.h"
+#include "scenario/ScenarioReader.h"
+
+namespace parksim::app {
+
+CommandRunner setupPlanCommand(CLI::App& sub) {
+  struct Options {
+    std::string world;
+    std::string out = "out";
+    PlanCliOptions plan;
+  };
+  auto opt = std::make_shared<Options>();
+  sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")
+      ->required();
+  opt->plan.addTo(sub);
+  sub.add_option("--out", opt->out, "output directory")->capture_default_str();
+
+  return [opt] {
+    const Scenario scenario = loadScenario(opt->world);
+    const PlanSetup setup = opt->plan.toSetup(scenario);
+    const BulletCollisionWorld collision(scenario);
+    const PlanResult result = planScenario(scenario, collision, setup);
+    writePlanFiles(opt->out, scenario, setup, result);
+    if (!result.solved()) {
+      std::fprintf(stderr, "parksim plan: unsolved (%s): %s\n", toString(result.status),
+                   result.message.c_str());
+      return 1;
+    }
+    std::printf(
+        "solved %s with %s (seed %llu): %d iterations, %d tree nodes, path %.3f m, %.1f s of "
+        "motion, planned in %.2f ms\nwrote %s/trajectory.csv and %s/plan.json\n",
+        scenario.name.c_str(), toString(setup.planner.kind),
+        static_cast<unsigned long long>(setup.planner.seed), result.stats.iterations,
+        result.stats.tree_size, result.trajectory.pathLength(scenario.robot),
+        result.trajectory.duration(), 1e3 * result.stats.times.total_s, opt->out.c_str(),
+        opt->out.c_str());
+    return 0;
+  };
+}
+
+}  // namespace parksim::app

@@ -1,0 +1,80 @@
+#include "app/PlanOutput.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/AtomicFile.h"
+#include "core/Error.h"
+
+namespace parksim::app {
+
+void PlanCliOptions::addTo(CLI::App& sub) {
+  sub.add_option("--planner", planner, "rrt or rrt-goal-connect")->capture_default_str();
+  sub.add_option("--seed", seed, "seed of the planner's random number generator")
+      ->capture_default_str();
+  sub.add_option("--max-iterations", max_iterations, "iteration budget of the tree search")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+}
+
+PlanSetup PlanCliOptions::toSetup(const Scenario&) const {
+  PlanSetup setup;
+  setup.planner.kind = plannerKindFromString(planner);
+  setup.planner.seed = seed;
+  setup.planner.max_iterations = max_iterations;
+  return setup;
+}
+
+nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
+                           const PlanResult& result) {
+  const PhaseTimes& t = result.stats.times;
+  nlohmann::json j = {
+      {"world", scenario.source_path},
+      {"scenario", scenario.name},
+      {"status", toString(result.status)},
+      {"solved", result.solved()},
+      {"message", result.message},
+      {"planner", toString(setup.planner.kind)},
+      {"seed", setup.planner.seed},
+      {"max_iterations", setup.planner.max_iterations},
+      {"iterations", result.stats.iterations},
+      {"tree_size", result.stats.tree_size},
+      {"goal_attempts", result.stats.goal_attempts},
+      {"collision_queries", result.stats.collision_queries},
+      {"motion_check_resolution_m", setup.validation.resolution_m},
+      {"planning_time_s", t.total_s},
+      {"phase_times_s",
+       {{"sampling", t.sampling_s},
+        {"nearest_neighbour", t.nearest_s},
+        {"steering", t.steering_s},
+        {"collision_checking", t.collision_s},
+        {"goal_checks", t.goal_check_s}}},
+  };
+  if (result.solved()) {
+    const Pose2& end = result.trajectory.points.back().pose;
+    j["path_length_m"] = result.trajectory.pathLength(scenario.robot);
+    j["duration_s"] = result.trajectory.duration();
+    j["cusps"] = result.trajectory.cusps(scenario.robot);
+    j["waypoints"] = result.waypoints.size();
+    j["final_pos_err_m"] = positionDistance(end, scenario.goal.pose);
+    j["final_heading_err_deg"] = radToDeg(headingDistance(end, scenario.goal.pose));
+  }
+  return j;
+}
+
+void writePlanFiles(const std::string& dir, const Scenario& scenario, const PlanSetup& setup,
+                    const PlanResult& result) {
+  ensureDirectory(dir);
+  const std::string traj_path = dir + "/trajectory.csv";
+  if (result.solved()) {
+    writeTrajectoryCsv(traj_path, result.trajectory, scenario.robot);
+  } else {
+    // Never leave an earlier run's trajectory beside this run's plan.json.
+    std::error_code ec;
+    std::filesystem::remove(traj_path, ec);
+  }
+  writeFileAtomically(dir + "/plan.json", planSummary(scenario, setup, result).dump(2) + "\n");
+}
+
+}  // namespace parksim::app

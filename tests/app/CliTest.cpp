@@ -1,0 +1,145 @@
+// End-to-end tests of the parksim executable: exit codes, files written, messages.
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "core/DiffDrive.h"
+#include "core/Geometry.h"
+#include "core/Trajectory.h"
+#include "scenario/ScenarioReader.h"
+
+namespace parksim {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Run {
+  int exit_code;
+  std::string out;  // stdout and stderr
+};
+
+Run parksim(const std::string& args) {
+  const std::string cmd = std::string(PARKSIM_EXE) + " " + args + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::string out;
+  char buf[4096];
+  while (std::fgets(buf, sizeof buf, pipe)) out += buf;
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("parksim_cli_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string world(const std::string& name) {
+    return std::string(PARKSIM_SOURCE_DIR) + "/worlds/" + name;
+  }
+  fs::path dir_;
+};
+
+TEST_F(Cli, PlanWritesAConsistentTrajectoryAndSummary) {
+  for (const char* name : {"head_in.yaml", "parallel.yaml"}) {
+    const fs::path out = dir_ / name;
+    const Run r = parksim("plan " + world(name) + " --seed 3 --out " + out.string());
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const Scenario s = loadScenario(world(name));
+    const Trajectory t = readTrajectoryCsv((out / "trajectory.csv").string());
+    // Each row's wheel speeds, held for the period and integrated exactly, reach the next row.
+    for (std::size_t i = 0; i + 1 < t.points.size(); ++i) {
+      const Pose2 next = integrateExact(t.points[i].pose, toTwist(t.points[i].wheels, s.robot),
+                                        t.points[i + 1].t_s - t.points[i].t_s);
+      EXPECT_LT(positionDistance(next, t.points[i + 1].pose), 1e-4);
+      EXPECT_NEAR(t.points[i + 1].t_s - t.points[i].t_s, 0.1, 1e-9);
+    }
+    const auto plan = nlohmann::json::parse(slurp(out / "plan.json"));
+    EXPECT_EQ(plan["status"], "solved");
+    EXPECT_EQ(plan["seed"], 3);
+    EXPECT_EQ(plan["planner"], "rrt-goal-connect");
+    EXPECT_LE(plan["final_pos_err_m"].get<double>(), 0.001);
+    EXPECT_LE(plan["final_heading_err_deg"].get<double>(), 0.5);
+    EXPECT_NEAR(plan["path_length_m"].get<double>(), t.pathLength(s.robot), 1e-9);
+    for (const char* key : {"iterations", "tree_size", "planning_time_s", "phase_times_s"}) {
+      EXPECT_TRUE(plan.contains(key)) << key;
+    }
+  }
+}
+
+TEST_F(Cli, SameSeedGivesByteIdenticalTrajectoryFiles) {
+  for (const char* planner : {"rrt", "rrt-goal-connect"}) {
+    const std::string common =
+        "plan " + world("parallel.yaml") + " --seed 7 --planner " + planner + " --out ";
+    ASSERT_EQ(parksim(common + (dir_ / "a").string()).exit_code, 0);
+    ASSERT_EQ(parksim(common + (dir_ / "b").string()).exit_code, 0);
+    EXPECT_EQ(slurp(dir_ / "a" / "trajectory.csv"), slurp(dir_ / "b" / "trajectory.csv"));
+  }
+}
+
+TEST_F(Cli, UnsolvedPlanExitsNonZeroAndWritesNoTrajectory) {
+  const fs::path out = dir_ / "out";
+  const Run r = parksim("plan " + world("head_in.yaml") +
+                        " --max-iterations 0 --planner rrt --out " + out.string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("unsolved (iteration_limit)"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(out / "trajectory.csv"));
+  EXPECT_EQ(nlohmann::json::parse(slurp(out / "plan.json"))["status"], "iteration_limit");
+}
+
+TEST_F(Cli, MalformedWorldIsRefusedWithOneLineAndNoOutput) {
+  const fs::path bad = dir_ / "bad.yaml";
+  std::string text = slurp(world("head_in.yaml"));
+  const std::size_t at = text.find("start:");
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at, "bogus_key: 1\n");
+  std::ofstream(bad) << text;
+  const fs::path out = dir_ / "never";
+  const Run r = parksim("plan " + bad.string() + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+  EXPECT_NE(r.out.find(bad.string() + ":"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("bogus_key"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(Cli, MissingWorldFileAndBadOptionsAreRefused) {
+  const fs::path out = dir_ / "never";
+  Run r = parksim("plan " + (dir_ / "missing.yaml").string() + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("missing.yaml"), std::string::npos) << r.out;
+  r = parksim("plan " + world("head_in.yaml") + " --planner nope --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("unknown planner 'nope'"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(Cli, EveryCommandHasHelp) {
+  for (const char* cmd : {"", "plan", "run", "render", "bench"}) {
+    const Run r = parksim(std::string(cmd) + " --help");
+    EXPECT_EQ(r.exit_code, 0) << cmd;
+    EXPECT_NE(r.out.find("--help"), std::string::npos) << cmd;
+  }
+}
+
+}  // namespace
+}  // namespace parksim
