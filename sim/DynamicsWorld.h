@@ -1,0 +1,98 @@
+#pragma once
+// The dynamics world of one episode: ground, the scenario's obstacles and the ego robot in
+// Bullet (btMultiBodyDynamicsWorld). Static obstacles are fixed boxes; parked robots are boxes
+// with mass, so a collision pushes them (they rest asleep until touched: SimModelDef). The ego
+// robot is a btMultiBody: a chassis box that is exactly the planner's footprint, two driven sphere
+// wheels on velocity motors, and a frictionless sphere slider at the rear. Wheels and slider
+// collide with the ground only, the chassis with obstacles only, so the robot's footprint in
+// contact is the 80 x 85 mm rectangle.
+//
+// Bullet stays behind this header (pimpl): nothing that includes sim/ sees a Bullet type.
+
+#include <memory>
+#include <vector>
+
+#include "core/DiffDrive.h"
+#include "core/Pose2.h"
+#include "core/Scenario.h"
+
+namespace parksim {
+
+/// Parts of the model that the world file does not describe. Defaults are the model parksim
+/// was measured with (docs/simulation.md).
+struct SimModelDef {
+  /// Radius of the passive slider sphere at the rear, m.
+  double support_radius_m = 0.008;
+  /// Distance from the footprint's rear edge forward to the slider's contact point, m.
+  double support_inset_m = 0.010;
+  /// Mass of the slider, kg (a link needs mass; it adds to PhysicsDef::chassis_mass_kg).
+  double support_mass_kg = 0.002;
+  /// Height of the chassis box's bottom above the ground, m. The chassis never touches the
+  /// ground (it does not collide with it); this only decides which low obstacles it can hit.
+  double chassis_clearance_m = 0.002;
+  /// Parked robots start asleep and Bullet wakes them when something touches them; once
+  /// pushed they fall asleep again after 2 s slower than this, m/s (and rad/s for turning).
+  /// Resting boxes kept awake cost 4-5x the whole simulation and creep by solver noise.
+  /// The ego robot never sleeps.
+  double parked_sleep_speed_mps = 1e-3;
+  double parked_sleep_yaw_rate_radps = 1e-2;
+};
+
+/// The ego robot's measured state.
+struct RobotState {
+  /// Reference point (axle middle) projected on the ground, and heading of the chassis.
+  Pose2 pose;
+  /// Height of the axle middle above the ground, m (the wheel radius when resting).
+  double axle_height_m = 0.0;
+  /// Angle between the chassis' up axis and the world's, rad.
+  double tilt_rad = 0.0;
+  /// Forward speed of the reference point along the heading and yaw rate.
+  Twist twist;
+  /// Wheel joint speeds; positive drives forward.
+  WheelSpeeds wheels;
+  /// False if Bullet put the robot to sleep (it must never happen: sleeping is disabled).
+  bool awake = true;
+};
+
+class DynamicsWorld {
+ public:
+  /// Builds the world with the ego robot at `start` (not necessarily scenario.start). Copies
+  /// what it needs; keeps no reference to `scenario`. Throws Error on non-positive sizes,
+  /// masses or time step.
+  DynamicsWorld(const Scenario& scenario, const Pose2& start, const SimModelDef& model = {});
+  ~DynamicsWorld();
+
+  DynamicsWorld(const DynamicsWorld&) = delete;
+  DynamicsWorld& operator=(const DynamicsWorld&) = delete;
+
+  /// Velocity targets of the two wheel motors, held until changed. The motors reach them as
+  /// fast as the torque limit (PhysicsDef::max_wheel_torque_nm) and ground friction allow.
+  void setWheelTargets(const WheelSpeeds& targets);
+  const WheelSpeeds& wheelTargets() const;
+
+  /// Advances by one fixed step (PhysicsDef::time_step_s).
+  void step();
+
+  double timeStep() const;
+  /// Simulated time since construction: steps() * timeStep(), s.
+  double time() const;
+  long steps() const;
+
+  RobotState robot() const;
+
+  /// Planar pose (box centre, yaw) of every obstacle, in scenario order.
+  std::vector<Pose2> obstaclePoses() const;
+  /// Height of every obstacle's box centre above the ground, m, in scenario order.
+  std::vector<double> obstacleHeights() const;
+
+  /// Indices (scenario order, ascending) of the obstacles the chassis penetrates after the
+  /// last step: contact points at negative distance, so touching within Bullet's contact
+  /// threshold without overlap does not count.
+  const std::vector<int>& chassisContacts() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace parksim

@@ -1,0 +1,43 @@
+#pragma once
+// How an episode drives a plan: open loop (exactly the planned wheel speeds) or closed loop
+// (planned wheel speeds plus feedback on the pose error), and when the episode ends.
+
+#include <string>
+
+namespace parksim {
+
+enum class TrackingMode {
+  kOpen,    ///< the planned wheel speeds, held for each control period; no correction
+  kClosed,  ///< planned wheel speeds as feed-forward plus Kanayama feedback on the pose error
+};
+
+const char* toString(TrackingMode mode);
+/// Parses "open" or "closed"; throws Error otherwise.
+TrackingMode trackingModeFromString(const std::string& name);
+
+/// Gains of the Kanayama tracking law (sim/TrackingController.h). Errors are those of the plan's
+/// pose at the same time, expressed in the robot's frame.
+struct TrackingGains {
+  double k_x = 10.0;      ///< 1/s: forward speed per metre of along-track error
+  double k_y = 4000.0;    ///< 1/m^2: yaw rate per (m/s of reference speed x m of cross-track error)
+  double k_theta = 10.0;  ///< 1/s: yaw rate per radian of heading error (sin e_theta)
+};
+
+struct ExecutionDef {
+  TrackingMode tracking = TrackingMode::kClosed;
+  TrackingGains gains;
+  /// After the plan ends the robot is commanded to stop (open: zero wheel speeds; closed: hold
+  /// the plan's last pose, zero feed-forward). It is at rest once its reference point moves
+  /// slower than this, m/s ...
+  double rest_speed_mps = 2e-4;
+  /// ... and it turns slower than this, rad/s ...
+  double rest_yaw_rate_radps = 2e-3;
+  /// ... for this long without a break, s. The episode then ends.
+  double rest_hold_s = 0.25;
+  /// The episode ends at the latest this long after the plan's end, at rest or not, s.
+  double max_stop_time_s = 5.0;
+  /// executed.csv gets one row every this many simulation steps (1: every step).
+  int csv_stride_steps = 1;
+};
+
+}  // namespace parksim
