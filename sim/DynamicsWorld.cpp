@@ -10,7 +10,6 @@
 #include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
-#include <BulletCollision/CollisionShapes/btStaticPlaneShape.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
@@ -74,6 +73,7 @@ struct DynamicsWorld::Impl {
   PhysicsDef physics;
   SimModelDef model;
   std::vector<Obstacle> obstacles;
+  LotBounds lot;
 
   std::unique_ptr<btDefaultCollisionConfiguration> config;
   std::unique_ptr<btCollisionDispatcher> dispatcher;
@@ -144,10 +144,17 @@ struct DynamicsWorld::Impl {
     world->setGravity(btVector3(0, 0, btScalar(-physics.gravity_mps2)));
     world->getSolverInfo().m_numIterations = physics.solver_iterations;
 
-    auto* ground_shape = new btStaticPlaneShape(btVector3(0, 0, 1), 0);
-    shapes.emplace_back(ground_shape);
-    addBody(ground_shape, 0.0, planarTransform(0, 0, 0, 0), physics.ground_friction, kGroundGroup,
-            kGroundMask, kNotObstacle);
+    // The ground is a slab, not a btStaticPlaneShape: plane contacts are made by perturbing the
+    // box, which nudged every resting parked robot by 0.03 mm on its first awake step; the
+    // box-box detector gives exact corner contacts. Sized to the lot plus a metre, not larger,
+    // so that float rounding in the detector stays near 1e-7 m.
+    const double ground_half_thickness = 0.05;
+    btBoxShape* ground_shape = box(0.5 * (lot.x_max_m - lot.x_min_m) + 1.0,
+                                   0.5 * (lot.y_max_m - lot.y_min_m) + 1.0, ground_half_thickness);
+    addBody(ground_shape, 0.0,
+            planarTransform(0.5 * (lot.x_min_m + lot.x_max_m), 0.5 * (lot.y_min_m + lot.y_max_m),
+                            -ground_half_thickness, 0),
+            physics.ground_friction, kGroundGroup, kGroundMask, kNotObstacle);
 
     for (std::size_t i = 0; i < obstacles.size(); ++i) {
       const Obstacle& o = obstacles[i];
@@ -301,6 +308,7 @@ DynamicsWorld::DynamicsWorld(const Scenario& scenario, const Pose2& start, const
   impl_->physics = p;
   impl_->model = model;
   impl_->obstacles = scenario.obstacles;
+  impl_->lot = scenario.lot;
   impl_->buildWorld();
   impl_->buildRobot(start);
 }

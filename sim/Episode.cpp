@@ -31,6 +31,7 @@ void validate(const ExecutionDef& def) {
   if (!(def.rest_yaw_rate_radps > 0.0)) fail("rest_yaw_rate_radps must be positive");
   if (!(def.rest_hold_s >= 0.0)) fail("rest_hold_s must not be negative");
   if (!(def.max_stop_time_s >= 0.0)) fail("max_stop_time_s must not be negative");
+  if (!(def.contact_merge_s >= 0.0)) fail("contact_merge_s must not be negative");
   if (def.csv_stride_steps < 1) fail("csv_stride_steps must be at least 1");
 }
 
@@ -46,7 +47,9 @@ struct Episode::Impl {
         t0(reference.startTime()),
         plan_steps(stepsFor(reference.endTime() - reference.startTime(), dt)),
         limit_steps(plan_steps + stepsFor(d.max_stop_time_s, dt)),
-        rest_steps(std::max(1L, stepsFor(d.rest_hold_s, dt))) {
+        rest_steps(std::max(1L, stepsFor(d.rest_hold_s, dt))),
+        merge_steps(stepsFor(d.contact_merge_s, dt)),
+        last_contact_step(s.obstacles.size(), -1) {
     validate(def);
     initial_obstacles = world.obstaclePoses();
     for (std::size_t i = 0; i < s.obstacles.size(); ++i) {
@@ -67,6 +70,7 @@ struct Episode::Impl {
   long plan_steps;
   long limit_steps;
   long rest_steps;
+  long merge_steps;
 
   std::vector<Pose2> initial_obstacles;
   std::vector<int> parked_index;
@@ -74,7 +78,7 @@ struct Episode::Impl {
 
   std::vector<ExecutedRow> rows;
   ExecutedRow current;
-  std::vector<int> previous_contacts;
+  std::vector<long> last_contact_step;  // per obstacle; -1: never touched
   std::vector<ContactEvent> contact_events;
   double sum_sq_pos = 0.0;
   double sum_sq_heading = 0.0;
@@ -107,14 +111,14 @@ struct Episode::Impl {
     sum_sq_heading += row.heading_err_rad * row.heading_err_rad;
     ++measured;
 
-    const std::vector<int>& now = world.chassisContacts();
-    for (int index : now) {
-      if (!std::binary_search(previous_contacts.begin(), previous_contacts.end(), index)) {
+    for (int index : world.chassisContacts()) {
+      long& last = last_contact_step[static_cast<std::size_t>(index)];
+      if (last < 0 || k - last > merge_steps) {
         contact_events.push_back(
             {row.t_s, index, scenario.obstacles[static_cast<std::size_t>(index)].name});
       }
+      last = k;
     }
-    previous_contacts = now;
 
     if (!parked_index.empty()) {
       const std::vector<Pose2> poses = world.obstaclePoses();

@@ -47,7 +47,8 @@ struct EpisodeSample {
 /// Called at a fixed rate of simulated time (see runEpisode).
 using EpisodeObserver = std::function<void(const EpisodeSample&)>;
 
-/// The chassis starting to penetrate an obstacle it did not penetrate the step before.
+/// The chassis starting to penetrate an obstacle it had not penetrated for at least
+/// ExecutionDef::contact_merge_s.
 struct ContactEvent {
   double t_s = 0.0;
   int obstacle_index = -1;  ///< scenario order

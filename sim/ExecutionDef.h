@@ -36,6 +36,9 @@ struct ExecutionDef {
   double rest_hold_s = 0.25;
   /// The episode ends at the latest this long after the plan's end, at rest or not, s.
   double max_stop_time_s = 5.0;
+  /// A body touching the chassis again within this time of its last touch continues the same
+  /// contact event (contact points flicker while the robot pushes something), s.
+  double contact_merge_s = 0.1;
   /// executed.csv gets one row every this many simulation steps (1: every step).
   int csv_stride_steps = 1;
 };

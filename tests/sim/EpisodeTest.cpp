@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 
 #include "core/Angle.h"
+#include "core/Error.h"
 #include "sim/EpisodeFiles.h"
+#include "sim/TrackingTolerance.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {
@@ -61,6 +63,106 @@ TEST(Episode, OpenLoopErrorsAreBounded) {
   const EpisodeResult r = runEpisode(s, plan, def);
   print("open", r.metrics);
   EXPECT_LT(r.metrics.max_pos_err_m, 0.010);
+}
+
+TEST(Episode, DrivingThroughAParkedRobotIsAContactWithItAndPushesIt) {
+  Scenario s = testing::emptyLot({0.5, 0.5, 0.0});
+  testing::addWall(s, "wall_far", 0.2, 0.9, 0.3, 1.0);
+  // Straight ahead: the parked robot's rear edge is 50 mm in front of the ego's front edge.
+  testing::addParkedRobot(s, "robot_ahead", {0.5 + 0.010 + 0.050 + 0.070, 0.5, 0.0});
+  const Trajectory plan = testing::planFromSegments(
+      s.start, testing::rampedSegments({5.0, 5.0}, 1.0, s.robot), s.robot);
+  const EpisodeResult r = runEpisode(s, plan);
+  print("through", r.metrics);
+  // Pushed ahead, the box slides away and is caught up with again: a few events, all with it.
+  ASSERT_GE(r.metrics.contacts, 1);
+  EXPECT_EQ(r.metrics.first_contact_body, "robot_ahead");
+  for (const ContactEvent& e : r.metrics.contact_events) EXPECT_EQ(e.body, "robot_ahead");
+  EXPECT_EQ(r.metrics.contact_events.front().obstacle_index, 1);
+  // 50 mm at 0.1 m/s after a 0.2 s ramp: first contact between 0.5 and 0.7 s.
+  EXPECT_GT(r.metrics.first_contact_t_s, 0.5);
+  EXPECT_LT(r.metrics.first_contact_t_s, 0.7);
+  ASSERT_EQ(r.metrics.parked.size(), 1u);
+  EXPECT_EQ(r.metrics.parked[0].name, "robot_ahead");
+  EXPECT_GT(r.metrics.parked[0].max_m, 0.01);
+  EXPECT_FALSE(checkTracking(TrackingTolerance{}, r.metrics).empty());
+}
+
+TEST(Episode, DrivingIntoAWallIsAContactWithIt) {
+  Scenario s = testing::emptyLot({0.5, 0.5, 0.0});
+  testing::addWall(s, "wall_ahead", 0.54, 0.3, 0.64, 0.7);
+  const Trajectory plan = testing::planFromSegments(
+      s.start, testing::rampedSegments({4.0, 4.0}, 0.5, s.robot), s.robot);
+  const EpisodeResult r = runEpisode(s, plan);
+  print("wall", r.metrics);
+  ASSERT_GE(r.metrics.contacts, 1);
+  EXPECT_EQ(r.metrics.first_contact_body, "wall_ahead");
+  EXPECT_GT(r.metrics.max_pos_err_m, 0.005);  // the wall stopped it
+}
+
+TEST(Episode, SameInputsGiveBitIdenticalExecutedCsv) {
+  Scenario s = testing::emptyLot({0.5, 0.5, 0.0});
+  testing::addParkedRobot(s, "robot_near", {0.9, 0.62, 0.0});
+  const Trajectory plan = manoeuvre(s);
+  for (TrackingMode mode : {TrackingMode::kClosed, TrackingMode::kOpen}) {
+    ExecutionDef def;
+    def.tracking = mode;
+    const std::string first = executedCsv(runEpisode(s, plan, def).rows);
+    const std::string second = executedCsv(runEpisode(s, plan, def).rows);
+    EXPECT_GT(first.size(), 1000u);
+    EXPECT_TRUE(first == second) << toString(mode);
+  }
+}
+
+TEST(Episode, RowsAreTheSimulationRateWithTheExactPlanAsReference) {
+  Scenario s = testing::emptyLot({0.5, 0.5, 0.0});
+  const Trajectory plan = manoeuvre(s);
+  const EpisodeResult r = runEpisode(s, plan);
+  const double dt = s.physics.time_step_s;
+  ASSERT_EQ(static_cast<long>(r.rows.size()), r.metrics.steps + 1);
+  for (std::size_t k = 0; k < r.rows.size(); ++k) {
+    ASSERT_EQ(r.rows[k].t_s, static_cast<double>(k) * dt);
+  }
+  // At every control period boundary the reference is the plan's point itself.
+  for (std::size_t i = 0; i < plan.points.size(); ++i) {
+    const auto k = static_cast<std::size_t>(std::lround(plan.points[i].t_s / dt));
+    const Pose2& ref = r.rows[k].reference;
+    EXPECT_NEAR(ref.x, plan.points[i].pose.x, 1e-12);
+    EXPECT_NEAR(ref.y, plan.points[i].pose.y, 1e-12);
+    EXPECT_NEAR(angleDiff(ref.theta, plan.points[i].pose.theta), 0.0, 1e-12);
+  }
+  // Open loop, the commands are exactly the plan's wheel speeds.
+  ExecutionDef def;
+  def.tracking = TrackingMode::kOpen;
+  const EpisodeResult open = runEpisode(s, plan, def);
+  for (std::size_t k = 1; k < open.rows.size(); ++k) {
+    const double t_mid = open.rows[k].t_s - 0.5 * dt;
+    const auto i = static_cast<std::size_t>(t_mid / 0.1);
+    const WheelSpeeds expected = i + 1 < plan.points.size() ? plan.points[i].wheels : WheelSpeeds{};
+    ASSERT_EQ(open.rows[k].wheels_cmd, expected) << "row " << k;
+  }
+}
+
+TEST(Episode, ObserverGetsSamplesAtTheRequestedRate) {
+  Scenario s = testing::emptyLot({0.5, 0.5, 0.0});
+  testing::addParkedRobot(s, "robot_side", {0.5, 0.8, 0.0});
+  const Trajectory plan = manoeuvre(s);
+  std::vector<EpisodeSample> samples;
+  const EpisodeResult r = runEpisode(
+      s, plan, {}, [&](const EpisodeSample& x) { samples.push_back(x); }, 1.0 / 30.0);
+  ASSERT_GE(samples.size(), 3u);
+  EXPECT_EQ(samples.front().tracking.t_s, 0.0);
+  EXPECT_EQ(samples.back().tracking.t_s, r.metrics.sim_time_s);
+  for (std::size_t i = 1; i + 1 < samples.size(); ++i) {
+    EXPECT_NEAR(samples[i].tracking.t_s, static_cast<double>(i) / 30.0, 1e-9);
+    ASSERT_EQ(samples[i].obstacles.size(), 1u);
+    EXPECT_NEAR(samples[i].obstacles[0].x, s.obstacles[0].box.center.x(), 1e-6);
+  }
+}
+
+TEST(Episode, RejectsAnEmptyPlan) {
+  const Scenario s = testing::emptyLot();
+  EXPECT_THROW(Episode(s, Trajectory{}), Error);
 }
 
 }  // namespace
