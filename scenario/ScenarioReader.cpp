@@ -20,7 +20,15 @@ namespace {
 
 constexpr std::string_view kFormat = "parksim-world/1";
 
-std::string inQuotes(std::string_view s) { return "\"" + std::string(s) + "\""; }
+// Appends instead of `"\"" + std::string(s)`, which trips GCC 12's false -Wrestrict at -O2.
+std::string inQuotes(std::string_view s) {
+  std::string out;
+  out.reserve(s.size() + 2);
+  out += '"';
+  out += s;
+  out += '"';
+  return out;
+}
 
 Pose2 readPose(const YamlField& field) {
   const std::vector<double> v = field.numbers(3, "[x, y, yaw_deg]");
