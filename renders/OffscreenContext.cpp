@@ -1,0 +1,15 @@
+#include "renders/OffscreenContext.h"
+
+#include "core/Error.h"
+#include "renders/OsMesaContext.h"
+
+namespace parksim {
+
+std::unique_ptr<OffscreenContext> createOffscreenContext(const ContextDef& def) {
+  switch (def.backend) {
+    case ContextBackend::kOsMesa: return detail::createOsMesaContext(def);
+  }
+  throw Error("offscreen context: unknown backend");
+}
+
+}  // namespace parksim

@@ -1,0 +1,623 @@
+#include "renders/Renderer.h"
+
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "core/Error.h"
+
+namespace parksim {
+
+namespace {
+
+struct MeshVertex {
+  float pos[3];
+  float normal[3];
+  std::uint8_t color[4];
+};
+
+// Lines and text: positions already in clip space, so lines keep a width in pixels in every view.
+struct OverlayVertex {
+  float pos[4];
+  float uv[2];  // atlas coordinates; negative: solid colour
+  std::uint8_t color[4];
+};
+
+constexpr const char* kMeshVs = R"(#version 330 core
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec4 a_color;
+uniform mat4 u_view_proj;
+out vec3 v_normal;
+out vec4 v_color;
+void main() {
+  gl_Position = u_view_proj * vec4(a_pos, 1.0);
+  v_normal = a_normal;
+  v_color = a_color;
+}
+)";
+
+// Lit: the light is scaled so that an upward face gets exactly its colour (factor 1).
+constexpr const char* kMeshFs = R"(#version 330 core
+in vec3 v_normal;
+in vec4 v_color;
+uniform int u_lit;
+uniform vec3 u_light;
+uniform float u_ambient;
+uniform float u_up_factor;
+out vec4 o_color;
+void main() {
+  vec3 c = v_color.rgb;
+  if (u_lit != 0) {
+    float d = max(dot(normalize(v_normal), u_light), 0.0);
+    c *= min((u_ambient + (1.0 - u_ambient) * d) / u_up_factor, 1.0);
+  }
+  o_color = vec4(c, v_color.a);
+}
+)";
+
+constexpr const char* kOverlayVs = R"(#version 330 core
+layout(location = 0) in vec4 a_pos;
+layout(location = 1) in vec2 a_uv;
+layout(location = 2) in vec4 a_color;
+out vec2 v_uv;
+out vec4 v_color;
+void main() {
+  // Rows are read back top first: flip y so the image needs no flip on the CPU.
+  gl_Position = vec4(a_pos.x, -a_pos.y, a_pos.z, a_pos.w);
+  v_uv = a_uv;
+  v_color = a_color;
+}
+)";
+
+constexpr const char* kOverlayFs = R"(#version 330 core
+in vec2 v_uv;
+in vec4 v_color;
+uniform sampler2D u_atlas;
+out vec4 o_color;
+void main() {
+  float coverage = v_uv.x < 0.0 ? 1.0 : texture(u_atlas, v_uv).r;
+  o_color = vec4(v_color.rgb, v_color.a * coverage);
+}
+)";
+
+GLuint compileShader(GLenum type, const char* source) {
+  const GLuint shader = glCreateShader(type);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    char log[1024] = {};
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    glDeleteShader(shader);
+    throw Error(std::string("renderer: shader does not compile: ") + log);
+  }
+  return shader;
+}
+
+GLuint linkProgram(const char* vs, const char* fs) {
+  const GLuint v = compileShader(GL_VERTEX_SHADER, vs);
+  const GLuint f = compileShader(GL_FRAGMENT_SHADER, fs);
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, v);
+  glAttachShader(program, f);
+  glLinkProgram(program);
+  glDeleteShader(v);
+  glDeleteShader(f);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    char log[1024] = {};
+    glGetProgramInfoLog(program, sizeof log, nullptr, log);
+    glDeleteProgram(program);
+    throw Error(std::string("renderer: shader program does not link: ") + log);
+  }
+  return program;
+}
+
+void checkGl(const char* where) {
+  const GLenum err = glGetError();
+  if (err != GL_NO_ERROR) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "renderer: OpenGL error 0x%04x in %s", err, where);
+    throw Error(buf);
+  }
+}
+
+void setColor(std::uint8_t* dst, const Rgba8& c) {
+  dst[0] = c.r;
+  dst[1] = c.g;
+  dst[2] = c.b;
+  dst[3] = c.a;
+}
+
+}  // namespace
+
+struct Renderer::Impl {
+  RenderDef def;
+  std::unique_ptr<OffscreenContext> context;
+  std::vector<unsigned char> font_data;
+  std::map<int, std::pair<FontAtlas, GLuint>> fonts;  // by pixel height
+
+  int width = 0;
+  int height = 0;
+  int samples = 1;
+  GLint max_samples = 1;
+  GLuint msaa_fbo = 0, msaa_color = 0, msaa_depth = 0;
+  GLuint resolve_fbo = 0, resolve_color = 0, resolve_depth = 0;
+  GLuint mesh_program = 0, overlay_program = 0;
+  GLint u_view_proj = -1, u_lit = -1, u_light = -1, u_ambient = -1, u_up_factor = -1;
+  GLint u_atlas = -1;
+  GLuint mesh_vao = 0, mesh_vbo = 0, overlay_vao = 0, overlay_vbo = 0;
+
+  // Scratch, kept between frames so steady-state drawing does not allocate.
+  std::vector<MeshVertex> mesh;
+  std::vector<OverlayVertex> lines;
+  std::vector<OverlayVertex> text;
+  std::vector<GlyphQuad> glyphs;
+  std::vector<Eigen::Vector4d> clip;
+
+  void init();
+  void allocateFramebuffers();
+  void releaseFramebuffers();
+  void ensureCurrent() {
+    if (!context->isCurrent()) context->makeCurrent();
+  }
+  std::pair<FontAtlas, GLuint>* font(float size_px);
+
+  void addTriangle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                   const Eigen::Vector3d& n, const Rgba8& color);
+  void addBox(const SceneBox& box);
+  void addPolygon(const std::vector<Eigen::Vector2d>& pts, double z, const Rgba8& color);
+  void addSegment(Eigen::Vector4d c0, Eigen::Vector4d c1, float width_px, const Rgba8& color);
+  void addPolyline(const ScenePolyline& line, const Eigen::Matrix4d& vp);
+  void addScreenQuad(float x0, float y0, float x1, float y1, const float uv[4], const Rgba8& c,
+                     std::vector<OverlayVertex>& out) const;
+  void addText(const SceneText& text, const Camera& cam,
+               std::map<int, std::vector<OverlayVertex>>&);
+
+  void draw(const Scene& scene, const Camera& cam);
+};
+
+void Renderer::Impl::init() {
+  const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  if (version == nullptr) throw Error("renderer: the GL context does not answer");
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  mesh_program = linkProgram(kMeshVs, kMeshFs);
+  overlay_program = linkProgram(kOverlayVs, kOverlayFs);
+  u_view_proj = glGetUniformLocation(mesh_program, "u_view_proj");
+  u_lit = glGetUniformLocation(mesh_program, "u_lit");
+  u_light = glGetUniformLocation(mesh_program, "u_light");
+  u_ambient = glGetUniformLocation(mesh_program, "u_ambient");
+  u_up_factor = glGetUniformLocation(mesh_program, "u_up_factor");
+  u_atlas = glGetUniformLocation(overlay_program, "u_atlas");
+
+  glGenVertexArrays(1, &mesh_vao);
+  glGenBuffers(1, &mesh_vbo);
+  glBindVertexArray(mesh_vao);
+  glBindBuffer(GL_ARRAY_BUFFER, mesh_vbo);
+  const auto mesh_stride = static_cast<GLsizei>(sizeof(MeshVertex));
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, mesh_stride,
+                        reinterpret_cast<void*>(offsetof(MeshVertex, pos)));
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, mesh_stride,
+                        reinterpret_cast<void*>(offsetof(MeshVertex, normal)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, mesh_stride,
+                        reinterpret_cast<void*>(offsetof(MeshVertex, color)));
+
+  glGenVertexArrays(1, &overlay_vao);
+  glGenBuffers(1, &overlay_vbo);
+  glBindVertexArray(overlay_vao);
+  glBindBuffer(GL_ARRAY_BUFFER, overlay_vbo);
+  const auto overlay_stride = static_cast<GLsizei>(sizeof(OverlayVertex));
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, overlay_stride,
+                        reinterpret_cast<void*>(offsetof(OverlayVertex, pos)));
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, overlay_stride,
+                        reinterpret_cast<void*>(offsetof(OverlayVertex, uv)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, overlay_stride,
+                        reinterpret_cast<void*>(offsetof(OverlayVertex, color)));
+  glBindVertexArray(0);
+
+  glUseProgram(overlay_program);
+  glUniform1i(u_atlas, 0);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  checkGl("setup");
+}
+
+void Renderer::Impl::releaseFramebuffers() {
+  const GLuint fbos[] = {msaa_fbo, resolve_fbo};
+  const GLuint rbs[] = {msaa_color, msaa_depth, resolve_color, resolve_depth};
+  glDeleteFramebuffers(2, fbos);
+  glDeleteRenderbuffers(4, rbs);
+  msaa_fbo = msaa_color = msaa_depth = resolve_fbo = resolve_color = resolve_depth = 0;
+}
+
+void Renderer::Impl::allocateFramebuffers() {
+  releaseFramebuffers();
+  auto storage = [&](GLuint& rb, GLenum format, int n) {
+    glGenRenderbuffers(1, &rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb);
+    if (n > 1) {
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, n, format, width, height);
+    } else {
+      glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+    }
+  };
+  auto complete = [](const char* which) {
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      throw Error(std::string("renderer: ") + which + " framebuffer is incomplete");
+    }
+  };
+  samples = std::clamp(def.msaa_samples, 1, std::max(1, static_cast<int>(max_samples)));
+  glGenFramebuffers(1, &resolve_fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo);
+  storage(resolve_color, GL_RGBA8, 1);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_color);
+  if (samples == 1) {
+    storage(resolve_depth, GL_DEPTH_COMPONENT24, 1);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, resolve_depth);
+  }
+  complete("resolve");
+  if (samples > 1) {
+    glGenFramebuffers(1, &msaa_fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo);
+    storage(msaa_color, GL_RGBA8, samples);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color);
+    storage(msaa_depth, GL_DEPTH_COMPONENT24, samples);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaa_depth);
+    complete("multisample");
+  }
+  checkGl("framebuffer allocation");
+}
+
+std::pair<FontAtlas, GLuint>* Renderer::Impl::font(float size_px) {
+  if (font_data.empty()) return nullptr;
+  const int key = std::max(4, static_cast<int>(std::lround(size_px)));
+  auto it = fonts.find(key);
+  if (it == fonts.end()) {
+    FontAtlas atlas(font_data, static_cast<float>(key));
+    GLuint tex = 0;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, atlas.atlasWidth(), atlas.atlasHeight(), 0, GL_RED,
+                 GL_UNSIGNED_BYTE, atlas.bitmap().data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    it = fonts.emplace(key, std::make_pair(std::move(atlas), tex)).first;
+  }
+  return &it->second;
+}
+
+void Renderer::Impl::addTriangle(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                 const Eigen::Vector3d& c, const Eigen::Vector3d& n,
+                                 const Rgba8& color) {
+  for (const Eigen::Vector3d* p : {&a, &b, &c}) {
+    MeshVertex v;
+    v.pos[0] = static_cast<float>(p->x());
+    v.pos[1] = static_cast<float>(p->y());
+    v.pos[2] = static_cast<float>(p->z());
+    v.normal[0] = static_cast<float>(n.x());
+    v.normal[1] = static_cast<float>(n.y());
+    v.normal[2] = static_cast<float>(n.z());
+    setColor(v.color, color);
+    mesh.push_back(v);
+  }
+}
+
+void Renderer::Impl::addBox(const SceneBox& box) {
+  const auto corners = box.footprint.corners();
+  const double z0 = box.z_min_m;
+  const double z1 = box.z_min_m + box.height_m;
+  auto lo = [&](int i) { return Eigen::Vector3d(corners[i].x(), corners[i].y(), z0); };
+  auto hi = [&](int i) { return Eigen::Vector3d(corners[i].x(), corners[i].y(), z1); };
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  addTriangle(hi(0), hi(1), hi(2), up, box.color);
+  addTriangle(hi(0), hi(2), hi(3), up, box.color);
+  // No bottom face: no camera looks at a box from below the ground.
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4;
+    const Eigen::Vector2d edge = corners[j] - corners[i];
+    const Eigen::Vector3d n = Eigen::Vector3d(edge.y(), -edge.x(), 0.0).normalized();
+    addTriangle(lo(i), lo(j), hi(j), n, box.color);
+    addTriangle(lo(i), hi(j), hi(i), n, box.color);
+  }
+}
+
+void Renderer::Impl::addPolygon(const std::vector<Eigen::Vector2d>& pts, double z,
+                                const Rgba8& color) {
+  for (std::size_t i = 1; i + 1 < pts.size(); ++i) {
+    addTriangle({pts[0].x(), pts[0].y(), z}, {pts[i].x(), pts[i].y(), z},
+                {pts[i + 1].x(), pts[i + 1].y(), z}, Eigen::Vector3d::UnitZ(), color);
+  }
+}
+
+void Renderer::Impl::addSegment(Eigen::Vector4d c0, Eigen::Vector4d c1, float width_px,
+                                const Rgba8& color) {
+  // Clip against the near plane (z >= -w) before dividing, so a perspective view can hold
+  // paths that pass behind the camera.
+  const double d0 = c0.z() + c0.w();
+  const double d1 = c1.z() + c1.w();
+  if (d0 < 0.0 && d1 < 0.0) return;
+  if (d0 < 0.0) c0 += (c1 - c0) * (d0 / (d0 - d1));
+  if (d1 < 0.0) c1 += (c0 - c1) * (d1 / (d1 - d0));
+  if (c0.w() <= 1e-12 || c1.w() <= 1e-12) return;
+  const Eigen::Vector2d half(0.5 * width, 0.5 * height);  // NDC to pixels
+  const Eigen::Vector2d p0 = c0.head<2>() / c0.w();
+  const Eigen::Vector2d p1 = c1.head<2>() / c1.w();
+  Eigen::Vector2d dir = (p1 - p0).cwiseProduct(half);
+  const double len = dir.norm();
+  dir = len > 1e-9 ? Eigen::Vector2d(dir / len) : Eigen::Vector2d(1.0, 0.0);
+  // Square caps: consecutive segments overlap at their joints, which leaves no notch at a bend.
+  const double hw = 0.5 * width_px;
+  const Eigen::Vector2d side = Eigen::Vector2d(-dir.y(), dir.x()) * hw;
+  const Eigen::Vector2d cap = dir * hw;
+  auto vertex = [&](const Eigen::Vector2d& p, const Eigen::Vector4d& c,
+                    const Eigen::Vector2d& off) {
+    const Eigen::Vector2d q = p + off.cwiseQuotient(half);
+    OverlayVertex v;
+    v.pos[0] = static_cast<float>(q.x() * c.w());
+    v.pos[1] = static_cast<float>(q.y() * c.w());
+    v.pos[2] = static_cast<float>(c.z());
+    v.pos[3] = static_cast<float>(c.w());
+    v.uv[0] = -1.0f;
+    v.uv[1] = -1.0f;
+    setColor(v.color, color);
+    return v;
+  };
+  const OverlayVertex a = vertex(p0, c0, -cap + side);
+  const OverlayVertex b = vertex(p0, c0, -cap - side);
+  const OverlayVertex c = vertex(p1, c1, cap + side);
+  const OverlayVertex d = vertex(p1, c1, cap - side);
+  lines.insert(lines.end(), {a, b, c, b, d, c});
+}
+
+void Renderer::Impl::addPolyline(const ScenePolyline& line, const Eigen::Matrix4d& vp) {
+  const std::size_t n = line.points.size();
+  if (n < 2) return;
+  clip.clear();
+  for (const Eigen::Vector3d& p : line.points) clip.push_back(vp * p.homogeneous());
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    addSegment(clip[i], clip[i + 1], line.width_px, line.color);
+  if (line.closed && n > 2) addSegment(clip[n - 1], clip[0], line.width_px, line.color);
+}
+
+void Renderer::Impl::addScreenQuad(float x0, float y0, float x1, float y1, const float uv[4],
+                                   const Rgba8& c, std::vector<OverlayVertex>& out) const {
+  auto vertex = [&](float x, float y, float u, float v) {
+    OverlayVertex o;
+    o.pos[0] = 2.0f * x / static_cast<float>(width) - 1.0f;
+    o.pos[1] = 1.0f - 2.0f * y / static_cast<float>(height);
+    o.pos[2] = 0.0f;
+    o.pos[3] = 1.0f;
+    o.uv[0] = u;
+    o.uv[1] = v;
+    setColor(o.color, c);
+    return o;
+  };
+  const OverlayVertex a = vertex(x0, y0, uv[0], uv[1]);
+  const OverlayVertex b = vertex(x1, y0, uv[2], uv[1]);
+  const OverlayVertex d = vertex(x0, y1, uv[0], uv[3]);
+  const OverlayVertex e = vertex(x1, y1, uv[2], uv[3]);
+  out.insert(out.end(), {a, b, d, b, e, d});
+}
+
+void Renderer::Impl::addText(const SceneText& t, const Camera& cam,
+                             std::map<int, std::vector<OverlayVertex>>& by_font) {
+  auto* entry = font(t.size_px);
+  if (entry == nullptr || t.text.empty()) return;
+  const FontAtlas& atlas = entry->first;
+  Eigen::Vector2d anchor = t.screen_px;
+  if (t.world) {
+    const auto p = cam.project(*t.world);
+    if (!p) return;
+    anchor = *p;
+  }
+  const float w = atlas.advance(t.text);
+  const float asc = atlas.ascent();
+  const float desc = atlas.descent();
+  float x = static_cast<float>(anchor.x());
+  if (t.h_align == HAlign::kCenter) x -= 0.5f * w;
+  if (t.h_align == HAlign::kRight) x -= w;
+  float top = static_cast<float>(anchor.y());
+  if (t.v_align == VAlign::kMiddle) top -= 0.5f * (asc + desc);
+  if (t.v_align == VAlign::kBottom) top -= asc + desc;
+  auto& out = by_font[std::max(4, static_cast<int>(std::lround(t.size_px)))];
+  if (t.background.a > 0) {
+    const float pad = 0.25f * atlas.pixelHeight();
+    const float solid[4] = {-1.0f, -1.0f, -1.0f, -1.0f};
+    addScreenQuad(x - pad, top - pad, x + w + pad, top + asc + desc + pad, solid, t.background,
+                  out);
+  }
+  glyphs.clear();
+  atlas.layout(t.text, x, top + asc, glyphs);
+  for (const GlyphQuad& g : glyphs) {
+    const float uv[4] = {g.s0, g.t0, g.s1, g.t1};
+    addScreenQuad(g.x0, g.y0, g.x1, g.y1, uv, t.color, out);
+  }
+}
+
+void Renderer::Impl::draw(const Scene& scene, const Camera& cam) {
+  mesh.clear();
+  lines.clear();
+  for (const ScenePolygon& p : scene.polygons) addPolygon(p.points, p.z_m, p.color);
+  for (const SceneBox& b : scene.boxes) addBox(b);
+  const Eigen::Matrix4d vp = cam.viewProjection();
+  for (const ScenePolyline& l : scene.lines) addPolyline(l, vp);
+  for (const SceneArrow& a : scene.arrows) {
+    const Eigen::Vector2d dir(std::cos(a.pose.theta), std::sin(a.pose.theta));
+    const Eigen::Vector2d tail(a.pose.x, a.pose.y);
+    const Eigen::Vector2d tip = tail + dir * a.length_m;
+    const double head = std::min(a.head_m, a.length_m);
+    const Eigen::Vector2d base = tip - dir * head;
+    const Eigen::Vector2d side = Eigen::Vector2d(-dir.y(), dir.x()) * (0.5 * head);
+    addSegment(vp * Eigen::Vector4d(tail.x(), tail.y(), a.z_m, 1.0),
+               vp * Eigen::Vector4d(base.x(), base.y(), a.z_m, 1.0), a.width_px, a.color);
+    addPolygon({tip, base + side, base - side}, a.z_m, a.color);
+  }
+  std::map<int, std::vector<OverlayVertex>> text_by_font;
+  for (const SceneText& t : scene.texts) addText(t, cam, text_by_font);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, samples > 1 ? msaa_fbo : resolve_fbo);
+  glViewport(0, 0, width, height);
+  glClearColor(scene.background.r / 255.0f, scene.background.g / 255.0f,
+               scene.background.b / 255.0f, 1.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_TRUE);
+  if (samples > 1) glEnable(GL_MULTISAMPLE);
+
+  if (!mesh.empty()) {
+    // Flipping y in clip space makes row 0 of the framebuffer the image's top row.
+    Eigen::Matrix4f flip = Eigen::Matrix4f::Identity();
+    flip(1, 1) = -1.0f;
+    const Eigen::Matrix4f m = flip * vp.cast<float>();
+    const Eigen::Vector3d light = def.light_direction.normalized();
+    const double ambient = std::clamp(def.ambient, 0.0, 1.0);
+    const double up = ambient + (1.0 - ambient) * std::max(light.z(), 0.0);
+    glUseProgram(mesh_program);
+    glUniformMatrix4fv(u_view_proj, 1, GL_FALSE, m.data());
+    glUniform1i(u_lit, cam.perspective ? 1 : 0);
+    glUniform3f(u_light, static_cast<float>(light.x()), static_cast<float>(light.y()),
+                static_cast<float>(light.z()));
+    glUniform1f(u_ambient, static_cast<float>(ambient));
+    glUniform1f(u_up_factor, static_cast<float>(std::max(up, 1e-3)));
+    glBindVertexArray(mesh_vao);
+    glBindBuffer(GL_ARRAY_BUFFER, mesh_vbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.size() * sizeof(MeshVertex)),
+                 mesh.data(), GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(mesh.size()));
+  }
+
+  glUseProgram(overlay_program);
+  glBindVertexArray(overlay_vao);
+  glBindBuffer(GL_ARRAY_BUFFER, overlay_vbo);
+  if (!lines.empty()) {
+    // Lines are depth-tested (boxes hide what lies under them) but write no depth, so crossing
+    // lines simply paint in list order.
+    glDepthMask(GL_FALSE);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lines.size() * sizeof(OverlayVertex)),
+                 lines.data(), GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(lines.size()));
+  }
+  if (!text_by_font.empty()) {
+    glDisable(GL_DEPTH_TEST);
+    glActiveTexture(GL_TEXTURE0);
+    for (auto& [size, verts] : text_by_font) {
+      glBindTexture(GL_TEXTURE_2D, fonts.at(size).second);
+      glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(verts.size() * sizeof(OverlayVertex)),
+                   verts.data(), GL_STREAM_DRAW);
+      glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(verts.size()));
+    }
+  }
+  glDepthMask(GL_TRUE);
+  glBindVertexArray(0);
+
+  if (samples > 1) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo);
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo);
+}
+
+Renderer::Renderer(const RenderDef& def) : Renderer(def, createOffscreenContext(def.context)) {}
+
+Renderer::Renderer(const RenderDef& def, std::unique_ptr<OffscreenContext> context)
+    : impl_(std::make_unique<Impl>()) {
+  if (!context) throw Error("renderer: no GL context");
+  if (def.width_px <= 0 || def.height_px <= 0) {
+    throw Error("renderer: image size must be positive, got " + std::to_string(def.width_px) + "x" +
+                std::to_string(def.height_px));
+  }
+  impl_->def = def;
+  impl_->context = std::move(context);
+  if (!def.font_path.empty()) impl_->font_data = readFontFile(def.font_path);
+  impl_->ensureCurrent();
+  impl_->init();
+  impl_->width = def.width_px;
+  impl_->height = def.height_px;
+  impl_->allocateFramebuffers();
+}
+
+Renderer::~Renderer() {
+  if (!impl_ || !impl_->context) return;
+  impl_->ensureCurrent();
+  impl_->releaseFramebuffers();
+  for (auto& [size, entry] : impl_->fonts) glDeleteTextures(1, &entry.second);
+  glDeleteBuffers(1, &impl_->mesh_vbo);
+  glDeleteBuffers(1, &impl_->overlay_vbo);
+  glDeleteVertexArrays(1, &impl_->mesh_vao);
+  glDeleteVertexArrays(1, &impl_->overlay_vao);
+  glDeleteProgram(impl_->mesh_program);
+  glDeleteProgram(impl_->overlay_program);
+}
+
+int Renderer::width() const { return impl_->width; }
+int Renderer::height() const { return impl_->height; }
+int Renderer::samples() const { return impl_->samples; }
+std::string Renderer::description() const { return impl_->context->description(); }
+
+void Renderer::setSize(int width_px, int height_px) {
+  if (width_px <= 0 || height_px <= 0) {
+    throw Error("renderer: image size must be positive, got " + std::to_string(width_px) + "x" +
+                std::to_string(height_px));
+  }
+  if (width_px == impl_->width && height_px == impl_->height) return;
+  impl_->ensureCurrent();
+  impl_->width = width_px;
+  impl_->height = height_px;
+  impl_->allocateFramebuffers();
+}
+
+Camera Renderer::camera(const Scene& scene, const CameraDef& camera_def) const {
+  return makeCamera(camera_def, scene, impl_->width, impl_->height);
+}
+
+void Renderer::render(const Scene& scene, const CameraDef& camera_def, RgbImage& out) {
+  if (out.width != impl_->width || out.height != impl_->height) {
+    out.resize(impl_->width, impl_->height);
+  }
+  renderInto(scene, camera_def, out, 0);
+}
+
+void Renderer::renderInto(const Scene& scene, const CameraDef& camera_def, RgbImage& out,
+                          int x_offset_px) {
+  if (out.height != impl_->height || x_offset_px < 0 || x_offset_px + impl_->width > out.width ||
+      out.pixels.size() != static_cast<std::size_t>(out.width) * out.height * 3) {
+    throw Error("renderer: a " + std::to_string(impl_->width) + "x" +
+                std::to_string(impl_->height) + " view does not fit at column " +
+                std::to_string(x_offset_px) + " of a " + std::to_string(out.width) + "x" +
+                std::to_string(out.height) + " image");
+  }
+  impl_->ensureCurrent();
+  impl_->draw(scene, camera(scene, camera_def));
+  glPixelStorei(GL_PACK_ROW_LENGTH, out.width);
+  glReadPixels(0, 0, impl_->width, impl_->height, GL_RGB, GL_UNSIGNED_BYTE,
+               out.pixels.data() + static_cast<std::size_t>(x_offset_px) * 3);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  checkGl("render");
+}
+
+}  // namespace parksim

@@ -1,0 +1,55 @@
+#pragma once
+// Shared by the render tests: a small lot built in code and per-test output directories.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "core/Angle.h"
+#include "core/Geometry.h"
+#include "core/Scenario.h"
+
+namespace parksim::rendertest {
+
+inline Obstacle box(std::string name, ObstacleKind kind, double cx, double cy, double sx, double sy,
+                    double yaw_deg = 0.0, double height = 0.1) {
+  Obstacle o;
+  o.name = std::move(name);
+  o.kind = kind;
+  o.box.center = {cx, cy};
+  o.box.half_extents = {0.5 * sx, 0.5 * sy};
+  o.box.yaw = degToRad(yaw_deg);
+  o.height_m = height;
+  return o;
+}
+
+/// The study's lot in outline: a wall with a gap, an island, two parked robots.
+inline Scenario testLot() {
+  Scenario s;
+  s.name = "test_lot";
+  s.obstacles = {
+      box("wall_1", ObstacleKind::kWall, 0.55, 1.0, 0.1, 0.4),
+      box("wall_2", ObstacleKind::kWall, 0.55, 0.2, 0.1, 0.4),
+      box("island", ObstacleKind::kIsland, 1.2, 0.65, 0.8, 0.1),
+  };
+  Obstacle parked;
+  parked.name = "robot_5";
+  parked.kind = ObstacleKind::kParkedRobot;
+  parked.box = footprintAt(s.robot, {1.3425, 0.01, degToRad(-90.0)});
+  parked.height_m = s.robot.height_m;
+  s.obstacles.push_back(parked);
+  s.start = {0.1, 0.1, degToRad(90.0)};
+  s.goal.pose = {1.5, 0.04, degToRad(-90.0)};
+  return s;
+}
+
+/// A fresh, empty directory for one test's files, under the build tree.
+inline std::string outputDir(const std::string& name) {
+  const std::string dir = std::string(PARKSIM_BINARY_DIR) + "/test-output/renders/" + name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace parksim::rendertest

@@ -1,0 +1,204 @@
+#include "renders/Renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "RenderTestUtil.h"
+#include "core/Error.h"
+#include "renders/PngEncoder.h"
+#include "renders/SceneBuilder.h"
+
+namespace parksim {
+namespace {
+
+using rendertest::testLot;
+
+// One renderer for the whole suite: context creation costs milliseconds, and reusing it is
+// what the recorder does too.
+class RendererTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    RenderDef def;
+    def.width_px = 640;
+    def.height_px = 480;
+    renderer_ = new Renderer(def);
+  }
+  static void TearDownTestSuite() {
+    delete renderer_;
+    renderer_ = nullptr;
+  }
+  void SetUp() override { renderer_->setSize(640, 480); }
+
+  static Renderer* renderer_;
+  Scenario lot_ = testLot();
+  SceneStyle style_;
+};
+
+Renderer* RendererTest::renderer_ = nullptr;
+
+Eigen::Vector2i pixelOf(const Camera& cam, const Eigen::Vector3d& world) {
+  const auto p = cam.project(world);
+  EXPECT_TRUE(p.has_value());
+  return {static_cast<int>(std::floor(p->x())), static_cast<int>(std::floor(p->y()))};
+}
+
+// Every pixel within `radius` of `center` has exactly `color`.
+void expectPatch(const RgbImage& img, const Eigen::Vector2i& center, int radius, Rgba8 color,
+                 int tolerance = 0) {
+  for (int dy = -radius; dy <= radius; ++dy) {
+    for (int dx = -radius; dx <= radius; ++dx) {
+      const Rgba8 c = img.at(center.x() + dx, center.y() + dy);
+      EXPECT_NEAR(c.r, color.r, tolerance) << "at " << center.x() + dx << "," << center.y() + dy;
+      EXPECT_NEAR(c.g, color.g, tolerance) << "at " << center.x() + dx << "," << center.y() + dy;
+      EXPECT_NEAR(c.b, color.b, tolerance) << "at " << center.x() + dx << "," << center.y() + dy;
+    }
+  }
+}
+
+TEST_F(RendererTest, ImageHasTheRequestedSize) {
+  RgbImage img;
+  const Scene scene = buildLotScene(lot_, style_);
+  renderer_->render(scene, {}, img);
+  EXPECT_EQ(img.width, 640);
+  EXPECT_EQ(img.height, 480);
+  EXPECT_EQ(img.pixels.size(), 640u * 480u * 3u);
+  renderer_->setSize(321, 123);
+  renderer_->render(scene, {}, img);
+  EXPECT_EQ(img.width, 321);
+  EXPECT_EQ(img.height, 123);
+  EXPECT_EQ(img.pixels.size(), 321u * 123u * 3u);
+}
+
+TEST_F(RendererTest, UsesMultisamplingAndDescribesTheContext) {
+  EXPECT_EQ(renderer_->samples(), 4);
+  EXPECT_NE(renderer_->description().find("OSMesa"), std::string::npos);
+}
+
+TEST_F(RendererTest, TopViewShowsRobotAndObstaclesInTheirColours) {
+  const Pose2 pose{0.3, 0.5, degToRad(30.0)};
+  ViewState view;
+  view.robot = pose;
+  const Scene scene = buildScene(lot_, view, style_);
+  RgbImage img;
+  renderer_->render(scene, {}, img);
+  const Camera cam = renderer_->camera(scene, {});
+
+  const OrientedBox body = footprintAt(lot_.robot, pose);
+  const Eigen::Vector3d top(body.center.x(), body.center.y(), lot_.robot.height_m);
+  expectPatch(img, pixelOf(cam, top), 3, style_.robot);
+
+  for (const Obstacle& o : lot_.obstacles) {
+    const Eigen::Vector3d c(o.box.center.x(), o.box.center.y(), o.height_m);
+    expectPatch(img, pixelOf(cam, c), 2, style_.colorFor(o.kind));
+  }
+  // Open ground between grid lines, and outside the lot.
+  expectPatch(img, pixelOf(cam, {1.05, 0.35, 0.0}), 2, style_.lot);
+  expectPatch(img, pixelOf(cam, {lot_.lot.x_max_m + 0.02, 0.5, 0.0}), 1, style_.background);
+}
+
+TEST_F(RendererTest, PerspectiveViewShowsTheRobotsTopInItsColour) {
+  const Pose2 pose{1.0, 0.4, 0.0};
+  ViewState view;
+  view.robot = pose;
+  const Scene scene = buildScene(lot_, view, style_);
+  for (CameraMode mode : {CameraMode::kPerspective, CameraMode::kFollow}) {
+    CameraDef def;
+    def.mode = mode;
+    RgbImage img;
+    renderer_->render(scene, def, img);
+    const Camera cam = renderer_->camera(scene, def);
+    const OrientedBox body = footprintAt(lot_.robot, pose);
+    const Eigen::Vector3d top(body.center.x(), body.center.y(), lot_.robot.height_m);
+    // Upward faces keep their colour under the light; allow rounding of the lighting factor.
+    expectPatch(img, pixelOf(cam, top), mode == CameraMode::kFollow ? 4 : 1, style_.robot, 2);
+  }
+}
+
+TEST_F(RendererTest, FramesChangeAsTheRobotMoves) {
+  ViewState view;
+  view.robot = Pose2{0.3, 0.5, 0.0};
+  const Scene before = buildScene(lot_, view, style_);
+  view.robot = Pose2{0.3, 0.7, 0.0};
+  const Scene after = buildScene(lot_, view, style_);
+  RgbImage a;
+  RgbImage b;
+  renderer_->render(before, {}, a);
+  renderer_->render(after, {}, b);
+  EXPECT_NE(a, b);
+  const Camera cam = renderer_->camera(before, {});
+  const OrientedBox old_body = footprintAt(lot_.robot, Pose2{0.3, 0.5, 0.0});
+  const Eigen::Vector2i old_px =
+      pixelOf(cam, {old_body.center.x(), old_body.center.y(), lot_.robot.height_m});
+  expectPatch(a, old_px, 2, style_.robot);
+  EXPECT_NE(b.at(old_px.x(), old_px.y()), style_.robot);
+}
+
+TEST_F(RendererTest, SameSceneGivesTheSameImage) {
+  ViewState view;
+  view.robot = Pose2{0.8, 0.3, 1.0};
+  const Scene scene = buildScene(lot_, view, style_);
+  RgbImage a;
+  RgbImage b;
+  renderer_->render(scene, {}, a);
+  renderer_->render(scene, {CameraMode::kFollow}, b);
+  renderer_->render(scene, {}, b);
+  EXPECT_EQ(a, b);
+}
+
+TEST_F(RendererTest, DrawsText) {
+  Scene scene;
+  scene.extent = {0, 0, 1, 1};
+  scene.texts.push_back({"parksim 123",
+                         std::nullopt,
+                         {10, 10},
+                         20.0f,
+                         rgb(0, 0, 0),
+                         {0, 0, 0, 0},
+                         HAlign::kLeft,
+                         VAlign::kTop});
+  RgbImage img;
+  renderer_->render(scene, {}, img);
+  int dark = 0;
+  for (int y = 10; y < 34; ++y) {
+    for (int x = 10; x < 150; ++x) dark += img.at(x, y).r < 128 ? 1 : 0;
+  }
+  EXPECT_GT(dark, 100);
+  // Nothing below the line of text.
+  for (int x = 0; x < 640; ++x) EXPECT_EQ(img.at(x, 200), scene.background);
+}
+
+TEST_F(RendererTest, ViewsGoSideBySide) {
+  ViewState view;
+  view.robot = Pose2{0.8, 0.3, 1.0};
+  const Scene scene = buildScene(lot_, view, style_);
+  RgbImage single;
+  renderer_->render(scene, {}, single);
+  RgbImage wide(1280, 480);
+  renderer_->renderInto(scene, {CameraMode::kFollow}, wide, 640);
+  renderer_->renderInto(scene, {}, wide, 0);
+  for (int y = 0; y < 480; y += 7) {
+    for (int x = 0; x < 640; x += 5) ASSERT_EQ(wide.at(x, y), single.at(x, y));
+  }
+  EXPECT_THROW(renderer_->renderInto(scene, {}, wide, 700), Error);
+}
+
+TEST_F(RendererTest, SavesAPictureForHumans) {
+  // Not an assertion: a picture to look at when changing the renderer.
+  ViewState view;
+  view.robot = Pose2{0.3, 0.5, degToRad(30.0)};
+  view.reference = Pose2{0.32, 0.52, degToRad(35.0)};
+  view.overlay = Overlay{"test_lot", 1.25, 0.0123, degToRad(1.5)};
+  const Scene scene = buildScene(lot_, view, style_);
+  RgbImage img;
+  const std::string dir = rendertest::outputDir("RendererTest");
+  renderer_->render(scene, {}, img);
+  writePng(dir + "/top.png", img);
+  renderer_->render(scene, {CameraMode::kFollow}, img);
+  writePng(dir + "/follow.png", img);
+  renderer_->render(scene, {CameraMode::kPerspective}, img);
+  writePng(dir + "/perspective.png", img);
+}
+
+}  // namespace
+}  // namespace parksim
