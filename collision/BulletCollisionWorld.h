@@ -45,8 +45,8 @@ class BulletCollisionWorld final : public FootprintChecker {
   /// Allocates nothing. Throws Error when margin_m is negative or not finite.
   ///
   /// Bullet computes in float; the footprint is handed to it relative to each candidate
-  /// obstacle, so rounding stays near 1e-7 m: poses closer than that to touching may be
-  /// classified either way.
+  /// obstacle, which keeps the answer right for poses at least 1e-7 m from touching (measured
+  /// on the study's lot; poses closer than that may be classified either way).
   bool isFree(const Pose2& pose, double margin_m = 0.0) const override;
 
   /// Names of the obstacles the footprint penetrates, in scenario order (empty when free).
