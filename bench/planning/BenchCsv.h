@@ -1,0 +1,24 @@
+#pragma once
+// bench.csv: one row per benchmark run. The fixed columns come first, in this order:
+//   library,planner,space,scenario,seed,budget,solved,status,valid,time_first_s,time_total_s,
+//   length_m,cusps,min_clearance_m,iterations,tree_size,collision_queries
+// followed by one `phase_<name>_s` column per planner phase any row reports. Units: s, m.
+// Values a run does not have are left empty; booleans are 0 or 1.
+
+#include <string>
+#include <vector>
+
+#include "bench/planning/BenchRecord.h"
+
+namespace parksim::bench {
+
+/// The column names for `records`, in file order.
+std::vector<std::string> benchCsvColumns(const std::vector<BenchRecord>& records);
+
+/// The whole file: header line and one line per record.
+std::string benchCsv(const std::vector<BenchRecord>& records);
+
+/// Writes benchCsv(records) to `path` atomically. Throws Error when it cannot be written.
+void writeBenchCsv(const std::string& path, const std::vector<BenchRecord>& records);
+
+}  // namespace parksim::bench

@@ -1,0 +1,42 @@
+#pragma once
+// One benchmark run as a row of bench.csv: which library and planner, on which scenario and seed,
+// under which budget, and what came out. parksim and OMPL runs share the row so that one table
+// and one CSV compare them; fields a library does not report stay empty (NaN or -1).
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace parksim::bench {
+
+inline constexpr double kNotMeasured = std::numeric_limits<double>::quiet_NaN();
+
+struct BenchRecord {
+  std::string library;   ///< "parksim" or "ompl"
+  std::string planner;   ///< parksim: planner kind ("rrt", ...); OMPL: "RRT", "RRTConnect", ...
+  std::string space;     ///< parksim: steering function; OMPL: state space ("reeds-shepp", "se2")
+  std::string scenario;  ///< Scenario::name
+  std::uint64_t seed = 0;
+  std::string budget;  ///< what ends the run, e.g. "iterations=2000" or "time=1s"
+
+  bool solved = false;
+  std::string status;  ///< the library's own status name ("solved", "Exact solution", ...)
+  /// Verdict of parksim's exact path check (bench/planning/PathCheck.h); false when unsolved.
+  bool valid = false;
+
+  double time_first_s = kNotMeasured;     ///< wall time to the first solution, s
+  double time_total_s = kNotMeasured;     ///< wall time of the whole run, s
+  double length_m = kNotMeasured;         ///< length travelled by the reference point, m
+  int cusps = -1;                         ///< direction reversals along the path
+  double min_clearance_m = kNotMeasured;  ///< smallest footprint-obstacle distance along the path
+
+  long iterations = -1;         ///< parksim: iterations of the tree loop
+  long tree_size = -1;          ///< parksim: tree nodes; OMPL: planner graph vertices
+  long collision_queries = -1;  ///< parksim: footprint queries of the planner itself
+  /// parksim: wall time per phase of the search, s, as (name, seconds), in the planner's order.
+  std::vector<std::pair<std::string, double>> phases_s;
+};
+
+}  // namespace parksim::bench

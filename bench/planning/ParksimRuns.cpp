@@ -1,0 +1,54 @@
+#include "bench/planning/ParksimRuns.h"
+
+#include <cstdio>
+
+namespace parksim::bench {
+
+std::string budgetName(const PlannerDef& planner) {
+  std::string name;
+  if (planner.max_iterations > 0) name = "iterations=" + std::to_string(planner.max_iterations);
+  if (planner.max_time_s > 0.0) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "time=%gs", planner.max_time_s);
+    if (!name.empty()) name += '+';
+    name += buf;
+  }
+  return name;
+}
+
+std::vector<std::pair<std::string, double>> phaseList(const PhaseTimes& t) {
+  return {{"sampling", t.sampling_s},   {"nearest", t.nearest_s},       {"steering", t.steering_s},
+          {"collision", t.collision_s}, {"goal_check", t.goal_check_s}, {"total", t.total_s}};
+}
+
+BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& world,
+                       const ParksimRunDef& def) {
+  const PlanResult result = planScenario(scenario, world, def.setup);
+  BenchRecord r;
+  r.library = "parksim";
+  r.planner = toString(def.setup.planner.kind);
+  r.space = def.steering;
+  r.scenario = scenario.name;
+  r.seed = def.setup.planner.seed;
+  r.budget = budgetName(def.setup.planner);
+  r.solved = result.solved();
+  r.status = toString(result.status);
+  r.time_total_s = result.stats.times.total_s;
+  r.iterations = result.stats.iterations;
+  r.tree_size = result.stats.tree_size;
+  r.collision_queries = result.stats.collision_queries;
+  r.phases_s = phaseList(result.stats.times);
+  if (result.solved()) {
+    r.time_first_s = result.stats.first_solution_s;
+    const PathCheck check =
+        checkPath(densify(result.trajectory, scenario.robot, def.check.max_step_m), scenario, world,
+                  def.check);
+    r.valid = check.valid;
+    r.min_clearance_m = check.min_clearance_m;
+    r.length_m = result.trajectory.pathLength(scenario.robot);
+    r.cusps = result.trajectory.cusps(scenario.robot);
+  }
+  return r;
+}
+
+}  // namespace parksim::bench

@@ -1,0 +1,33 @@
+#pragma once
+// Runs one parksim planner the way the planning command does (planScenario with the study's
+// controller as steering) and turns the result into a bench.csv row, with the path checked by
+// parksim's exact path check like every other library's.
+
+#include <cstdint>
+
+#include "bench/planning/BenchRecord.h"
+#include "bench/planning/PathCheck.h"
+#include "collision/BulletCollisionWorld.h"
+#include "core/Scenario.h"
+#include "planner/PlanScenario.h"
+
+namespace parksim::bench {
+
+struct ParksimRunDef {
+  PlanSetup setup;  ///< planner kind, seed, iteration and wall-time budgets, steering, validation
+  PathCheckDef check;
+  /// Name of the steering function, for the CSV's `space` column.
+  std::string steering = "move-to-pose";
+};
+
+/// Plans `scenario` with `def.setup` against `world` and checks the path.
+BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& world,
+                       const ParksimRunDef& def);
+
+/// "iterations=N", "time=Ss" or both joined with '+': what ends a parksim run.
+std::string budgetName(const PlannerDef& planner);
+
+/// The planner's per-phase wall times as (name, seconds), in a fixed order.
+std::vector<std::pair<std::string, double>> phaseList(const PhaseTimes& times);
+
+}  // namespace parksim::bench
