@@ -1,14 +1,175 @@
-// Placeholder until the run command lands; its owner replaces this file.
+// parksim run WORLD: plan (or load a plan), drive it in the Bullet simulation, measure.
+// Writes DIR/trajectory.csv and DIR/plan.json (as `parksim plan`), DIR/executed.csv and
+// DIR/metrics.json. Exit status: 0 when the robot ends within the world's goal tolerance
+// without touching anything, 1 otherwise (or when planning fails) with a one-line reason on
+// stderr, 2 on bad input.
+
 #include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
 
 #include "app/Command.h"
+#include "app/PlanOutput.h"
+#include "collision/BulletCollisionWorld.h"
+#include "core/AtomicFile.h"
+#include "core/Error.h"
+#include "scenario/ScenarioReader.h"
+#include "sim/Episode.h"
+#include "sim/EpisodeFiles.h"
 
 namespace parksim::app {
 
-CommandRunner setupRunCommand(CLI::App&) {
-  return [] {
-    std::fprintf(stderr, "parksim run: not available in this build yet\n");
-    return 2;
+namespace {
+
+// A plan file must start where the world starts; anything else is a plan for another world.
+constexpr double kStartPositionTolerance_m = 0.001;
+constexpr double kStartHeadingTolerance_rad = kPi / 360.0;
+
+void removeIfPresent(const std::string& path) {
+  std::error_code ec;
+  std::filesystem::remove(path, ec);
+}
+
+// planSummary's keys with a plan_ prefix; nested objects flattened as plan_<key>.<sub>.
+void addPlanKeys(nlohmann::json& metrics, const nlohmann::json& summary) {
+  for (const auto& [key, value] : summary.items()) {
+    if (value.is_object()) {
+      for (const auto& [sub, inner] : value.items()) metrics["plan_" + key + "." + sub] = inner;
+    } else {
+      metrics["plan_" + key] = value;
+    }
+  }
+}
+
+// For --plan FILE: the statistics a trajectory carries by itself.
+nlohmann::json planFileSummary(const std::string& path, const Scenario& scenario,
+                               const Trajectory& plan) {
+  const Pose2& end = plan.points.back().pose;
+  return {
+      {"source", path},
+      {"path_length_m", plan.pathLength(scenario.robot)},
+      {"duration_s", plan.duration()},
+      {"cusps", plan.cusps(scenario.robot)},
+      {"final_pos_err_m", positionDistance(end, scenario.goal.pose)},
+      {"final_heading_err_deg", radToDeg(headingDistance(end, scenario.goal.pose))},
+  };
+}
+
+Trajectory loadPlanFile(const std::string& path, const Scenario& scenario) {
+  Trajectory plan = readTrajectoryCsv(path);
+  const Pose2& first = plan.points.front().pose;
+  if (positionDistance(first, scenario.start) > kStartPositionTolerance_m ||
+      headingDistance(first, scenario.start) > kStartHeadingTolerance_rad) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "%s: the plan starts at (%.4f, %.4f, %.2f deg), not at the world's start "
+                  "(%.4f, %.4f, %.2f deg)",
+                  path.c_str(), first.x, first.y, radToDeg(first.theta), scenario.start.x,
+                  scenario.start.y, radToDeg(scenario.start.theta));
+    throw Error(text);
+  }
+  return plan;
+}
+
+std::string failureReason(const Scenario& scenario, const EpisodeMetrics& m) {
+  char text[320];
+  if (m.contacts > 0) {
+    std::snprintf(text, sizeof text, "touched %s at %.3f s (%d contact event%s)",
+                  m.first_contact_body.c_str(), m.first_contact_t_s, m.contacts,
+                  m.contacts == 1 ? "" : "s");
+  } else {
+    std::snprintf(text, sizeof text,
+                  "goal not reached: ended %.3f mm / %.3f deg from the goal (tolerance %.3f mm / "
+                  "%.3f deg)",
+                  m.goal_pos_err_m * 1e3, m.goal_heading_err_deg,
+                  scenario.goal.position_tolerance_m * 1e3,
+                  radToDeg(scenario.goal.heading_tolerance_rad));
+  }
+  return text;
+}
+
+}  // namespace
+
+CommandRunner setupRunCommand(CLI::App& sub) {
+  struct Options {
+    std::string world;
+    std::string out = "out";
+    std::string tracking = "closed";
+    std::string plan_file;
+    PlanCliOptions plan;
+  };
+  auto opt = std::make_shared<Options>();
+  sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
+  opt->plan.addTo(sub);
+  sub.add_option("--tracking", opt->tracking,
+                 "closed: planned wheel speeds plus pose feedback; open: planned wheel speeds only")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"closed", "open"}));
+  sub.add_option("--plan", opt->plan_file,
+                 "drive this trajectory.csv instead of planning (it must start at the world's "
+                 "start)");
+  sub.add_option("--out", opt->out, "output directory")->capture_default_str();
+
+  return [opt] {
+    const Scenario scenario = loadScenario(opt->world);
+    ExecutionDef exec;
+    exec.tracking = trackingModeFromString(opt->tracking);
+    const std::string& dir = opt->out;
+    ensureDirectory(dir);
+    // Outputs of an earlier run in DIR must never sit beside this run's.
+    removeIfPresent(dir + "/executed.csv");
+    removeIfPresent(dir + "/metrics.json");
+
+    Trajectory plan;
+    nlohmann::json plan_summary;
+    if (!opt->plan_file.empty()) {
+      plan = loadPlanFile(opt->plan_file, scenario);
+      removeIfPresent(dir + "/plan.json");
+      const std::string copy = dir + "/trajectory.csv";
+      if (!std::filesystem::exists(copy) || !std::filesystem::equivalent(copy, opt->plan_file)) {
+        writeTrajectoryCsv(copy, plan, scenario.robot);
+      }
+      plan_summary = planFileSummary(opt->plan_file, scenario, plan);
+    } else {
+      const PlanSetup setup = opt->plan.toSetup(scenario);
+      const BulletCollisionWorld collision(scenario);
+      const PlanResult result = planScenario(scenario, collision, setup);
+      writePlanFiles(dir, scenario, setup, result);
+      if (!result.solved()) {
+        std::fprintf(stderr, "parksim run: unsolved plan (%s): %s\n", toString(result.status),
+                     result.message.c_str());
+        return 1;
+      }
+      plan = result.trajectory;
+      plan_summary = planSummary(scenario, setup, result);
+    }
+
+    const EpisodeResult episode = runEpisode(scenario, plan, exec);
+    const EpisodeMetrics& m = episode.metrics;
+    writeExecutedCsv(dir + "/executed.csv", episode.rows);
+    nlohmann::json metrics = metricsToJson(m);
+    metrics["world"] = scenario.source_path;
+    metrics["scenario"] = scenario.name;
+    addPlanKeys(metrics, plan_summary);
+    writeJsonFile(dir + "/metrics.json", metrics);
+
+    std::printf(
+        "%s-loop episode on %s: tracking error max %.3f mm (rms %.3f mm), final %.3f mm / %.3f "
+        "deg\nfinal pose %.3f mm / %.3f deg from the goal%s; %d contact event%s; %.2f s "
+        "simulated in %.3f s (%.0fx real time)\nwrote %s/trajectory.csv, %s/executed.csv and "
+        "%s/metrics.json\n",
+        toString(m.tracking), scenario.name.c_str(), m.max_pos_err_m * 1e3, m.rms_pos_err_m * 1e3,
+        m.final_pos_err_m * 1e3, m.final_heading_err_deg, m.goal_pos_err_m * 1e3,
+        m.goal_heading_err_deg, m.goal_reached ? " (within tolerance)" : " (outside tolerance)",
+        m.contacts, m.contacts == 1 ? "" : "s", m.sim_time_s, m.wall_time_s,
+        m.wall_time_s > 0.0 ? m.sim_time_s / m.wall_time_s : 0.0, dir.c_str(), dir.c_str(),
+        dir.c_str());
+    if (m.contacts > 0 || !m.goal_reached) {
+      std::fprintf(stderr, "parksim run: %s\n", failureReason(scenario, m).c_str());
+      return 1;
+    }
+    return 0;
   };
 }
 

@@ -18,6 +18,7 @@
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 #include "core/Error.h"
+#include "core/Geometry.h"
 
 namespace parksim {
 
@@ -162,16 +163,9 @@ struct DynamicsWorld::Impl {
       btBoxShape* shape = box(o.box.half_extents.x(), o.box.half_extents.y(), hz);
       const btTransform tr = planarTransform(o.box.center.x(), o.box.center.y(), hz, o.box.yaw);
       const bool parked = o.kind == ObstacleKind::kParkedRobot;
-      btRigidBody* body = addBody(shape, parked ? physics.parked_robot_mass_kg : 0.0, tr,
-                                  physics.obstacle_friction, parked ? kParkedGroup : kStaticGroup,
-                                  parked ? kParkedMask : kStaticMask, static_cast<int>(i));
-      if (parked) {
-        // Asleep until the ego robot (never asleep) touches it: contact joins their islands
-        // and Bullet wakes the whole island.
-        body->setSleepingThresholds(btScalar(model.parked_sleep_speed_mps),
-                                    btScalar(model.parked_sleep_yaw_rate_radps));
-        body->setActivationState(ISLAND_SLEEPING);
-      }
+      // Parked robots enter as fixed boxes and become dynamic when first touched (wake()).
+      addBody(shape, 0.0, tr, physics.obstacle_friction, parked ? kParkedGroup : kStaticGroup,
+              parked ? kParkedMask : kStaticMask, static_cast<int>(i));
     }
   }
 
@@ -260,6 +254,24 @@ struct DynamicsWorld::Impl {
     }
   }
 
+  // Turns a parked robot from a fixed box into a body with mass, keeping its pose. Re-adding
+  // it makes the broadphase and the solver treat it as dynamic from the next step on.
+  void wake(int obstacle_index) {
+    btRigidBody* body = bodies[static_cast<std::size_t>(obstacle_index) + 1].get();
+    if (!body->isStaticObject()) return;
+    world->removeRigidBody(body);
+    btVector3 inertia;
+    body->getCollisionShape()->calculateLocalInertia(btScalar(physics.parked_robot_mass_kg),
+                                                     inertia);
+    body->setCollisionFlags(body->getCollisionFlags() & ~btCollisionObject::CF_STATIC_OBJECT);
+    body->setMassProps(btScalar(physics.parked_robot_mass_kg), inertia);
+    body->updateInertiaTensor();
+    body->setSleepingThresholds(btScalar(model.parked_sleep_speed_mps),
+                                btScalar(model.parked_sleep_yaw_rate_radps));
+    world->addRigidBody(body, kParkedGroup, kParkedMask);
+    body->activate(true);
+  }
+
   void collectContacts() {
     contacts.clear();
     const btCollisionObject* chassis = colliders.front().get();
@@ -279,6 +291,20 @@ struct DynamicsWorld::Impl {
     }
     std::sort(contacts.begin(), contacts.end());
     contacts.erase(std::unique(contacts.begin(), contacts.end()), contacts.end());
+  }
+
+  // Gives a parked robot its mass while the chassis is still model.parked_wake_distance_m away,
+  // so the first contact is already between two bodies with mass.
+  void wakeNearbyParkedRobots(const Pose2& ego_pose) {
+    const OrientedBox footprint = footprintAt(robot, ego_pose);
+    for (std::size_t i = 0; i < obstacles.size(); ++i) {
+      if (obstacles[i].kind != ObstacleKind::kParkedRobot) continue;
+      if (!bodies[i + 1]->isStaticObject()) continue;
+      // The separating-axis gap is a lower bound of the true gap: it wakes early, never late.
+      if (separationAlongAxes(footprint, obstacles[i].box) < model.parked_wake_distance_m) {
+        wake(static_cast<int>(i));
+      }
+    }
   }
 };
 
@@ -311,6 +337,7 @@ DynamicsWorld::DynamicsWorld(const Scenario& scenario, const Pose2& start, const
   impl_->lot = scenario.lot;
   impl_->buildWorld();
   impl_->buildRobot(start);
+  impl_->wakeNearbyParkedRobots(start);
 }
 
 DynamicsWorld::~DynamicsWorld() = default;
@@ -330,6 +357,7 @@ void DynamicsWorld::step() {
   impl_->world->stepSimulation(dt, 1, dt);
   ++impl_->step_count;
   impl_->collectContacts();
+  impl_->wakeNearbyParkedRobots(robot().pose);
 }
 
 double DynamicsWorld::timeStep() const { return impl_->physics.time_step_s; }

@@ -1,9 +1,9 @@
 #pragma once
 // The dynamics world of one episode: ground, the scenario's obstacles and the ego robot in
 // Bullet (btMultiBodyDynamicsWorld). Static obstacles are fixed boxes; parked robots are boxes
-// with mass, so a collision pushes them (they rest asleep until touched: SimModelDef). The ego
-// robot is a btMultiBody: a chassis box that is exactly the planner's footprint, two driven sphere
-// wheels on velocity motors, and a frictionless sphere slider at the rear. Wheels and slider
+// with mass, so a collision pushes them (they are fixed until the robot comes near: SimModelDef).
+// The ego robot is a btMultiBody: a chassis box that is exactly the planner's footprint, two driven
+// sphere wheels on velocity motors, and a frictionless sphere slider at the rear. Wheels and slider
 // collide with the ground only, the chassis with obstacles only, so the robot's footprint in
 // contact is the 80 x 85 mm rectangle.
 //
@@ -30,10 +30,15 @@ struct SimModelDef {
   /// Height of the chassis box's bottom above the ground, m. The chassis never touches the
   /// ground (it does not collide with it); this only decides which low obstacles it can hit.
   double chassis_clearance_m = 0.002;
-  /// Parked robots start asleep and Bullet wakes them when something touches them; once
-  /// pushed they fall asleep again after 2 s slower than this, m/s (and rad/s for turning).
-  /// Resting boxes kept awake cost 4-5x the whole simulation and creep by solver noise.
-  /// The ego robot never sleeps.
+  /// Parked robots are fixed boxes until the robot's footprint comes closer than this to one,
+  /// m; from the next step on it is a body with mass (PhysicsDef::parked_robot_mass_kg) that
+  /// can be pushed. 10 mm is 12 steps ahead at the top speed (0.2 m/s). Resting bodies with
+  /// mass cost more than the robot itself (8 of them: 4-5x the step time), and Bullet's own
+  /// sleeping does not help: it wakes a body whenever the robot's bounding box, grown by 2 cm,
+  /// overlaps it.
+  double parked_wake_distance_m = 0.010;
+  /// Once woken, a parked robot falls asleep again after 2 s below this speed, m/s (and yaw
+  /// rate, rad/s). The ego robot never sleeps.
   double parked_sleep_speed_mps = 1e-3;
   double parked_sleep_yaw_rate_radps = 1e-2;
 };
