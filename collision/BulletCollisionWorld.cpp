@@ -1,12 +1,13 @@
 #include "collision/BulletCollisionWorld.h"
 
-#include <btBulletCollisionCommon.h>
-
-#include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <utility>
+
+#include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
+#include <btBulletCollisionCommon.h>
 
 #include "core/Error.h"
 #include "core/Geometry.h"
@@ -86,10 +87,15 @@ double boxDistance(const OrientedBox& a, const OrientedBox& b) {
   return best;
 }
 
-void requirePositive(double v, const std::string& what) {
+// Messages start with the scenario's file when it has one, as Error messages do elsewhere.
+std::string where(const Scenario& scenario) {
+  return (scenario.source_path.empty() ? std::string("collision world") : scenario.source_path) +
+         ": ";
+}
+
+void requirePositive(const Scenario& scenario, double v, const std::string& what) {
   if (!finite(v) || v <= 0.0) {
-    throw Error("collision world: " + what + " must be positive and finite, got " +
-                std::to_string(v));
+    throw Error(where(scenario) + what + " must be positive and finite, got " + std::to_string(v));
   }
 }
 
@@ -133,11 +139,11 @@ struct BulletCollisionWorld::Impl {
   mutable Stats stats;
 
   explicit Impl(const Scenario& scenario) : robot(scenario.robot) {
-    requirePositive(robot.length_m, "robot length");
-    requirePositive(robot.width_m, "robot width");
-    requirePositive(robot.height_m, "robot height");
+    requirePositive(scenario, robot.length_m, "robot length");
+    requirePositive(scenario, robot.width_m, "robot width");
+    requirePositive(scenario, robot.height_m, "robot height");
     if (!finite(robot.front_overhang_m)) {
-      throw Error("collision world: robot front overhang must be finite");
+      throw Error(where(scenario) + "robot front overhang must be finite");
     }
 
     const std::size_t n = scenario.obstacles.size();
@@ -148,11 +154,11 @@ struct BulletCollisionWorld::Impl {
     candidates.reserve(n);
     for (const Obstacle& obstacle : scenario.obstacles) {
       const std::string what = "obstacle '" + obstacle.name + "'";
-      requirePositive(obstacle.box.half_extents.x(), what + " half extent x");
-      requirePositive(obstacle.box.half_extents.y(), what + " half extent y");
-      requirePositive(obstacle.height_m, what + " height");
+      requirePositive(scenario, obstacle.box.half_extents.x(), what + " half extent x");
+      requirePositive(scenario, obstacle.box.half_extents.y(), what + " half extent y");
+      requirePositive(scenario, obstacle.height_m, what + " height");
       if (!obstacle.box.center.allFinite() || !finite(obstacle.box.yaw)) {
-        throw Error("collision world: " + what + " pose must be finite");
+        throw Error(where(scenario) + what + " pose must be finite");
       }
 
       Box box;
@@ -176,13 +182,15 @@ struct BulletCollisionWorld::Impl {
       object->setCollisionShape(shape.get());
       object->setCollisionFlags(object->getCollisionFlags() | btCollisionObject::CF_STATIC_OBJECT);
       object->setUserIndex(static_cast<int>(boxes.size()));
-      world.addCollisionObject(object.get());
 
       names.push_back(obstacle.name);
       boxes.push_back(box);
       shapes.push_back(std::move(shape));
       objects.push_back(std::move(object));
+      // Last, so that an exception above never leaves the world holding an unowned object.
+      world.addCollisionObject(objects.back().get());
     }
+    // The scratch shape keeps a zero margin; queries only set its half extents.
     footprint_shape.setMargin(0);
   }
 
@@ -228,10 +236,10 @@ struct BulletCollisionWorld::Impl {
 
   // Sizes the scratch footprint shape; once per query, before penetrates().
   void prepareFootprint(const Footprint& footprint) const {
-    setExactHalfExtents(footprint_shape,
-                        btVector3(static_cast<btScalar>(footprint.half_extents.x()),
-                                  static_cast<btScalar>(footprint.half_extents.y()),
-                                  static_cast<btScalar>(0.5 * robot.height_m)));
+    footprint_shape.setImplicitShapeDimensions(
+        btVector3(static_cast<btScalar>(footprint.half_extents.x()),
+                  static_cast<btScalar>(footprint.half_extents.y()),
+                  static_cast<btScalar>(0.5 * robot.height_m)));
   }
 
   // Box-box test of the prepared footprint against obstacle i. The footprint is expressed in

@@ -1,5 +1,6 @@
 #include "collision/BulletCollisionWorld.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -420,8 +421,14 @@ TEST(BulletCollisionWorld, RejectsBadInput) {
   EXPECT_THROW(world.overlapping({0.1, 0.1, 0.0}, -0.5), Error);
 
   Scenario flat = studyLot();
+  flat.source_path = "worlds/flat.yaml";
   flat.obstacles[3].box.half_extents.x() = 0.0;
-  EXPECT_THROW(BulletCollisionWorld{flat}, Error);
+  try {
+    const BulletCollisionWorld bad(flat);
+    ADD_FAILURE() << "a zero-width obstacle was accepted";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), testing::StartsWith("worlds/flat.yaml: obstacle 'robot_4'"));
+  }
   Scenario low = studyLot();
   low.obstacles[0].height_m = -0.1;
   EXPECT_THROW(BulletCollisionWorld{low}, Error);
