@@ -38,11 +38,13 @@ class BulletCollisionWorld final : public FootprintChecker {
 
   BulletCollisionWorld(const BulletCollisionWorld&) = delete;
   BulletCollisionWorld& operator=(const BulletCollisionWorld&) = delete;
+  /// A moved-from world may only be destroyed or assigned to.
   BulletCollisionWorld(BulletCollisionWorld&&) noexcept;
   BulletCollisionWorld& operator=(BulletCollisionWorld&&) noexcept;
 
   /// True when footprintAt(robot, pose, margin_m) penetrates no obstacle; touching is free.
-  /// Allocates nothing. Throws Error when margin_m is negative or not finite.
+  /// Allocates nothing. Throws Error when margin_m is negative or not finite, or the pose is
+  /// not finite (the same holds for overlapping() and clearance()).
   ///
   /// Bullet computes in float; the footprint is handed to it relative to each candidate
   /// obstacle, which keeps the answer right for poses at least 1e-7 m from touching (measured
