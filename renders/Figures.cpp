@@ -31,12 +31,20 @@ void addAxesAndTitle(Scene& scene, const Extent2& data, const std::string& title
   const float small = 0.85f * size;
   const double y0 = data.y_min;
   const double x0 = data.x_min;
-  for (double x : niceTicks(data.x_min, data.x_max, 9)) {
+  // Tick counts follow each side's share of the span, so a narrow extent gets no crowded labels.
+  const auto ticks_for = [&](double side, double most) {
+    return std::max(3, static_cast<int>(std::lround(most * side / span)));
+  };
+  const std::vector<double> xt = niceTicks(data.x_min, data.x_max, ticks_for(data.width(), 9.0));
+  const std::vector<double> yt = niceTicks(data.y_min, data.y_max, ticks_for(data.height(), 7.0));
+  const double x_step = xt.size() > 1 ? xt[1] - xt[0] : 1.0;
+  const double y_step = yt.size() > 1 ? yt[1] - yt[0] : 1.0;
+  for (double x : xt) {
     scene.lines.push_back({{{x, y0, Layers::kArrow}, {x, y0 - tick, Layers::kArrow}},
                            style.axis,
                            style.grid_px,
                            false});
-    scene.texts.push_back({fmt("%.1f", x),
+    scene.texts.push_back({formatTick(x, x_step),
                            Eigen::Vector3d(x, y0 - 1.5 * tick, 0.0),
                            Eigen::Vector2d::Zero(),
                            small,
@@ -45,12 +53,12 @@ void addAxesAndTitle(Scene& scene, const Extent2& data, const std::string& title
                            HAlign::kCenter,
                            VAlign::kTop});
   }
-  for (double y : niceTicks(data.y_min, data.y_max, 6)) {
+  for (double y : yt) {
     scene.lines.push_back({{{x0, y, Layers::kArrow}, {x0 - tick, y, Layers::kArrow}},
                            style.axis,
                            style.grid_px,
                            false});
-    scene.texts.push_back({fmt("%.1f", y),
+    scene.texts.push_back({formatTick(y, y_step),
                            Eigen::Vector3d(x0 - 1.5 * tick, y, 0.0),
                            Eigen::Vector2d::Zero(),
                            small,
@@ -68,7 +76,7 @@ void addAxesAndTitle(Scene& scene, const Extent2& data, const std::string& title
                          HAlign::kCenter,
                          VAlign::kTop});
   scene.texts.push_back({"y (m)",
-                         Eigen::Vector3d(x0 - 0.075 * span, data.y_max, 0.0),
+                         Eigen::Vector3d(x0 - 0.075 * span, data.y_max + 0.03 * span, 0.0),
                          Eigen::Vector2d::Zero(),
                          small,
                          style.axis,
@@ -76,7 +84,7 @@ void addAxesAndTitle(Scene& scene, const Extent2& data, const std::string& title
                          HAlign::kCenter,
                          VAlign::kBottom});
   scene.texts.push_back({title,
-                         Eigen::Vector3d(data.center().x(), data.y_max + 0.06 * span, 0.0),
+                         Eigen::Vector3d(data.center().x(), data.y_max + 0.08 * span, 0.0),
                          Eigen::Vector2d::Zero(),
                          size,
                          style.text,
@@ -86,7 +94,7 @@ void addAxesAndTitle(Scene& scene, const Extent2& data, const std::string& title
   Extent2& e = scene.extent;
   e.x_min = std::min(e.x_min, data.x_min - 0.1 * span);
   e.y_min = std::min(e.y_min, data.y_min - 0.11 * span);
-  e.y_max = std::max(e.y_max, data.y_max + 0.1 * span);
+  e.y_max = std::max(e.y_max, data.y_max + 0.12 * span);
   e.x_max = std::max(e.x_max, data.x_max + 0.02 * span);
 }
 
@@ -164,9 +172,8 @@ Scene buildSteeringFigure(const Scenario& scenario, const SteeringExample& ex,
                              {data.x_min, data.y_max}},
                             Layers::kGround,
                             style.lot});
-  const double step = niceTicks(0.0, std::max(data.width(), data.height()), 10).size() > 1
-                          ? niceTicks(0.0, std::max(data.width(), data.height()), 10)[1]
-                          : 0.1;
+  const std::vector<double> grid = niceTicks(0.0, std::max(data.width(), data.height()), 10);
+  const double step = grid.size() > 1 ? grid[1] : 0.1;
   for (double x = std::ceil(data.x_min / step) * step; x <= data.x_max; x += step) {
     scene.lines.push_back({{{x, data.y_min, Layers::kGrid}, {x, data.y_max, Layers::kGrid}},
                            style.grid,
@@ -281,8 +288,8 @@ Scene buildCSpaceStackFigure(const Scenario& scenario, int slices, const SceneSt
       scene.lines.push_back(std::move(outline));
     }
   }
-  // The heading axis at the lot's back-left corner.
-  const Eigen::Vector2d axis(lot.x_min_m, lot.y_max_m);
+  // The heading axis at the lot's front-left corner, where no stack hides it.
+  const Eigen::Vector2d axis(lot.x_min_m, lot.y_min_m);
   scene.lines.push_back(
       {{{axis.x(), axis.y(), 0.0}, {axis.x(), axis.y(), top}}, style.axis, style.border_px, false});
   for (int deg = -180; deg <= 180; deg += 90) {

@@ -8,11 +8,11 @@ std::vector<ScenePolyline> dashed(const ScenePolyline& line, double dash_m, doub
   std::vector<ScenePolyline> dashes;
   std::vector<Eigen::Vector3d> pts = line.points;
   if (line.closed && pts.size() > 2) pts.push_back(pts.front());
-  if (pts.size() < 2 || dash_m <= 0.0) {
+  if (pts.size() < 2 || dash_m <= 0.0 || gap_m <= 0.0) {
     dashes.push_back(line);
     return dashes;
   }
-  const double period = dash_m + std::max(gap_m, 0.0);
+  const double period = dash_m + gap_m;
   double phase = 0.0;  // distance into the current period
   ScenePolyline current{{}, line.color, line.width_px, false};
   current.points.push_back(pts.front());
@@ -20,7 +20,8 @@ std::vector<ScenePolyline> dashed(const ScenePolyline& line, double dash_m, doub
     Eigen::Vector3d a = pts[i - 1];
     const Eigen::Vector3d b = pts[i];
     double remaining = (b - a).norm();
-    while (remaining > 0.0) {
+    // Leftovers below a picometre are rounding, not line: they would make zero-length dashes.
+    while (remaining > 1e-12) {
       const bool drawing = phase < dash_m;
       const double to_switch = drawing ? dash_m - phase : period - phase;
       if (to_switch > remaining) {

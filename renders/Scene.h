@@ -98,7 +98,8 @@ struct Scene {
 };
 
 /// Splits a polyline into dashes of `dash_m` separated by gaps of `gap_m` (lengths in the
-/// world, so dashes keep their size along a curve). Returns the dashes as separate polylines.
+/// world, so dashes keep their size along a curve). Returns the dashes as separate polylines;
+/// the line itself when either length is not positive.
 std::vector<ScenePolyline> dashed(const ScenePolyline& line, double dash_m, double gap_m);
 
 /// The four corners of `box` at height z, as a closed outline.

@@ -24,20 +24,24 @@ std::vector<double> niceTicks(double lo, double hi, int target) {
       break;
     }
   }
-  for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step) {
-    ticks.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
-  }
+  // Multiples of the step by integer count, so no rounding accumulates along the axis.
+  const double first = std::ceil(lo / step - 1e-9);
+  for (double k = first; k * step <= hi + 1e-9 * step; k += 1.0) ticks.push_back(k * step);
   return ticks;
 }
 
-namespace {
-
-std::string formatTick(double v, double step) {
-  const int decimals = std::max(0, static_cast<int>(-std::floor(std::log10(step) + 1e-9)));
+std::string formatTick(double value, double step) {
+  const int decimals =
+      step > 0.0 ? std::max(0, static_cast<int>(-std::floor(std::log10(step) + 1e-9))) : 1;
+  // A value that rounds to zero prints as "0", never "-0.0".
+  const double unit = std::pow(10.0, -decimals);
+  if (std::abs(value) < 0.5 * unit) value = 0.0;
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
   return buf;
 }
+
+namespace {
 
 struct Panel {
   double left, right, top, bottom;  // pixels from the top-left

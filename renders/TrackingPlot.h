@@ -31,6 +31,9 @@ Scene buildTrackingPlot(const TrackingSeries& series, const std::string& title, 
 /// line on bad input.
 TrackingSeries readTrackingCsv(const std::string& path);
 
+/// A tick label with as many decimals as the step between ticks needs.
+std::string formatTick(double value, double step);
+
 /// About `target` round tick values (steps of 1, 2 or 5 times a power of ten) covering [lo, hi].
 std::vector<double> niceTicks(double lo, double hi, int target);
 

@@ -53,3 +53,34 @@ inline std::string outputDir(const std::string& name) {
 }
 
 }  // namespace parksim::rendertest
+
+#include <vector>
+
+#include "core/DiffDrive.h"
+#include "core/Trajectory.h"
+
+namespace parksim::rendertest {
+
+/// A trajectory from `start` holding each twist for `period_s`, integrated exactly.
+inline Trajectory drive(const RobotDef& robot, Pose2 start, const std::vector<Twist>& twists,
+                        double period_s = 0.1) {
+  Trajectory traj;
+  double t = 0.0;
+  Pose2 pose = start;
+  for (const Twist& tw : twists) {
+    traj.points.push_back({t, pose, toWheelSpeeds(tw, robot)});
+    pose = integrateExact(pose, tw, period_s);
+    t += period_s;
+  }
+  traj.points.push_back({t, pose, {}});
+  return traj;
+}
+
+/// Straight north from the start, then a left arc.
+inline Trajectory sampleDrive(const RobotDef& robot, Pose2 start) {
+  std::vector<Twist> twists(20, Twist{0.1, 0.0});
+  twists.insert(twists.end(), 20, Twist{0.1, 0.6});
+  return drive(robot, start, twists);
+}
+
+}  // namespace parksim::rendertest

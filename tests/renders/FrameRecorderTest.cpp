@@ -1,0 +1,220 @@
+#include "renders/FrameRecorder.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "RenderTestUtil.h"
+#include "core/Error.h"
+#include "renders/PngEncoder.h"
+#include "renders/Process.h"
+#include "renders/SceneBuilder.h"
+
+namespace parksim {
+namespace {
+
+using rendertest::outputDir;
+using rendertest::testLot;
+
+std::vector<char> fileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Feeds a planned drive at 240 Hz, the executed pose lagging the plan a little.
+int record(FrameRecorder& rec, const Scenario& s, const Trajectory& plan) {
+  const std::vector<Pose2> path = samplePath(plan, s.robot, 0.0005, 0.01);
+  int frames = 0;
+  const double duration = plan.duration();
+  const int steps = static_cast<int>(duration * 240.0);
+  for (int k = 0; k <= steps; ++k) {
+    FrameInput in;
+    in.t_s = k / 240.0;
+    const std::size_t i = path.size() * static_cast<std::size_t>(k) / (steps + 1);
+    in.reference = path[i];
+    in.pose = path[i > 3 ? i - 3 : 0];
+    in.position_error_m = positionDistance(*in.reference, in.pose);
+    in.heading_error_rad = angleDiff(in.pose.theta, in.reference->theta);
+    frames += rec.addFrame(in);
+  }
+  return frames;
+}
+
+class FrameRecorderTest : public ::testing::Test {
+ protected:
+  Scenario lot_ = testLot();
+  Trajectory plan_ = rendertest::sampleDrive(lot_.robot, lot_.start);  // 4 s
+};
+
+TEST_F(FrameRecorderTest, WritesValidChangingFramesAtTheFrameRate) {
+  FrameDef def;
+  def.fps = 10.0;
+  def.width_px = 320;
+  def.height_px = 240;
+  def.out_dir = outputDir("FrameRecorderTest_rate");
+  FrameRecorder rec(lot_, def);
+  rec.setPlan(plan_);
+  const int rendered = record(rec, lot_, plan_);
+  EXPECT_EQ(rendered, 41);  // t = 0, 0.1, ..., 4.0
+  const RecordingResult result = rec.finish();
+  EXPECT_EQ(result.frames, 41);
+  EXPECT_EQ(result.video.status, VideoStatus::kNotRequested);
+  EXPECT_NE(result.message.find("41 frames"), std::string::npos) << result.message;
+  RgbImage previous;
+  int changed = 0;
+  for (int i = 0; i < result.frames; ++i) {
+    const RgbImage img = readPng(rec.framePath(i));
+    ASSERT_EQ(img.width, 320);
+    ASSERT_EQ(img.height, 240);
+    if (i > 0) changed += img != previous;
+    previous = img;
+  }
+  EXPECT_EQ(changed, 40);  // the robot moves and the clock runs in every frame
+  EXPECT_FALSE(std::filesystem::exists(rec.framePath(41)));
+}
+
+TEST_F(FrameRecorderTest, FramesShowTheRobotWhereTheSampleSaysItIs) {
+  FrameDef def;
+  def.out_dir = outputDir("FrameRecorderTest_robot");
+  FrameRecorder rec(lot_, def);
+  FrameInput in;
+  in.pose = {1.0, 0.35, 0.4};
+  EXPECT_EQ(rec.addFrame(in), 1);
+  rec.finish();
+  const RgbImage img = readPng(rec.framePath(0));
+  ViewState view;
+  view.robot = in.pose;
+  const SceneStyle style = def.style.scaled(styleScaleFor(def.height_px));
+  const Camera cam = makeCamera({}, buildScene(lot_, view, style), def.width_px, def.height_px);
+  const OrientedBox body = footprintAt(lot_.robot, in.pose);
+  const auto p = cam.project({body.center.x(), body.center.y(), lot_.robot.height_m});
+  ASSERT_TRUE(p);
+  EXPECT_EQ(img.at(static_cast<int>(p->x()), static_cast<int>(p->y())), def.style.robot);
+}
+
+TEST_F(FrameRecorderTest, OutputDoesNotDependOnThreads) {
+  std::vector<std::string> dirs;
+  for (int threads : {1, 2}) {
+    FrameDef def;
+    def.fps = 5.0;
+    def.width_px = 200;
+    def.height_px = 150;
+    def.view = FrameView::kBoth;
+    def.encode_threads = threads;
+    def.out_dir = outputDir("FrameRecorderTest_threads" + std::to_string(threads));
+    FrameRecorder rec(lot_, def);
+    rec.setPlan(plan_);
+    record(rec, lot_, plan_);
+    EXPECT_EQ(rec.finish().frames, 21);
+    dirs.push_back(def.out_dir + "/frames");
+  }
+  for (int i = 0; i <= 20; ++i) {
+    char name[16];
+    std::snprintf(name, sizeof name, "/%06d.png", i);
+    const std::vector<char> a = fileBytes(dirs[0] + name);
+    ASSERT_FALSE(a.empty());
+    EXPECT_EQ(a, fileBytes(dirs[1] + name)) << name;
+  }
+  const RgbImage both = readPng(dirs[0] + "/000000.png");
+  EXPECT_EQ(both.width, 400);  // two views side by side
+  EXPECT_EQ(both.height, 150);
+}
+
+TEST_F(FrameRecorderTest, SparseSamplesRepeatFramesAndTheLastSampleEndsTheFilm) {
+  FrameDef def;
+  def.fps = 10.0;
+  def.width_px = 160;
+  def.height_px = 120;
+  def.out_dir = outputDir("FrameRecorderTest_sparse");
+  FrameRecorder rec(lot_, def);
+  FrameInput in;
+  in.t_s = 1.0;
+  EXPECT_EQ(rec.addFrame(in), 1);  // the first sample opens the film
+  in.t_s = 1.35;
+  EXPECT_EQ(rec.addFrame(in), 3);  // 1.1, 1.2, 1.3
+  in.t_s = 1.37;
+  EXPECT_EQ(rec.addFrame(in), 0);
+  in.t_s = 1.2;
+  EXPECT_THROW(rec.addFrame(in), Error);
+  EXPECT_EQ(rec.finish().frames, 5);  // 1.37 gets a frame of its own
+  EXPECT_THROW(rec.addFrame(in), Error);
+}
+
+TEST_F(FrameRecorderTest, MissingFfmpegIsReportedNotThrown) {
+  const std::string empty_bin = outputDir("FrameRecorderTest_empty_bin");
+  const char* old_path = std::getenv("PATH");
+  const std::string saved = old_path != nullptr ? old_path : "";
+  setenv("PATH", empty_bin.c_str(), 1);
+  FrameDef def;
+  def.fps = 10.0;
+  def.width_px = 160;
+  def.height_px = 120;
+  def.video = true;
+  def.gif = true;
+  def.out_dir = outputDir("FrameRecorderTest_noffmpeg");
+  RecordingResult result;
+  {
+    FrameRecorder rec(lot_, def);
+    record(rec, lot_, plan_);
+    result = rec.finish();
+  }
+  setenv("PATH", saved.c_str(), 1);
+  EXPECT_EQ(result.frames, 41);
+  EXPECT_EQ(result.video.status, VideoStatus::kFfmpegMissing);
+  EXPECT_EQ(result.gif.status, VideoStatus::kFfmpegMissing);
+  EXPECT_NE(result.video.message.find("ffmpeg"), std::string::npos) << result.video.message;
+  EXPECT_NE(result.message.find("not on PATH"), std::string::npos) << result.message;
+  EXPECT_FALSE(std::filesystem::exists(def.out_dir + "/episode.mp4"));
+  EXPECT_TRUE(std::filesystem::exists(def.out_dir + "/frames/000040.png"));
+}
+
+TEST_F(FrameRecorderTest, MakesAVideoWhenFfmpegIsThere) {
+  FrameDef def;
+  if (findExecutable(def.ffmpeg).empty()) GTEST_SKIP() << "ffmpeg is not installed";
+  def.fps = 10.0;
+  def.width_px = 161;  // odd: the encoder pads to even sizes
+  def.height_px = 121;
+  def.video = true;
+  def.gif = true;
+  def.out_dir = outputDir("FrameRecorderTest_video");
+  FrameRecorder rec(lot_, def);
+  record(rec, lot_, plan_);
+  const RecordingResult result = rec.finish();
+  EXPECT_EQ(result.video.status, VideoStatus::kWritten) << result.video.message;
+  EXPECT_EQ(result.gif.status, VideoStatus::kWritten) << result.gif.message;
+  EXPECT_GT(std::filesystem::file_size(def.out_dir + "/episode.mp4"), 1000u);
+  EXPECT_GT(std::filesystem::file_size(def.out_dir + "/episode.gif"), 1000u);
+}
+
+TEST_F(FrameRecorderTest, StaleFramesOfAnEarlierRecordingAreRemoved) {
+  FrameDef def;
+  def.width_px = 64;
+  def.height_px = 48;
+  def.out_dir = outputDir("FrameRecorderTest_stale");
+  std::filesystem::create_directories(def.out_dir + "/frames");
+  std::ofstream(def.out_dir + "/frames/000007.png") << "old";
+  std::ofstream(def.out_dir + "/frames/notes.txt") << "kept";
+  FrameRecorder rec(lot_, def);
+  rec.addFrame({});
+  EXPECT_EQ(rec.finish().frames, 1);
+  EXPECT_FALSE(std::filesystem::exists(def.out_dir + "/frames/000007.png"));
+  EXPECT_TRUE(std::filesystem::exists(def.out_dir + "/frames/notes.txt"));
+}
+
+TEST_F(FrameRecorderTest, BadDefinitionsThrow) {
+  FrameDef def;
+  def.out_dir = outputDir("FrameRecorderTest_bad");
+  def.fps = 0.0;
+  EXPECT_THROW(FrameRecorder(lot_, def), Error);
+  def.fps = 30.0;
+  def.width_px = 0;
+  EXPECT_THROW(FrameRecorder(lot_, def), Error);
+  EXPECT_EQ(frameViewFromString("both"), FrameView::kBoth);
+  EXPECT_THROW(frameViewFromString("side"), Error);
+}
+
+}  // namespace
+}  // namespace parksim

@@ -1,0 +1,101 @@
+#include "renders/SceneBuilder.h"
+
+#include <gtest/gtest.h>
+
+#include "RenderTestUtil.h"
+
+namespace parksim {
+namespace {
+
+using rendertest::testLot;
+
+TEST(SceneBuilderTest, LotSceneHasOneBoxPerObstacleInItsKindsColour) {
+  const Scenario s = testLot();
+  const SceneStyle style;
+  const Scene scene = buildLotScene(s, style);
+  ASSERT_EQ(scene.boxes.size(), s.obstacles.size());
+  for (std::size_t i = 0; i < s.obstacles.size(); ++i) {
+    EXPECT_EQ(scene.boxes[i].color, style.colorFor(s.obstacles[i].kind));
+    EXPECT_EQ(scene.boxes[i].footprint.center, s.obstacles[i].box.center);
+    EXPECT_DOUBLE_EQ(scene.boxes[i].height_m, s.obstacles[i].height_m);
+  }
+  EXPECT_LE(scene.extent.x_min, s.lot.x_min_m - style.margin_m);
+  EXPECT_GE(scene.extent.x_max, s.lot.x_max_m + style.margin_m);
+  ASSERT_EQ(scene.arrows.size(), 2u);
+  EXPECT_EQ(scene.arrows[0].pose, s.start);
+  EXPECT_EQ(scene.arrows[0].color, style.start);
+  EXPECT_EQ(scene.arrows[1].pose, s.goal.pose);
+  EXPECT_EQ(scene.arrows[1].color, style.goal);
+  EXPECT_FALSE(scene.focus);
+  EXPECT_TRUE(scene.texts.empty());
+}
+
+TEST(SceneBuilderTest, ObstaclesMoveAndTurnRedOnContact) {
+  const Scenario s = testLot();
+  const SceneStyle style;
+  std::vector<Pose2> poses;
+  for (const Obstacle& o : s.obstacles)
+    poses.push_back({o.box.center.x(), o.box.center.y(), o.box.yaw});
+  poses.back() = {1.35, 0.05, 0.3};  // the parked robot was pushed
+  const std::vector<int> contacts = {3};
+  const Scene scene = buildLotScene(s, style, poses, contacts);
+  EXPECT_EQ(scene.boxes.back().footprint.center, Eigen::Vector2d(1.35, 0.05));
+  EXPECT_DOUBLE_EQ(scene.boxes.back().footprint.yaw, 0.3);
+  EXPECT_EQ(scene.boxes.back().color, style.contact);
+  EXPECT_EQ(scene.boxes.front().color, style.wall);
+}
+
+TEST(SceneBuilderTest, ViewStateAddsRobotPathsAndOverlay) {
+  const Scenario s = testLot();
+  const SceneStyle style;
+  const std::vector<Pose2> planned = {{0.1, 0.1, 0.0}, {0.2, 0.1, 0.0}, {0.3, 0.2, 0.5}};
+  const std::vector<Pose2> executed = {{0.1, 0.1, 0.0}, {0.15, 0.1, 0.0}};
+  ViewState view;
+  view.robot = Pose2{0.15, 0.1, 0.0};
+  view.reference = Pose2{0.16, 0.1, 0.0};
+  view.planned_path = planned;
+  view.executed_path = executed;
+  view.overlay = Overlay{"lot", 2.5, 0.004, 0.01};
+  const Scene lot = buildLotScene(s, style);
+  const Scene scene = buildScene(s, view, style);
+  // Body and two wheels.
+  ASSERT_EQ(scene.boxes.size(), lot.boxes.size() + 3);
+  EXPECT_EQ(scene.boxes[lot.boxes.size()].color, style.robot);
+  EXPECT_EQ(scene.boxes[lot.boxes.size()].footprint.center,
+            footprintAt(s.robot, *view.robot).center);
+  ASSERT_TRUE(scene.focus);
+  EXPECT_DOUBLE_EQ(scene.focus->x(), 0.15);
+  // Planned and executed paths and the reference outline, in their colours.
+  int planned_lines = 0;
+  int executed_lines = 0;
+  int reference_lines = 0;
+  for (const ScenePolyline& l : scene.lines) {
+    planned_lines += l.color == style.planned && l.points.size() == 3;
+    executed_lines += l.color == style.executed && l.points.size() == 2;
+    reference_lines += l.color == style.reference && l.closed;
+  }
+  EXPECT_EQ(planned_lines, 1);
+  EXPECT_EQ(executed_lines, 1);
+  EXPECT_EQ(reference_lines, 1);
+  ASSERT_EQ(scene.texts.size(), 2u);
+  EXPECT_NE(scene.texts[0].text.find("t =   2.50 s"), std::string::npos) << scene.texts[0].text;
+  EXPECT_NE(scene.texts[1].text.find("4.0 mm"), std::string::npos) << scene.texts[1].text;
+  EXPECT_FALSE(scene.texts[0].world);
+}
+
+TEST(SceneBuilderTest, SampledPathFollowsTheTrajectorysArcs) {
+  const RobotDef robot;
+  const Trajectory traj = rendertest::sampleDrive(robot, {0.1, 0.1, kPi / 2});
+  const std::vector<Pose2> path = samplePath(traj, robot, 0.002, 0.05);
+  ASSERT_GT(path.size(), traj.points.size());
+  EXPECT_EQ(path.front(), traj.points.front().pose);
+  EXPECT_EQ(path.back(), traj.points.back().pose);
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    EXPECT_LE(positionDistance(path[i - 1], path[i]), 0.002 + 1e-12);
+    EXPECT_LE(headingDistance(path[i - 1], path[i]), 0.05 + 1e-12);
+  }
+  EXPECT_TRUE(samplePath(Trajectory{}, robot).empty());
+}
+
+}  // namespace
+}  // namespace parksim
