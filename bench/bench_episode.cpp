@@ -1,0 +1,108 @@
+// Episode benchmark on the study worlds (docs/simulation.md, "Benchmark"):
+// - BM_Simulate: the dynamics alone (Bullet steps, control, measurement) driving a fixed plan;
+//   the `rtf` counter is simulated seconds per CPU second, the real-time factor.
+// - BM_Episode: what `parksim run` does after reading the world: plan, simulate, metrics.
+// Arguments: world (0 head_in, 1 parallel), tracking (0 closed, 1 open), solver iterations.
+
+#include <map>
+#include <string>
+
+#include <benchmark/benchmark.h>
+
+#include "collision/BulletCollisionWorld.h"
+#include "planner/PlanScenario.h"
+#include "scenario/ScenarioReader.h"
+#include "sim/Episode.h"
+#include "sim/EpisodeFiles.h"
+
+namespace parksim {
+namespace {
+
+const char* const kWorlds[] = {"head_in", "parallel"};
+
+Scenario world(long index, long solver_iterations) {
+  Scenario s =
+      loadScenario(std::string(PARKSIM_SOURCE_DIR) + "/worlds/" + kWorlds[index] + ".yaml");
+  s.physics.solver_iterations = static_cast<int>(solver_iterations);
+  return s;
+}
+
+PlanSetup setup() {
+  PlanSetup p;
+  p.planner.seed = 1;
+  p.planner.record_tree = false;
+  return p;
+}
+
+const Trajectory& plannedOnce(long index) {
+  static std::map<long, Trajectory> plans;
+  auto it = plans.find(index);
+  if (it == plans.end()) {
+    const Scenario s = world(index, 50);
+    const BulletCollisionWorld checker(s);
+    it = plans.emplace(index, planScenario(s, checker, setup()).trajectory).first;
+  }
+  return it->second;
+}
+
+void BM_Simulate(benchmark::State& state) {
+  const Scenario s = world(state.range(0), state.range(2));
+  const Trajectory& plan = plannedOnce(state.range(0));
+  if (plan.empty()) {
+    state.SkipWithError("the plan is unsolved");
+    return;
+  }
+  ExecutionDef def;
+  def.tracking = state.range(1) == 0 ? TrackingMode::kClosed : TrackingMode::kOpen;
+  double sim_s = 0.0;
+  double max_err = 0.0;
+  for (auto _ : state) {
+    const EpisodeResult r = runEpisode(s, plan, def);
+    sim_s += r.metrics.sim_time_s;
+    max_err = r.metrics.max_pos_err_m;
+    benchmark::DoNotOptimize(r.rows.data());
+  }
+  state.counters["rtf"] = benchmark::Counter(sim_s, benchmark::Counter::kIsRate);
+  state.counters["sim_s"] = sim_s / static_cast<double>(state.iterations());
+  state.counters["max_err_mm"] = max_err * 1e3;
+  state.SetLabel(std::string(kWorlds[state.range(0)]) +
+                 (def.tracking == TrackingMode::kClosed ? " closed" : " open"));
+}
+
+void BM_Episode(benchmark::State& state) {
+  const Scenario s = world(state.range(0), state.range(2));
+  double sim_s = 0.0;
+  for (auto _ : state) {
+    const BulletCollisionWorld checker(s);
+    const PlanResult plan = planScenario(s, checker, setup());
+    if (!plan.solved()) {
+      state.SkipWithError("the plan is unsolved");
+      return;
+    }
+    const EpisodeResult r = runEpisode(s, plan.trajectory);
+    const nlohmann::json metrics = metricsToJson(r.metrics);
+    const std::string csv = executedCsv(r.rows);
+    sim_s += r.metrics.sim_time_s;
+    benchmark::DoNotOptimize(csv.data());
+    benchmark::DoNotOptimize(metrics.size());
+  }
+  state.counters["sim_s"] = sim_s / static_cast<double>(state.iterations());
+  state.SetLabel(kWorlds[state.range(0)]);
+}
+
+BENCHMARK(BM_Simulate)
+    ->ArgNames({"world", "open", "iters"})
+    ->ArgsProduct({{0, 1}, {0, 1}, {50}})
+    ->Args({0, 0, 20})
+    ->Args({1, 0, 20})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Episode)
+    ->ArgNames({"world", "open", "iters"})
+    ->Args({0, 0, 50})
+    ->Args({1, 0, 50})
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace parksim
+
+BENCHMARK_MAIN();
