@@ -1,15 +1,301 @@
-// Placeholder until the bench command lands; its owner replaces this file.
-#include <cstdio>
+// parksim bench WORLD [WORLD...]: the planning benchmark. Runs every parksim planner over seeds
+// 1..N per world and, with --ompl, OMPL's RRT, RRTConnect and RRT* (Reeds-Shepp and SE2) on the
+// same Bullet footprint checker; checks every path with parksim's exact path check; writes
+// DIR/bench.csv and DIR/summary.md and prints the tables (docs/benchmarks.md explains them).
+// Runs are interleaved seed by seed, so a change in machine load hits every planner alike.
+// Exit status: 0 when every run finished (unsolved runs are results, not errors), 2 on bad input.
 
 #include "app/Command.h"
+
+#ifdef PARKSIM_HAVE_OMPL_BENCH
+
+#include <unistd.h>
+
+#include <chrono>
+#include <climits>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "bench/ompl/OmplLog.h"
+#include "bench/ompl/OmplPlanners.h"
+#include "bench/planning/BenchCsv.h"
+#include "bench/planning/BenchSummary.h"
+#include "bench/planning/ParksimRuns.h"
+#include "collision/BulletCollisionWorld.h"
+#include "core/AtomicFile.h"
+#include "core/Error.h"
+#include "planner/TreePlanner.h"
+#include "scenario/ScenarioReader.h"
+
+namespace parksim::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct BenchOptions {
+  std::vector<std::string> worlds;
+  int seeds = 100;
+  std::vector<std::string> planners;  // parksim planner kinds; empty: all
+  int max_iterations = 2000;
+  double anytime_s = 0.1;
+  bool ompl = false;
+  std::vector<std::string> ompl_planners = {"RRT", "RRTConnect", "RRTstar"};
+  std::vector<std::string> ompl_spaces = {"reeds-shepp", "se2"};
+  double budget_s = 1.0;
+  double turning_radius_m = 0.1;
+  double segment_m = 0.0005;
+  std::string out = "out/bench";
+  std::string ompl_log;
+};
+
+// Planners that keep improving their path until their budget ends get a second, time-budgeted
+// run per seed for the path length they reach in --anytime-s.
+bool isAnytime(PlannerKind kind) { return std::string_view(toString(kind)) == "rrt-star"; }
+
+double loadAverage() {
+  double load[1] = {0.0};
+  return getloadavg(load, 1) == 1 ? load[0] : -1.0;
+}
+
+std::string hostName() {
+  char name[256] = {};
+  return gethostname(name, sizeof name - 1) == 0 ? name : "UNKNOWN";
+}
+
+std::string cpuInfo() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      return line.substr(line.find(':') + 2) + ", " +
+             std::to_string(sysconf(_SC_NPROCESSORS_ONLN)) + " logical CPUs";
+    }
+  }
+  return "";
+}
+
+std::string localTime() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  localtime_r(&now, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S", &tm);
+  return buf;
+}
+
+// FILE for a single world; FILE with ".<scenario>" before its extension for several.
+std::string logPathFor(const std::string& path, const std::string& scenario, bool several) {
+  if (!several) return path;
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) {
+    return path + "." + scenario;
+  }
+  return path.substr(0, dot) + "." + scenario + path.substr(dot);
+}
+
+std::string settingsText(const BenchOptions& o) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "seeds 1..%d; parksim: max_iterations %d, anytime budget %g s; OMPL: %s, time "
+                "limit %g s, Reeds-Shepp turning radius %g m, motion-check segment %g m, "
+                "validity margin 0; exact path check at 0.2 mm, margin 0",
+                o.seeds, o.max_iterations, o.anytime_s, o.ompl ? "on" : "off", o.budget_s,
+                o.turning_radius_m, o.segment_m);
+  return buf;
+}
+
+int runBench(const BenchOptions& o) {
+  if (o.seeds < 1) throw Error("--seeds must be at least 1");
+  std::vector<PlannerKind> kinds;
+  if (o.planners.empty()) {
+    kinds = allPlannerKinds();
+  } else {
+    for (const std::string& name : o.planners) kinds.push_back(plannerKindFromString(name));
+  }
+  std::vector<bench::OmplPlanner> ompl_planners;
+  std::vector<bench::OmplSpace> ompl_spaces;
+  if (o.ompl) {
+    for (const std::string& name : o.ompl_planners) {
+      ompl_planners.push_back(bench::omplPlannerFromString(name));
+    }
+    for (const std::string& name : o.ompl_spaces) {
+      ompl_spaces.push_back(bench::omplSpaceFromString(name));
+    }
+  }
+  std::vector<Scenario> scenarios;
+  for (const std::string& path : o.worlds) scenarios.push_back(loadScenario(path));
+  ensureDirectory(o.out);
+
+  const double load_before = loadAverage();
+  std::printf("parksim bench: %zu world(s), seeds 1..%d, load average %.2f at start\n",
+              scenarios.size(), o.seeds, load_before);
+  std::printf("settings: %s\n", settingsText(o).c_str());
+  std::fflush(stdout);
+
+  std::vector<bench::BenchRecord> all;
+  std::vector<double> world_seconds;
+  const std::string start_time = localTime();
+  const bench::PathCheckDef check;  // 0.2 mm, margin 0, with clearance
+  for (const Scenario& scenario : scenarios) {
+    const BulletCollisionWorld world(scenario);
+    const Clock::time_point t0 = Clock::now();
+    for (int seed = 1; seed <= o.seeds; ++seed) {
+      for (PlannerKind kind : kinds) {
+        bench::ParksimRunDef def;
+        def.setup.planner.kind = kind;
+        def.setup.planner.seed = static_cast<std::uint64_t>(seed);
+        def.setup.planner.max_iterations = o.max_iterations;
+        def.setup.planner.record_tree = false;
+        def.check = check;
+        all.push_back(bench::runParksim(scenario, world, def));
+        if (isAnytime(kind)) {
+          def.setup.planner.max_iterations = INT_MAX;
+          def.setup.planner.max_time_s = o.anytime_s;
+          all.push_back(bench::runParksim(scenario, world, def));
+        }
+      }
+      for (bench::OmplSpace space : ompl_spaces) {
+        for (bench::OmplPlanner planner : ompl_planners) {
+          bench::OmplRunDef def;
+          def.planner = planner;
+          def.space = space;
+          def.seed = static_cast<std::uint32_t>(seed);
+          def.time_limit_s = o.budget_s;
+          def.turning_radius_m = o.turning_radius_m;
+          def.segment_m = o.segment_m;
+          all.push_back(bench::runOmpl(scenario, world, def, check));
+        }
+      }
+      if (seed % 10 == 0 || seed == o.seeds) {
+        std::fprintf(stderr, "  %s: seed %d/%d done, %.1f s\n", scenario.name.c_str(), seed,
+                     o.seeds, std::chrono::duration<double>(Clock::now() - t0).count());
+      }
+    }
+    world_seconds.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+  }
+  const double load_after = loadAverage();
+
+  const std::string csv_path = o.out + "/bench.csv";
+  bench::writeBenchCsv(csv_path, all);
+
+  const std::vector<bench::GroupSummary> groups = bench::summarize(all);
+  std::string summary = "## Runs\n\n" + bench::formatSummaryTable(groups);
+  summary += "\n## Where parksim's planners spend their time (mean per run)\n\n" +
+             bench::formatPhaseTable(groups);
+  const std::string comparison = bench::formatComparison(groups);
+  if (!comparison.empty()) summary += "\n## parksim vs OMPL (issue 5 targets)\n\n" + comparison;
+  std::string invalid;
+  for (const bench::BenchRecord& r : all) {
+    if (r.solved && !r.valid) {
+      invalid += "- " + r.library + " " + r.planner + " (" + r.space + ", " + r.budget + ") " +
+                 r.scenario + " seed " + std::to_string(r.seed) + "\n";
+    }
+  }
+  summary += invalid.empty()
+                 ? "\nEvery solved path passed parksim's exact path check (0.2 mm, margin 0).\n"
+                 : "\n## Paths that failed parksim's exact path check\n\n" + invalid;
+  char load_line[160];
+  std::snprintf(load_line, sizeof load_line, "\nLoad average %.2f at start, %.2f at end.\n",
+                load_before, load_after);
+  summary += load_line;
+  writeFileAtomically(o.out + "/summary.md", summary);
+  std::printf("\n%s\nwrote %s and %s/summary.md\n", summary.c_str(), csv_path.c_str(),
+              o.out.c_str());
+
+  if (!o.ompl_log.empty()) {
+    for (std::size_t w = 0; w < scenarios.size(); ++w) {
+      std::vector<bench::BenchRecord> mine;
+      for (const bench::BenchRecord& r : all) {
+        if (r.scenario == scenarios[w].name) mine.push_back(r);
+      }
+      bench::OmplLogInfo info;
+      info.experiment = "parksim_" + scenarios[w].name;
+      info.host = hostName();
+      info.start_time = start_time;
+      info.setup = "world " + scenarios[w].source_path + "\n" + settingsText(o) + "\n";
+      info.cpu_info = cpuInfo();
+      info.time_limit_s = o.ompl ? std::max(o.budget_s, o.anytime_s) : o.anytime_s;
+      info.runs_per_planner = o.seeds;
+      info.total_s = world_seconds[w];
+      const std::string path = logPathFor(o.ompl_log, scenarios[w].name, scenarios.size() > 1);
+      writeFileAtomically(path, bench::omplBenchmarkLog(info, mine));
+      std::printf("wrote %s\n", path.c_str());
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+CommandRunner setupBenchCommand(CLI::App& sub) {
+  auto opt = std::make_shared<BenchOptions>();
+  sub.add_option("worlds", opt->worlds, "world files (YAML, see docs/world-format.md)")->required();
+  sub.add_option("--seeds", opt->seeds, "runs per planner and world, with seeds 1..N")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub.add_option("--planners", opt->planners,
+                 "parksim planners, comma-separated (default: every planner kind)")
+      ->delimiter(',');
+  sub.add_option("--max-iterations", opt->max_iterations,
+                 "iteration budget of parksim's first-solution runs")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub.add_option("--anytime-s", opt->anytime_s,
+                 "wall-time budget of the extra run of parksim's anytime planners (RRT*), s")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub.add_flag("--ompl", opt->ompl, "also run OMPL's planners on the same footprint checker");
+  sub.add_option("--ompl-planners", opt->ompl_planners, "OMPL planners, comma-separated")
+      ->delimiter(',')
+      ->capture_default_str();
+  sub.add_option("--ompl-spaces", opt->ompl_spaces,
+                 "OMPL state spaces, comma-separated: reeds-shepp, se2")
+      ->delimiter(',')
+      ->capture_default_str();
+  sub.add_option("--budget-s", opt->budget_s,
+                 "OMPL's wall-time limit per run, s (RRT* improves its path until then)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub.add_option("--turning-radius", opt->turning_radius_m,
+                 "Reeds-Shepp minimum turning radius for OMPL, m")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub.add_option("--segment", opt->segment_m,
+                 "longest motion OMPL's motion validator leaves unchecked (state-space distance)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub.add_option("--out", opt->out, "output directory for bench.csv and summary.md")
+      ->capture_default_str();
+  sub.add_option("--ompl-log", opt->ompl_log,
+                 "also write OMPL's benchmark log format here (one file per world: "
+                 "FILE.<scenario>.log when there are several)");
+  return [opt] { return runBench(*opt); };
+}
+
+}  // namespace parksim::app
+
+#else  // the bench libraries (bench/ompl.cmake) are not linked into this build
+
+#include <cstdio>
 
 namespace parksim::app {
 
 CommandRunner setupBenchCommand(CLI::App&) {
   return [] {
-    std::fprintf(stderr, "parksim bench: not available in this build yet\n");
+    std::fprintf(stderr,
+                 "parksim bench: not built (configure with PARKSIM_BUILD_BENCH=ON and link "
+                 "parksim_ompl_bench)\n");
     return 2;
   };
 }
 
 }  // namespace parksim::app
+
+#endif

@@ -173,7 +173,7 @@ std::string formatSummaryTable(const std::vector<GroupSummary>& groups) {
       if (const auto s = studyPlanningTime(g.scenario, g.planner)) {
         study = format("%.1f s", *s);
         if (std::isfinite(g.time_first_median_s) && g.time_first_median_s > 0.0) {
-          study += format(" (%.0fx slower)", *s / g.time_first_median_s);
+          study += format(" = %.0fx parksim's median", *s / g.time_first_median_s);
         }
       }
     }

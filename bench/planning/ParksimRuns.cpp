@@ -1,12 +1,16 @@
 #include "bench/planning/ParksimRuns.h"
 
+#include <climits>
 #include <cstdio>
 
 namespace parksim::bench {
 
 std::string budgetName(const PlannerDef& planner) {
   std::string name;
-  if (planner.max_iterations > 0) name = "iterations=" + std::to_string(planner.max_iterations);
+  // INT_MAX iterations is how a purely time-budgeted run is asked for: leave it out.
+  if (planner.max_iterations < INT_MAX) {
+    name = "iterations=" + std::to_string(planner.max_iterations);
+  }
   if (planner.max_time_s > 0.0) {
     char buf[48];
     std::snprintf(buf, sizeof buf, "time=%gs", planner.max_time_s);

@@ -24,7 +24,8 @@ struct ParksimRunDef {
 BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& world,
                        const ParksimRunDef& def);
 
-/// "iterations=N", "time=Ss" or both joined with '+': what ends a parksim run.
+/// "iterations=N", "time=Ss" or both joined with '+': what ends a parksim run. INT_MAX
+/// iterations (a run budgeted by time alone) is left out.
 std::string budgetName(const PlannerDef& planner);
 
 /// The planner's per-phase wall times as (name, seconds), in a fixed order.
