@@ -36,7 +36,7 @@ void addAxesAndTitle(Scene& scene, const Extent2& data, const std::string& title
     return std::max(3, static_cast<int>(std::lround(most * side / span)));
   };
   const std::vector<double> xt = niceTicks(data.x_min, data.x_max, ticks_for(data.width(), 9.0));
-  const std::vector<double> yt = niceTicks(data.y_min, data.y_max, ticks_for(data.height(), 7.0));
+  const std::vector<double> yt = niceTicks(data.y_min, data.y_max, ticks_for(data.height(), 9.0));
   const double x_step = xt.size() > 1 ? xt[1] - xt[0] : 1.0;
   const double y_step = yt.size() > 1 ? yt[1] - yt[0] : 1.0;
   for (double x : xt) {

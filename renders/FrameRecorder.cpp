@@ -35,6 +35,19 @@ FrameView frameViewFromString(const std::string& name) {
   throw Error("view must be top, 3d or both, got '" + name + "'");
 }
 
+ImageSize parseImageSize(const std::string& text) {
+  ImageSize size;
+  char x = 0;
+  char extra = 0;
+  const int n = std::sscanf(text.c_str(), "%d%c%d%c", &size.width_px, &x, &size.height_px, &extra);
+  if (n != 3 || (x != 'x' && x != 'X') || size.width_px < 16 || size.height_px < 16 ||
+      size.width_px > 8192 || size.height_px > 8192) {
+    throw Error("size must be WxH with each side from 16 to 8192 pixels, e.g. 640x480, got '" +
+                text + "'");
+  }
+  return size;
+}
+
 namespace {
 
 std::string framePathIn(const std::string& dir, int index) {

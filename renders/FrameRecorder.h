@@ -37,6 +37,14 @@ const char* toString(FrameView view);
 /// Parses "top", "3d" or "both"; throws Error otherwise.
 FrameView frameViewFromString(const std::string& name);
 
+struct ImageSize {
+  int width_px = 0;
+  int height_px = 0;
+};
+
+/// Parses "WxH" (e.g. "640x480"), each between 16 and 8192. Throws Error otherwise.
+ImageSize parseImageSize(const std::string& text);
+
 struct FrameDef {
   double fps = 30.0;    ///< frames per second of simulated time (> 0)
   int width_px = 640;   ///< width of one view, pixels; kBoth images are twice as wide

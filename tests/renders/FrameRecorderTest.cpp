@@ -218,3 +218,19 @@ TEST_F(FrameRecorderTest, BadDefinitionsThrow) {
 
 }  // namespace
 }  // namespace parksim
+
+namespace parksim {
+namespace {
+
+TEST(ImageSizeTest, ParsesWidthByHeight) {
+  const ImageSize s = parseImageSize("1280x720");
+  EXPECT_EQ(s.width_px, 1280);
+  EXPECT_EQ(s.height_px, 720);
+  EXPECT_EQ(parseImageSize("64X48").height_px, 48);
+  for (const char* bad : {"", "640", "640x", "x480", "640x480x", "8x8", "640*480", "99999x2"}) {
+    EXPECT_THROW(parseImageSize(bad), Error) << bad;
+  }
+}
+
+}  // namespace
+}  // namespace parksim
