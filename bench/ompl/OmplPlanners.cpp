@@ -26,6 +26,7 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include "bench/planning/ParksimRuns.h"
 #include "core/Error.h"
 #include "core/Geometry.h"
 
@@ -213,9 +214,11 @@ OmplRunResult runInThisProcess(const Scenario& scenario, const FootprintChecker&
 
   const ob::PlannerTerminationCondition ptc =
       ob::timedPlannerTerminationCondition(def.time_limit_s);
+  const double cpu0 = threadCpuSeconds();
   t0 = Clock::now();
   const ob::PlannerStatus status = planner->solve(ptc);
   result.time_total_s = secondsSince(t0);
+  result.cpu_total_s = threadCpuSeconds() - cpu0;
 
   result.status = status.asString();
   result.status_code = static_cast<int>(ob::PlannerStatus::StatusType(status));
@@ -305,6 +308,7 @@ std::string encode(const OmplRunResult& r) {
   e.put(r.status_code);
   e.put(r.time_first_s);
   e.put(r.time_total_s);
+  e.put(r.cpu_total_s);
   e.put(r.ompl_length);
   e.put(r.graph_states);
   e.put(r.waypoints);
@@ -320,6 +324,7 @@ OmplRunResult decode(const std::string& bytes) {
   d.get(r.status_code);
   d.get(r.time_first_s);
   d.get(r.time_total_s);
+  d.get(r.cpu_total_s);
   d.get(r.ompl_length);
   d.get(r.graph_states);
   d.get(r.waypoints);
@@ -425,6 +430,7 @@ BenchRecord runOmpl(const Scenario& scenario, const BulletCollisionWorld& world,
   r.status = run.status;
   r.time_first_s = run.time_first_s;
   r.time_total_s = run.time_total_s;
+  r.cpu_total_s = run.cpu_total_s;
   r.tree_size = run.graph_states;
   if (run.solved) {
     const PathCheck verdict = checkPath(run.dense, scenario, world, check);

@@ -70,6 +70,7 @@ struct OmplRunResult {
   int status_code = 0;                 ///< ompl::base::PlannerStatus::StatusType value
   double time_first_s = kNotMeasured;  ///< wall time to the first exact solution, s
   double time_total_s = kNotMeasured;  ///< wall time of solve(), s
+  double cpu_total_s = kNotMeasured;   ///< CPU time of solve(), s
   double ompl_length = kNotMeasured;   ///< PathGeometric::length() in the space's metric
   long graph_states = -1;              ///< vertices of the planner's graph after the run
   std::vector<Pose2> waypoints;        ///< the solution path's states

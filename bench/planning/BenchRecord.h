@@ -26,8 +26,11 @@ struct BenchRecord {
   /// Verdict of parksim's exact path check (bench/planning/PathCheck.h); false when unsolved.
   bool valid = false;
 
-  double time_first_s = kNotMeasured;     ///< wall time to the first solution, s
-  double time_total_s = kNotMeasured;     ///< wall time of the whole run, s
+  double time_first_s = kNotMeasured;  ///< wall time to the first solution, s
+  double time_total_s = kNotMeasured;  ///< wall time of the whole run, s
+  /// CPU time of the whole run, s: unlike wall time, barely affected by other processes
+  /// competing for the cores, so it cross-checks wall-time ratios on a shared machine.
+  double cpu_total_s = kNotMeasured;
   double length_m = kNotMeasured;         ///< length travelled by the reference point, m
   int cusps = -1;                         ///< direction reversals along the path
   double min_clearance_m = kNotMeasured;  ///< smallest footprint-obstacle distance along the path

@@ -100,7 +100,7 @@ std::optional<double> studyPlanningTime(const std::string& scenario, const std::
 std::vector<GroupSummary> summarize(const std::vector<BenchRecord>& records) {
   struct Acc {
     GroupSummary g;
-    std::vector<double> times, lengths, cusps, clearances, totals;
+    std::vector<double> times, lengths, cusps, clearances, totals, cpus;
     std::vector<std::pair<std::string, double>> phase_sum;
   };
   std::vector<Acc> accs;
@@ -122,6 +122,7 @@ std::vector<GroupSummary> summarize(const std::vector<BenchRecord>& records) {
     ++a.g.runs;
     a.times.push_back(r.solved && !std::isnan(r.time_first_s) ? r.time_first_s : kInf);
     if (!std::isnan(r.time_total_s)) a.totals.push_back(r.time_total_s);
+    if (!std::isnan(r.cpu_total_s)) a.cpus.push_back(r.cpu_total_s);
     if (r.solved) {
       ++a.g.solved;
       if (r.valid) ++a.g.valid;
@@ -147,6 +148,7 @@ std::vector<GroupSummary> summarize(const std::vector<BenchRecord>& records) {
     g.length_median_m = quantile(a.lengths, 0.5);
     g.cusps_median = quantile(a.cusps, 0.5);
     g.clearance_median_m = quantile(a.clearances, 0.5);
+    g.cpu_total_median_s = quantile(a.cpus, 0.5);
     if (!a.totals.empty()) {
       double sum = 0.0;
       for (double t : a.totals) sum += t;
@@ -161,11 +163,21 @@ std::vector<GroupSummary> summarize(const std::vector<BenchRecord>& records) {
 }
 
 std::string formatSummaryTable(const std::vector<GroupSummary>& groups) {
-  const std::vector<std::string> header = {
-      "scenario",         "library",       "planner",       "space",
-      "budget",           "runs",          "solved",        "valid",
-      "t_first median",   "t_first p90",   "length median", "cusps median",
-      "clearance median", "study (Python)"};
+  const std::vector<std::string> header = {"scenario",
+                                           "library",
+                                           "planner",
+                                           "space",
+                                           "budget",
+                                           "runs",
+                                           "solved",
+                                           "valid",
+                                           "t_first median",
+                                           "t_first p90",
+                                           "CPU per run median",
+                                           "length median",
+                                           "cusps median",
+                                           "clearance median",
+                                           "study (Python)"};
   std::vector<std::vector<std::string>> rows;
   for (const GroupSummary& g : groups) {
     std::string study = "";
@@ -181,8 +193,8 @@ std::string formatSummaryTable(const std::vector<GroupSummary>& groups) {
                     percentText(g.successRate()),
                     g.solved > 0 ? format("%.0f%%", 100.0 * g.valid / g.solved) : "-",
                     timeText(g.time_first_median_s), timeText(g.time_first_p90_s),
-                    lengthText(g.length_median_m), plainText(g.cusps_median),
-                    mmText(g.clearance_median_m), study});
+                    timeText(g.cpu_total_median_s), lengthText(g.length_median_m),
+                    plainText(g.cusps_median), mmText(g.clearance_median_m), study});
   }
   return markdownTable(header, rows);
 }

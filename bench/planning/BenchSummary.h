@@ -31,6 +31,7 @@ struct GroupSummary {
   double cusps_median = kNotMeasured;
   double clearance_median_m = kNotMeasured;
   double time_total_mean_s = kNotMeasured;
+  double cpu_total_median_s = kNotMeasured;  ///< median CPU time of a whole run
   /// Mean over runs of each phase, s, in the planner's order (parksim only).
   std::vector<std::pair<std::string, double>> phase_mean_s;
 

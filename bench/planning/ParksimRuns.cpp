@@ -1,9 +1,17 @@
 #include "bench/planning/ParksimRuns.h"
 
+#include <time.h>
+
 #include <climits>
 #include <cstdio>
 
 namespace parksim::bench {
+
+double threadCpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
 
 std::string budgetName(const PlannerDef& planner) {
   std::string name;
@@ -27,7 +35,9 @@ std::vector<std::pair<std::string, double>> phaseList(const PhaseTimes& t) {
 
 BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& world,
                        const ParksimRunDef& def) {
+  const double cpu0 = threadCpuSeconds();
   const PlanResult result = planScenario(scenario, world, def.setup);
+  const double cpu = threadCpuSeconds() - cpu0;
   BenchRecord r;
   r.library = "parksim";
   r.planner = toString(def.setup.planner.kind);
@@ -38,6 +48,7 @@ BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& wor
   r.solved = result.solved();
   r.status = toString(result.status);
   r.time_total_s = result.stats.times.total_s;
+  r.cpu_total_s = cpu;
   r.iterations = result.stats.iterations;
   r.tree_size = result.stats.tree_size;
   r.collision_queries = result.stats.collision_queries;

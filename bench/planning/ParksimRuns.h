@@ -28,6 +28,9 @@ BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& wor
 /// iterations (a run budgeted by time alone) is left out.
 std::string budgetName(const PlannerDef& planner);
 
+/// CPU time the calling thread has used, s.
+double threadCpuSeconds();
+
 /// The planner's per-phase wall times as (name, seconds), in a fixed order.
 std::vector<std::pair<std::string, double>> phaseList(const PhaseTimes& times);
 
