@@ -1,8 +1,9 @@
-// parksim run WORLD: plan (or load a plan), drive it in the Bullet simulation, measure.
-// Writes DIR/trajectory.csv and DIR/plan.json (as `parksim plan`), DIR/executed.csv and
-// DIR/metrics.json. Exit status: 0 when the robot ends within the world's goal tolerance
-// without touching anything, 1 otherwise (or when planning fails) with a one-line reason on
-// stderr, 2 on bad input.
+// parksim run WORLD: plan (or load a plan), drive it in the Bullet simulation, measure, and
+// optionally film it. Writes DIR/trajectory.csv and DIR/plan.json (as `parksim plan`),
+// DIR/executed.csv, DIR/metrics.json, and with --frames DIR/frames/*.png (--video, --gif:
+// DIR/episode.mp4, DIR/episode.gif). Exit status: 0 when the robot ends within the world's goal
+// tolerance and the default TrackingTolerance holds (no contact, tracking error <= 5 mm, ...);
+// 1 otherwise, or when planning fails, with a one-line reason on stderr; 2 on bad input.
 
 #include <cstdio>
 #include <filesystem>
@@ -14,9 +15,11 @@
 #include "collision/BulletCollisionWorld.h"
 #include "core/AtomicFile.h"
 #include "core/Error.h"
+#include "renders/FrameRecorder.h"
 #include "scenario/ScenarioReader.h"
 #include "sim/Episode.h"
 #include "sim/EpisodeFiles.h"
+#include "sim/TrackingTolerance.h"
 
 namespace parksim::app {
 
@@ -72,21 +75,39 @@ Trajectory loadPlanFile(const std::string& path, const Scenario& scenario) {
   return plan;
 }
 
+// Empty when the episode succeeded; otherwise the one line that says why.
 std::string failureReason(const Scenario& scenario, const EpisodeMetrics& m) {
   char text[320];
   if (m.contacts > 0) {
     std::snprintf(text, sizeof text, "touched %s at %.3f s (%d contact event%s)",
                   m.first_contact_body.c_str(), m.first_contact_t_s, m.contacts,
                   m.contacts == 1 ? "" : "s");
-  } else {
+    return text;
+  }
+  if (!m.goal_reached) {
     std::snprintf(text, sizeof text,
                   "goal not reached: ended %.3f mm / %.3f deg from the goal (tolerance %.3f mm / "
                   "%.3f deg)",
                   m.goal_pos_err_m * 1e3, m.goal_heading_err_deg,
                   scenario.goal.position_tolerance_m * 1e3,
                   radToDeg(scenario.goal.heading_tolerance_rad));
+    return text;
   }
-  return text;
+  const std::vector<std::string> violations = checkTracking(TrackingTolerance{}, m);
+  if (!violations.empty()) return "tracking tolerance not met: " + joinViolations(violations);
+  return {};
+}
+
+FrameInput frameInput(const EpisodeSample& sample) {
+  FrameInput in;
+  in.t_s = sample.tracking.t_s;
+  in.pose = sample.tracking.pose;
+  in.reference = sample.tracking.reference;
+  in.position_error_m = sample.tracking.pos_err_m;
+  in.heading_error_rad = sample.tracking.heading_err_rad;
+  in.obstacle_poses = sample.obstacles;
+  in.contacts = sample.contacts;
+  return in;
 }
 
 }  // namespace
@@ -98,6 +119,12 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     std::string tracking = "closed";
     std::string plan_file;
     PlanCliOptions plan;
+    bool frames = false;
+    bool video = false;
+    bool gif = false;
+    double fps = 30.0;
+    std::string size = "640x480";
+    std::string view = "top";
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
@@ -110,11 +137,33 @@ CommandRunner setupRunCommand(CLI::App& sub) {
                  "drive this trajectory.csv instead of planning (it must start at the world's "
                  "start)");
   sub.add_option("--out", opt->out, "output directory")->capture_default_str();
+  sub.add_flag("--frames", opt->frames, "film the episode: OUT/frames/000000.png, ...");
+  sub.add_flag("--video", opt->video, "also OUT/episode.mp4 (needs ffmpeg; implies --frames)");
+  sub.add_flag("--gif", opt->gif, "also OUT/episode.gif (needs ffmpeg; implies --frames)");
+  sub.add_option("--fps", opt->fps, "frames per second of simulated time")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub.add_option("--size", opt->size, "size of one view, WxH pixels")->capture_default_str();
+  sub.add_option("--view", opt->view, "top, 3d or both (side by side)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"top", "3d", "both"}));
 
   return [opt] {
     const Scenario scenario = loadScenario(opt->world);
     ExecutionDef exec;
     exec.tracking = trackingModeFromString(opt->tracking);
+    const bool film = opt->frames || opt->video || opt->gif;
+    FrameDef frame_def;
+    if (film) {  // bad film options fail before anything is planned or written
+      const ImageSize size = parseImageSize(opt->size);
+      frame_def.fps = opt->fps;
+      frame_def.width_px = size.width_px;
+      frame_def.height_px = size.height_px;
+      frame_def.view = frameViewFromString(opt->view);
+      frame_def.out_dir = opt->out;
+      frame_def.video = opt->video;
+      frame_def.gif = opt->gif;
+    }
     const std::string& dir = opt->out;
     ensureDirectory(dir);
     // Outputs of an earlier run in DIR must never sit beside this run's.
@@ -145,7 +194,16 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       plan_summary = planSummary(scenario, setup, result);
     }
 
-    const EpisodeResult episode = runEpisode(scenario, plan, exec);
+    std::unique_ptr<FrameRecorder> recorder;
+    EpisodeObserver observer;
+    if (film) {
+      recorder = std::make_unique<FrameRecorder>(scenario, frame_def);
+      recorder->setPlan(plan);
+      observer = [&recorder](const EpisodeSample& sample) {
+        recorder->addFrame(frameInput(sample));
+      };
+    }
+    const EpisodeResult episode = runEpisode(scenario, plan, exec, observer, 1.0 / opt->fps);
     const EpisodeMetrics& m = episode.metrics;
     writeExecutedCsv(dir + "/executed.csv", episode.rows);
     nlohmann::json metrics = metricsToJson(m);
@@ -165,8 +223,10 @@ CommandRunner setupRunCommand(CLI::App& sub) {
         m.contacts, m.contacts == 1 ? "" : "s", m.sim_time_s, m.wall_time_s,
         m.wall_time_s > 0.0 ? m.sim_time_s / m.wall_time_s : 0.0, dir.c_str(), dir.c_str(),
         dir.c_str());
-    if (m.contacts > 0 || !m.goal_reached) {
-      std::fprintf(stderr, "parksim run: %s\n", failureReason(scenario, m).c_str());
+    if (recorder) std::printf("%s\n", recorder->finish().message.c_str());
+    const std::string failure = failureReason(scenario, m);
+    if (!failure.empty()) {
+      std::fprintf(stderr, "parksim run: %s\n", failure.c_str());
       return 1;
     }
     return 0;
