@@ -29,7 +29,7 @@ WheelSpeeds limitAcceleration(const WheelSpeeds& w, const WheelSpeeds& prev, dou
 }  // namespace
 
 MoveToPoseSteering::MoveToPoseSteering(const RobotDef& robot, const MoveToPoseDef& def)
-    : robot_(robot), def_(def) {
+    : robot_(robot), def_(def), finisher_(robot, RotateTranslateRotateDef{def.period_s}) {
   if (!(def.period_s > 0.0) || !(def.horizon_s > 0.0) || !(def.max_duration_s > 0.0)) {
     throw Error("steering: period, horizon and max duration must be positive");
   }
@@ -64,8 +64,22 @@ SteerResult MoveToPoseSteering::steer(const Pose2& from, const WheelSpeeds& from
     return positionDistance(p, to) <= def_.position_tolerance_m &&
            headingDistance(p, to) <= def_.heading_tolerance_rad;
   };
+  // A plan may end only where the robot can stop within one acceleration step.
+  auto stoppable = [&](const WheelSpeeds& w) {
+    return std::max(std::abs(w.left_radps), std::abs(w.right_radps)) <= max_accel_step;
+  };
+  // kExact hands over to the exact finisher once the position is nearly reached, where this
+  // controller would only turn in place anyway.
+  auto done = [&] {
+    switch (mode) {
+      case SteerMode::kFixedHorizon: return arrived(pose);
+      case SteerMode::kToGoal: return arrived(pose) && stoppable(prev);
+      case SteerMode::kExact: return positionDistance(pose, to) <= def_.turn_in_place_radius_m;
+    }
+    return false;
+  };
   int step = 0;
-  for (; step < max_steps && !arrived(pose); ++step) {
+  for (; step < max_steps && !done(); ++step) {
     const double dx = to.x - pose.x;
     const double dy = to.y - pose.y;
     const double rho = std::hypot(dx, dy);
@@ -88,8 +102,23 @@ SteerResult MoveToPoseSteering::steer(const Pose2& from, const WheelSpeeds& from
     pose = integrateExact(pose, toTwist(wheels, robot_), dt);
     prev = wheels;
   }
+  if (mode == SteerMode::kExact) {
+    result.reached = done();
+    if (!result.reached) {
+      traj.points.push_back({step * dt, pose, {}});
+      return result;
+    }
+    // Close the last fraction of a millimetre and the heading exactly: rotate-translate-rotate
+    // from here, starting from the wheel speeds the controller leaves off with.
+    const SteerResult finish = finisher_.steer(pose, prev, to, SteerMode::kExact);
+    for (TrajectoryPoint p : finish.trajectory.points) {
+      p.t_s += step * dt;
+      traj.points.push_back(p);
+    }
+    return result;
+  }
   traj.points.push_back({step * dt, pose, {}});
-  result.reached = arrived(pose);
+  result.reached = mode == SteerMode::kToGoal ? done() : arrived(pose);
   return result;
 }
 

@@ -5,9 +5,13 @@
 //   are their exact integral;
 // - to-goal mode ends within the position and heading tolerance (a final turn in place fixes
 //   the heading the slow beta mode leaves), or reports failure after max_duration_s;
-// - wheel speed and wheel acceleration limits are respected.
+// - wheel speed and wheel acceleration limits are respected, including the final stop;
+// - kExact mode: the controller drives until the position is within turn_in_place_radius_m,
+//   then a rotate-translate-rotate finisher closes the remaining fraction of a millimetre and
+//   the heading exactly (where the controller would otherwise only turn in place).
 
 #include "core/RobotDef.h"
+#include "planner/RotateTranslateRotateSteering.h"
 #include "planner/SteeringFunction.h"
 
 namespace parksim {
@@ -39,6 +43,7 @@ class MoveToPoseSteering final : public SteeringFunction {
  private:
   RobotDef robot_;
   MoveToPoseDef def_;
+  RotateTranslateRotateSteering finisher_;  // kExact's last millimetre
 };
 
 }  // namespace parksim

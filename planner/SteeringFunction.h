@@ -11,13 +11,22 @@ namespace parksim {
 enum class SteerMode {
   kFixedHorizon,  ///< drive toward the target for at most a fixed time (grows the tree)
   kToGoal,        ///< drive until the target pose is reached within tolerance, or give up
+  /// Like kToGoal, but end exactly at the target (up to rounding; the last point's pose is the
+  /// target itself). Trees whose nodes are joined by several edges over time (rewiring, goal
+  /// trees) need this so that every edge into a node ends where the node's own edges start.
+  kExact,
 };
 
 struct SteerResult {
   /// Starts at `from` with t = 0 and ends with zero wheel speeds. Each point's wheel speeds,
-  /// held for its period and integrated exactly, give the next point's pose.
+  /// held for its period and integrated exactly, give the next point's pose. Speeds stay within
+  /// the robot's wheel speed limit, and each period's wheel speeds differ from the previous
+  /// period's (from `from_wheels` for the first) by at most the acceleration limit times the
+  /// period. In kToGoal and kExact the final stop obeys the acceleration limit too: the last
+  /// period's wheel speeds are within one acceleration step of zero.
   Trajectory trajectory;
   /// kToGoal: the last pose is within the steering's goal tolerance of `to`.
+  /// kExact: the last pose is `to`.
   /// kFixedHorizon: the target was reached before the horizon.
   bool reached = false;
 };

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/Error.h"
+#include "tests/support/PlanChecks.h"
 
 namespace parksim {
 namespace {
@@ -62,6 +63,50 @@ TEST(MoveToPoseSteering, ToGoalEndsWithinOneMillimetreAndHalfADegree) {
     if (toTwist(r.trajectory.points.front().wheels, robot).v_mps < 0.0) ++reversed;
   }
   EXPECT_GT(reversed, 50);  // targets behind the robot are approached in reverse
+}
+
+TEST(MoveToPoseSteering, ToGoalEndsWithALegalStop) {
+  const RobotDef robot;
+  const MoveToPoseSteering steering(robot);
+  std::mt19937_64 rng(43);
+  std::uniform_real_distribution<double> pos(0.0, 1.5), ang(-kPi, kPi), wheel(-10.0, 10.0);
+  for (int i = 0; i < 300; ++i) {
+    const Pose2 from{pos(rng), pos(rng), ang(rng)};
+    const Pose2 to{pos(rng), pos(rng), ang(rng)};
+    const WheelSpeeds arriving{wheel(rng), wheel(rng)};
+    const SteerResult r = steering.steer(from, arriving, to, SteerMode::kToGoal);
+    ASSERT_TRUE(r.reached) << "case " << i;
+    testing::expectConsistentWithLimits(r.trajectory, robot, arriving, 1e-12);
+  }
+}
+
+TEST(MoveToPoseSteering, ExactModeEndsOnTheTargetItself) {
+  const RobotDef robot;
+  const MoveToPoseSteering steering(robot);
+  std::mt19937_64 rng(44);
+  std::uniform_real_distribution<double> pos(0.0, 1.5), ang(-kPi, kPi), wheel(-10.0, 10.0);
+  for (int i = 0; i < 300; ++i) {
+    const Pose2 from{pos(rng), pos(rng), ang(rng)};
+    const Pose2 to{pos(rng), pos(rng), ang(rng)};
+    const WheelSpeeds arriving = i % 2 ? WheelSpeeds{wheel(rng), wheel(rng)} : WheelSpeeds{};
+    const SteerResult exact = steering.steer(from, arriving, to, SteerMode::kExact);
+    ASSERT_TRUE(exact.reached) << "case " << i;
+    EXPECT_EQ(exact.trajectory.points.front().pose, from);
+    EXPECT_EQ(exact.trajectory.points.back().pose, to);
+    testing::expectConsistentWithLimits(exact.trajectory, robot, arriving, 1e-12);
+    // The controller drives the approach; the finisher only closes the last fraction of a
+    // millimetre and turns to the heading, as the controller would have turned in place.
+    const SteerResult approx = steering.steer(from, arriving, to, SteerMode::kToGoal);
+    double turn_exact = 0.0, turn_approx = 0.0;
+    for (std::size_t k = 0; k + 1 < exact.trajectory.points.size(); ++k) {
+      turn_exact += std::abs(toTwist(exact.trajectory.points[k].wheels, robot).omega_radps) * 0.1;
+    }
+    for (std::size_t k = 0; k + 1 < approx.trajectory.points.size(); ++k) {
+      turn_approx += std::abs(toTwist(approx.trajectory.points[k].wheels, robot).omega_radps) * 0.1;
+    }
+    EXPECT_LE(turn_exact, turn_approx + degToRad(1.0)) << "case " << i;
+    EXPECT_NEAR(exact.trajectory.pathLength(robot), approx.trajectory.pathLength(robot), 0.002);
+  }
 }
 
 TEST(MoveToPoseSteering, TargetBehindIsReachedInReverse) {
