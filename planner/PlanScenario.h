@@ -1,19 +1,37 @@
 #pragma once
-// Plans a scenario end to end: the study's controller as steering, gap-free motion validation
+// Plans a scenario end to end: the selected steering function, gap-free motion validation
 // against the given footprint checker, and the tree planner.
+
+#include <string>
+#include <vector>
 
 #include "core/FootprintChecker.h"
 #include "core/Scenario.h"
 #include "planner/MotionValidator.h"
 #include "planner/MoveToPoseSteering.h"
+#include "planner/RotateTranslateRotateSteering.h"
 #include "planner/TreePlanner.h"
 
 namespace parksim {
 
+enum class SteeringKind {
+  kMoveToPose,             ///< the study's polar controller ("move-to-pose")
+  kRotateTranslateRotate,  ///< turn, drive straight, turn; exact ("rotate-translate-rotate")
+};
+
+const char* toString(SteeringKind kind);
+/// Every steering kind, in a fixed order (for benchmarks and help texts).
+std::vector<SteeringKind> allSteeringKinds();
+/// Parses "move-to-pose" or "rotate-translate-rotate"; throws Error otherwise.
+SteeringKind steeringKindFromString(const std::string& name);
+
 struct PlanSetup {
   PlannerDef planner;
-  /// The to-goal tolerance is taken from the scenario's goal region.
+  SteeringKind steering_kind = SteeringKind::kMoveToPose;
+  /// Move-to-pose parameters; its to-goal tolerance is taken from the scenario's goal region.
   MoveToPoseDef steering;
+  /// Rotate-translate-rotate parameters.
+  RotateTranslateRotateDef rotate_translate_rotate;
   MotionValidatorDef validation;
 };
 

@@ -1,84 +1,270 @@
 #include "planner/TreePlanner.h"
 
+#include <string>
+
 #include <gtest/gtest.h>
 
+#include "core/Error.h"
 #include "planner/PlanScenario.h"
+#include "tests/support/PlanChecks.h"
 #include "tests/support/StudyLot.h"
 
 namespace parksim {
 namespace {
 
+using testing::expectValidPlan;
 using testing::SatChecker;
 
-// Independent check of a plan: consecutive poses follow from the wheel speeds, and the exact
-// footprint (no margin) is free at poses 0.2 mm of travel apart (checked by SAT, not Bullet).
-void expectFeasible(const Scenario& s, const Trajectory& t) {
-  const SatChecker exact(s);
-  for (std::size_t i = 0; i + 1 < t.points.size(); ++i) {
-    const TrajectoryPoint& p = t.points[i];
-    const double dt = t.points[i + 1].t_s - p.t_s;
-    const Twist tw = toTwist(p.wheels, s.robot);
-    const Pose2 next = integrateExact(p.pose, tw, dt);
-    ASSERT_NEAR(next.x, t.points[i + 1].pose.x, 1e-4);
-    ASSERT_NEAR(next.y, t.points[i + 1].pose.y, 1e-4);
-    const double travel = (std::abs(tw.v_mps) + std::abs(tw.omega_radps) * 0.09) * dt;
-    const int n = std::max(1, static_cast<int>(std::ceil(travel / 0.0002)));
-    for (int k = 0; k < n; ++k) {
-      ASSERT_TRUE(exact.isFree(integrateExact(p.pose, tw, dt * k / n))) << "t=" << p.t_s;
-    }
-  }
-  const Pose2& end = t.points.back().pose;
-  EXPECT_LE(positionDistance(end, s.goal.pose), s.goal.position_tolerance_m);
-  EXPECT_LE(headingDistance(end, s.goal.pose), s.goal.heading_tolerance_rad);
-  EXPECT_EQ(t.points.front().pose, s.start);
+// RRT* is anytime and spends its whole budget, so it gets fewer iterations and seeds; the others
+// stop at their first solution.
+int iterationBudget(PlannerKind kind) { return kind == PlannerKind::kRrtStar ? 150 : 2000; }
+int seedCount(PlannerKind kind) { return kind == PlannerKind::kRrtStar ? 8 : 20; }
+
+PlanSetup setupFor(PlannerKind kind, SteeringKind steering, std::uint64_t seed) {
+  PlanSetup setup;
+  setup.planner.kind = kind;
+  setup.planner.max_iterations = iterationBudget(kind);
+  setup.planner.seed = seed;
+  setup.steering_kind = steering;
+  return setup;
+}
+
+// Every tree edge is recorded: start-tree nodes but the start, goal-tree nodes but the roots.
+void expectTreeRecorded(const PlanResult& r, int goal_roots) {
+  EXPECT_EQ(static_cast<int>(r.tree_edges.size()),
+            r.stats.tree_size - 1 + r.stats.goal_tree_size - goal_roots);
 }
 
 struct Case {
   PlannerKind kind;
+  SteeringKind steering;
   bool parallel;
 };
 
+std::string caseName(const ::testing::TestParamInfo<Case>& info) {
+  std::string name = std::string(toString(info.param.kind)) + "_" +
+                     (info.param.steering == SteeringKind::kMoveToPose ? "mtp" : "rtr") + "_" +
+                     (info.param.parallel ? "parallel" : "head_in");
+  for (char& c : name) c = c == '-' ? '_' : c;
+  return name;
+}
+
+std::vector<Case> allCases() {
+  std::vector<Case> cases;
+  for (PlannerKind kind : allPlannerKinds()) {
+    for (SteeringKind steering : allSteeringKinds()) {
+      for (bool parallel : {false, true}) cases.push_back({kind, steering, parallel});
+    }
+  }
+  return cases;
+}
+
 class TreePlannerOnStudyLot : public ::testing::TestWithParam<Case> {};
 
-TEST_P(TreePlannerOnStudyLot, SolvesOverSeedsWithFeasiblePaths) {
-  const Scenario s = GetParam().parallel ? testing::studyLotParallel() : testing::studyLot();
+TEST_P(TreePlannerOnStudyLot, SolvesOverSeedsWithValidPlans) {
+  const Case c = GetParam();
+  const Scenario s = c.parallel ? testing::studyLotParallel() : testing::studyLot();
   const SatChecker checker(s);
-  PlanSetup setup;
-  setup.planner.kind = GetParam().kind;
+  const int seeds = seedCount(c.kind);
   int solved = 0;
-  const int seeds = 20;
   for (int seed = 1; seed <= seeds; ++seed) {
-    setup.planner.seed = seed;
+    const PlanSetup setup = setupFor(c.kind, c.steering, seed);
     const PlanResult r = planScenario(s, checker, setup);
     if (!r.solved()) continue;
     ++solved;
-    expectFeasible(s, r.trajectory);
-    EXPECT_EQ(r.stats.tree_size, static_cast<int>(r.tree_edges.size()) + 1);
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expectValidPlan(s, checker, setup, r);
+    expectTreeRecorded(r, 1);
     EXPECT_GT(r.stats.collision_queries, 0);
   }
-  // Goal-connect RRT must solve essentially always; basic RRT within 2000 iterations most times.
-  EXPECT_GE(solved, GetParam().kind == PlannerKind::kRrtGoalConnect ? seeds : seeds * 3 / 4);
+  // Basic RRT only tries the goal near it and may run out of iterations; the others must solve
+  // every seed.
+  EXPECT_GE(solved, c.kind == PlannerKind::kRrt ? seeds * 3 / 4 : seeds);
 }
 
-INSTANTIATE_TEST_SUITE_P(Study, TreePlannerOnStudyLot,
-                         ::testing::Values(Case{PlannerKind::kRrtGoalConnect, false},
-                                           Case{PlannerKind::kRrtGoalConnect, true},
-                                           Case{PlannerKind::kRrt, false},
-                                           Case{PlannerKind::kRrt, true}));
+INSTANTIATE_TEST_SUITE_P(Study, TreePlannerOnStudyLot, ::testing::ValuesIn(allCases()), caseName);
 
-TEST(TreePlanner, SameSeedSameTrajectoryOtherSeedOtherTrajectory) {
+TEST(TreePlanner, RrtStarCostNeverIncreasesAndEndsNoWorseThanItsFirstSolution) {
+  int improved = 0;
+  for (bool parallel : {false, true}) {
+    const Scenario s = parallel ? testing::studyLotParallel() : testing::studyLot();
+    const SatChecker checker(s);
+    for (SteeringKind steering : allSteeringKinds()) {
+      for (int seed = 1; seed <= 3; ++seed) {
+        SCOPED_TRACE(std::string(toString(steering)) + (parallel ? " parallel" : " head-in") +
+                     " seed " + std::to_string(seed));
+        PlanSetup setup = setupFor(PlannerKind::kRrtStar, steering, seed);
+        setup.planner.max_iterations = 250;
+        const PlanResult r = planScenario(s, checker, setup);
+        expectValidPlan(s, checker, setup, r);
+        EXPECT_EQ(r.stats.iterations, 250);  // anytime: the whole budget
+        const std::vector<CostSample>& h = r.cost_history;
+        for (std::size_t i = 1; i < h.size(); ++i) {
+          EXPECT_LE(h[i].cost, h[i - 1].cost);
+          EXPECT_GE(h[i].iteration, h[i - 1].iteration);
+          EXPECT_GE(h[i].time_s, h[i - 1].time_s);
+        }
+        EXPECT_EQ(h.front().iteration, r.stats.first_solution_iteration);
+        EXPECT_LE(r.cost, h.front().cost);
+        if (r.cost < h.front().cost - 1e-6) ++improved;
+      }
+    }
+  }
+  EXPECT_GE(improved, 6);  // it does improve, not just keep its first solution
+}
+
+TEST(TreePlanner, RrtConnectGoalTreeEdgesRunForwardToTheirParents) {
+  const Scenario s = testing::studyLotParallel();
+  const SatChecker checker(s);
+  int grown = 0;
+  for (SteeringKind steering : allSteeringKinds()) {
+    for (int seed = 1; seed <= 10; ++seed) {
+      const PlanSetup setup = setupFor(PlannerKind::kRrtConnect, steering, seed);
+      const PlanResult r = planScenario(s, checker, setup);
+      SCOPED_TRACE("seed " + std::to_string(seed));
+      expectValidPlan(s, checker, setup, r);
+      // Goal-tree edges are recorded after the start tree's. Each one starts at rest at its
+      // child, integrates forward in time, and ends exactly where its parent's edge starts, or
+      // in the goal region at a root.
+      const auto first = r.tree_edges.begin() + (r.stats.tree_size - 1);
+      for (auto e = first; e != r.tree_edges.end(); ++e) {
+        testing::expectConsistentWithLimits(*e, s.robot, {}, 1e-12);
+        const Pose2& end = e->points.back().pose;
+        bool joins = positionDistance(end, s.goal.pose) <= s.goal.position_tolerance_m &&
+                     headingDistance(end, s.goal.pose) <= s.goal.heading_tolerance_rad;
+        for (auto other = first; other != r.tree_edges.end() && !joins; ++other) {
+          joins = other->points.front().pose == end;
+        }
+        EXPECT_TRUE(joins);
+      }
+      if (r.stats.goal_tree_size > 1) ++grown;
+      EXPECT_GT(r.stats.connection_attempts, 0);
+    }
+  }
+  EXPECT_GE(grown, 5);
+}
+
+TEST(TreePlanner, SmoothingNeverMakesAPlanWorseAndKeepsItValid) {
+  int improved = 0;
+  for (bool parallel : {false, true}) {
+    const Scenario s = parallel ? testing::studyLotParallel() : testing::studyLot();
+    const SatChecker checker(s);
+    for (PlannerKind kind : allPlannerKinds()) {
+      for (SteeringKind steering : allSteeringKinds()) {
+        for (int seed = 1; seed <= 2; ++seed) {
+          SCOPED_TRACE(std::string(toString(kind)) + " " + toString(steering) + " seed " +
+                       std::to_string(seed));
+          PlanSetup setup = setupFor(kind, steering, seed);
+          if (kind == PlannerKind::kRrtStar) setup.planner.max_iterations = 60;
+          const PlanResult plain = planScenario(s, checker, setup);
+          setup.planner.smooth = true;
+          setup.planner.smoothing_attempts = 40;
+          const PlanResult smoothed = planScenario(s, checker, setup);
+          ASSERT_EQ(plain.solved(), smoothed.solved());
+          if (!plain.solved()) continue;
+          expectValidPlan(s, checker, setup, smoothed);
+          EXPECT_LE(smoothed.cost, plain.cost + 1e-9);
+          // Smoothing runs after the search, which is unchanged.
+          ASSERT_GE(smoothed.cost_history.size(), plain.cost_history.size());
+          for (std::size_t i = 0; i < plain.cost_history.size(); ++i) {
+            EXPECT_EQ(smoothed.cost_history[i].cost, plain.cost_history[i].cost);
+          }
+          if (smoothed.cost < plain.cost - 1e-6) {
+            ++improved;
+            EXPECT_GT(smoothed.stats.smoothing_shortcuts, 0);
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GE(improved, 10);
+}
+
+TEST(TreePlanner, SameSeedSameResultForEveryPlannerAndSteering) {
+  const Scenario s = testing::studyLotParallel();
+  const SatChecker checker(s);
+  for (PlannerKind kind : allPlannerKinds()) {
+    for (SteeringKind steering : allSteeringKinds()) {
+      SCOPED_TRACE(std::string(toString(kind)) + " " + toString(steering));
+      PlanSetup setup = setupFor(kind, steering, 11);
+      if (kind == PlannerKind::kRrtStar) setup.planner.max_iterations = 80;
+      setup.planner.smooth = true;
+      const PlanResult a = planScenario(s, checker, setup);
+      const PlanResult b = planScenario(s, checker, setup);
+      ASSERT_TRUE(a.solved());
+      EXPECT_EQ(a.trajectory, b.trajectory);
+      EXPECT_EQ(a.cost, b.cost);
+      EXPECT_EQ(a.waypoints.size(), b.waypoints.size());
+      EXPECT_EQ(a.tree_edges, b.tree_edges);
+      EXPECT_EQ(a.stats.iterations, b.stats.iterations);
+      EXPECT_EQ(a.cost_history.size(), b.cost_history.size());
+    }
+  }
+}
+
+TEST(TreePlanner, OtherSeedOtherTrajectory) {
   const Scenario s = testing::studyLotParallel();
   const SatChecker checker(s);
   PlanSetup setup;
   setup.planner.seed = 11;
   const PlanResult a = planScenario(s, checker, setup);
-  const PlanResult b = planScenario(s, checker, setup);
-  ASSERT_TRUE(a.solved());
-  EXPECT_EQ(a.trajectory, b.trajectory);
   setup.planner.seed = 12;
   const PlanResult c = planScenario(s, checker, setup);
+  ASSERT_TRUE(a.solved());
   ASSERT_TRUE(c.solved());
   EXPECT_NE(a.trajectory, c.trajectory);
+}
+
+TEST(TreePlanner, EitherHeadingGoalAcceptsHeadInAndBackIn) {
+  // The study's head-in bay, asked for backing in (heading +90 degrees) or heading in.
+  Scenario s = testing::studyLot();
+  s.goal.pose.theta = degToRad(90);
+  s.goal.either_heading = true;
+  const SatChecker checker(s);
+  for (PlannerKind kind : allPlannerKinds()) {
+    for (SteeringKind steering : allSteeringKinds()) {
+      int solved = 0;
+      for (int seed = 1; seed <= 4; ++seed) {
+        SCOPED_TRACE(std::string(toString(kind)) + " " + toString(steering) + " seed " +
+                     std::to_string(seed));
+        PlanSetup setup = setupFor(kind, steering, seed);
+        if (kind == PlannerKind::kRrtStar) setup.planner.max_iterations = 80;
+        const PlanResult r = planScenario(s, checker, setup);
+        if (!r.solved()) continue;
+        ++solved;
+        expectValidPlan(s, checker, setup, r);  // ends within tolerance of either heading
+        expectTreeRecorded(r, 2);
+      }
+      EXPECT_GE(solved, kind == PlannerKind::kRrt ? 2 : 4) << toString(kind);
+    }
+  }
+}
+
+TEST(TreePlanner, EitherHeadingEndsTurnedWhenOnlyTheTurnedGoalIsFree) {
+  // The body reaches 70 mm behind the reference point and 10 mm ahead of it: with a post 45 mm
+  // behind the goal, only the turned goal pose is free.
+  Scenario s;
+  s.start = {0.3, 0.6, 0.0};
+  s.goal.pose = {1.2, 0.6, 0.0};
+  Obstacle post;
+  post.name = "post";
+  post.box.center = {1.2 - 0.045 - 0.02, 0.6};
+  post.box.half_extents = {0.02, 0.02};
+  s.obstacles.push_back(post);
+  const SatChecker checker(s);
+  EXPECT_EQ(planScenario(s, checker, PlanSetup{}).status, PlanStatus::kInvalidGoal);
+  s.goal.either_heading = true;
+  for (PlannerKind kind : allPlannerKinds()) {
+    for (SteeringKind steering : allSteeringKinds()) {
+      SCOPED_TRACE(std::string(toString(kind)) + " " + toString(steering));
+      PlanSetup setup = setupFor(kind, steering, 3);
+      if (kind == PlannerKind::kRrtStar) setup.planner.max_iterations = 60;
+      const PlanResult r = planScenario(s, checker, setup);
+      expectValidPlan(s, checker, setup, r);
+      EXPECT_NEAR(std::abs(r.trajectory.points.back().pose.theta), kPi,
+                  s.goal.heading_tolerance_rad);
+    }
+  }
 }
 
 TEST(TreePlanner, ReportsUnsolvedWithinIterationBudget) {
@@ -90,12 +276,17 @@ TEST(TreePlanner, ReportsUnsolvedWithinIterationBudget) {
   fence.box.half_extents = {0.6, 0.01};
   s.obstacles.push_back(fence);
   const SatChecker checker(s);
-  PlanSetup setup;
-  setup.planner.max_iterations = 300;
-  const PlanResult r = planScenario(s, checker, setup);
-  EXPECT_EQ(r.status, PlanStatus::kIterationLimit);
-  EXPECT_TRUE(r.trajectory.empty());
-  EXPECT_EQ(r.stats.iterations, 300);
+  for (PlannerKind kind : allPlannerKinds()) {
+    PlanSetup setup;
+    setup.planner.kind = kind;
+    setup.planner.max_iterations = kind == PlannerKind::kRrtStar ? 100 : 300;
+    const PlanResult r = planScenario(s, checker, setup);
+    EXPECT_EQ(r.status, PlanStatus::kIterationLimit) << toString(kind);
+    EXPECT_TRUE(r.trajectory.empty());
+    EXPECT_TRUE(r.cost_history.empty());
+    EXPECT_EQ(r.stats.iterations, setup.planner.max_iterations);
+    EXPECT_EQ(r.stats.first_solution_s, -1.0);
+  }
 }
 
 TEST(TreePlanner, InvalidStartAndGoalAreStatuses) {
@@ -106,6 +297,36 @@ TEST(TreePlanner, InvalidStartAndGoalAreStatuses) {
   s = testing::studyLot();
   s.goal.pose = {1.34, 0.04, 0.0};  // on a parked robot
   EXPECT_EQ(planScenario(s, checker, PlanSetup{}).status, PlanStatus::kInvalidGoal);
+  s.goal.either_heading = true;  // turned, it is on the parked robot too
+  EXPECT_EQ(planScenario(s, checker, PlanSetup{}).status, PlanStatus::kInvalidGoal);
+}
+
+TEST(TreePlanner, NamesRoundTripAndUnknownNamesThrow) {
+  for (PlannerKind kind : allPlannerKinds()) {
+    EXPECT_EQ(plannerKindFromString(toString(kind)), kind);
+  }
+  EXPECT_EQ(allPlannerKinds().size(), 4u);
+  EXPECT_STREQ(toString(PlannerKind::kRrtStar), "rrt-star");
+  EXPECT_STREQ(toString(PlannerKind::kRrtConnect), "rrt-connect");
+  EXPECT_THROW(plannerKindFromString("rrt*"), Error);
+  for (SteeringKind kind : allSteeringKinds()) {
+    EXPECT_EQ(steeringKindFromString(toString(kind)), kind);
+  }
+  EXPECT_THROW(steeringKindFromString("reeds-shepp"), Error);
+}
+
+TEST(TreePlanner, RejectsBadDefinitions) {
+  const Scenario s = testing::studyLot();
+  const SatChecker checker(s);
+  PlanSetup setup;
+  setup.planner.extend_distance_m = 0.0;
+  EXPECT_THROW(planScenario(s, checker, setup), Error);
+  setup = {};
+  setup.planner.cusp_penalty_m = -1.0;
+  EXPECT_THROW(planScenario(s, checker, setup), Error);
+  setup = {};
+  setup.planner.smoothing_attempts = -1;
+  EXPECT_THROW(planScenario(s, checker, setup), Error);
 }
 
 }  // namespace

@@ -10,6 +10,8 @@
 #include "core/DiffDrive.h"
 #include "core/Scenario.h"
 #include "core/Trajectory.h"
+#include "planner/MotionValidator.h"
+#include "planner/PlanScenario.h"
 #include "tests/support/StudyLot.h"
 
 namespace parksim::testing {
@@ -77,6 +79,30 @@ inline void expectEndsInGoal(const GoalRegion& goal, const Trajectory& t) {
   double heading_error = headingDistance(end, goal.pose);
   if (goal.either_heading) heading_error = std::min(heading_error, kPi - heading_error);
   EXPECT_LE(heading_error, goal.heading_tolerance_rad);
+}
+
+/// Every invariant of a solved plan: (1) starts at the start pose, (2) consistent, (3) within
+/// the wheel limits from rest to the final stop, across every junction, (4) accepted as a whole
+/// by the motion validator (and free under the exact SAT check), (5) ends in the goal region;
+/// and its reported cost is the cost of the returned trajectory.
+inline void expectValidPlan(const Scenario& s, const FootprintChecker& checker,
+                            const PlanSetup& setup, const PlanResult& r) {
+  ASSERT_TRUE(r.solved()) << r.message;
+  ASSERT_FALSE(r.trajectory.empty());
+  EXPECT_EQ(r.trajectory.points.front().pose, s.start);
+  EXPECT_EQ(r.trajectory.points.front().t_s, 0.0);
+  expectConsistentWithLimits(r.trajectory, s.robot);
+  const MotionValidator validator(checker, s.robot, s.lot, setup.validation);
+  EXPECT_TRUE(validator.isValid(r.trajectory));
+  expectCollisionFree(s, r.trajectory);
+  expectEndsInGoal(s.goal, r.trajectory);
+  const CostWeights w{setup.planner.reverse_penalty, setup.planner.cusp_penalty_m};
+  EXPECT_NEAR(r.cost, trajectoryCost(r.trajectory, s.robot, w), 1e-9);
+  ASSERT_FALSE(r.cost_history.empty());
+  EXPECT_NEAR(r.cost_history.back().cost, r.cost, 1e-9);
+  EXPECT_GE(r.stats.first_solution_s, 0.0);
+  EXPECT_GE(r.stats.first_solution_iteration, 0);
+  EXPECT_EQ(r.waypoints.front(), s.start);
 }
 
 }  // namespace parksim::testing
