@@ -25,10 +25,6 @@ namespace parksim::app {
 
 namespace {
 
-// A plan file must start where the world starts; anything else is a plan for another world.
-constexpr double kStartPositionTolerance_m = 0.001;
-constexpr double kStartHeadingTolerance_rad = kPi / 360.0;
-
 void removeIfPresent(const std::string& path) {
   std::error_code ec;
   std::filesystem::remove(path, ec);
@@ -59,11 +55,13 @@ nlohmann::json planFileSummary(const std::string& path, const Scenario& scenario
   };
 }
 
+// A plan file must start where the world starts (within 1 mm and 0.5 deg, the planner's own
+// goal tolerance); anything else is a plan for another world.
 Trajectory loadPlanFile(const std::string& path, const Scenario& scenario) {
   Trajectory plan = readTrajectoryCsv(path);
   const Pose2& first = plan.points.front().pose;
-  if (positionDistance(first, scenario.start) > kStartPositionTolerance_m ||
-      headingDistance(first, scenario.start) > kStartHeadingTolerance_rad) {
+  if (positionDistance(first, scenario.start) > 0.001 ||
+      headingDistance(first, scenario.start) > degToRad(0.5)) {
     char text[256];
     std::snprintf(text, sizeof text,
                   "%s: the plan starts at (%.4f, %.4f, %.2f deg), not at the world's start "

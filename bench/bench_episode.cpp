@@ -95,6 +95,8 @@ BENCHMARK(BM_Simulate)
     ->ArgsProduct({{0, 1}, {0, 1}, {50}})
     ->Args({0, 0, 20})
     ->Args({1, 0, 20})
+    ->Args({0, 0, 10})
+    ->Args({1, 0, 10})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Episode)
     ->ArgNames({"world", "open", "iters"})
