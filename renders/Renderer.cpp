@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -46,22 +47,25 @@ void main() {
 }
 )";
 
-// Lit: the light is scaled so that an upward face gets exactly its colour (factor 1).
-constexpr const char* kMeshFs = R"(#version 330 core
+constexpr const char* kFlatFs = R"(#version 330 core
 in vec3 v_normal;
 in vec4 v_color;
-uniform int u_lit;
+out vec4 o_color;
+void main() { o_color = v_color; }
+)";
+
+// The light is scaled so that an upward face gets exactly its colour (factor 1).
+constexpr const char* kLitFs = R"(#version 330 core
+in vec3 v_normal;
+in vec4 v_color;
 uniform vec3 u_light;
 uniform float u_ambient;
 uniform float u_up_factor;
 out vec4 o_color;
 void main() {
-  vec3 c = v_color.rgb;
-  if (u_lit != 0) {
-    float d = max(dot(normalize(v_normal), u_light), 0.0);
-    c *= min((u_ambient + (1.0 - u_ambient) * d) / u_up_factor, 1.0);
-  }
-  o_color = vec4(c, v_color.a);
+  float d = max(dot(normalize(v_normal), u_light), 0.0);
+  float f = min((u_ambient + (1.0 - u_ambient) * d) / u_up_factor, 1.0);
+  o_color = vec4(v_color.rgb * f, v_color.a);
 }
 )";
 
@@ -79,15 +83,25 @@ void main() {
 }
 )";
 
-constexpr const char* kOverlayFs = R"(#version 330 core
+// v_uv.x: distance from a line's centre, pixels; v_uv.y: the line's half width. Coverage fades
+// over the outermost pixel, which anti-aliases lines when there is no multisampling. Solid
+// areas pass a huge half width.
+constexpr const char* kSolidFs = R"(#version 330 core
+in vec2 v_uv;
+in vec4 v_color;
+out vec4 o_color;
+void main() {
+  float coverage = clamp(v_uv.y + 0.5 - abs(v_uv.x), 0.0, 1.0);
+  o_color = vec4(v_color.rgb, v_color.a * coverage);
+}
+)";
+
+constexpr const char* kTextFs = R"(#version 330 core
 in vec2 v_uv;
 in vec4 v_color;
 uniform sampler2D u_atlas;
 out vec4 o_color;
-void main() {
-  float coverage = v_uv.x < 0.0 ? 1.0 : texture(u_atlas, v_uv).r;
-  o_color = vec4(v_color.rgb, v_color.a * coverage);
-}
+void main() { o_color = vec4(v_color.rgb, v_color.a * texture(u_atlas, v_uv).r); }
 )";
 
 GLuint compileShader(GLenum type, const char* source) {
@@ -134,6 +148,9 @@ void checkGl(const char* where) {
   }
 }
 
+// Half width given to solid areas drawn by the line shader: never fades.
+constexpr float kSolidHalfWidth = 1e6f;
+
 void setColor(std::uint8_t* dst, const Rgba8& c) {
   dst[0] = c.r;
   dst[1] = c.g;
@@ -155,17 +172,24 @@ struct Renderer::Impl {
   GLint max_samples = 1;
   GLuint msaa_fbo = 0, msaa_color = 0, msaa_depth = 0;
   GLuint resolve_fbo = 0, resolve_color = 0, resolve_depth = 0;
-  GLuint mesh_program = 0, overlay_program = 0;
-  GLint u_view_proj = -1, u_lit = -1, u_light = -1, u_ambient = -1, u_up_factor = -1;
-  GLint u_atlas = -1;
+  // Separate programs rather than branches on uniforms: llvmpipe's shaders run both sides of
+  // a branch under a mask, so an unused texture fetch or lighting term costs every fragment.
+  GLuint flat_program = 0, lit_program = 0, solid_program = 0, text_program = 0;
+  GLint flat_view_proj = -1, lit_view_proj = -1;
+  GLint u_light = -1, u_ambient = -1, u_up_factor = -1;
   GLuint mesh_vao = 0, mesh_vbo = 0, overlay_vao = 0, overlay_vbo = 0;
 
   // Scratch, kept between frames so steady-state drawing does not allocate.
+  // Opaque and translucent geometry go to separate batches: blending makes llvmpipe read the
+  // framebuffer back for every fragment, so only what needs it pays for it.
   std::vector<MeshVertex> mesh;
+  std::vector<MeshVertex> mesh_blend;
   std::vector<OverlayVertex> lines;
-  std::vector<OverlayVertex> text;
+  std::vector<OverlayVertex> lines_blend;
+  std::vector<OverlayVertex> text;  // boxes behind text
   std::vector<GlyphQuad> glyphs;
   std::vector<Eigen::Vector4d> clip;
+  std::vector<std::uint8_t> rgba;  // read-back buffer
 
   void init();
   void allocateFramebuffers();
@@ -193,14 +217,15 @@ void Renderer::Impl::init() {
   const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
   if (version == nullptr) throw Error("renderer: the GL context does not answer");
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
-  mesh_program = linkProgram(kMeshVs, kMeshFs);
-  overlay_program = linkProgram(kOverlayVs, kOverlayFs);
-  u_view_proj = glGetUniformLocation(mesh_program, "u_view_proj");
-  u_lit = glGetUniformLocation(mesh_program, "u_lit");
-  u_light = glGetUniformLocation(mesh_program, "u_light");
-  u_ambient = glGetUniformLocation(mesh_program, "u_ambient");
-  u_up_factor = glGetUniformLocation(mesh_program, "u_up_factor");
-  u_atlas = glGetUniformLocation(overlay_program, "u_atlas");
+  flat_program = linkProgram(kMeshVs, kFlatFs);
+  lit_program = linkProgram(kMeshVs, kLitFs);
+  solid_program = linkProgram(kOverlayVs, kSolidFs);
+  text_program = linkProgram(kOverlayVs, kTextFs);
+  flat_view_proj = glGetUniformLocation(flat_program, "u_view_proj");
+  lit_view_proj = glGetUniformLocation(lit_program, "u_view_proj");
+  u_light = glGetUniformLocation(lit_program, "u_light");
+  u_ambient = glGetUniformLocation(lit_program, "u_ambient");
+  u_up_factor = glGetUniformLocation(lit_program, "u_up_factor");
 
   glGenVertexArrays(1, &mesh_vao);
   glGenBuffers(1, &mesh_vbo);
@@ -233,8 +258,8 @@ void Renderer::Impl::init() {
                         reinterpret_cast<void*>(offsetof(OverlayVertex, color)));
   glBindVertexArray(0);
 
-  glUseProgram(overlay_program);
-  glUniform1i(u_atlas, 0);
+  glUseProgram(text_program);
+  glUniform1i(glGetUniformLocation(text_program, "u_atlas"), 0);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   checkGl("setup");
@@ -318,7 +343,7 @@ void Renderer::Impl::addTriangle(const Eigen::Vector3d& a, const Eigen::Vector3d
     v.normal[1] = static_cast<float>(n.y());
     v.normal[2] = static_cast<float>(n.z());
     setColor(v.color, color);
-    mesh.push_back(v);
+    (color.a == 255 ? mesh : mesh_blend).push_back(v);
   }
 }
 
@@ -366,37 +391,59 @@ void Renderer::Impl::addSegment(Eigen::Vector4d c0, Eigen::Vector4d c1, float wi
   const double len = dir.norm();
   dir = len > 1e-9 ? Eigen::Vector2d(dir / len) : Eigen::Vector2d(1.0, 0.0);
   // Square caps: consecutive segments overlap at their joints, which leaves no notch at a bend.
-  const double hw = 0.5 * width_px;
+  // Without multisampling the ribbon grows by half a pixel a side for the shader's fade-out.
+  const bool feather = samples == 1;
+  const double hw = 0.5 * width_px + (feather ? 0.5 : 0.0);
   const Eigen::Vector2d side = Eigen::Vector2d(-dir.y(), dir.x()) * hw;
   const Eigen::Vector2d cap = dir * hw;
-  auto vertex = [&](const Eigen::Vector2d& p, const Eigen::Vector4d& c,
-                    const Eigen::Vector2d& off) {
+  auto vertex = [&](const Eigen::Vector2d& p, const Eigen::Vector4d& c, const Eigen::Vector2d& off,
+                    double across) {
     const Eigen::Vector2d q = p + off.cwiseQuotient(half);
     OverlayVertex v;
     v.pos[0] = static_cast<float>(q.x() * c.w());
     v.pos[1] = static_cast<float>(q.y() * c.w());
     v.pos[2] = static_cast<float>(c.z());
     v.pos[3] = static_cast<float>(c.w());
-    v.uv[0] = -1.0f;
-    v.uv[1] = -1.0f;
+    v.uv[0] = static_cast<float>(across);
+    v.uv[1] = feather ? 0.5f * width_px : kSolidHalfWidth;
     setColor(v.color, color);
     return v;
   };
-  const OverlayVertex a = vertex(p0, c0, -cap + side);
-  const OverlayVertex b = vertex(p0, c0, -cap - side);
-  const OverlayVertex c = vertex(p1, c1, cap + side);
-  const OverlayVertex d = vertex(p1, c1, cap - side);
-  lines.insert(lines.end(), {a, b, c, b, d, c});
+  const OverlayVertex a = vertex(p0, c0, -cap + side, hw);
+  const OverlayVertex b = vertex(p0, c0, -cap - side, -hw);
+  const OverlayVertex c = vertex(p1, c1, cap + side, hw);
+  const OverlayVertex d = vertex(p1, c1, cap - side, -hw);
+  std::vector<OverlayVertex>& out = color.a == 255 && !feather ? lines : lines_blend;
+  out.insert(out.end(), {a, b, c, b, d, c});
 }
 
 void Renderer::Impl::addPolyline(const ScenePolyline& line, const Eigen::Matrix4d& vp) {
   const std::size_t n = line.points.size();
   if (n < 2) return;
+  // Points closer than a pixel or so on screen to the last one kept add triangles (which cost
+  // llvmpipe per triangle) without changing a pixel: dense paths are thinned here. Points
+  // behind a perspective camera are always kept, the segment clipping handles them.
+  const double min_px = std::max(1.0, 0.75 * line.width_px);
+  const Eigen::Vector2d half(0.5 * width, 0.5 * height);
   clip.clear();
-  for (const Eigen::Vector3d& p : line.points) clip.push_back(vp * p.homogeneous());
-  for (std::size_t i = 0; i + 1 < n; ++i)
+  Eigen::Vector2d last_px(0.0, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector4d c = vp * line.points[i].homogeneous();
+    if (c.w() > 1e-12 && i > 0 && i + 1 < n) {
+      const Eigen::Vector2d px = (c.head<2>() / c.w()).cwiseProduct(half);
+      if ((px - last_px).norm() < min_px) continue;
+      last_px = px;
+    } else if (c.w() > 1e-12) {
+      last_px = (c.head<2>() / c.w()).cwiseProduct(half);
+    }
+    clip.push_back(c);
+  }
+  for (std::size_t i = 0; i + 1 < clip.size(); ++i) {
     addSegment(clip[i], clip[i + 1], line.width_px, line.color);
-  if (line.closed && n > 2) addSegment(clip[n - 1], clip[0], line.width_px, line.color);
+  }
+  if (line.closed && clip.size() > 2) {
+    addSegment(clip.back(), clip.front(), line.width_px, line.color);
+  }
 }
 
 void Renderer::Impl::addScreenQuad(float x0, float y0, float x1, float y1, const float uv[4],
@@ -442,9 +489,9 @@ void Renderer::Impl::addText(const SceneText& t, const Camera& cam,
   auto& out = by_font[std::max(4, static_cast<int>(std::lround(t.size_px)))];
   if (t.background.a > 0) {
     const float pad = 0.25f * atlas.pixelHeight();
-    const float solid[4] = {-1.0f, -1.0f, -1.0f, -1.0f};
+    const float solid[4] = {0.0f, kSolidHalfWidth, 0.0f, kSolidHalfWidth};
     addScreenQuad(x - pad, top - pad, x + w + pad, top + asc + desc + pad, solid, t.background,
-                  out);
+                  text);
   }
   glyphs.clear();
   atlas.layout(t.text, x, top + asc, glyphs);
@@ -456,7 +503,9 @@ void Renderer::Impl::addText(const SceneText& t, const Camera& cam,
 
 void Renderer::Impl::draw(const Scene& scene, const Camera& cam) {
   mesh.clear();
+  mesh_blend.clear();
   lines.clear();
+  lines_blend.clear();
   for (const ScenePolygon& p : scene.polygons) addPolygon(p.points, p.z_m, p.color);
   for (const SceneBox& b : scene.boxes) addBox(b);
   const Eigen::Matrix4d vp = cam.viewProjection();
@@ -472,6 +521,7 @@ void Renderer::Impl::draw(const Scene& scene, const Camera& cam) {
                vp * Eigen::Vector4d(base.x(), base.y(), a.z_m, 1.0), a.width_px, a.color);
     addPolygon({tip, base + side, base - side}, a.z_m, a.color);
   }
+  text.clear();  // text backgrounds
   std::map<int, std::vector<OverlayVertex>> text_by_font;
   for (const SceneText& t : scene.texts) addText(t, cam, text_by_font);
 
@@ -480,15 +530,36 @@ void Renderer::Impl::draw(const Scene& scene, const Camera& cam) {
   glClearColor(scene.background.r / 255.0f, scene.background.g / 255.0f,
                scene.background.b / 255.0f, 1.0f);
   glClearDepth(1.0);
+  glDepthMask(GL_TRUE);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
-  glDepthMask(GL_TRUE);
   if (samples > 1) glEnable(GL_MULTISAMPLE);
 
-  if (!mesh.empty()) {
+  // One upload per frame; each batch is a range of the buffer.
+  auto upload = [](GLuint vao, GLuint vbo, const auto& first, const auto& second) {
+    using Vertex = typename std::decay_t<decltype(first)>::value_type;
+    glBindVertexArray(vao);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    const auto bytes = static_cast<GLsizeiptr>((first.size() + second.size()) * sizeof(Vertex));
+    glBufferData(GL_ARRAY_BUFFER, bytes, nullptr, GL_STREAM_DRAW);
+    glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(first.size() * sizeof(Vertex)),
+                    first.data());
+    glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(first.size() * sizeof(Vertex)),
+                    static_cast<GLsizeiptr>(second.size() * sizeof(Vertex)), second.data());
+  };
+  auto drawRange = [](std::size_t first, std::size_t count, bool blend) {
+    if (count == 0) return;
+    if (blend) {
+      glEnable(GL_BLEND);
+    } else {
+      glDisable(GL_BLEND);
+    }
+    glDrawArrays(GL_TRIANGLES, static_cast<GLint>(first), static_cast<GLsizei>(count));
+  };
+
+  if (!mesh.empty() || !mesh_blend.empty()) {
     // Flipping y in clip space makes row 0 of the framebuffer the image's top row.
     Eigen::Matrix4f flip = Eigen::Matrix4f::Identity();
     flip(1, 1) = -1.0f;
@@ -496,39 +567,47 @@ void Renderer::Impl::draw(const Scene& scene, const Camera& cam) {
     const Eigen::Vector3d light = def.light_direction.normalized();
     const double ambient = std::clamp(def.ambient, 0.0, 1.0);
     const double up = ambient + (1.0 - ambient) * std::max(light.z(), 0.0);
-    glUseProgram(mesh_program);
-    glUniformMatrix4fv(u_view_proj, 1, GL_FALSE, m.data());
-    glUniform1i(u_lit, cam.perspective ? 1 : 0);
-    glUniform3f(u_light, static_cast<float>(light.x()), static_cast<float>(light.y()),
-                static_cast<float>(light.z()));
-    glUniform1f(u_ambient, static_cast<float>(ambient));
-    glUniform1f(u_up_factor, static_cast<float>(std::max(up, 1e-3)));
-    glBindVertexArray(mesh_vao);
-    glBindBuffer(GL_ARRAY_BUFFER, mesh_vbo);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.size() * sizeof(MeshVertex)),
-                 mesh.data(), GL_STREAM_DRAW);
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(mesh.size()));
+    if (cam.perspective) {
+      glUseProgram(lit_program);
+      glUniformMatrix4fv(lit_view_proj, 1, GL_FALSE, m.data());
+      glUniform3f(u_light, static_cast<float>(light.x()), static_cast<float>(light.y()),
+                  static_cast<float>(light.z()));
+      glUniform1f(u_ambient, static_cast<float>(ambient));
+      glUniform1f(u_up_factor, static_cast<float>(std::max(up, 1e-3)));
+    } else {
+      glUseProgram(flat_program);
+      glUniformMatrix4fv(flat_view_proj, 1, GL_FALSE, m.data());
+    }
+    upload(mesh_vao, mesh_vbo, mesh, mesh_blend);
+    drawRange(0, mesh.size(), false);
+    drawRange(mesh.size(), mesh_blend.size(), true);
   }
 
-  glUseProgram(overlay_program);
-  glBindVertexArray(overlay_vao);
-  glBindBuffer(GL_ARRAY_BUFFER, overlay_vbo);
-  if (!lines.empty()) {
+  if (!lines.empty() || !lines_blend.empty()) {
+    glUseProgram(solid_program);
     // Lines are depth-tested (boxes hide what lies under them) but write no depth, so crossing
     // lines simply paint in list order.
     glDepthMask(GL_FALSE);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lines.size() * sizeof(OverlayVertex)),
-                 lines.data(), GL_STREAM_DRAW);
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(lines.size()));
+    upload(overlay_vao, overlay_vbo, lines, lines_blend);
+    drawRange(0, lines.size(), false);
+    drawRange(lines.size(), lines_blend.size(), true);
+  }
+  glDisable(GL_DEPTH_TEST);
+  if (!text.empty()) {
+    glUseProgram(solid_program);
+    upload(overlay_vao, overlay_vbo, text, std::vector<OverlayVertex>{});
+    drawRange(0, text.size(), true);
   }
   if (!text_by_font.empty()) {
-    glDisable(GL_DEPTH_TEST);
+    glUseProgram(text_program);
     glActiveTexture(GL_TEXTURE0);
+    glBindVertexArray(overlay_vao);
+    glBindBuffer(GL_ARRAY_BUFFER, overlay_vbo);
     for (auto& [size, verts] : text_by_font) {
       glBindTexture(GL_TEXTURE_2D, fonts.at(size).second);
       glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(verts.size() * sizeof(OverlayVertex)),
                    verts.data(), GL_STREAM_DRAW);
-      glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(verts.size()));
+      drawRange(0, verts.size(), true);
     }
   }
   glDepthMask(GL_TRUE);
@@ -570,8 +649,10 @@ Renderer::~Renderer() {
   glDeleteBuffers(1, &impl_->overlay_vbo);
   glDeleteVertexArrays(1, &impl_->mesh_vao);
   glDeleteVertexArrays(1, &impl_->overlay_vao);
-  glDeleteProgram(impl_->mesh_program);
-  glDeleteProgram(impl_->overlay_program);
+  for (GLuint program :
+       {impl_->flat_program, impl_->lit_program, impl_->solid_program, impl_->text_program}) {
+    glDeleteProgram(program);
+  }
 }
 
 int Renderer::width() const { return impl_->width; }
@@ -613,11 +694,24 @@ void Renderer::renderInto(const Scene& scene, const CameraDef& camera_def, RgbIm
   }
   impl_->ensureCurrent();
   impl_->draw(scene, camera(scene, camera_def));
-  glPixelStorei(GL_PACK_ROW_LENGTH, out.width);
-  glReadPixels(0, 0, impl_->width, impl_->height, GL_RGB, GL_UNSIGNED_BYTE,
-               out.pixels.data() + static_cast<std::size_t>(x_offset_px) * 3);
-  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  // llvmpipe reads RGBA with a plain copy but converts to RGB pixel by pixel (~10x slower):
+  // read RGBA and drop alpha here.
+  const int w = impl_->width;
+  const int h = impl_->height;
+  std::vector<std::uint8_t>& rgba = impl_->rgba;
+  rgba.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   checkGl("render");
+  for (int y = 0; y < h; ++y) {
+    const std::uint8_t* src = rgba.data() + static_cast<std::size_t>(y) * w * 4;
+    std::uint8_t* dst =
+        out.pixels.data() + (static_cast<std::size_t>(y) * out.width + x_offset_px) * 3;
+    for (int x = 0; x < w; ++x, src += 4, dst += 3) {
+      dst[0] = src[0];
+      dst[1] = src[1];
+      dst[2] = src[2];
+    }
+  }
 }
 
 }  // namespace parksim

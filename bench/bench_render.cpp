@@ -1,0 +1,170 @@
+// Frames per second of parksim's off-screen rendering on the study's head-in lot, with the robot
+// driving along an arc and its executed path growing:
+//   BM_Render/<view>/W/H      render and read back one frame (no file)
+//   BM_Png/<deflate>/W/H      encode one rendered frame: stb's deflate vs. routed to zlib
+//   BM_Record/<view>/W/H      FrameRecorder end to end: render, encode on a worker, write files
+// Run: build/bench/bench_render --benchmark_counters_tabular=true
+// fps is frames per wall-clock second (llvmpipe and the encoder use threads); CPU is the whole
+// process's CPU time, all threads, per iteration: on a busy machine fps drops, CPU time barely.
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "renders/FrameRecorder.h"
+#include "renders/PngEncoder.h"
+#include "renders/Renderer.h"
+#include "renders/SceneBuilder.h"
+#include "scenario/ScenarioReader.h"
+
+namespace parksim {
+namespace {
+
+const Scenario& lot() {
+  static const Scenario s = loadScenario(std::string(PARKSIM_SOURCE_DIR) + "/worlds/head_in.yaml");
+  return s;
+}
+
+// The robot's pose at frame k: an arc through the lot, one lap every 600 frames.
+Pose2 poseAt(int k) {
+  const double a = 2.0 * 3.14159265358979 * (k % 600) / 600.0;
+  return {0.9 + 0.6 * std::cos(a), 0.6 + 0.3 * std::sin(a), a + 1.5707963};
+}
+
+struct Episode {
+  std::vector<Pose2> planned;
+  std::vector<Pose2> executed;
+  SceneStyle style;
+
+  explicit Episode(int height) : style(SceneStyle{}.scaled(styleScaleFor(height))) {
+    for (int k = 0; k < 600; k += 2) planned.push_back(poseAt(k));
+  }
+
+  Scene next(int k) {
+    executed.push_back(poseAt(k));
+    if (executed.size() > 600) executed.erase(executed.begin());
+    ViewState view;
+    view.robot = poseAt(k);
+    view.reference = poseAt(k + 1);
+    view.planned_path = planned;
+    view.executed_path = executed;
+    view.overlay = Overlay{"head_in", k / 30.0, 0.0012, 0.004};
+    return buildScene(lot(), view, style);
+  }
+};
+
+CameraDef cameraFor(int view) {
+  return view == 0 ? CameraDef{} : CameraDef{CameraMode::kFollow, 45.0, -60.0, 45.0, 0.6, 0.98};
+}
+
+void BM_Render(benchmark::State& state) {
+  const int view = static_cast<int>(state.range(0));
+  RenderDef def;
+  def.width_px = static_cast<int>(state.range(1));
+  def.height_px = static_cast<int>(state.range(2));
+  def.msaa_samples = static_cast<int>(state.range(3));
+  Renderer renderer(def);
+  Episode episode(def.height_px);
+  RgbImage image;
+  int k = 0;
+  for (auto _ : state) {
+    renderer.render(episode.next(k++), cameraFor(view), image);
+    benchmark::DoNotOptimize(image.pixels.data());
+  }
+  state.counters["fps"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.SetLabel(std::string(view == 0 ? "top" : "3d-follow") +
+                 (def.msaa_samples > 1 ? " msaa" : ""));
+}
+
+void BM_Png(benchmark::State& state) {
+  const auto deflate = static_cast<PngDeflate>(state.range(0));
+  RenderDef def;
+  def.width_px = static_cast<int>(state.range(1));
+  def.height_px = static_cast<int>(state.range(2));
+  Renderer renderer(def);
+  Episode episode(def.height_px);
+  RgbImage image;
+  renderer.render(episode.next(100), CameraDef{}, image);
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    const std::vector<unsigned char> png = encodePng(image, deflate);
+    bytes = png.size();
+    benchmark::DoNotOptimize(png.data());
+  }
+  state.counters["fps"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["kB"] = static_cast<double>(bytes) / 1000.0;
+  state.SetLabel(deflate == PngDeflate::kZlibFast ? "zlib-level1-filter0" : "stb-default");
+}
+
+void BM_Record(benchmark::State& state) {
+  constexpr int kFramesPerIteration = 200;
+  const auto view = static_cast<FrameView>(state.range(0));
+  FrameDef def;
+  def.width_px = static_cast<int>(state.range(1));
+  def.height_px = static_cast<int>(state.range(2));
+  def.view = view;
+  def.msaa_samples = static_cast<int>(state.range(3));
+  def.fps = 30.0;
+  def.out_dir = (std::filesystem::temp_directory_path() / "parksim_bench_render").string();
+  Trajectory plan;
+  for (int k = 0; k < 600; k += 10) plan.points.push_back({k / 30.0, poseAt(k), {}});
+  for (auto _ : state) {
+    state.PauseTiming();  // context creation and directory cleanup are once per episode
+    auto rec = std::make_unique<FrameRecorder>(lot(), def);
+    rec->setPlan(plan);
+    state.ResumeTiming();
+    for (int k = 0; k < kFramesPerIteration; ++k) {
+      FrameInput in;
+      in.t_s = k / def.fps;
+      in.pose = poseAt(k);
+      in.reference = poseAt(k + 1);
+      rec->addFrame(in);
+    }
+    rec->finish();  // waits for the last files
+    rec.reset();
+  }
+  state.counters["fps"] = benchmark::Counter(
+      static_cast<double>(state.iterations()) * kFramesPerIteration, benchmark::Counter::kIsRate);
+  state.SetLabel(std::string(toString(view)) + (def.msaa_samples > 1 ? " msaa" : ""));
+  std::filesystem::remove_all(def.out_dir);
+}
+
+BENCHMARK(BM_Render)
+    ->ArgNames({"view", "w", "h", "msaa"})
+    ->Args({0, 640, 480, 1})
+    ->Args({0, 640, 480, 4})
+    ->Args({0, 1280, 720, 1})
+    ->Args({0, 1280, 720, 4})
+    ->Args({1, 640, 480, 1})
+    ->Args({1, 640, 480, 4})
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Png)
+    ->ArgNames({"deflate", "w", "h"})
+    ->Args({static_cast<int>(PngDeflate::kStbDefault), 640, 480})
+    ->Args({static_cast<int>(PngDeflate::kZlibFast), 640, 480})
+    ->Args({static_cast<int>(PngDeflate::kStbDefault), 1280, 720})
+    ->Args({static_cast<int>(PngDeflate::kZlibFast), 1280, 720})
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Record)
+    ->ArgNames({"view", "w", "h", "msaa"})
+    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1})
+    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 4})
+    ->Args({static_cast<int>(FrameView::kTop), 1280, 720, 1})
+    ->Args({static_cast<int>(FrameView::kTop), 1280, 720, 4})
+    ->Args({static_cast<int>(FrameView::k3d), 640, 480, 1})
+    ->Args({static_cast<int>(FrameView::kBoth), 640, 480, 1})
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace parksim
