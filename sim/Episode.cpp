@@ -25,7 +25,7 @@ double goalHeadingError(const GoalRegion& goal, double theta) {
   return err;
 }
 
-void validate(const ExecutionDef& def) {
+const ExecutionDef& validated(const ExecutionDef& def) {
   auto fail = [](const char* what) { throw Error(std::string("execution: ") + what); };
   if (!(def.rest_speed_mps > 0.0)) fail("rest_speed_mps must be positive");
   if (!(def.rest_yaw_rate_radps > 0.0)) fail("rest_yaw_rate_radps must be positive");
@@ -33,6 +33,7 @@ void validate(const ExecutionDef& def) {
   if (!(def.max_stop_time_s >= 0.0)) fail("max_stop_time_s must not be negative");
   if (!(def.contact_merge_s >= 0.0)) fail("contact_merge_s must not be negative");
   if (def.csv_stride_steps < 1) fail("csv_stride_steps must be at least 1");
+  return def;
 }
 
 }  // namespace
@@ -40,7 +41,7 @@ void validate(const ExecutionDef& def) {
 struct Episode::Impl {
   Impl(const Scenario& s, const Trajectory& plan, const ExecutionDef& d, const SimModelDef& m)
       : scenario(s),
-        def(d),
+        def(validated(d)),
         reference(plan, s.robot),
         world(s, plan.points.front().pose, m),
         dt(world.timeStep()),
@@ -50,7 +51,6 @@ struct Episode::Impl {
         rest_steps(std::max(1L, stepsFor(d.rest_hold_s, dt))),
         merge_steps(stepsFor(d.contact_merge_s, dt)),
         last_contact_step(s.obstacles.size(), -1) {
-    validate(def);
     initial_obstacles = world.obstaclePoses();
     for (std::size_t i = 0; i < s.obstacles.size(); ++i) {
       if (s.obstacles[i].kind == ObstacleKind::kParkedRobot) {

@@ -160,9 +160,16 @@ TEST(Episode, ObserverGetsSamplesAtTheRequestedRate) {
   }
 }
 
-TEST(Episode, RejectsAnEmptyPlan) {
+TEST(Episode, RejectsAnEmptyPlanAndABadDefinition) {
   const Scenario s = testing::emptyLot();
   EXPECT_THROW(Episode(s, Trajectory{}), Error);
+  const Trajectory plan = testing::planFromSegments(s.start, {{{1.0, 1.0}, 0.2}}, s.robot);
+  ExecutionDef def;
+  def.csv_stride_steps = 0;
+  EXPECT_THROW(Episode(s, plan, def), Error);
+  Trajectory backwards = plan;
+  backwards.points[1].t_s = 0.0;
+  EXPECT_THROW(Episode(s, backwards), Error);
 }
 
 }  // namespace
