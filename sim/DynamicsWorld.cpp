@@ -118,11 +118,10 @@ struct DynamicsWorld::Impl {
     return raw;
   }
 
-  btRigidBody* addBody(btCollisionShape* shape, double mass, const btTransform& tr, double friction,
-                       int group, int mask, int user_index) {
-    btVector3 inertia(0, 0, 0);
-    if (mass > 0.0) shape->calculateLocalInertia(btScalar(mass), inertia);
-    btRigidBody::btRigidBodyConstructionInfo info(btScalar(mass), nullptr, shape, inertia);
+  // Every body starts fixed (mass 0); parked robots get their mass in wake().
+  btRigidBody* addFixedBody(btCollisionShape* shape, const btTransform& tr, double friction,
+                            int group, int mask, int user_index) {
+    btRigidBody::btRigidBodyConstructionInfo info(0, nullptr, shape, btVector3(0, 0, 0));
     info.m_startWorldTransform = tr;
     info.m_friction = btScalar(friction);
     info.m_linearDamping = 0;
@@ -152,10 +151,10 @@ struct DynamicsWorld::Impl {
     const double ground_half_thickness = 0.05;
     btBoxShape* ground_shape = box(0.5 * (lot.x_max_m - lot.x_min_m) + 1.0,
                                    0.5 * (lot.y_max_m - lot.y_min_m) + 1.0, ground_half_thickness);
-    addBody(ground_shape, 0.0,
-            planarTransform(0.5 * (lot.x_min_m + lot.x_max_m), 0.5 * (lot.y_min_m + lot.y_max_m),
-                            -ground_half_thickness, 0),
-            physics.ground_friction, kGroundGroup, kGroundMask, kNotObstacle);
+    addFixedBody(ground_shape,
+                 planarTransform(0.5 * (lot.x_min_m + lot.x_max_m),
+                                 0.5 * (lot.y_min_m + lot.y_max_m), -ground_half_thickness, 0),
+                 physics.ground_friction, kGroundGroup, kGroundMask, kNotObstacle);
 
     for (std::size_t i = 0; i < obstacles.size(); ++i) {
       const Obstacle& o = obstacles[i];
@@ -164,8 +163,8 @@ struct DynamicsWorld::Impl {
       const btTransform tr = planarTransform(o.box.center.x(), o.box.center.y(), hz, o.box.yaw);
       const bool parked = o.kind == ObstacleKind::kParkedRobot;
       // Parked robots enter as fixed boxes and become dynamic when first touched (wake()).
-      addBody(shape, 0.0, tr, physics.obstacle_friction, parked ? kParkedGroup : kStaticGroup,
-              parked ? kParkedMask : kStaticMask, static_cast<int>(i));
+      addFixedBody(shape, tr, physics.obstacle_friction, parked ? kParkedGroup : kStaticGroup,
+                   parked ? kParkedMask : kStaticMask, static_cast<int>(i));
     }
   }
 
