@@ -24,11 +24,12 @@ std::string planCaption(const Scenario& scenario, const PlanSetup& setup,
                         const PlanResult& result) {
   char buf[256];
   if (result.solved()) {
-    std::snprintf(buf, sizeof buf, "%s, %s (seed %llu): %d tree nodes, path %.2f m, %d cusps",
+    std::snprintf(buf, sizeof buf, "%s, %s (seed %llu): %d tree nodes, path %.2f m, %d cusp%s",
                   scenario.name.c_str(), toString(setup.planner.kind),
                   static_cast<unsigned long long>(setup.planner.seed), result.stats.tree_size,
                   result.trajectory.pathLength(scenario.robot),
-                  result.trajectory.cusps(scenario.robot));
+                  result.trajectory.cusps(scenario.robot),
+                  result.trajectory.cusps(scenario.robot) == 1 ? "" : "s");
   } else {
     std::snprintf(buf, sizeof buf, "%s, %s (seed %llu): %s after %d iterations",
                   scenario.name.c_str(), toString(setup.planner.kind),

@@ -80,7 +80,8 @@ struct FigureInputs {
 std::vector<std::string> writeFigures(const Scenario& scenario, const FigureInputs& inputs,
                                       const FigureDef& def, const std::string& dir);
 
-/// Writes the tracking plot alone (for the run command). Throws Error.
+/// Writes the tracking plot alone (for the run command), creating the file's directory.
+/// Throws Error.
 void writeTrackingPlot(const TrackingSeries& series, const std::string& title, const FigureDef& def,
                        const std::string& path);
 

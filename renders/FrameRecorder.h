@@ -59,7 +59,10 @@ struct FrameDef {
   /// Colours and widths for a 480-pixel-high image; scaled to height_px.
   SceneStyle style;
   bool show_tree = false;  ///< draw the planner's tree (setPlan) under the paths
-  int msaa_samples = 4;    ///< anti-aliasing samples per pixel (1: none)
+  /// Anti-aliasing samples per pixel. 1 (the default) keeps frames fast: lines, text and the top
+  /// view's edges are then smoothed by the renderer itself. 4 is full MSAA, about 3x slower on
+  /// llvmpipe (docs/rendering.md).
+  int msaa_samples = 1;
   int encode_threads = 1;  ///< PNG encoder threads (>= 1)
   int queue_depth = 3;     ///< frames rendered ahead of the encoders (>= 1)
 };

@@ -509,6 +509,25 @@ void Renderer::Impl::draw(const Scene& scene, const Camera& cam) {
   for (const ScenePolygon& p : scene.polygons) addPolygon(p.points, p.z_m, p.color);
   for (const SceneBox& b : scene.boxes) addBox(b);
   const Eigen::Matrix4d vp = cam.viewProjection();
+  if (samples == 1 && !cam.perspective) {
+    // Without multisampling, a top view smooths the edges of what it sees, the polygons and
+    // the boxes' top faces, with a fading one-pixel outline in their own colour (the lines'
+    // anti-aliasing). The outline sits on the face, so the depth test keeps it under anything
+    // higher.
+    ScenePolyline edge{{}, Rgba8{}, 1.0f, true};
+    for (const ScenePolygon& p : scene.polygons) {
+      if (p.color.a != 255) continue;
+      edge.color = p.color;
+      edge.points.clear();
+      for (const Eigen::Vector2d& q : p.points) edge.points.emplace_back(q.x(), q.y(), p.z_m);
+      addPolyline(edge, vp);
+    }
+    for (const SceneBox& b : scene.boxes) {
+      if (b.color.a != 255) continue;
+      edge = boxOutline(b.footprint, b.z_min_m + b.height_m, b.color, 1.0f);
+      addPolyline(edge, vp);
+    }
+  }
   for (const ScenePolyline& l : scene.lines) addPolyline(l, vp);
   for (const SceneArrow& a : scene.arrows) {
     const Eigen::Vector2d dir(std::cos(a.pose.theta), std::sin(a.pose.theta));

@@ -3,9 +3,12 @@
 // context and its framebuffers, vertex buffers and font textures, and reuses them for every
 // image it draws: per frame it only uploads vertices, draws and reads back.
 //
-// Anti-aliasing is multisampling (an MSAA framebuffer resolved by a blit). Top-down views are
-// unlit, so fully covered pixels carry their colour exactly; perspective views are lit by one
-// directional light scaled so that upward faces keep their exact colour and sides darken.
+// Anti-aliasing is multisampling (an MSAA framebuffer resolved by a blit). With multisampling
+// off, lines and text are still anti-aliased (coverage fades over their outermost pixel) and a
+// top view smooths polygon and box edges with a fading outline; only perspective edges alias.
+// Top-down views are unlit, so fully covered pixels carry their colour exactly; perspective
+// views are lit by one directional light scaled so that upward faces keep their exact colour
+// and sides darken.
 //
 // Not thread-safe; use a renderer from one thread at a time (it makes its context current on
 // the calling thread whenever it draws).

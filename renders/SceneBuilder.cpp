@@ -62,10 +62,12 @@ void addGrid(Scene& scene, const LotBounds& lot, const SceneStyle& style) {
   }
 }
 
+// Tracking errors are sub-millimetre when all goes well: two decimals, and no "-0.00".
 std::string formatOverlayLine2(const Overlay& o) {
+  auto tidy = [](double v) { return std::abs(v) < 0.005 ? 0.0 : v; };
   char buf[128];
-  std::snprintf(buf, sizeof buf, "error %6.1f mm %6.2f\u00b0", o.position_error_m * 1000.0,
-                o.heading_error_rad * 180.0 / kPi);
+  std::snprintf(buf, sizeof buf, "tracking error %6.2f mm %6.2f\u00b0",
+                tidy(o.position_error_m * 1000.0), tidy(radToDeg(o.heading_error_rad)));
   return buf;
 }
 

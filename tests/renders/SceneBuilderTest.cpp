@@ -79,7 +79,7 @@ TEST(SceneBuilderTest, ViewStateAddsRobotPathsAndOverlay) {
   EXPECT_EQ(reference_lines, 1);
   ASSERT_EQ(scene.texts.size(), 2u);
   EXPECT_NE(scene.texts[0].text.find("t =   2.50 s"), std::string::npos) << scene.texts[0].text;
-  EXPECT_NE(scene.texts[1].text.find("4.0 mm"), std::string::npos) << scene.texts[1].text;
+  EXPECT_NE(scene.texts[1].text.find("4.00 mm"), std::string::npos) << scene.texts[1].text;
   EXPECT_FALSE(scene.texts[0].world);
 }
 
