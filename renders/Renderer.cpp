@@ -4,10 +4,12 @@
 #include <GL/glext.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -160,6 +162,35 @@ void setColor(std::uint8_t* dst, const Rgba8& c) {
 
 }  // namespace
 
+// The pixel rectangle {x, y, width, height} (image rows from the top) that a top view's first
+// polygon covers, when that polygon is an opaque axis-aligned rectangle; unset otherwise.
+std::optional<std::array<int, 4>> groundRectangle(const Scene& scene, const Camera& cam) {
+  if (cam.perspective || scene.polygons.empty()) return std::nullopt;
+  const ScenePolygon& p = scene.polygons.front();
+  if (p.color.a != 255 || p.points.size() != 4) return std::nullopt;
+  double x0 = p.points[0].x(), x1 = x0, y0 = p.points[0].y(), y1 = y0;
+  for (const Eigen::Vector2d& q : p.points) {
+    x0 = std::min(x0, q.x());
+    x1 = std::max(x1, q.x());
+    y0 = std::min(y0, q.y());
+    y1 = std::max(y1, q.y());
+  }
+  for (const Eigen::Vector2d& q : p.points) {
+    if ((q.x() != x0 && q.x() != x1) || (q.y() != y0 && q.y() != y1)) return std::nullopt;
+  }
+  const auto a = cam.project({x0, y1, p.z_m});  // top-left on screen
+  const auto b = cam.project({x1, y0, p.z_m});  // bottom-right
+  if (!a || !b) return std::nullopt;
+  // Pixel i is covered when its centre i + 0.5 lies inside.
+  auto first = [](double v) { return static_cast<int>(std::ceil(v - 0.5)); };
+  const int i0 = std::max(first(a->x()), 0);
+  const int i1 = std::min(first(b->x()), cam.width_px);
+  const int j0 = std::max(first(a->y()), 0);
+  const int j1 = std::min(first(b->y()), cam.height_px);
+  if (i1 <= i0 || j1 <= j0) return std::array<int, 4>{0, 0, 0, 0};
+  return std::array<int, 4>{i0, j0, i1 - i0, j1 - j0};
+}
+
 struct Renderer::Impl {
   RenderDef def;
   std::unique_ptr<OffscreenContext> context;
@@ -203,8 +234,10 @@ struct Renderer::Impl {
                    const Eigen::Vector3d& n, const Rgba8& color);
   void addBox(const SceneBox& box);
   void addPolygon(const std::vector<Eigen::Vector2d>& pts, double z, const Rgba8& color);
-  void addSegment(Eigen::Vector4d c0, Eigen::Vector4d c1, float width_px, const Rgba8& color);
-  void addPolyline(const ScenePolyline& line, const Eigen::Matrix4d& vp);
+  void addSegment(Eigen::Vector4d c0, Eigen::Vector4d c1, float width_px, const Rgba8& color,
+                  bool edge_smoothing = false);
+  void addPolyline(const ScenePolyline& line, const Eigen::Matrix4d& vp,
+                   bool edge_smoothing = false);
   void addScreenQuad(float x0, float y0, float x1, float y1, const float uv[4], const Rgba8& c,
                      std::vector<OverlayVertex>& out) const;
   void addText(const SceneText& text, const Camera& cam,
@@ -375,7 +408,7 @@ void Renderer::Impl::addPolygon(const std::vector<Eigen::Vector2d>& pts, double 
 }
 
 void Renderer::Impl::addSegment(Eigen::Vector4d c0, Eigen::Vector4d c1, float width_px,
-                                const Rgba8& color) {
+                                const Rgba8& color, bool edge_smoothing) {
   // Clip against the near plane (z >= -w) before dividing, so a perspective view can hold
   // paths that pass behind the camera.
   const double d0 = c0.z() + c0.w();
@@ -390,9 +423,13 @@ void Renderer::Impl::addSegment(Eigen::Vector4d c0, Eigen::Vector4d c1, float wi
   Eigen::Vector2d dir = (p1 - p0).cwiseProduct(half);
   const double len = dir.norm();
   dir = len > 1e-9 ? Eigen::Vector2d(dir / len) : Eigen::Vector2d(1.0, 0.0);
+  // An axis-aligned segment has no staircase to smooth: it is drawn solid, without blending,
+  // and an edge-smoothing outline along it is not needed at all.
+  const bool axis_aligned = std::abs(dir.x()) < 1e-9 || std::abs(dir.y()) < 1e-9;
+  if (axis_aligned && edge_smoothing) return;
   // Square caps: consecutive segments overlap at their joints, which leaves no notch at a bend.
   // Without multisampling the ribbon grows by half a pixel a side for the shader's fade-out.
-  const bool feather = samples == 1;
+  const bool feather = samples == 1 && !axis_aligned;
   const double hw = 0.5 * width_px + (feather ? 0.5 : 0.0);
   const Eigen::Vector2d side = Eigen::Vector2d(-dir.y(), dir.x()) * hw;
   const Eigen::Vector2d cap = dir * hw;
@@ -417,13 +454,15 @@ void Renderer::Impl::addSegment(Eigen::Vector4d c0, Eigen::Vector4d c1, float wi
   out.insert(out.end(), {a, b, c, b, d, c});
 }
 
-void Renderer::Impl::addPolyline(const ScenePolyline& line, const Eigen::Matrix4d& vp) {
+void Renderer::Impl::addPolyline(const ScenePolyline& line, const Eigen::Matrix4d& vp,
+                                 bool edge_smoothing) {
   const std::size_t n = line.points.size();
   if (n < 2) return;
-  // Points closer than a pixel or so on screen to the last one kept add triangles (which cost
-  // llvmpipe per triangle) without changing a pixel: dense paths are thinned here. Points
-  // behind a perspective camera are always kept, the segment clipping handles them.
-  const double min_px = std::max(1.0, 0.75 * line.width_px);
+  // Points closer on screen than one and a half line widths to the last one kept add triangles
+  // (which llvmpipe pays for one by one) but hardly a pixel (a 4 px chord of a 20 px radius
+  // strays 0.1 px): dense paths are thinned here. Points behind a perspective camera are always
+  // kept; the segment clipping handles them.
+  const double min_px = std::max(2.0, 1.5 * line.width_px);
   const Eigen::Vector2d half(0.5 * width, 0.5 * height);
   clip.clear();
   Eigen::Vector2d last_px(0.0, 0.0);
@@ -439,10 +478,10 @@ void Renderer::Impl::addPolyline(const ScenePolyline& line, const Eigen::Matrix4
     clip.push_back(c);
   }
   for (std::size_t i = 0; i + 1 < clip.size(); ++i) {
-    addSegment(clip[i], clip[i + 1], line.width_px, line.color);
+    addSegment(clip[i], clip[i + 1], line.width_px, line.color, edge_smoothing);
   }
   if (line.closed && clip.size() > 2) {
-    addSegment(clip.back(), clip.front(), line.width_px, line.color);
+    addSegment(clip.back(), clip.front(), line.width_px, line.color, edge_smoothing);
   }
 }
 
@@ -506,7 +545,15 @@ void Renderer::Impl::draw(const Scene& scene, const Camera& cam) {
   mesh_blend.clear();
   lines.clear();
   lines_blend.clear();
-  for (const ScenePolygon& p : scene.polygons) addPolygon(p.points, p.z_m, p.color);
+  // A top view's first polygon, when it is an opaque axis-aligned rectangle (the lot's
+  // surface), is nothing but a coloured rectangle under everything else: a scissored clear
+  // fills it several times faster than llvmpipe shades it. The pixel range follows the
+  // rasterizer's rule (pixel centres inside), so the result is the same.
+  const std::optional<std::array<int, 4>> ground = groundRectangle(scene, cam);
+  for (std::size_t i = ground ? 1 : 0; i < scene.polygons.size(); ++i) {
+    const ScenePolygon& p = scene.polygons[i];
+    addPolygon(p.points, p.z_m, p.color);
+  }
   for (const SceneBox& b : scene.boxes) addBox(b);
   const Eigen::Matrix4d vp = cam.viewProjection();
   if (samples == 1 && !cam.perspective) {
@@ -520,12 +567,12 @@ void Renderer::Impl::draw(const Scene& scene, const Camera& cam) {
       edge.color = p.color;
       edge.points.clear();
       for (const Eigen::Vector2d& q : p.points) edge.points.emplace_back(q.x(), q.y(), p.z_m);
-      addPolyline(edge, vp);
+      addPolyline(edge, vp, true);
     }
     for (const SceneBox& b : scene.boxes) {
       if (b.color.a != 255) continue;
       edge = boxOutline(b.footprint, b.z_min_m + b.height_m, b.color, 1.0f);
-      addPolyline(edge, vp);
+      addPolyline(edge, vp, true);
     }
   }
   for (const ScenePolyline& l : scene.lines) addPolyline(l, vp);
@@ -546,11 +593,32 @@ void Renderer::Impl::draw(const Scene& scene, const Camera& cam) {
 
   glBindFramebuffer(GL_FRAMEBUFFER, samples > 1 ? msaa_fbo : resolve_fbo);
   glViewport(0, 0, width, height);
-  glClearColor(scene.background.r / 255.0f, scene.background.g / 255.0f,
-               scene.background.b / 255.0f, 1.0f);
+  // With a ground rectangle the whole framebuffer is cleared to its colour (llvmpipe's fast
+  // path) and the background is put back around it by scissored clears of the thin margins
+  // (a scissored clear is drawn like a quad: cheap only when small).
+  const Rgba8& fill = ground ? scene.polygons.front().color : scene.background;
+  glClearColor(fill.r / 255.0f, fill.g / 255.0f, fill.b / 255.0f, 1.0f);
   glClearDepth(1.0);
   glDepthMask(GL_TRUE);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (ground) {
+    const std::array<int, 4>& r = *ground;  // x, y (image rows from the top), width, height
+    const std::array<std::array<int, 4>, 4> margins = {{
+        {0, 0, width, r[1]},                             // above
+        {0, r[1] + r[3], width, height - r[1] - r[3]},   // below
+        {0, r[1], r[0], r[3]},                           // left
+        {r[0] + r[2], r[1], width - r[0] - r[2], r[3]},  // right
+    }};
+    const Rgba8& bg = scene.background;
+    glClearColor(bg.r / 255.0f, bg.g / 255.0f, bg.b / 255.0f, 1.0f);
+    glEnable(GL_SCISSOR_TEST);
+    for (const std::array<int, 4>& m : margins) {
+      if (m[2] <= 0 || m[3] <= 0) continue;
+      glScissor(m[0], m[1], m[2], m[3]);  // image rows are framebuffer rows (y is flipped)
+      glClear(GL_COLOR_BUFFER_BIT);
+    }
+    glDisable(GL_SCISSOR_TEST);
+  }
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
