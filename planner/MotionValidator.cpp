@@ -1,5 +1,6 @@
 #include "planner/MotionValidator.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/Error.h"
@@ -24,20 +25,43 @@ bool MotionValidator::isValid(const Pose2& pose) const {
 }
 
 bool MotionValidator::isValid(const Trajectory& traj) const {
-  if (traj.points.empty()) return true;
-  for (std::size_t i = 0; i + 1 < traj.points.size(); ++i) {
-    const TrajectoryPoint& p = traj.points[i];
-    const double dt = traj.points[i + 1].t_s - p.t_s;
-    const Twist tw = toTwist(p.wheels, robot_);
+  const std::vector<TrajectoryPoint>& pts = traj.points;
+  if (pts.empty()) return true;
+  // Sample poses along each period's arc so densely that no footprint point moves more than the
+  // resolution between two of them; the last pose closes the list.
+  periods_.clear();
+  long total = 0;
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+    const double dt = pts[i + 1].t_s - pts[i].t_s;
+    const Twist tw = toTwist(pts[i].wheels, robot_);
     // A footprint point at distance r from the reference point moves at most |v| + |omega| r.
     const double travel = (std::abs(tw.v_mps) + std::abs(tw.omega_radps) * radius_) * dt;
     const int n = std::max(1, static_cast<int>(std::ceil(travel / def_.resolution_m)));
-    for (int k = 0; k < n; ++k) {
-      const Pose2 q = k == 0 ? p.pose : integrateExact(p.pose, tw, dt * k / n);
-      if (!isValid(q)) return false;
+    periods_.push_back({tw, dt, n, total});
+    total += n;
+  }
+  const long count = total + 1;
+  // Sample `idx`; `period` only moves forward, as indices do within one pass below.
+  auto sample = [&](long idx, std::size_t& period) {
+    if (idx == total) return pts.back().pose;
+    while (periods_[period].first + periods_[period].samples <= idx) ++period;
+    const Period& p = periods_[period];
+    const long k = idx - p.first;
+    return k == 0 ? pts[period].pose
+                  : integrateExact(pts[period].pose, p.twist,
+                                   p.dt * static_cast<double>(k) / static_cast<double>(p.samples));
+  };
+  // Check every kCoarsestStride-th sample first, then halve the stride. These are the same
+  // checks as in order, with the same answer, but a footprint that overlaps an obstacle does so
+  // over many consecutive samples, so collisions show after few queries.
+  for (long stride = kCoarsestStride; stride >= 1; stride /= 2) {
+    const bool first_pass = stride == kCoarsestStride;
+    std::size_t period = 0;
+    for (long idx = first_pass ? 0 : stride; idx < count; idx += first_pass ? stride : 2 * stride) {
+      if (!isValid(sample(idx, period))) return false;
     }
   }
-  return isValid(traj.points.back().pose);
+  return true;
 }
 
 }  // namespace parksim

@@ -8,6 +8,8 @@
 // resolution_m / 2 for the same reason: the study's lot has no boundary walls, and without this a
 // trajectory could leave the lot to get around its obstacles.
 
+#include <vector>
+
 #include "core/FootprintChecker.h"
 #include "core/RobotDef.h"
 #include "core/Scenario.h"
@@ -20,12 +22,15 @@ struct MotionValidatorDef {
   double resolution_m = 0.001;
 };
 
+/// Not thread-safe: it counts queries and reuses a scratch buffer; use one per thread.
 class MotionValidator {
  public:
   MotionValidator(const FootprintChecker& checker, const RobotDef& robot, const LotBounds& lot,
                   const MotionValidatorDef& def = {});
 
   /// True when the whole trajectory, including its first and last pose, is collision-free.
+  /// The samples are checked coarse to fine (every 64th first), which finds collisions early;
+  /// the answer does not depend on the order.
   bool isValid(const Trajectory& traj) const;
 
   /// The check made for a single state: grown footprint free, reference point inside the lot.
@@ -43,6 +48,16 @@ class MotionValidator {
   MotionValidatorDef def_;
   double radius_;  // farthest footprint point from the reference point, m
   mutable long queries_ = 0;
+
+  // Samples of one trajectory period (scratch, reused between calls).
+  struct Period {
+    Twist twist;
+    double dt;
+    int samples;  // checked poses in the period, the first at its start
+    long first;   // index of its first sample in the trajectory
+  };
+  static constexpr long kCoarsestStride = 64;
+  mutable std::vector<Period> periods_;
 };
 
 }  // namespace parksim
