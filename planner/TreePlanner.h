@@ -15,7 +15,9 @@
 //   mode, so the tree can be rewired: a new node picks the cheapest valid parent among its
 //   neighbours, then becomes the parent of neighbours it reaches more cheaply. The cost is path
 //   length plus penalties for reversing and cusps (PathCost.h). Anytime: it keeps improving
-//   until max_iterations (or max_time_s) and records each improvement in cost_history.
+//   until max_iterations (or max_time_s) and records each improvement in cost_history. With
+//   informed_sampling it is Informed RRT*: once solved, it samples only where a cheaper path
+//   could pass.
 // Any of them may be followed by shortcut smoothing (ShortcutSmoother.h).
 //
 // Exact junctions. Start-tree edges start at their parent's pose with the parent's arrival
@@ -24,7 +26,9 @@
 // steered in kExact mode and end exactly at the node, at rest; the edges leaving such nodes are
 // steered from rest, and where the wheel speeds would jump at a junction the robot stands still
 // for one period (PathSegment.h). Only the last edge, into a goal root, ends within the goal
-// tolerance. The returned trajectory is the joined edges, validated as a whole once more.
+// tolerance. A candidate solution (tree edges plus the new connection) is joined first and
+// validated as a whole, so the trajectory returned is exactly the one checked; RRT* validates
+// its best plan as a whole once more at the end, and smoothing its result.
 
 #include <cstdint>
 #include <string>
@@ -76,6 +80,10 @@ struct PlannerDef {
   int rewire_neighbours = 0;
   /// kRrtStar: when > 0, use every node within this SE(2) distance instead of k-nearest, m.
   double rewire_radius_m = 0.0;
+  /// kRrtStar, once solved: sample only positions whose straight-line distance from the start
+  /// plus to the goal is below the best cost (Informed RRT*'s ellipse; no path through the
+  /// others can be cheaper, since the cost is at least the length).
+  bool informed_sampling = true;
 
   /// Shortcut smoothing after the planner (study 3(c)(3)); uses the planner's RNG, so it is
   /// seeded by `seed` too.
