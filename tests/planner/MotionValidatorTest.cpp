@@ -1,5 +1,7 @@
 #include "planner/MotionValidator.h"
 
+#include <random>
+
 #include <gtest/gtest.h>
 
 #include "tests/support/StudyLot.h"
@@ -82,6 +84,30 @@ TEST(MotionValidator, AcceptsAFreeTrajectoryAndRespectsResolution) {
   const MotionValidator strict(near_checker, robot, kOpenLot);
   EXPECT_FALSE(strict.isValid(traj));
   EXPECT_GT(validator.queries(), 20 * 20);  // 20 mm per period at 1 mm resolution
+}
+
+TEST(SatChecker, AgreesWithCoreGeometryOnRandomPosesAndMargins) {
+  // The tests' exact reference checker against core's separating-axis test, obstacle by obstacle.
+  Scenario s = testing::studyLot();
+  Obstacle tilted;  // a rotated obstacle too
+  tilted.box.center = {0.3, 0.9};
+  tilted.box.half_extents = {0.1, 0.03};
+  tilted.box.yaw = 0.7;
+  s.obstacles.push_back(tilted);
+  const SatChecker checker(s);
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> x(0.0, 1.8), y(0.0, 1.2), th(-kPi, kPi), m(0.0, 0.002);
+  int blocked = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Pose2 p{x(rng), y(rng), th(rng)};
+    const double margin = i % 2 ? m(rng) : 0.0;
+    bool free = true;
+    for (const Obstacle& o : s.obstacles)
+      free = free && !boxesOverlap(footprintAt(s.robot, p, margin), o.box);
+    ASSERT_EQ(checker.isFree(p, margin), free) << "pose " << i;
+    blocked += !free;
+  }
+  EXPECT_GT(blocked, 2000);
 }
 
 TEST(MotionValidator, KeepsTheReferencePointInsideTheLot) {

@@ -2,6 +2,7 @@
 // Test support: the study's parking lot built in code, and an exact footprint checker by
 // separating axes, independent of Bullet.
 
+#include <cmath>
 #include <vector>
 
 #include "core/FootprintChecker.h"
@@ -52,21 +53,52 @@ inline Scenario studyLotParallel() {
   return s;
 }
 
-/// Exact footprint checker: separating axes against every obstacle.
+/// Exact footprint checker: separating axes against every obstacle, with the same answers as
+/// core's boxesOverlap (touching is free) but each obstacle's axes and extent computed once, so
+/// tests can afford many queries.
 class SatChecker final : public FootprintChecker {
  public:
-  explicit SatChecker(const Scenario& s) : robot_(s.robot), obstacles_(s.obstacles) {}
+  explicit SatChecker(const Scenario& s) : robot_(s.robot) {
+    for (const Obstacle& o : s.obstacles) obstacles_.push_back(Prepared(o.box));
+  }
+
   bool isFree(const Pose2& pose, double margin_m = 0.0) const override {
-    const OrientedBox fp = footprintAt(robot_, pose, margin_m);
-    for (const Obstacle& o : obstacles_) {
-      if (boxesOverlap(fp, o.box)) return false;
+    const Prepared fp(footprintAt(robot_, pose, margin_m));
+    for (const Prepared& o : obstacles_) {
+      if (overlap(fp, o)) return false;
     }
     return true;
   }
 
  private:
+  struct Prepared {
+    explicit Prepared(const OrientedBox& b)
+        : center(b.center),
+          half(b.half_extents),
+          axis_x(std::cos(b.yaw), std::sin(b.yaw)),
+          axis_y(-std::sin(b.yaw), std::cos(b.yaw)),
+          radius(b.half_extents.norm()) {}
+    double projectedRadius(const Eigen::Vector2d& axis) const {
+      return half.x() * std::abs(axis_x.dot(axis)) + half.y() * std::abs(axis_y.dot(axis));
+    }
+    Eigen::Vector2d center, half, axis_x, axis_y;
+    double radius;  // of the circumscribed circle
+  };
+
+  // Overlap with positive area: the projections overlap on all four candidate axes.
+  static bool overlap(const Prepared& a, const Prepared& b) {
+    const Eigen::Vector2d d = b.center - a.center;
+    if (d.norm() >= a.radius + b.radius) return false;  // circumscribed circles apart
+    for (const Eigen::Vector2d* axis : {&a.axis_x, &a.axis_y, &b.axis_x, &b.axis_y}) {
+      if (std::abs(d.dot(*axis)) - a.projectedRadius(*axis) - b.projectedRadius(*axis) >= 0.0) {
+        return false;
+      }
+    }
+    return true;
+  }
+
   RobotDef robot_;
-  std::vector<Obstacle> obstacles_;
+  std::vector<Prepared> obstacles_;
 };
 
 }  // namespace parksim::testing
