@@ -160,8 +160,6 @@ void setColor(std::uint8_t* dst, const Rgba8& c) {
   dst[3] = c.a;
 }
 
-}  // namespace
-
 // The pixel rectangle {x, y, width, height} (image rows from the top) that a top view's first
 // polygon covers, when that polygon is an opaque axis-aligned rectangle; unset otherwise.
 std::optional<std::array<int, 4>> groundRectangle(const Scene& scene, const Camera& cam) {
@@ -175,8 +173,13 @@ std::optional<std::array<int, 4>> groundRectangle(const Scene& scene, const Came
     y0 = std::min(y0, q.y());
     y1 = std::max(y1, q.y());
   }
-  for (const Eigen::Vector2d& q : p.points) {
+  // A rectangle: every vertex a corner, every edge along one axis (so no corner repeats and the
+  // outline does not cross itself).
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Eigen::Vector2d& q = p.points[i];
+    const Eigen::Vector2d& r = p.points[(i + 1) % 4];
     if ((q.x() != x0 && q.x() != x1) || (q.y() != y0 && q.y() != y1)) return std::nullopt;
+    if ((q.x() == r.x()) == (q.y() == r.y())) return std::nullopt;
   }
   const auto a = cam.project({x0, y1, p.z_m});  // top-left on screen
   const auto b = cam.project({x1, y0, p.z_m});  // bottom-right
@@ -190,6 +193,8 @@ std::optional<std::array<int, 4>> groundRectangle(const Scene& scene, const Came
   if (i1 <= i0 || j1 <= j0) return std::array<int, 4>{0, 0, 0, 0};
   return std::array<int, 4>{i0, j0, i1 - i0, j1 - j0};
 }
+
+}  // namespace
 
 struct Renderer::Impl {
   RenderDef def;

@@ -202,3 +202,36 @@ TEST_F(RendererTest, SavesAPictureForHumans) {
 
 }  // namespace
 }  // namespace parksim
+
+namespace parksim {
+namespace {
+
+TEST(RendererWithoutMsaaTest, GroundClearDrawsWhatThePolygonWould) {
+  RenderDef def;
+  def.msaa_samples = 1;
+  Renderer renderer(def);
+  EXPECT_EQ(renderer.samples(), 1);
+  const Scenario lot = rendertest::testLot();
+  const SceneStyle style;
+  ViewState view;
+  view.robot = Pose2{0.7, 0.45, 0.3};
+  const Scene fast = buildScene(lot, view, style);
+  // The same rectangle with a fifth, collinear point is drawn as triangles instead.
+  Scene slow = fast;
+  ScenePolygon& ground = slow.polygons.front();
+  ground.points.insert(ground.points.begin() + 1, 0.5 * (ground.points[0] + ground.points[1]));
+  RgbImage a;
+  RgbImage b;
+  renderer.render(fast, {}, a);
+  renderer.render(slow, {}, b);
+  EXPECT_EQ(a, b);
+  // Edge smoothing leaves the inside of faces alone.
+  const Camera cam = renderer.camera(fast, {});
+  const OrientedBox body = footprintAt(lot.robot, *view.robot);
+  const auto p = cam.project({body.center.x(), body.center.y(), lot.robot.height_m});
+  ASSERT_TRUE(p);
+  EXPECT_EQ(a.at(static_cast<int>(p->x()), static_cast<int>(p->y())), style.robot);
+}
+
+}  // namespace
+}  // namespace parksim
