@@ -19,7 +19,7 @@
 #include <fstream>
 #include <memory>
 #include <string>
-#include <string_view>
+
 #include <vector>
 
 #include "bench/ompl/OmplLog.h"
@@ -30,6 +30,7 @@
 #include "collision/BulletCollisionWorld.h"
 #include "core/AtomicFile.h"
 #include "core/Error.h"
+#include "planner/PlanScenario.h"
 #include "planner/TreePlanner.h"
 #include "scenario/ScenarioReader.h"
 
@@ -41,7 +42,9 @@ using Clock = std::chrono::steady_clock;
 struct BenchOptions {
   std::vector<std::string> worlds;
   int seeds = 100;
-  std::vector<std::string> planners;  // parksim planner kinds; empty: all
+  std::vector<std::string> planners;   // parksim planner kinds; empty: all
+  std::vector<std::string> steerings;  // parksim steering kinds; empty: all
+  bool smooth = false;                 // also run every parksim planner with smoothing
   int max_iterations = 2000;
   double anytime_s = 0.1;
   bool ompl = false;
@@ -56,7 +59,7 @@ struct BenchOptions {
 
 // Planners that keep improving their path until their budget ends get a second, time-budgeted
 // run per seed for the path length they reach in --anytime-s.
-bool isAnytime(PlannerKind kind) { return std::string_view(toString(kind)) == "rrt-star"; }
+bool isAnytime(PlannerKind kind) { return kind == PlannerKind::kRrtStar; }
 
 double loadAverage() {
   double load[1] = {0.0};
@@ -116,9 +119,19 @@ int runBench(const BenchOptions& o) {
   std::vector<PlannerKind> kinds;
   if (o.planners.empty()) {
     kinds = allPlannerKinds();
+  } else if (o.planners == std::vector<std::string>{"none"}) {
+    // OMPL alone
   } else {
     for (const std::string& name : o.planners) kinds.push_back(plannerKindFromString(name));
   }
+  std::vector<SteeringKind> steerings;
+  if (o.steerings.empty()) {
+    steerings = allSteeringKinds();
+  } else {
+    for (const std::string& name : o.steerings) steerings.push_back(steeringKindFromString(name));
+  }
+  std::vector<bool> smoothing = {false};
+  if (o.smooth) smoothing.push_back(true);
   std::vector<bench::OmplPlanner> ompl_planners;
   std::vector<bench::OmplSpace> ompl_spaces;
   if (o.ompl) {
@@ -147,18 +160,24 @@ int runBench(const BenchOptions& o) {
     const BulletCollisionWorld world(scenario);
     const Clock::time_point t0 = Clock::now();
     for (int seed = 1; seed <= o.seeds; ++seed) {
-      for (PlannerKind kind : kinds) {
-        bench::ParksimRunDef def;
-        def.setup.planner.kind = kind;
-        def.setup.planner.seed = static_cast<std::uint64_t>(seed);
-        def.setup.planner.max_iterations = o.max_iterations;
-        def.setup.planner.record_tree = false;
-        def.check = check;
-        all.push_back(bench::runParksim(scenario, world, def));
-        if (isAnytime(kind)) {
-          def.setup.planner.max_iterations = INT_MAX;
-          def.setup.planner.max_time_s = o.anytime_s;
-          all.push_back(bench::runParksim(scenario, world, def));
+      for (SteeringKind steering : steerings) {
+        for (PlannerKind kind : kinds) {
+          for (bool smooth : smoothing) {
+            bench::ParksimRunDef def;
+            def.setup.steering_kind = steering;
+            def.setup.planner.kind = kind;
+            def.setup.planner.seed = static_cast<std::uint64_t>(seed);
+            def.setup.planner.max_iterations = o.max_iterations;
+            def.setup.planner.record_tree = false;
+            def.setup.planner.smooth = smooth;
+            def.check = check;
+            all.push_back(bench::runParksim(scenario, world, def));
+            if (isAnytime(kind)) {
+              def.setup.planner.max_iterations = INT_MAX;
+              def.setup.planner.max_time_s = o.anytime_s;
+              all.push_back(bench::runParksim(scenario, world, def));
+            }
+          }
         }
       }
       for (bench::OmplSpace space : ompl_spaces) {
@@ -241,8 +260,13 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   sub.add_option("--planners", opt->planners,
-                 "parksim planners, comma-separated (default: every planner kind)")
+                 "parksim planners, comma-separated (default: every planner kind; none: OMPL only)")
       ->delimiter(',');
+  sub.add_option("--steering", opt->steerings,
+                 "parksim steering functions, comma-separated (default: all)")
+      ->delimiter(',');
+  sub.add_flag("--smooth", opt->smooth,
+               "also run every parksim planner with shortcut smoothing (planner name +smooth)");
   sub.add_option("--max-iterations", opt->max_iterations,
                  "iteration budget of parksim's first-solution runs")
       ->capture_default_str()

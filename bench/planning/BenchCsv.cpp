@@ -9,10 +9,26 @@
 namespace parksim::bench {
 namespace {
 
-const char* const kFixedColumns[] = {
-    "library",  "planner", "space",           "scenario",     "seed",         "budget",
-    "solved",   "status",  "valid",           "time_first_s", "time_total_s", "cpu_total_s",
-    "length_m", "cusps",   "min_clearance_m", "iterations",   "tree_size",    "collision_queries"};
+const char* const kFixedColumns[] = {"library",
+                                     "planner",
+                                     "space",
+                                     "scenario",
+                                     "seed",
+                                     "budget",
+                                     "solved",
+                                     "status",
+                                     "valid",
+                                     "time_first_s",
+                                     "time_total_s",
+                                     "cpu_total_s",
+                                     "length_m",
+                                     "cusps",
+                                     "min_clearance_m",
+                                     "cost",
+                                     "iterations",
+                                     "iterations_first",
+                                     "tree_size",
+                                     "collision_queries"};
 
 // Phase names in first-seen order, so the columns follow the planner's own phase order.
 std::vector<std::string> phaseNames(const std::vector<BenchRecord>& records) {
@@ -60,13 +76,26 @@ std::string benchCsv(const std::vector<BenchRecord>& records) {
   out += '\n';
   const std::vector<std::string> phases = phaseNames(records);
   for (const BenchRecord& r : records) {
-    const std::vector<std::string> fields = {
-        text(r.library),        text(r.planner),        text(r.space),
-        text(r.scenario),       std::to_string(r.seed), text(r.budget),
-        r.solved ? "1" : "0",   text(r.status),         r.valid ? "1" : "0",
-        number(r.time_first_s), number(r.time_total_s), number(r.cpu_total_s),
-        number(r.length_m),     count(r.cusps),         number(r.min_clearance_m),
-        count(r.iterations),    count(r.tree_size),     count(r.collision_queries)};
+    const std::vector<std::string> fields = {text(r.library),
+                                             text(r.planner),
+                                             text(r.space),
+                                             text(r.scenario),
+                                             std::to_string(r.seed),
+                                             text(r.budget),
+                                             r.solved ? "1" : "0",
+                                             text(r.status),
+                                             r.valid ? "1" : "0",
+                                             number(r.time_first_s),
+                                             number(r.time_total_s),
+                                             number(r.cpu_total_s),
+                                             number(r.length_m),
+                                             count(r.cusps),
+                                             number(r.min_clearance_m),
+                                             number(r.cost),
+                                             count(r.iterations),
+                                             count(r.iterations_first),
+                                             count(r.tree_size),
+                                             count(r.collision_queries)};
     for (std::size_t i = 0; i < fields.size(); ++i) out += (i ? "," : "") + fields[i];
     for (const std::string& name : phases) {
       out += ',';

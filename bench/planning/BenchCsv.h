@@ -1,7 +1,8 @@
 #pragma once
 // bench.csv: one row per benchmark run. The fixed columns come first, in this order:
 //   library,planner,space,scenario,seed,budget,solved,status,valid,time_first_s,time_total_s,
-//   cpu_total_s,length_m,cusps,min_clearance_m,iterations,tree_size,collision_queries
+//   cpu_total_s,length_m,cusps,min_clearance_m,cost,iterations,iterations_first,tree_size,
+//   collision_queries
 // followed by one `phase_<name>_s` column per planner phase any row reports. Units: s, m.
 // Values a run does not have are left empty; booleans are 0 or 1.
 

@@ -31,12 +31,15 @@ struct BenchRecord {
   /// CPU time of the whole run, s: unlike wall time, barely affected by other processes
   /// competing for the cores, so it cross-checks wall-time ratios on a shared machine.
   double cpu_total_s = kNotMeasured;
-  double length_m = kNotMeasured;         ///< length travelled by the reference point, m
-  int cusps = -1;                         ///< direction reversals along the path
+  double length_m = kNotMeasured;  ///< length travelled by the reference point, m
+  int cusps = -1;                  ///< direction reversals along the path
+  /// parksim: the planner's path cost (length + reverse and cusp penalties, PathCost.h), m.
+  double cost = kNotMeasured;
   double min_clearance_m = kNotMeasured;  ///< smallest footprint-obstacle distance along the path
 
   long iterations = -1;         ///< parksim: iterations of the tree loop
-  long tree_size = -1;          ///< parksim: tree nodes; OMPL: planner graph vertices
+  long iterations_first = -1;   ///< parksim: iterations completed at the first solution
+  long tree_size = -1;          ///< parksim: nodes of all trees; OMPL: planner graph vertices
   long collision_queries = -1;  ///< parksim: footprint queries of the planner itself
   /// parksim: wall time per phase of the search, s, as (name, seconds), in the planner's order.
   std::vector<std::pair<std::string, double>> phases_s;

@@ -59,6 +59,8 @@ std::string markdownTable(const std::vector<std::string>& header,
 
 bool isTimeBudgeted(const GroupSummary& g) { return g.budget.find("time=") != std::string::npos; }
 
+bool isSmoothed(const GroupSummary& g) { return g.planner.find("+smooth") != std::string::npos; }
+
 std::string label(const GroupSummary& g) {
   return g.library + " " + g.planner + " (" + g.space + ", " + g.budget + ")";
 }
@@ -208,7 +210,7 @@ std::string formatPhaseTable(const std::vector<GroupSummary>& groups) {
       }
     }
   }
-  std::vector<std::string> header = {"scenario", "planner", "budget", "mean total"};
+  std::vector<std::string> header = {"scenario", "planner", "space", "budget", "mean total"};
   for (const std::string& p : phases) header.push_back(p);
   header.push_back("other");
   std::vector<std::vector<std::string>> rows;
@@ -218,7 +220,7 @@ std::string formatPhaseTable(const std::vector<GroupSummary>& groups) {
     for (const auto& [name, s] : g.phase_mean_s) {
       if (name == "total") total = s;
     }
-    std::vector<std::string> row = {g.scenario, g.planner, g.budget, timeText(total)};
+    std::vector<std::string> row = {g.scenario, g.planner, g.space, g.budget, timeText(total)};
     double accounted = 0.0;
     for (const std::string& p : phases) {
       std::string cell = "-";
@@ -251,7 +253,12 @@ std::string formatComparison(const std::vector<GroupSummary>& groups) {
     for (const GroupSummary& g : groups) {
       if (g.scenario != scenario) continue;
       if (g.library == "parksim") {
-        (isTimeBudgeted(g) ? parksim_anytime : parksim_first).push_back(&g);
+        if (isTimeBudgeted(g)) {
+          parksim_anytime.push_back(&g);
+        } else if (!isSmoothed(g)) {
+          // Smoothing starts after the first solution, which it leaves as it is.
+          parksim_first.push_back(&g);
+        }
       } else if (g.library == "ompl" && g.space == "reeds-shepp") {
         ompl_drivable.push_back(&g);
         if (g.planner == "RRTstar") ompl_star.push_back(&g);
@@ -268,7 +275,7 @@ std::string formatComparison(const std::vector<GroupSummary>& groups) {
                           percentText(p->successRate()) + " solved",
                       label(*o) + ": " + timeText(o->time_first_median_s) + ", " +
                           percentText(o->successRate()) + " solved",
-                      std::isfinite(ratio) ? format("%.2f", ratio) : "-", met ? "yes" : "NO"});
+                      std::isfinite(ratio) ? format("%.3g", ratio) : "-", met ? "yes" : "NO"});
     }
     for (const GroupSummary* a : parksim_anytime) {
       for (const GroupSummary* s : ompl_star) {
@@ -279,7 +286,7 @@ std::string formatComparison(const std::vector<GroupSummary>& groups) {
                             percentText(a->successRate()) + " solved",
                         label(*s) + ": " + lengthText(s->length_median_m) + ", " +
                             percentText(s->successRate()) + " solved",
-                        std::isfinite(ratio) ? format("%.2f", ratio) : "-", met ? "yes" : "NO"});
+                        std::isfinite(ratio) ? format("%.3g", ratio) : "-", met ? "yes" : "NO"});
       }
     }
   }

@@ -29,8 +29,10 @@ std::string budgetName(const PlannerDef& planner) {
 }
 
 std::vector<std::pair<std::string, double>> phaseList(const PhaseTimes& t) {
-  return {{"sampling", t.sampling_s},   {"nearest", t.nearest_s},       {"steering", t.steering_s},
-          {"collision", t.collision_s}, {"goal_check", t.goal_check_s}, {"total", t.total_s}};
+  return {
+      {"sampling", t.sampling_s},     {"nearest", t.nearest_s},       {"steering", t.steering_s},
+      {"collision", t.collision_s},   {"goal_check", t.goal_check_s}, {"rewiring", t.rewiring_s},
+      {"connection", t.connection_s}, {"smoothing", t.smoothing_s},   {"total", t.total_s}};
 }
 
 BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& world,
@@ -41,7 +43,8 @@ BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& wor
   BenchRecord r;
   r.library = "parksim";
   r.planner = toString(def.setup.planner.kind);
-  r.space = def.steering;
+  if (def.setup.planner.smooth) r.planner += "+smooth";
+  r.space = toString(def.setup.steering_kind);
   r.scenario = scenario.name;
   r.seed = def.setup.planner.seed;
   r.budget = budgetName(def.setup.planner);
@@ -50,7 +53,8 @@ BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& wor
   r.time_total_s = result.stats.times.total_s;
   r.cpu_total_s = cpu;
   r.iterations = result.stats.iterations;
-  r.tree_size = result.stats.tree_size;
+  r.iterations_first = result.stats.first_solution_iteration;
+  r.tree_size = static_cast<long>(result.stats.tree_size) + result.stats.goal_tree_size;
   r.collision_queries = result.stats.collision_queries;
   r.phases_s = phaseList(result.stats.times);
   if (result.solved()) {
@@ -62,6 +66,7 @@ BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& wor
     r.min_clearance_m = check.min_clearance_m;
     r.length_m = result.trajectory.pathLength(scenario.robot);
     r.cusps = result.trajectory.cusps(scenario.robot);
+    r.cost = result.cost;
   }
   return r;
 }

@@ -16,11 +16,10 @@ namespace parksim::bench {
 struct ParksimRunDef {
   PlanSetup setup;  ///< planner kind, seed, iteration and wall-time budgets, steering, validation
   PathCheckDef check;
-  /// Name of the steering function, for the CSV's `space` column.
-  std::string steering = "move-to-pose";
 };
 
-/// Plans `scenario` with `def.setup` against `world` and checks the path.
+/// Plans `scenario` with `def.setup` against `world` and checks the path. The record's planner
+/// is the planner kind, with "+smooth" when smoothing is on; its space is the steering kind.
 BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& world,
                        const ParksimRunDef& def);
 

@@ -33,7 +33,9 @@ BenchRecord parksimRecord() {
   r.length_m = 1.5;
   r.cusps = 2;
   r.min_clearance_m = 0.004;
+  r.cost = 1.6;
   r.iterations = 40;
+  r.iterations_first = 12;
   r.tree_size = 30;
   r.collision_queries = 1000;
   r.phases_s = {{"sampling", 0.01}, {"total", 0.25}};
@@ -60,9 +62,8 @@ TEST(BenchCsv, HeaderStartsWithTheRequiredColumns) {
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[0],
             "library,planner,space,scenario,seed,budget,solved,status,valid,time_first_s,"
-            "time_total_s,cpu_total_s,length_m,cusps,min_clearance_m,iterations,tree_size,"
-            "collision_queries,"
-            "phase_sampling_s,phase_total_s");
+            "time_total_s,cpu_total_s,length_m,cusps,min_clearance_m,cost,iterations,"
+            "iterations_first,tree_size,collision_queries,phase_sampling_s,phase_total_s");
   // The required columns, in its order, are all there.
   std::vector<std::string> required = {"library",  "planner", "scenario",
                                        "seed",     "solved",  "time_first_s",
@@ -78,11 +79,10 @@ TEST(BenchCsv, HeaderStartsWithTheRequiredColumns) {
 TEST(BenchCsv, RowsCarryValuesAndLeaveMissingOnesEmpty) {
   const std::vector<std::string> lines =
       splitLines(benchCsv({parksimRecord(), unsolvedOmplRecord()}));
-  EXPECT_EQ(
-      lines[1],
-      "parksim,rrt-goal-connect,move-to-pose,head_in,7,iterations=2000,1,solved,1,0.25,0.25,0.2,"
-      "1.5,2,0.004,40,30,1000,0.01,0.25");
-  EXPECT_EQ(lines[2], "ompl,RRT,reeds-shepp,head_in,7,time=1s,0,Timeout,0,,1,,,,,,5000,,,");
+  EXPECT_EQ(lines[1],
+            "parksim,rrt-goal-connect,move-to-pose,head_in,7,iterations=2000,1,solved,1,0.25,0.25,"
+            "0.2,1.5,2,0.004,1.6,40,12,30,1000,0.01,0.25");
+  EXPECT_EQ(lines[2], "ompl,RRT,reeds-shepp,head_in,7,time=1s,0,Timeout,0,,1,,,,,,,,5000,,,");
 }
 
 TEST(BenchCsv, TextWithCommasIsQuoted) {

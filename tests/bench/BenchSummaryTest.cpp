@@ -72,6 +72,9 @@ TEST(BenchSummary, ComparisonNamesTheFastestPlannersAndTheVerdict) {
     records.push_back(run("parksim", "rrt", "move-to-pose", "iterations=2000", true, 0.004, 2.0));
     records.push_back(
         run("parksim", "rrt-goal-connect", "move-to-pose", "iterations=2000", true, 0.002, 2.0));
+    // Smoothing starts after the first solution: a smoothed variant never counts as faster.
+    records.push_back(
+        run("parksim", "rrt+smooth", "move-to-pose", "iterations=2000", true, 0.0001, 1.0));
     records.push_back(run("ompl", "RRTConnect", "reeds-shepp", "time=1s", true, 0.001, 3.0));
     records.push_back(run("ompl", "RRTConnect", "se2", "time=1s", true, 0.0001, 1.0));
     records.push_back(run("ompl", "RRTstar", "reeds-shepp", "time=1s", true, 0.003, 1.5));
@@ -83,10 +86,10 @@ TEST(BenchSummary, ComparisonNamesTheFastestPlannersAndTheVerdict) {
             std::string::npos)
       << table;
   EXPECT_NE(table.find("ompl RRTConnect (reeds-shepp, time=1s): 1.000 ms"), std::string::npos);
-  EXPECT_NE(table.find("| 2.00 "), std::string::npos);
+  EXPECT_NE(table.find("| 2 "), std::string::npos);
   EXPECT_NE(table.find("| NO "), std::string::npos);
   // The anytime run's 1.4 m beats RRTstar's 1.5 m.
-  EXPECT_NE(table.find("| 0.93 "), std::string::npos);
+  EXPECT_NE(table.find("| 0.933 "), std::string::npos);
   EXPECT_NE(table.find("| yes "), std::string::npos);
 }
 

@@ -1,0 +1,58 @@
+// parksim's planners through the benchmark's runner: every planner and steering kind, each path
+// checked by the benchmark's exact path check. Budgets are iteration counts only.
+
+#include "bench/planning/ParksimRuns.h"
+
+#include <gtest/gtest.h>
+
+#include <climits>
+#include <string>
+
+#include "collision/BulletCollisionWorld.h"
+#include "scenario/ScenarioReader.h"
+
+namespace parksim::bench {
+namespace {
+
+TEST(ParksimRuns, EveryPlannerAndSteeringGivesACheckedRecord) {
+  const Scenario s = loadScenario(PARKSIM_SOURCE_DIR "/worlds/head_in.yaml");
+  const BulletCollisionWorld world(s);
+  for (SteeringKind steering : allSteeringKinds()) {
+    for (PlannerKind kind : allPlannerKinds()) {
+      ParksimRunDef def;
+      def.setup.steering_kind = steering;
+      def.setup.planner.kind = kind;
+      def.setup.planner.seed = 1;
+      def.setup.planner.max_iterations = kind == PlannerKind::kRrtStar ? 300 : 2000;
+      def.setup.planner.record_tree = false;
+      const BenchRecord r = runParksim(s, world, def);
+      SCOPED_TRACE(std::string(toString(kind)) + " / " + toString(steering));
+      EXPECT_EQ(r.library, "parksim");
+      EXPECT_EQ(r.planner, toString(kind));
+      EXPECT_EQ(r.space, toString(steering));
+      EXPECT_EQ(r.scenario, "head_in");
+      EXPECT_EQ(r.budget, "iterations=" + std::to_string(def.setup.planner.max_iterations));
+      EXPECT_GT(r.iterations, -1);
+      EXPECT_FALSE(r.phases_s.empty());
+      if (!r.solved) continue;  // success rates are the benchmark's business, not this test's
+      EXPECT_TRUE(r.valid);
+      EXPECT_GT(r.length_m, 0.0);
+      EXPECT_GE(r.min_clearance_m, 0.0);
+      EXPECT_GE(r.cost, r.length_m);
+      EXPECT_GE(r.iterations_first, 0);
+    }
+  }
+}
+
+TEST(ParksimRuns, BudgetNames) {
+  PlannerDef def;
+  def.max_iterations = 2000;
+  EXPECT_EQ(budgetName(def), "iterations=2000");
+  def.max_time_s = 0.1;
+  EXPECT_EQ(budgetName(def), "iterations=2000+time=0.1s");
+  def.max_iterations = INT_MAX;
+  EXPECT_EQ(budgetName(def), "time=0.1s");
+}
+
+}  // namespace
+}  // namespace parksim::bench
