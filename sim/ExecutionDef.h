@@ -16,7 +16,10 @@ const char* toString(TrackingMode mode);
 TrackingMode trackingModeFromString(const std::string& name);
 
 /// Gains of the Kanayama tracking law (sim/TrackingController.h). Errors are those of the plan's
-/// pose at the same time, expressed in the robot's frame.
+/// pose at the same time, expressed in the robot's frame. Errors decay at ~10/s: fast against
+/// the plan's 0.1 s periods, slow against the 240 Hz loop (k dt = 0.04), and at the study's
+/// typical 0.05 m/s the cross-track/heading pair is damped (zeta = k_theta / (2 v sqrt(k_y))
+/// = 1.6).
 struct TrackingGains {
   double k_x = 10.0;      ///< 1/s: forward speed per metre of along-track error
   double k_y = 4000.0;    ///< 1/m^2: yaw rate per (m/s of reference speed x m of cross-track error)
