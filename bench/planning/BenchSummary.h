@@ -61,7 +61,8 @@ std::string formatPhaseTable(const std::vector<GroupSummary>& groups);
 /// Per scenario, the issue-5 comparisons, each with its ratio and verdict:
 /// time to first solution of parksim's fastest planner (iteration-budgeted runs; "+smooth"
 /// variants are left out, their first solution being the unsmoothed one) vs OMPL's fastest
-/// Reeds-Shepp planner, preferring planners that solved every run; and path length of each of
+/// Reeds-Shepp planner, preferring planners that solved every run (with several steering
+/// functions, also the fastest per steering function); and path length of each of
 /// parksim's time-budgeted (anytime) runs vs OMPL's RRTstar (Reeds-Shepp). The time target is
 /// met when parksim's median is no larger, it solved every run and every path passed the check.
 std::string formatComparison(const std::vector<GroupSummary>& groups);

@@ -93,5 +93,21 @@ TEST(BenchSummary, ComparisonNamesTheFastestPlannersAndTheVerdict) {
   EXPECT_NE(table.find("| yes "), std::string::npos);
 }
 
+TEST(BenchSummary, ComparisonShowsTheBestOfEachSteeringFunctionToo) {
+  std::vector<BenchRecord> records;
+  for (int i = 0; i < 3; ++i) {
+    records.push_back(run("parksim", "rrt", "move-to-pose", "iterations=2000", true, 0.004, 2.0));
+    records.push_back(
+        run("parksim", "rrt", "rotate-translate-rotate", "iterations=2000", true, 0.0002, 2.0));
+    records.push_back(run("ompl", "RRTConnect", "reeds-shepp", "time=1s", true, 0.001, 3.0));
+  }
+  const std::string table = formatComparison(summarize(records));
+  EXPECT_NE(table.find("| time to first solution, median "), std::string::npos) << table;
+  EXPECT_NE(table.find("| same, best move-to-pose planner "), std::string::npos);
+  EXPECT_NE(table.find("| same, best rotate-translate-rotate planner "), std::string::npos);
+  EXPECT_NE(table.find("| 4 "), std::string::npos);    // move-to-pose: 4 ms vs 1 ms, behind
+  EXPECT_NE(table.find("| 0.2 "), std::string::npos);  // rotate-translate-rotate: ahead
+}
+
 }  // namespace
 }  // namespace parksim::bench
