@@ -56,9 +56,7 @@ struct Episode {
   }
 };
 
-CameraDef cameraFor(int view) {
-  return view == 0 ? CameraDef{} : CameraDef{CameraMode::kFollow, 45.0, -60.0, 45.0, 0.6, 0.98};
-}
+CameraDef cameraFor(int view) { return view == 0 ? CameraDef{} : FrameDef{}.camera_3d; }
 
 void BM_Render(benchmark::State& state) {
   const int view = static_cast<int>(state.range(0));

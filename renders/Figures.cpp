@@ -364,9 +364,19 @@ Scene buildLot3dFigure(const Scenario& scenario, const PlanFigure* plan, const S
 }
 
 CameraDef figureCamera(const std::string& figure_name) {
-  if (figure_name == "cspace_stack")
-    return {CameraMode::kPerspective, 38.0, -62.0, 32.0, 0.6, 0.95};
-  if (figure_name == "lot_3d") return {CameraMode::kPerspective, 38.0, -70.0, 42.0, 0.6, 0.98};
+  if (figure_name == "cspace_stack") {
+    return {.mode = CameraMode::kPerspective,
+            .fov_y_deg = 38.0,
+            .azimuth_deg = -62.0,
+            .elevation_deg = 32.0,
+            .fill = 0.95};
+  }
+  if (figure_name == "lot_3d") {
+    return {.mode = CameraMode::kPerspective,
+            .fov_y_deg = 38.0,
+            .azimuth_deg = -70.0,
+            .elevation_deg = 42.0};
+  }
   return {};
 }
 

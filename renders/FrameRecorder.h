@@ -54,8 +54,13 @@ struct FrameDef {
   bool video = false;             ///< finish() makes out_dir/episode.mp4 (libx264, yuv420p)
   bool gif = false;               ///< finish() makes out_dir/episode.gif (at most 15 frames/s)
   std::string ffmpeg = "ffmpeg";  ///< program name looked up on $PATH, or a path
-  /// The 3D view's camera: by default it follows the robot from the south-east, looking down.
-  CameraDef camera_3d{CameraMode::kFollow, 45.0, -60.0, 45.0, 0.6, 0.98};
+  /// The 3D view's camera: by default it follows the robot from the south-south-east, 45 degrees
+  /// above the ground.
+  CameraDef camera_3d{.mode = CameraMode::kFollow,
+                      .fov_y_deg = 45.0,
+                      .azimuth_deg = -60.0,
+                      .elevation_deg = 45.0,
+                      .follow_distance_m = 0.6};
   /// Colours and widths for a 480-pixel-high image; scaled to height_px.
   SceneStyle style;
   bool show_tree = false;  ///< draw the planner's tree (setPlan) under the paths
