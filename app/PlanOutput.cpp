@@ -9,11 +9,30 @@
 
 namespace parksim::app {
 
+namespace {
+
+template <class Kind>
+std::string namesOf(const std::vector<Kind>& kinds) {
+  std::string names;
+  for (Kind k : kinds) names += (names.empty() ? "" : ", ") + std::string(toString(k));
+  return names;
+}
+
+}  // namespace
+
 void PlanCliOptions::addTo(CLI::App& sub) {
-  sub.add_option("--planner", planner, "rrt or rrt-goal-connect")->capture_default_str();
+  sub.add_option("--planner", planner, "one of: " + namesOf(allPlannerKinds()))
+      ->capture_default_str();
+  sub.add_option("--steering", steering,
+                 "steering function, one of: " + namesOf(allSteeringKinds()))
+      ->capture_default_str();
   sub.add_option("--seed", seed, "seed of the planner's random number generator")
       ->capture_default_str();
   sub.add_option("--max-iterations", max_iterations, "iteration budget of the tree search")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  sub.add_flag("--smooth", smooth, "shortcut-smooth the plan (study 3(c)(3))");
+  sub.add_option("--smoothing-attempts", smoothing_attempts, "random shortcuts tried by --smooth")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
 }
@@ -23,6 +42,9 @@ PlanSetup PlanCliOptions::toSetup(const Scenario&) const {
   setup.planner.kind = plannerKindFromString(planner);
   setup.planner.seed = seed;
   setup.planner.max_iterations = max_iterations;
+  setup.planner.smooth = smooth;
+  setup.planner.smoothing_attempts = smoothing_attempts;
+  setup.steering_kind = steeringKindFromString(steering);
   return setup;
 }
 
@@ -36,11 +58,17 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
       {"solved", result.solved()},
       {"message", result.message},
       {"planner", toString(setup.planner.kind)},
+      {"steering", toString(setup.steering_kind)},
+      {"smooth", setup.planner.smooth},
       {"seed", setup.planner.seed},
       {"max_iterations", setup.planner.max_iterations},
       {"iterations", result.stats.iterations},
       {"tree_size", result.stats.tree_size},
+      {"goal_tree_size", result.stats.goal_tree_size},
       {"goal_attempts", result.stats.goal_attempts},
+      {"connection_attempts", result.stats.connection_attempts},
+      {"rewires", result.stats.rewires},
+      {"smoothing_shortcuts", result.stats.smoothing_shortcuts},
       {"collision_queries", result.stats.collision_queries},
       {"motion_check_resolution_m", setup.validation.resolution_m},
       {"planning_time_s", t.total_s},
@@ -49,10 +77,23 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
         {"nearest_neighbour", t.nearest_s},
         {"steering", t.steering_s},
         {"collision_checking", t.collision_s},
-        {"goal_checks", t.goal_check_s}}},
+        {"goal_checks", t.goal_check_s},
+        {"rewiring", t.rewiring_s},
+        {"connection", t.connection_s},
+        {"smoothing", t.smoothing_s}}},
   };
+  if (result.stats.first_solution_iteration >= 0) {
+    j["first_solution_s"] = result.stats.first_solution_s;
+    j["first_solution_iteration"] = result.stats.first_solution_iteration;
+  }
+  nlohmann::json history = nlohmann::json::array();
+  for (const CostSample& c : result.cost_history) {
+    history.push_back({{"time_s", c.time_s}, {"iteration", c.iteration}, {"cost_m", c.cost}});
+  }
+  j["cost_history"] = history;
   if (result.solved()) {
     const Pose2& end = result.trajectory.points.back().pose;
+    j["cost_m"] = result.cost;
     j["path_length_m"] = result.trajectory.pathLength(scenario.robot);
     j["duration_s"] = result.trajectory.duration();
     j["cusps"] = result.trajectory.cusps(scenario.robot);

@@ -12,11 +12,15 @@
 
 namespace parksim::app {
 
-/// Options every planning command takes: --planner, --seed, --max-iterations.
+/// Options every planning command takes: --planner, --steering, --seed, --max-iterations,
+/// --smooth, --smoothing-attempts.
 struct PlanCliOptions {
   std::string planner = "rrt-goal-connect";
+  std::string steering = "move-to-pose";
   std::uint64_t seed = 1;
   int max_iterations = 2000;
+  bool smooth = false;
+  int smoothing_attempts = 100;
 
   /// Registers the options on `sub`.
   void addTo(CLI::App& sub);
@@ -24,8 +28,9 @@ struct PlanCliOptions {
   PlanSetup toSetup(const Scenario& scenario) const;
 };
 
-/// plan.json's content: status, planner, seed, iterations, tree_size, per-phase times,
-/// planning_time_s, path_length_m, cusps, final pose error.
+/// plan.json's content: status, planner, steering, seed, iterations, tree sizes, per-phase
+/// times, planning_time_s, first solution, cost and its history, path_length_m, cusps, final
+/// pose error.
 nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
                            const PlanResult& result);
 

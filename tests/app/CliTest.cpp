@@ -21,12 +21,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
+struct CliRun {
   int exit_code;
   std::string out;  // stdout and stderr
 };
 
-Run parksim(const std::string& args) {
+CliRun parksim(const std::string& args) {
   const std::string cmd = std::string(PARKSIM_EXE) + " " + args + " 2>&1";
   FILE* pipe = popen(cmd.c_str(), "r");
   std::string out;
@@ -62,7 +62,7 @@ class Cli : public ::testing::Test {
 TEST_F(Cli, PlanWritesAConsistentTrajectoryAndSummary) {
   for (const char* name : {"head_in.yaml", "parallel.yaml"}) {
     const fs::path out = dir_ / name;
-    const Run r = parksim("plan " + world(name) + " --seed 3 --out " + out.string());
+    const CliRun r = parksim("plan " + world(name) + " --seed 3 --out " + out.string());
     ASSERT_EQ(r.exit_code, 0) << r.out;
     const Scenario s = loadScenario(world(name));
     const Trajectory t = readTrajectoryCsv((out / "trajectory.csv").string());
@@ -98,8 +98,8 @@ TEST_F(Cli, SameSeedGivesByteIdenticalTrajectoryFiles) {
 
 TEST_F(Cli, UnsolvedPlanExitsNonZeroAndWritesNoTrajectory) {
   const fs::path out = dir_ / "out";
-  const Run r = parksim("plan " + world("head_in.yaml") +
-                        " --max-iterations 0 --planner rrt --out " + out.string());
+  const CliRun r = parksim("plan " + world("head_in.yaml") +
+                           " --max-iterations 0 --planner rrt --out " + out.string());
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.out.find("unsolved (iteration_limit)"), std::string::npos) << r.out;
   EXPECT_FALSE(fs::exists(out / "trajectory.csv"));
@@ -109,12 +109,12 @@ TEST_F(Cli, UnsolvedPlanExitsNonZeroAndWritesNoTrajectory) {
 TEST_F(Cli, MalformedWorldIsRefusedWithOneLineAndNoOutput) {
   const fs::path bad = dir_ / "bad.yaml";
   std::string text = slurp(world("head_in.yaml"));
-  const std::size_t at = text.find("start:");
+  const std::size_t at = text.find("\nstart: [");
   ASSERT_NE(at, std::string::npos);
-  text.insert(at, "bogus_key: 1\n");
+  text.insert(at + 1, "bogus_key: 1\n");
   std::ofstream(bad) << text;
   const fs::path out = dir_ / "never";
-  const Run r = parksim("plan " + bad.string() + " --out " + out.string());
+  const CliRun r = parksim("plan " + bad.string() + " --out " + out.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
   EXPECT_NE(r.out.find(bad.string() + ":"), std::string::npos) << r.out;
@@ -124,7 +124,7 @@ TEST_F(Cli, MalformedWorldIsRefusedWithOneLineAndNoOutput) {
 
 TEST_F(Cli, MissingWorldFileAndBadOptionsAreRefused) {
   const fs::path out = dir_ / "never";
-  Run r = parksim("plan " + (dir_ / "missing.yaml").string() + " --out " + out.string());
+  CliRun r = parksim("plan " + (dir_ / "missing.yaml").string() + " --out " + out.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.out.find("missing.yaml"), std::string::npos) << r.out;
   r = parksim("plan " + world("head_in.yaml") + " --planner nope --out " + out.string());
@@ -135,7 +135,7 @@ TEST_F(Cli, MissingWorldFileAndBadOptionsAreRefused) {
 
 TEST_F(Cli, EveryCommandHasHelp) {
   for (const char* cmd : {"", "plan", "run", "render", "bench"}) {
-    const Run r = parksim(std::string(cmd) + " --help");
+    const CliRun r = parksim(std::string(cmd) + " --help");
     EXPECT_EQ(r.exit_code, 0) << cmd;
     EXPECT_NE(r.out.find("--help"), std::string::npos) << cmd;
   }
