@@ -2,7 +2,9 @@
 // driving along an arc and its executed path growing:
 //   BM_Render/<view>/W/H      render and read back one frame (no file)
 //   BM_Png/<deflate>/W/H      encode one rendered frame: stb's deflate vs. routed to zlib
-//   BM_Record/<view>/W/H      FrameRecorder end to end: render, encode on a worker, write files
+//   BM_Record/<view>/W/H/...  FrameRecorder end to end: render, encode on workers, write files
+//                             (enc: encoder threads; fresh: new files, or rewriting the last
+//                             iteration's, which this machine's ext4 does ten times faster)
 // Run: build/bench/bench_render --benchmark_counters_tabular=true
 // fps is frames per wall-clock second (llvmpipe and the encoder use threads); CPU is the whole
 // process's CPU time, all threads, per iteration: on a busy machine fps drops, CPU time barely.
@@ -107,28 +109,53 @@ void BM_Record(benchmark::State& state) {
   def.height_px = static_cast<int>(state.range(2));
   def.view = view;
   def.msaa_samples = static_cast<int>(state.range(3));
+  def.encode_threads = static_cast<int>(state.range(4));
+  const bool fresh = state.range(5) != 0;
   def.fps = 30.0;
   def.out_dir = (std::filesystem::temp_directory_path() / "parksim_bench_render").string();
   Trajectory plan;
   for (int k = 0; k < 600; k += 10) plan.points.push_back({k / 30.0, poseAt(k), {}});
+  auto sample = [&](int k) {
+    FrameInput in;
+    in.t_s = k / def.fps;
+    in.pose = poseAt(k);
+    in.reference = poseAt(k + 1);
+    return in;
+  };
   for (auto _ : state) {
-    state.PauseTiming();  // context creation and directory cleanup are once per episode
+    // Once per episode, not timed: context creation, directory cleanup, and the first frame,
+    // whose draws make llvmpipe compile its shader variants (see BM_FirstFrame).
+    state.PauseTiming();
+    if (fresh) std::filesystem::remove_all(def.out_dir);
     auto rec = std::make_unique<FrameRecorder>(lot(), def);
     rec->setPlan(plan);
+    rec->addFrame(sample(0));
     state.ResumeTiming();
-    for (int k = 0; k < kFramesPerIteration; ++k) {
-      FrameInput in;
-      in.t_s = k / def.fps;
-      in.pose = poseAt(k);
-      in.reference = poseAt(k + 1);
-      rec->addFrame(in);
-    }
+    for (int k = 1; k <= kFramesPerIteration; ++k) rec->addFrame(sample(k));
     rec->finish();  // waits for the last files
+    state.PauseTiming();
     rec.reset();
+    state.ResumeTiming();
   }
   state.counters["fps"] = benchmark::Counter(
       static_cast<double>(state.iterations()) * kFramesPerIteration, benchmark::Counter::kIsRate);
-  state.SetLabel(std::string(toString(view)) + (def.msaa_samples > 1 ? " msaa" : ""));
+  state.SetLabel(std::string(toString(view)) + (def.msaa_samples > 1 ? " msaa" : "") +
+                 (fresh ? " new-files" : " rewrite"));
+  std::filesystem::remove_all(def.out_dir);
+}
+
+// Setting up a recorder: GL context, framebuffers, font atlas, and the first frame, during
+// which llvmpipe compiles the shaders for this context.
+void BM_FirstFrame(benchmark::State& state) {
+  FrameDef def;
+  def.out_dir = (std::filesystem::temp_directory_path() / "parksim_bench_first").string();
+  for (auto _ : state) {
+    FrameRecorder rec(lot(), def);
+    FrameInput in;
+    in.pose = poseAt(0);
+    rec.addFrame(in);
+    rec.finish();
+  }
   std::filesystem::remove_all(def.out_dir);
 }
 
@@ -152,14 +179,18 @@ BENCHMARK(BM_Png)
     ->MeasureProcessCPUTime()
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FirstFrame)->MeasureProcessCPUTime()->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Record)
-    ->ArgNames({"view", "w", "h", "msaa"})
-    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1})
-    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 4})
-    ->Args({static_cast<int>(FrameView::kTop), 1280, 720, 1})
-    ->Args({static_cast<int>(FrameView::kTop), 1280, 720, 4})
-    ->Args({static_cast<int>(FrameView::k3d), 640, 480, 1})
-    ->Args({static_cast<int>(FrameView::kBoth), 640, 480, 1})
+    ->ArgNames({"view", "w", "h", "msaa", "enc", "fresh"})
+    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1, 1, 1})
+    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1, 2, 1})
+    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1, 1, 0})
+    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1, 2, 0})
+    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 4, 2, 0})
+    ->Args({static_cast<int>(FrameView::kTop), 1280, 720, 1, 2, 0})
+    ->Args({static_cast<int>(FrameView::kTop), 1280, 720, 4, 2, 0})
+    ->Args({static_cast<int>(FrameView::k3d), 640, 480, 1, 2, 0})
+    ->Args({static_cast<int>(FrameView::kBoth), 640, 480, 1, 2, 0})
     ->MeasureProcessCPUTime()
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);

@@ -109,9 +109,9 @@ struct RecordingResult {
 
 class FrameRecorder {
  public:
-  /// Creates DIR/frames (removing frames a previous recording left there), the renderer and
-  /// the encoder threads. Throws Error on a bad definition, an unwritable directory or when no
-  /// GL context can be made.
+  /// Creates DIR/frames, the renderer and the encoder threads. Frames of an earlier recording
+  /// into the same directory are overwritten, and finish() removes those beyond this one's. Throws
+  /// Error on a bad definition, an unwritable directory or when no GL context can be made.
   FrameRecorder(const Scenario& scenario, const FrameDef& def);
   /// Waits for pending files (errors are dropped: call finish() to see them).
   ~FrameRecorder();
@@ -129,7 +129,8 @@ class FrameRecorder {
   int addFrame(const FrameInput& input);
 
   /// Renders the last sample if it came after the last frame (so the film ends at the final
-  /// pose), waits until every PNG is written, then runs ffmpeg when video or gif is set. A
+  /// pose), waits until every PNG is written, removes frame files an earlier, longer recording
+  /// left behind, then runs ffmpeg when video or gif is set. A
   /// missing or failing ffmpeg is reported in the result, not thrown. Throws Error when a frame
   /// could not be written. Call once; addFrame afterwards throws.
   RecordingResult finish();

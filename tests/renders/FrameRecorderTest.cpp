@@ -195,6 +195,7 @@ TEST_F(FrameRecorderTest, StaleFramesOfAnEarlierRecordingAreRemoved) {
   def.height_px = 48;
   def.out_dir = outputDir("FrameRecorderTest_stale");
   std::filesystem::create_directories(def.out_dir + "/frames");
+  std::ofstream(def.out_dir + "/frames/000000.png") << "old";
   std::ofstream(def.out_dir + "/frames/000007.png") << "old";
   std::ofstream(def.out_dir + "/frames/notes.txt") << "kept";
   FrameRecorder rec(lot_, def);
@@ -202,6 +203,7 @@ TEST_F(FrameRecorderTest, StaleFramesOfAnEarlierRecordingAreRemoved) {
   EXPECT_EQ(rec.finish().frames, 1);
   EXPECT_FALSE(std::filesystem::exists(def.out_dir + "/frames/000007.png"));
   EXPECT_TRUE(std::filesystem::exists(def.out_dir + "/frames/notes.txt"));
+  EXPECT_EQ(readPng(def.out_dir + "/frames/000000.png").width, 64);  // rewritten, not stale
 }
 
 TEST_F(FrameRecorderTest, BadDefinitionsThrow) {
