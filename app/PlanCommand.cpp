@@ -17,8 +17,7 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
     PlanCliOptions plan;
   };
   auto opt = std::make_shared<Options>();
-  sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")
-      ->required();
+  sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
   opt->plan.addTo(sub);
   sub.add_option("--out", opt->out, "output directory")->capture_default_str();
 
