@@ -19,6 +19,7 @@
 
 #include "core/Error.h"
 #include "core/Geometry.h"
+#include "sim/FastMultiBodySolver.h"
 
 namespace parksim {
 
@@ -130,6 +131,7 @@ struct DynamicsWorld::Impl {
     body->setUserIndex(user_index);
     btRigidBody* raw = body.get();
     world->addRigidBody(raw, group, mask);
+    world->updateSingleAabb(raw);
     bodies.push_back(std::move(body));
     return raw;
   }
@@ -138,11 +140,17 @@ struct DynamicsWorld::Impl {
     config = std::make_unique<btDefaultCollisionConfiguration>();
     dispatcher = std::make_unique<btCollisionDispatcher>(config.get());
     broadphase = std::make_unique<btDbvtBroadphase>();
-    solver = std::make_unique<btMultiBodyConstraintSolver>();
+    solver = model.solver == SolverKernel::kBullet
+                 ? std::make_unique<btMultiBodyConstraintSolver>()
+                 : makeFastMultiBodySolver(model.solver == SolverKernel::kFast);
     world = std::make_unique<btMultiBodyDynamicsWorld>(dispatcher.get(), broadphase.get(),
                                                        solver.get(), config.get());
     world->setGravity(btVector3(0, 0, btScalar(-physics.gravity_mps2)));
     world->getSolverInfo().m_numIterations = physics.solver_iterations;
+    // Bullet recomputes every object's bounding box every step by default, fixed ones
+    // included. Fixed boxes get theirs once, below (updateSingleAabb adds the contact
+    // threshold exactly as the per-step update did); moving bodies are still updated.
+    world->setForceUpdateAllAabbs(false);
 
     // The ground is a slab, not a btStaticPlaneShape: plane contacts are made by perturbing the
     // box, which nudged every resting parked robot by 0.03 mm on its first awake step; the
@@ -226,6 +234,8 @@ struct DynamicsWorld::Impl {
       collider->setCollisionShape(shape);
       collider->setFriction(btScalar(friction));
       collider->setUserIndex(kNotObstacle);
+      if (link >= 0)
+        collider->setContactProcessingThreshold(btScalar(model.wheel_contact_processing_m));
       world->addCollisionObject(collider.get(), group, mask);
       if (link < 0) {
         ego->setBaseCollider(collider.get());
@@ -323,6 +333,7 @@ DynamicsWorld::DynamicsWorld(const Scenario& scenario, const Pose2& start, const
   requirePositive(r.wheel_base_m, "robot.wheel_base_m");
   requirePositive(model.support_radius_m, "support_radius_m");
   requirePositive(model.support_mass_kg, "support_mass_kg");
+  requirePositive(model.wheel_contact_processing_m, "wheel_contact_processing_m");
   requirePositive(r.height_m - model.chassis_clearance_m, "robot height above the clearance");
   for (const Obstacle& o : scenario.obstacles) {
     requirePositive(o.box.half_extents.x(), (o.name + " half length").c_str());
