@@ -2,7 +2,9 @@
 // - BM_Simulate: the dynamics alone (Bullet steps, control, measurement) driving a fixed plan;
 //   the `rtf` counter is simulated seconds per CPU second, the real-time factor.
 // - BM_Episode: what `parksim run` does after reading the world: plan, simulate, metrics.
-// Arguments: world (0 head_in, 1 parallel), tracking (0 closed, 1 open), solver iterations.
+// Arguments: world (0 head_in, 1 parallel), tracking (0 closed, 1 open), solver iterations,
+// solver (0: parksim's default, SimModelDef{}; 1: Bullet's own solver running every iteration,
+// the model as it was before the solver work, for before/after ratios in one binary).
 
 #include <map>
 #include <string>
@@ -54,19 +56,27 @@ void BM_Simulate(benchmark::State& state) {
   }
   ExecutionDef def;
   def.tracking = state.range(1) == 0 ? TrackingMode::kClosed : TrackingMode::kOpen;
+  SimModelDef model;
+  if (state.range(3) == 1) {
+    model.solver = SolverKernel::kBullet;
+    model.solver_residual_threshold = 0.0;
+  }
   double sim_s = 0.0;
   double max_err = 0.0;
   for (auto _ : state) {
-    const EpisodeResult r = runEpisode(s, plan, def);
-    sim_s += r.metrics.sim_time_s;
-    max_err = r.metrics.max_pos_err_m;
-    benchmark::DoNotOptimize(r.rows.data());
+    Episode episode(s, plan, def, model);
+    while (!episode.finished()) episode.step();
+    const EpisodeMetrics m = episode.metrics();
+    sim_s += m.sim_time_s;
+    max_err = m.max_pos_err_m;
+    benchmark::DoNotOptimize(episode.rows().data());
   }
   state.counters["rtf"] = benchmark::Counter(sim_s, benchmark::Counter::kIsRate);
   state.counters["sim_s"] = sim_s / static_cast<double>(state.iterations());
   state.counters["max_err_mm"] = max_err * 1e3;
   state.SetLabel(std::string(kWorlds[state.range(0)]) +
-                 (def.tracking == TrackingMode::kClosed ? " closed" : " open"));
+                 (def.tracking == TrackingMode::kClosed ? " closed" : " open") +
+                 (state.range(3) == 1 ? " bullet-reference" : ""));
 }
 
 void BM_Episode(benchmark::State& state) {
@@ -91,12 +101,14 @@ void BM_Episode(benchmark::State& state) {
 }
 
 BENCHMARK(BM_Simulate)
-    ->ArgNames({"world", "open", "iters"})
-    ->ArgsProduct({{0, 1}, {0, 1}, {50}})
-    ->Args({0, 0, 20})
-    ->Args({1, 0, 20})
-    ->Args({0, 0, 10})
-    ->Args({1, 0, 10})
+    ->ArgNames({"world", "open", "iters", "ref"})
+    ->ArgsProduct({{0, 1}, {0, 1}, {50}, {0}})
+    ->Args({0, 0, 50, 1})
+    ->Args({1, 0, 50, 1})
+    ->Args({0, 0, 20, 0})
+    ->Args({1, 0, 20, 0})
+    ->Args({0, 0, 10, 0})
+    ->Args({1, 0, 10, 0})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Episode)
     ->ArgNames({"world", "open", "iters"})

@@ -94,6 +94,7 @@ struct DynamicsWorld::Impl {
   double chassis_z = 0.0;
 
   WheelSpeeds targets;
+  RobotState state;
   long step_count = 0;
   std::vector<int> contacts;
 
@@ -147,6 +148,8 @@ struct DynamicsWorld::Impl {
                                                        solver.get(), config.get());
     world->setGravity(btVector3(0, 0, btScalar(-physics.gravity_mps2)));
     world->getSolverInfo().m_numIterations = physics.solver_iterations;
+    world->getSolverInfo().m_leastSquaresResidualThreshold =
+        btScalar(model.solver_residual_threshold);
     // Bullet recomputes every object's bounding box every step by default, fixed ones
     // included. Fixed boxes get theirs once, below (updateSingleAabb adds the contact
     // threshold exactly as the per-step update did); moving bodies are still updated.
@@ -302,6 +305,28 @@ struct DynamicsWorld::Impl {
     contacts.erase(std::unique(contacts.begin(), contacts.end()), contacts.end());
   }
 
+  // The robot's state after the last step (Episode reads it two or three times a step).
+  RobotState computeRobot() const {
+    const Impl& d = *this;
+    const btTransform base = d.ego->getBaseWorldTransform();
+    const btVector3 ref_local(btScalar(-d.chassis_dx), 0,
+                              btScalar(d.robot.wheel_radius_m - d.chassis_z));
+    const btVector3 ref = base * ref_local;
+    RobotState out;
+    out.pose = {double(ref.x()), double(ref.y()), yawOf(base)};
+    out.axle_height_m = double(ref.z());
+    const btVector3 up = base.getBasis().getColumn(2);
+    out.tilt_rad = std::acos(std::clamp(double(up.z()), -1.0, 1.0));
+    const btVector3 omega = d.ego->getBaseOmega();
+    const btVector3 vel = d.ego->getBaseVel() + omega.cross(ref - base.getOrigin());
+    out.twist = {
+        double(vel.x()) * std::cos(out.pose.theta) + double(vel.y()) * std::sin(out.pose.theta),
+        double(omega.z())};
+    out.wheels = {double(d.ego->getJointVel(kLeftWheel)), double(d.ego->getJointVel(kRightWheel))};
+    out.awake = d.ego->isAwake();
+    return out;
+  }
+
   // Gives a parked robot its mass while the chassis is still model.parked_wake_distance_m away,
   // so the first contact is already between two bodies with mass.
   void wakeNearbyParkedRobots(const Pose2& ego_pose) {
@@ -334,6 +359,9 @@ DynamicsWorld::DynamicsWorld(const Scenario& scenario, const Pose2& start, const
   requirePositive(model.support_radius_m, "support_radius_m");
   requirePositive(model.support_mass_kg, "support_mass_kg");
   requirePositive(model.wheel_contact_processing_m, "wheel_contact_processing_m");
+  if (!(model.solver_residual_threshold >= 0.0)) {
+    throw Error("simulation: solver_residual_threshold must not be negative");
+  }
   requirePositive(r.height_m - model.chassis_clearance_m, "robot height above the clearance");
   for (const Obstacle& o : scenario.obstacles) {
     requirePositive(o.box.half_extents.x(), (o.name + " half length").c_str());
@@ -347,6 +375,7 @@ DynamicsWorld::DynamicsWorld(const Scenario& scenario, const Pose2& start, const
   impl_->lot = scenario.lot;
   impl_->buildWorld();
   impl_->buildRobot(start);
+  impl_->state = impl_->computeRobot();
   impl_->wakeNearbyParkedRobots(start);
 }
 
@@ -367,7 +396,8 @@ void DynamicsWorld::step() {
   impl_->world->stepSimulation(dt, 1, dt);
   ++impl_->step_count;
   impl_->collectContacts();
-  impl_->wakeNearbyParkedRobots(robot().pose);
+  impl_->state = impl_->computeRobot();
+  impl_->wakeNearbyParkedRobots(impl_->state.pose);
 }
 
 double DynamicsWorld::timeStep() const { return impl_->physics.time_step_s; }
@@ -378,26 +408,7 @@ double DynamicsWorld::time() const {
 
 long DynamicsWorld::steps() const { return impl_->step_count; }
 
-RobotState DynamicsWorld::robot() const {
-  const Impl& d = *impl_;
-  const btTransform base = d.ego->getBaseWorldTransform();
-  const btVector3 ref_local(btScalar(-d.chassis_dx), 0,
-                            btScalar(d.robot.wheel_radius_m - d.chassis_z));
-  const btVector3 ref = base * ref_local;
-  RobotState state;
-  state.pose = {double(ref.x()), double(ref.y()), yawOf(base)};
-  state.axle_height_m = double(ref.z());
-  const btVector3 up = base.getBasis().getColumn(2);
-  state.tilt_rad = std::acos(std::clamp(double(up.z()), -1.0, 1.0));
-  const btVector3 omega = d.ego->getBaseOmega();
-  const btVector3 vel = d.ego->getBaseVel() + omega.cross(ref - base.getOrigin());
-  state.twist = {
-      double(vel.x()) * std::cos(state.pose.theta) + double(vel.y()) * std::sin(state.pose.theta),
-      double(omega.z())};
-  state.wheels = {double(d.ego->getJointVel(kLeftWheel)), double(d.ego->getJointVel(kRightWheel))};
-  state.awake = d.ego->isAwake();
-  return state;
-}
+const RobotState& DynamicsWorld::robot() const { return impl_->state; }
 
 std::vector<Pose2> DynamicsWorld::obstaclePoses() const {
   std::vector<Pose2> poses;
@@ -407,6 +418,11 @@ std::vector<Pose2> DynamicsWorld::obstaclePoses() const {
     poses.push_back({double(tr.getOrigin().x()), double(tr.getOrigin().y()), yawOf(tr)});
   }
   return poses;
+}
+
+Eigen::Vector2d DynamicsWorld::obstaclePosition(std::size_t index) const {
+  const btVector3& origin = impl_->bodies.at(index + 1)->getWorldTransform().getOrigin();
+  return {double(origin.x()), double(origin.y())};
 }
 
 std::vector<double> DynamicsWorld::obstacleHeights() const {

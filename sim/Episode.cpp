@@ -94,7 +94,7 @@ struct Episode::Impl {
 
   void measure(const WheelSpeeds& command) {
     const long k = world.steps();
-    const RobotState state = world.robot();
+    const RobotState& state = world.robot();
     ExecutedRow row;
     row.t_s = static_cast<double>(k) * dt;
     row.pose = state.pose;
@@ -120,14 +120,13 @@ struct Episode::Impl {
       last = k;
     }
 
-    if (!parked_index.empty()) {
-      const std::vector<Pose2> poses = world.obstaclePoses();
-      for (std::size_t j = 0; j < parked_index.size(); ++j) {
-        const auto i = static_cast<std::size_t>(parked_index[j]);
-        const double d = positionDistance(poses[i], initial_obstacles[i]);
-        parked[j].final_m = d;
-        parked[j].max_m = std::max(parked[j].max_m, d);
-      }
+    // Positions only, of the parked robots only: no allocation and no heading per step.
+    for (std::size_t j = 0; j < parked_index.size(); ++j) {
+      const auto i = static_cast<std::size_t>(parked_index[j]);
+      const Eigen::Vector2d p = world.obstaclePosition(i);
+      const double d = positionDistance({p.x(), p.y(), 0.0}, initial_obstacles[i]);
+      parked[j].final_m = d;
+      parked[j].max_m = std::max(parked[j].max_m, d);
     }
 
     if (k >= plan_steps) {
