@@ -251,6 +251,19 @@ int runBench(const BenchOptions& o) {
   return 0;
 }
 
+// CLI11's PositiveNumber prints its whole range (up to DBL_MAX) when it rejects a value.
+CLI::Validator positive() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        try {
+          if (std::stod(text) > 0.0) return "";
+        } catch (const std::exception&) {
+        }
+        return "must be a positive number, got " + text;
+      },
+      "POSITIVE");
+}
+
 }  // namespace
 
 CommandRunner setupBenchCommand(CLI::App& sub) {
@@ -258,7 +271,7 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("worlds", opt->worlds, "world files (YAML, see docs/world-format.md)")->required();
   sub.add_option("--seeds", opt->seeds, "runs per planner and world, with seeds 1..N")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive());
   sub.add_option("--planners", opt->planners,
                  "parksim planners, comma-separated (default: every planner kind; none: OMPL only)")
       ->delimiter(',');
@@ -270,11 +283,11 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("--max-iterations", opt->max_iterations,
                  "iteration budget of parksim's first-solution runs")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive());
   sub.add_option("--anytime-s", opt->anytime_s,
                  "wall-time budget of the extra run of parksim's anytime planners (RRT*), s")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive());
   sub.add_flag("--ompl", opt->ompl, "also run OMPL's planners on the same footprint checker");
   sub.add_option("--ompl-planners", opt->ompl_planners, "OMPL planners, comma-separated")
       ->delimiter(',')
@@ -286,15 +299,15 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("--budget-s", opt->budget_s,
                  "OMPL's wall-time limit per run, s (RRT* improves its path until then)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive());
   sub.add_option("--turning-radius", opt->turning_radius_m,
                  "Reeds-Shepp minimum turning radius for OMPL, m")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive());
   sub.add_option("--segment", opt->segment_m,
                  "longest motion OMPL's motion validator leaves unchecked (state-space distance)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive());
   sub.add_option("--out", opt->out, "output directory for bench.csv and summary.md")
       ->capture_default_str();
   sub.add_option("--ompl-log", opt->ompl_log,
