@@ -133,6 +133,25 @@ TEST_F(Cli, MissingWorldFileAndBadOptionsAreRefused) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+TEST_F(Cli, BenchWritesTheCsvWithItsRequiredColumns) {
+  const fs::path out = dir_ / "bench";
+  const CliRun r = parksim("bench " + world("head_in.yaml") +
+                           " --seeds 2 --planners rrt-goal-connect,rrt-connect --ompl"
+                           " --ompl-planners RRTConnect --ompl-spaces reeds-shepp --out " +
+                           out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string csv = slurp(out / "bench.csv");
+  const std::string header = csv.substr(0, csv.find('\n'));
+  for (const char* column : {"library", "planner", "scenario", "seed", "solved", "time_first_s",
+                             "length_m", "cusps", "min_clearance_m"}) {
+    EXPECT_NE(header.find(column), std::string::npos) << column;
+  }
+  // 2 seeds x (2 parksim planners x 2 steering functions + 1 OMPL planner) rows.
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * (2 * 2 + 1)) << csv;
+  EXPECT_NE(csv.find("\nompl,"), std::string::npos);
+  EXPECT_NE(csv.find("\nparksim,"), std::string::npos);
+}
+
 TEST_F(Cli, EveryCommandHasHelp) {
   for (const char* cmd : {"", "plan", "run", "render", "bench"}) {
     const CliRun r = parksim(std::string(cmd) + " --help");
