@@ -57,10 +57,8 @@ void BM_Simulate(benchmark::State& state) {
   ExecutionDef def;
   def.tracking = state.range(1) == 0 ? TrackingMode::kClosed : TrackingMode::kOpen;
   SimModelDef model;
-  if (state.range(3) == 1) {
-    model.solver = SolverKernel::kBullet;
-    model.solver_residual_threshold = 0.0;
-  }
+  if (state.range(3) >= 1) model.solver = SolverKernel::kBullet;
+  if (state.range(3) == 1) model.solver_residual_threshold = 0.0;
   double sim_s = 0.0;
   double max_err = 0.0;
   for (auto _ : state) {
@@ -76,7 +74,9 @@ void BM_Simulate(benchmark::State& state) {
   state.counters["max_err_mm"] = max_err * 1e3;
   state.SetLabel(std::string(kWorlds[state.range(0)]) +
                  (def.tracking == TrackingMode::kClosed ? " closed" : " open") +
-                 (state.range(3) == 1 ? " bullet-reference" : ""));
+                 (state.range(3) == 1   ? " bullet-reference"
+                  : state.range(3) == 2 ? " bullet-solver-early-exit"
+                                        : ""));
 }
 
 void BM_Episode(benchmark::State& state) {
@@ -105,6 +105,8 @@ BENCHMARK(BM_Simulate)
     ->ArgsProduct({{0, 1}, {0, 1}, {50}, {0}})
     ->Args({0, 0, 50, 1})
     ->Args({1, 0, 50, 1})
+    ->Args({0, 0, 50, 2})
+    ->Args({1, 0, 50, 2})
     ->Args({0, 0, 20, 0})
     ->Args({1, 0, 20, 0})
     ->Args({0, 0, 10, 0})
