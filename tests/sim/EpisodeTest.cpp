@@ -84,7 +84,9 @@ TEST(Episode, DrivingThroughAParkedRobotIsAContactWithItAndPushesIt) {
   EXPECT_LT(r.metrics.first_contact_t_s, 0.7);
   ASSERT_EQ(r.metrics.parked.size(), 1u);
   EXPECT_EQ(r.metrics.parked[0].name, "robot_ahead");
-  EXPECT_GT(r.metrics.parked[0].max_m, 0.01);
+  // How far a pushed box slides is chaotic (7 to 49 mm under rounding-level changes of the
+  // solver), so assert only that it clearly moved: unmoved robots stay below 0.1 mm.
+  EXPECT_GT(r.metrics.parked[0].max_m, 0.002);
   EXPECT_FALSE(checkTracking(TrackingTolerance{}, r.metrics).empty());
 }
 
