@@ -34,8 +34,12 @@ PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checke
   switch (setup.steering_kind) {
     case SteeringKind::kMoveToPose: {
       MoveToPoseDef def = setup.steering;
-      def.position_tolerance_m = scenario.goal.position_tolerance_m;
-      def.heading_tolerance_rad = scenario.goal.heading_tolerance_rad;
+      if (!(setup.goal_tolerance_fraction > 0.0 && setup.goal_tolerance_fraction <= 1.0)) {
+        throw Error("planScenario: goal_tolerance_fraction must be in (0, 1]");
+      }
+      def.position_tolerance_m = setup.goal_tolerance_fraction * scenario.goal.position_tolerance_m;
+      def.heading_tolerance_rad =
+          setup.goal_tolerance_fraction * scenario.goal.heading_tolerance_rad;
       def.turn_in_place_radius_m =
           std::min(def.turn_in_place_radius_m, 0.8 * def.position_tolerance_m);
       steering = std::make_unique<MoveToPoseSteering>(scenario.robot, def);

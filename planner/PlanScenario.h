@@ -28,8 +28,13 @@ SteeringKind steeringKindFromString(const std::string& name);
 struct PlanSetup {
   PlannerDef planner;
   SteeringKind steering_kind = SteeringKind::kMoveToPose;
-  /// Move-to-pose parameters; its to-goal tolerance is taken from the scenario's goal region.
+  /// Move-to-pose parameters; its to-goal tolerance is taken from the scenario's goal region,
+  /// scaled by goal_tolerance_fraction.
   MoveToPoseDef steering;
+  /// The move-to-pose controller stops as soon as it is within tolerance, so aiming at the
+  /// goal's own tolerance leaves plans ending on its edge (0.496 deg of 0.5) and a tracked
+  /// execution with no margin. Plans aim at this fraction of the goal's tolerances instead.
+  double goal_tolerance_fraction = 0.5;
   /// Rotate-translate-rotate parameters.
   RotateTranslateRotateDef rotate_translate_rotate;
   MotionValidatorDef validation;
