@@ -68,9 +68,10 @@ struct FrameDef {
   /// view's edges are then smoothed by the renderer itself. 4 is full MSAA, about 3x slower on
   /// llvmpipe (docs/rendering.md).
   int msaa_samples = 1;
-  /// PNG encoder threads (>= 1). Encoding a 640x480 frame (1.4 ms) takes longer than rendering
-  /// it (1.1 ms): with two encoders neither thread waits for the other.
-  int encode_threads = 2;
+  /// PNG encoder threads (>= 1). One keeps a 2-core machine busy: the caller's thread and
+  /// llvmpipe's render while it encodes. A second one measured slower (more CPU per frame
+  /// from contention with llvmpipe's threads).
+  int encode_threads = 1;
   int queue_depth = 3;  ///< frames rendered ahead of the encoders (>= 1)
 };
 
