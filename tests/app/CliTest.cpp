@@ -1,7 +1,5 @@
 // End-to-end tests of the parksim executable: exit codes, files written, messages.
 
-#include <sys/wait.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +8,8 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include "tests/support/RunParksim.h"
 
 #include "core/DiffDrive.h"
 #include "core/Geometry.h"
@@ -21,27 +21,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit_code;
-  std::string out;  // stdout and stderr
-};
+using testing::CliRun;
+using testing::slurp;
 
-CliRun parksim(const std::string& args) {
-  const std::string cmd = std::string(PARKSIM_EXE) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, pipe)) out += buf;
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+CliRun parksim(const std::string& args) { return testing::runParksim(args); }
 
 class Cli : public ::testing::Test {
  protected:

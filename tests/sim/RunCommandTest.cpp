@@ -1,8 +1,6 @@
 // `parksim run` end to end, as a new user would try it: exit status, files, the one-line
 // reasons, and byte-identical executed.csv from two separate processes.
 
-#include <sys/wait.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +10,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/RunParksim.h"
+
 #include "sim/TrackingTolerance.h"
 
 namespace parksim {
@@ -19,27 +19,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit_code;
-  std::string out;  // stdout and stderr
-};
+using testing::CliRun;
+using testing::slurp;
 
-CliRun parksim(const std::string& args) {
-  const std::string cmd = std::string(PARKSIM_EXE) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, pipe)) out += buf;
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+CliRun parksim(const std::string& args) { return testing::runParksim(args); }
 
 class RunCommand : public ::testing::Test {
  protected:
