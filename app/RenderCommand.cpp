@@ -6,40 +6,17 @@
 #include <vector>
 
 #include "app/Command.h"
+#include "app/FigureInputs.h"
 #include "app/PlanOutput.h"
 #include "collision/BulletCollisionWorld.h"
 #include "core/AtomicFile.h"
 #include "core/Error.h"
-#include "planner/MoveToPoseSteering.h"
 #include "renders/Figures.h"
 #include "renders/FrameRecorder.h"
 #include "renders/TrackingPlot.h"
 #include "scenario/ScenarioReader.h"
 
 namespace parksim::app {
-
-namespace {
-
-std::string planCaption(const Scenario& scenario, const PlanSetup& setup,
-                        const PlanResult& result) {
-  char buf[256];
-  if (result.solved()) {
-    std::snprintf(buf, sizeof buf, "%s, %s (seed %llu): %d tree nodes, path %.2f m, %d cusp%s",
-                  scenario.name.c_str(), toString(setup.planner.kind),
-                  static_cast<unsigned long long>(setup.planner.seed), result.stats.tree_size,
-                  result.trajectory.pathLength(scenario.robot),
-                  result.trajectory.cusps(scenario.robot),
-                  result.trajectory.cusps(scenario.robot) == 1 ? "" : "s");
-  } else {
-    std::snprintf(buf, sizeof buf, "%s, %s (seed %llu): %s after %d iterations",
-                  scenario.name.c_str(), toString(setup.planner.kind),
-                  static_cast<unsigned long long>(setup.planner.seed), toString(result.status),
-                  result.stats.iterations);
-  }
-  return buf;
-}
-
-}  // namespace
 
 CommandRunner setupRenderCommand(CLI::App& sub) {
   struct Options {
@@ -96,22 +73,14 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
       const std::string json_path = opt->out + "/plan_" + name + ".json";
       writeFileAtomically(json_path, planSummary(scenario, setup, result).dump(2) + "\n");
       std::printf("%s: %s (%s)\n", name.c_str(), toString(result.status), json_path.c_str());
-      inputs.plans.push_back({name, planCaption(scenario, setup, result), result.trajectory,
-                              result.waypoints, result.tree_edges});
+      inputs.plans.push_back(planFigure(scenario, setup, result));
     }
 
-    SteeringExample steering;
-    steering.start = scenario.start;
-    steering.target =
-        opt->steer_target.size() == 3
-            ? Pose2{opt->steer_target[0], opt->steer_target[1], degToRad(opt->steer_target[2])}
-            : Pose2{scenario.start.x + 0.3, scenario.start.y + 0.3, 0.0};
-    const MoveToPoseSteering steer(scenario.robot);
-    steering.fixed_horizon =
-        steer.steer(steering.start, {}, steering.target, SteerMode::kFixedHorizon).trajectory;
-    steering.to_goal =
-        steer.steer(steering.start, {}, steering.target, SteerMode::kToGoal).trajectory;
-    inputs.steering = steering;
+    std::optional<Pose2> target;
+    if (opt->steer_target.size() == 3) {
+      target = Pose2{opt->steer_target[0], opt->steer_target[1], degToRad(opt->steer_target[2])};
+    }
+    inputs.steering = steeringExample(scenario, target);
 
     if (!opt->executed.empty()) inputs.tracking = readTrackingCsv(opt->executed);
 

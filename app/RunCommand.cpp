@@ -1,9 +1,10 @@
 // parksim run WORLD: plan (or load a plan), drive it in the Bullet simulation, measure, and
 // optionally film it. Writes DIR/trajectory.csv and DIR/plan.json (as `parksim plan`),
-// DIR/executed.csv, DIR/metrics.json, and with --frames DIR/frames/*.png (--video, --gif:
-// DIR/episode.mp4, DIR/episode.gif). Exit status: 0 when the robot ends within the world's goal
-// tolerance and the default TrackingTolerance holds (no contact, tracking error <= 5 mm, ...);
-// 1 otherwise, or when planning fails, with a one-line reason on stderr; 2 on bad input.
+// DIR/executed.csv, DIR/metrics.json, and with --frames DIR/frames/*.png and the figures in
+// DIR/figures/ (--video, --gif: DIR/episode.mp4, DIR/episode.gif). Exit status: 0 when the robot
+// ends within the world's goal tolerance and the default TrackingTolerance holds (no contact,
+// tracking error <= 5 mm, ...); 1 otherwise, or when planning fails, with a one-line reason on
+// stderr; 2 on bad input.
 
 #include <cstdio>
 #include <filesystem>
@@ -11,10 +12,12 @@
 #include <string>
 
 #include "app/Command.h"
+#include "app/FigureInputs.h"
 #include "app/PlanOutput.h"
 #include "collision/BulletCollisionWorld.h"
 #include "core/AtomicFile.h"
 #include "core/Error.h"
+#include "renders/Figures.h"
 #include "renders/FrameRecorder.h"
 #include "scenario/ScenarioReader.h"
 #include "sim/Episode.h"
@@ -135,7 +138,8 @@ CommandRunner setupRunCommand(CLI::App& sub) {
                  "drive this trajectory.csv instead of planning (it must start at the world's "
                  "start)");
   sub.add_option("--out", opt->out, "output directory")->capture_default_str();
-  sub.add_flag("--frames", opt->frames, "film the episode: OUT/frames/000000.png, ...");
+  sub.add_flag("--frames", opt->frames,
+               "film the episode (OUT/frames/000000.png, ...) and draw the figures (OUT/figures/)");
   sub.add_flag("--video", opt->video, "also OUT/episode.mp4 (needs ffmpeg; implies --frames)");
   sub.add_flag("--gif", opt->gif, "also OUT/episode.gif (needs ffmpeg; implies --frames)");
   sub.add_option("--fps", opt->fps, "frames per second of simulated time")
@@ -170,6 +174,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
 
     Trajectory plan;
     nlohmann::json plan_summary;
+    PlanFigure plan_figure;
     if (!opt->plan_file.empty()) {
       plan = loadPlanFile(opt->plan_file, scenario);
       removeIfPresent(dir + "/plan.json");
@@ -178,6 +183,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
         writeTrajectoryCsv(copy, plan, scenario.robot);
       }
       plan_summary = planFileSummary(opt->plan_file, scenario, plan);
+      plan_figure = {"file", "plan from " + opt->plan_file, plan, {}, {}};
     } else {
       const PlanSetup setup = opt->plan.toSetup(scenario);
       const BulletCollisionWorld collision(scenario);
@@ -190,6 +196,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       }
       plan = result.trajectory;
       plan_summary = planSummary(scenario, setup, result);
+      if (film) plan_figure = planFigure(scenario, setup, result);
     }
 
     std::unique_ptr<FrameRecorder> recorder;
@@ -221,7 +228,16 @@ CommandRunner setupRunCommand(CLI::App& sub) {
         m.contacts, m.contacts == 1 ? "" : "s", m.sim_time_s, m.wall_time_s,
         m.wall_time_s > 0.0 ? m.sim_time_s / m.wall_time_s : 0.0, dir.c_str(), dir.c_str(),
         dir.c_str());
-    if (recorder) std::printf("%s\n", recorder->finish().message.c_str());
+    if (recorder) {
+      std::printf("%s\n", recorder->finish().message.c_str());
+      FigureInputs figures;
+      figures.steering = steeringExample(scenario);
+      figures.plans.push_back(std::move(plan_figure));
+      figures.tracking = trackingSeries(episode.rows);
+      const std::vector<std::string> written =
+          writeFigures(scenario, figures, FigureDef{}, dir + "/figures");
+      std::printf("%zu figures: %s/figures/\n", written.size(), dir.c_str());
+    }
     const std::string failure = failureReason(scenario, m);
     if (!failure.empty()) {
       std::fprintf(stderr, "parksim run: %s\n", failure.c_str());

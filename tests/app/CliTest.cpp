@@ -135,6 +135,32 @@ TEST_F(Cli, BenchWritesTheCsvWithItsRequiredColumns) {
   EXPECT_NE(csv.find("\nparksim,"), std::string::npos);
 }
 
+TEST_F(Cli, RunWithFramesFilmsTheEpisodeAndDrawsTheFigures) {
+  const fs::path out = dir_ / "film";
+  const CliRun r = parksim("run " + world("head_in.yaml") +
+                           " --frames --fps 2 --size 160x120 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto m = nlohmann::json::parse(slurp(out / "metrics.json"));
+  const double sim_time = m["sim_time_s"].get<double>();
+  int frames = 0;
+  for (const auto& e : fs::directory_iterator(out / "frames")) {
+    EXPECT_EQ(e.path().extension(), ".png");
+    ++frames;
+  }
+  // One frame every 0.5 s of simulated time from t = 0, and one for the last sample.
+  EXPECT_GE(frames, static_cast<int>(sim_time * 2));
+  EXPECT_LE(frames, static_cast<int>(sim_time * 2) + 2);
+  int figures = 0;
+  for (const auto& e : fs::directory_iterator(out / "figures")) {
+    EXPECT_EQ(e.path().extension(), ".png");
+    EXPECT_GT(fs::file_size(e.path()), 1000u) << e.path();
+    ++figures;
+  }
+  EXPECT_GE(figures, 4);
+  EXPECT_TRUE(fs::exists(out / "figures" / "tracking_error.png"));
+  EXPECT_TRUE(fs::exists(out / "figures" / "plan_rrt-goal-connect.png"));
+}
+
 TEST_F(Cli, EveryCommandHasHelp) {
   for (const char* cmd : {"", "plan", "run", "render", "bench"}) {
     const CliRun r = parksim(std::string(cmd) + " --help");
