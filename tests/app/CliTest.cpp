@@ -117,6 +117,9 @@ TEST_F(Cli, MissingWorldFileAndBadOptionsAreRefused) {
 }
 
 TEST_F(Cli, BenchWritesTheCsvWithItsRequiredColumns) {
+#ifndef PARKSIM_HAVE_BENCH
+  GTEST_SKIP() << "parksim bench is built only with PARKSIM_BUILD_BENCH=ON";
+#endif
   const fs::path out = dir_ / "bench";
   const CliRun r = parksim("bench " + world("head_in.yaml") +
                            " --seeds 2 --planners rrt-goal-connect,rrt-connect --ompl"
