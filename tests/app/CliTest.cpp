@@ -164,6 +164,13 @@ TEST_F(Cli, RunWithFramesFilmsTheEpisodeAndDrawsTheFigures) {
   EXPECT_TRUE(fs::exists(out / "figures" / "plan_rrt-goal-connect.png"));
 }
 
+TEST_F(Cli, UsageErrorsExitWithTwo) {
+  EXPECT_EQ(parksim("").exit_code, 2);
+  EXPECT_EQ(parksim("plan").exit_code, 2);  // world missing
+  EXPECT_EQ(parksim("plan " + world("head_in.yaml") + " --no-such-option").exit_code, 2);
+  EXPECT_EQ(parksim("plan " + world("head_in.yaml") + " --seed -3").exit_code, 2);
+}
+
 TEST_F(Cli, EveryCommandHasHelp) {
   for (const char* cmd : {"", "plan", "run", "render", "bench"}) {
     const CliRun r = parksim(std::string(cmd) + " --help");
