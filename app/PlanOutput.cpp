@@ -26,8 +26,10 @@ void PlanCliOptions::addTo(CLI::App& sub) {
   sub.add_option("--steering", steering,
                  "steering function, one of: " + namesOf(allSteeringKinds()))
       ->capture_default_str();
+  // CLI11 would wrap "-3" into a 64-bit unsigned seed; refuse it instead.
   sub.add_option("--seed", seed, "seed of the planner's random number generator")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   sub.add_option("--max-iterations", max_iterations, "iteration budget of the tree search")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);

@@ -167,8 +167,10 @@ TEST_F(Cli, RunWithFramesFilmsTheEpisodeAndDrawsTheFigures) {
 TEST_F(Cli, UsageErrorsExitWithTwo) {
   EXPECT_EQ(parksim("").exit_code, 2);
   EXPECT_EQ(parksim("plan").exit_code, 2);  // world missing
-  EXPECT_EQ(parksim("plan " + world("head_in.yaml") + " --no-such-option").exit_code, 2);
-  EXPECT_EQ(parksim("plan " + world("head_in.yaml") + " --seed -3").exit_code, 2);
+  const std::string out = " --out " + (dir_ / "never").string();
+  EXPECT_EQ(parksim("plan " + world("head_in.yaml") + " --no-such-option" + out).exit_code, 2);
+  EXPECT_EQ(parksim("plan " + world("head_in.yaml") + " --seed -3" + out).exit_code, 2);
+  EXPECT_FALSE(fs::exists(dir_ / "never"));
 }
 
 TEST_F(Cli, EveryCommandHasHelp) {
