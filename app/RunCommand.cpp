@@ -34,8 +34,10 @@ void removeIfPresent(const std::string& path) {
 }
 
 // planSummary's keys with a plan_ prefix; nested objects flattened as plan_<key>.<sub>.
+// Arrays (the RRT* cost history) stay in plan.json: metrics.json is flat.
 void addPlanKeys(nlohmann::json& metrics, const nlohmann::json& summary) {
   for (const auto& [key, value] : summary.items()) {
+    if (value.is_array()) continue;
     if (value.is_object()) {
       for (const auto& [sub, inner] : value.items()) metrics["plan_" + key + "." + sub] = inner;
     } else {
@@ -166,17 +168,21 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       frame_def.video = opt->video;
       frame_def.gif = opt->gif;
     }
+    // Every input is read and checked before DIR is touched: bad input leaves an earlier run's
+    // outputs as they were.
+    Trajectory plan;
+    if (!opt->plan_file.empty()) plan = loadPlanFile(opt->plan_file, scenario);
+    const PlanSetup setup = opt->plan.toSetup(scenario);
+
     const std::string& dir = opt->out;
     ensureDirectory(dir);
     // Outputs of an earlier run in DIR must never sit beside this run's.
     removeIfPresent(dir + "/executed.csv");
     removeIfPresent(dir + "/metrics.json");
 
-    Trajectory plan;
     nlohmann::json plan_summary;
     PlanFigure plan_figure;
     if (!opt->plan_file.empty()) {
-      plan = loadPlanFile(opt->plan_file, scenario);
       removeIfPresent(dir + "/plan.json");
       const std::string copy = dir + "/trajectory.csv";
       if (!std::filesystem::exists(copy) || !std::filesystem::equivalent(copy, opt->plan_file)) {
@@ -185,7 +191,6 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       plan_summary = planFileSummary(opt->plan_file, scenario, plan);
       plan_figure = {"file", "plan from " + opt->plan_file, plan, {}, {}};
     } else {
-      const PlanSetup setup = opt->plan.toSetup(scenario);
       const BulletCollisionWorld collision(scenario);
       const PlanResult result = planScenario(scenario, collision, setup);
       writePlanFiles(dir, scenario, setup, result);

@@ -36,6 +36,10 @@ class MotionValidator {
   /// The check made for a single state: grown footprint free, reference point inside the lot.
   bool isValid(const Pose2& pose) const;
 
+  /// True when the reference point keeps the margin from the lot edge that isValid requires;
+  /// tells "too close to the lot edge" apart from "collides".
+  bool insideLot(const Pose2& pose) const { return inner_.contains(pose.x, pose.y); }
+
   /// Number of footprint queries made so far.
   long queries() const { return queries_; }
 

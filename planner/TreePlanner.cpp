@@ -630,7 +630,12 @@ PlanResult Search::finish(PlanStatus status, std::string message) {
 
 PlanResult Search::run() {
   queries_before_ = validator_.queries();
-  if (!validator_.isValid(start_)) return finish(PlanStatus::kInvalidStart, "start pose collides");
+  if (!validator_.isValid(start_)) {
+    return finish(PlanStatus::kInvalidStart,
+                  validator_.insideLot(start_)
+                      ? "start pose collides"
+                      : "start pose lies within half the motion-check resolution of the lot edge");
+  }
   std::vector<Pose2> goals{goal_.pose};
   if (goal_.either_heading)
     goals.push_back({goal_.pose.x, goal_.pose.y, wrapAngle(goal_.pose.theta + kPi)});
@@ -641,7 +646,12 @@ PlanResult Search::run() {
       roots_.push_back(goal_tree_.add(std::move(root), true));
     }
   }
-  if (roots_.empty()) return finish(PlanStatus::kInvalidGoal, "goal pose collides");
+  if (roots_.empty()) {
+    return finish(PlanStatus::kInvalidGoal,
+                  validator_.insideLot(goal_.pose)
+                      ? "goal pose collides"
+                      : "goal pose lies within half the motion-check resolution of the lot edge");
+  }
   Node root;
   root.pose = start_;
   start_tree_.add(std::move(root), true);
@@ -667,7 +677,12 @@ PlanResult Search::run() {
     }
   }
   result_.stats.iterations = iteration_;
-  if (optimize_ && solved_ && !extractBestLeaf()) solved_ = false;
+  if (optimize_ && solved_ && !extractBestLeaf()) {
+    // No candidate survived the final whole-path check: nothing was found after all.
+    solved_ = false;
+    result_.stats.first_solution_s = -1.0;
+    result_.stats.first_solution_iteration = -1;
+  }
 
   if (def_.record_tree) {
     for (int i = 0; i < start_tree_.size(); ++i) {

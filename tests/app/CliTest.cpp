@@ -164,6 +164,23 @@ TEST_F(Cli, RunWithFramesFilmsTheEpisodeAndDrawsTheFigures) {
   EXPECT_TRUE(fs::exists(out / "figures" / "plan_rrt-goal-connect.png"));
 }
 
+TEST_F(Cli, BadInputToRunLeavesAnEarlierRunsOutputsAlone) {
+  const fs::path out = dir_ / "run";
+  ASSERT_EQ(parksim("run " + world("head_in.yaml") + " --out " + out.string()).exit_code, 0);
+  const std::string executed = slurp(out / "executed.csv");
+  const std::string metrics = slurp(out / "metrics.json");
+  ASSERT_FALSE(executed.empty());
+  EXPECT_EQ(parksim("run " + world("head_in.yaml") + " --plan " + (dir_ / "nope.csv").string() +
+                    " --out " + out.string())
+                .exit_code,
+            2);
+  EXPECT_EQ(
+      parksim("run " + world("head_in.yaml") + " --planner nope --out " + out.string()).exit_code,
+      2);
+  EXPECT_EQ(slurp(out / "executed.csv"), executed);
+  EXPECT_EQ(slurp(out / "metrics.json"), metrics);
+}
+
 TEST_F(Cli, UsageErrorsExitWithTwo) {
   EXPECT_EQ(parksim("").exit_code, 2);
   EXPECT_EQ(parksim("plan").exit_code, 2);  // world missing

@@ -300,6 +300,18 @@ TEST(TreePlanner, InvalidStartAndGoalAreStatuses) {
   EXPECT_EQ(planScenario(s, checker, PlanSetup{}).status, PlanStatus::kInvalidGoal);
   s.goal.either_heading = true;  // turned, it is on the parked robot too
   EXPECT_EQ(planScenario(s, checker, PlanSetup{}).status, PlanStatus::kInvalidGoal);
+  EXPECT_EQ(planScenario(s, checker, PlanSetup{}).message, "goal pose collides");
+}
+
+TEST(TreePlanner, AStartOnTheLotEdgeIsNotReportedAsACollision) {
+  Scenario s = testing::studyLot();
+  const SatChecker checker(s);
+  s.start = {0.1, 0.0002, kPi / 2};  // nothing there, but 0.2 mm from the edge y = 0
+  const PlanResult r = planScenario(s, checker, PlanSetup{});
+  EXPECT_EQ(r.status, PlanStatus::kInvalidStart);
+  EXPECT_EQ(r.message, "start pose lies within half the motion-check resolution of the lot edge");
+  s.start = {0.55, 0.2, 0.0};  // inside a wall
+  EXPECT_EQ(planScenario(s, checker, PlanSetup{}).message, "start pose collides");
 }
 
 TEST(TreePlanner, NamesRoundTripAndUnknownNamesThrow) {

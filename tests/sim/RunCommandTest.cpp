@@ -83,7 +83,8 @@ TEST_F(RunCommand, ExecutesAGivenPlanOpenLoopAndReportsTheMiss) {
 TEST_F(RunCommand, AnUnsolvedPlanWritesNoEpisodeFiles) {
   // Stale files of an earlier run must not survive beside the failed one.
   ASSERT_EQ(parksim("run " + world("head_in") + " --out " + out("x")).exit_code, 0);
-  const CliRun r = parksim("run " + world("head_in") + " --max-iterations 1 --out " + out("x"));
+  const CliRun r =
+      parksim("run " + world("head_in") + " --max-iterations 0 --planner rrt --out " + out("x"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.out.find("parksim run: unsolved plan"), std::string::npos) << r.out;
   EXPECT_FALSE(fs::exists(dir_ / "x" / "executed.csv"));
