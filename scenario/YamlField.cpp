@@ -19,16 +19,12 @@ bool isPlainScalar(const YAML::Node& node) { return node.IsScalar() && node.Tag(
 // What the node is, for "got ..." in messages.
 std::string describe(const YAML::Node& node) {
   switch (node.Type()) {
-    case YAML::NodeType::Null:
-      return "null";
-    case YAML::NodeType::Map:
-      return "a map";
-    case YAML::NodeType::Sequence:
-      return "a list of " + std::to_string(node.size());
+    case YAML::NodeType::Null: return "null";
+    case YAML::NodeType::Map: return "a map";
+    case YAML::NodeType::Sequence: return "a list of " + std::to_string(node.size());
     case YAML::NodeType::Scalar:
       return isPlainScalar(node) ? node.Scalar() : "the string \"" + node.Scalar() + "\"";
-    case YAML::NodeType::Undefined:
-      break;
+    case YAML::NodeType::Undefined: break;
   }
   return "nothing";
 }
