@@ -45,53 +45,28 @@ void addAxesAndTitle(Scene& scene, const Extent2& data, const std::string& title
                            style.axis,
                            style.grid_px,
                            false});
-    scene.texts.push_back({formatTick(x, x_step),
-                           Eigen::Vector3d(x, y0 - 1.5 * tick, 0.0),
-                           Eigen::Vector2d::Zero(),
-                           small,
-                           style.axis,
-                           {0, 0, 0, 0},
-                           HAlign::kCenter,
-                           VAlign::kTop});
+    scene.texts.push_back(SceneText::worldLabel(formatTick(x, x_step),
+                                                Eigen::Vector3d(x, y0 - 1.5 * tick, 0.0), small,
+                                                style.axis, HAlign::kCenter, VAlign::kTop));
   }
   for (double y : yt) {
     scene.lines.push_back({{{x0, y, Layers::kArrow}, {x0 - tick, y, Layers::kArrow}},
                            style.axis,
                            style.grid_px,
                            false});
-    scene.texts.push_back({formatTick(y, y_step),
-                           Eigen::Vector3d(x0 - 1.5 * tick, y, 0.0),
-                           Eigen::Vector2d::Zero(),
-                           small,
-                           style.axis,
-                           {0, 0, 0, 0},
-                           HAlign::kRight,
-                           VAlign::kMiddle});
+    scene.texts.push_back(SceneText::worldLabel(formatTick(y, y_step),
+                                                Eigen::Vector3d(x0 - 1.5 * tick, y, 0.0), small,
+                                                style.axis, HAlign::kRight, VAlign::kMiddle));
   }
-  scene.texts.push_back({"x (m)",
-                         Eigen::Vector3d(data.center().x(), y0 - 0.07 * span, 0.0),
-                         Eigen::Vector2d::Zero(),
-                         small,
-                         style.axis,
-                         {0, 0, 0, 0},
-                         HAlign::kCenter,
-                         VAlign::kTop});
-  scene.texts.push_back({"y (m)",
-                         Eigen::Vector3d(x0 - 0.075 * span, data.y_max + 0.03 * span, 0.0),
-                         Eigen::Vector2d::Zero(),
-                         small,
-                         style.axis,
-                         {0, 0, 0, 0},
-                         HAlign::kCenter,
-                         VAlign::kBottom});
-  scene.texts.push_back({title,
-                         Eigen::Vector3d(data.center().x(), data.y_max + 0.08 * span, 0.0),
-                         Eigen::Vector2d::Zero(),
-                         size,
-                         style.text,
-                         {0, 0, 0, 0},
-                         HAlign::kCenter,
-                         VAlign::kBottom});
+  scene.texts.push_back(
+      SceneText::worldLabel("x (m)", Eigen::Vector3d(data.center().x(), y0 - 0.07 * span, 0.0),
+                            small, style.axis, HAlign::kCenter, VAlign::kTop));
+  scene.texts.push_back(SceneText::worldLabel(
+      "y (m)", Eigen::Vector3d(x0 - 0.075 * span, data.y_max + 0.03 * span, 0.0), small, style.axis,
+      HAlign::kCenter, VAlign::kBottom));
+  scene.texts.push_back(SceneText::worldLabel(
+      title, Eigen::Vector3d(data.center().x(), data.y_max + 0.08 * span, 0.0), size, style.text,
+      HAlign::kCenter, VAlign::kBottom));
   Extent2& e = scene.extent;
   e.x_min = std::min(e.x_min, data.x_min - 0.1 * span);
   e.y_min = std::min(e.y_min, data.y_min - 0.11 * span);
@@ -300,23 +275,13 @@ Scene buildCSpaceStackFigure(const Scenario& scenario, int slices, const SceneSt
                            style.axis,
                            style.border_px,
                            false});
-    scene.texts.push_back({std::to_string(deg) + "\u00b0",
-                           Eigen::Vector3d(axis.x() - 1.5 * tick, axis.y(), z),
-                           Eigen::Vector2d::Zero(),
-                           0.85f * style.text_px,
-                           style.axis,
-                           {0, 0, 0, 0},
-                           HAlign::kRight,
-                           VAlign::kMiddle});
+    scene.texts.push_back(SceneText::worldLabel(
+        std::to_string(deg) + "\u00b0", Eigen::Vector3d(axis.x() - 1.5 * tick, axis.y(), z),
+        0.85f * style.text_px, style.axis, HAlign::kRight, VAlign::kMiddle));
   }
-  scene.texts.push_back({"\u03b8",
-                         Eigen::Vector3d(axis.x(), axis.y(), top * 1.04),
-                         Eigen::Vector2d::Zero(),
-                         style.text_px,
-                         style.axis,
-                         {0, 0, 0, 0},
-                         HAlign::kCenter,
-                         VAlign::kBottom});
+  scene.texts.push_back(
+      SceneText::worldLabel("\u03b8", Eigen::Vector3d(axis.x(), axis.y(), top * 1.04),
+                            style.text_px, style.axis, HAlign::kCenter, VAlign::kBottom));
   // Start and goal as points of (x, y, theta): arrows at the height of their heading.
   const double a = style.arrow_length_m;
   scene.arrows.push_back(

@@ -79,6 +79,13 @@ struct SceneText {
   Rgba8 background{0, 0, 0, 0};  ///< box behind the text; alpha 0 draws none
   HAlign h_align = HAlign::kLeft;
   VAlign v_align = VAlign::kTop;
+
+  /// Text anchored at a world point, with no background box.
+  static SceneText worldLabel(std::string text, const Eigen::Vector3d& world, float size_px,
+                              Rgba8 color, HAlign h_align, VAlign v_align) {
+    return {std::move(text), world,  Eigen::Vector2d::Zero(), size_px, color, {0, 0, 0, 0},
+            h_align,         v_align};
+  }
 };
 
 struct Scene {
