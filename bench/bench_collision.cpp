@@ -13,7 +13,7 @@
 
 #include "collision/BulletCollisionWorld.h"
 #include "core/Geometry.h"
-#include "tests/collision/StudyLot.h"
+#include "tests/support/StudyLot.h"
 
 namespace parksim {
 namespace {
@@ -43,7 +43,7 @@ void reportCollisionShare(benchmark::State& state, std::size_t colliding, std::s
 }
 
 void BM_IsFreeBullet(benchmark::State& state) {
-  const Scenario lot = testlot::studyLot();
+  const Scenario lot = testing::studyLot();
   const BulletCollisionWorld world(lot);
   const std::vector<Pose2> poses = randomLotPoses(kPoseCount);
   const double margin = marginOf(state);
@@ -61,7 +61,7 @@ void BM_IsFreeBullet(benchmark::State& state) {
 // The exact reference as the tests use it: core's footprintAt and boxesOverlap against every
 // obstacle until the first overlap (boxesOverlap recomputes both boxes' axes each call).
 void BM_IsFreeHandSat(benchmark::State& state) {
-  const Scenario lot = testlot::studyLot();
+  const Scenario lot = testing::studyLot();
   const std::vector<Pose2> poses = randomLotPoses(kPoseCount);
   const double margin = marginOf(state);
   std::size_t i = 0;
@@ -135,7 +135,7 @@ class PrecomputedSat {
 };
 
 void BM_IsFreePrecomputedSat(benchmark::State& state) {
-  const Scenario lot = testlot::studyLot();
+  const Scenario lot = testing::studyLot();
   const PrecomputedSat sat(lot);
   const std::vector<Pose2> poses = randomLotPoses(kPoseCount);
   const double margin = marginOf(state);
@@ -151,7 +151,7 @@ void BM_IsFreePrecomputedSat(benchmark::State& state) {
 }
 
 void BM_Clearance(benchmark::State& state) {
-  const Scenario lot = testlot::studyLot();
+  const Scenario lot = testing::studyLot();
   const BulletCollisionWorld world(lot);
   const std::vector<Pose2> poses = randomLotPoses(kPoseCount);
   std::size_t i = 0;

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "collision/BulletCollisionWorld.h"
-#include "tests/collision/StudyLot.h"
+#include "tests/support/StudyLot.h"
 
 namespace {
 
@@ -58,7 +58,7 @@ class BulletAllocationHook {
 
 TEST(BulletCollisionWorldAllocation, QueriesAllocateNothing) {
   const BulletAllocationHook hook;
-  const BulletCollisionWorld world(testlot::studyLot());
+  const BulletCollisionWorld world(testing::studyLot());
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> x(-0.1, 1.9);
   std::uniform_real_distribution<double> y(-0.1, 1.3);
@@ -84,7 +84,7 @@ TEST(BulletCollisionWorldAllocation, QueriesAllocateNothing) {
   EXPECT_GT(colliding, 0);  // the narrowphase ran
   EXPECT_GT(clearance_sum, 0.0);
   // The counters work: building a world allocates, in C++ and in Bullet.
-  const BulletCollisionWorld another(testlot::studyLot());
+  const BulletCollisionWorld another(testing::studyLot());
   EXPECT_GT(cppAllocations().load(), cpp_after);
   EXPECT_GT(bulletAllocations().load(), bullet_after);
 }

@@ -15,14 +15,14 @@
 
 #include "core/Error.h"
 #include "core/Geometry.h"
-#include "tests/collision/StudyLot.h"
+#include "tests/support/StudyLot.h"
 
 namespace parksim {
 namespace {
 
-using testlot::cornerBox;
-using testlot::makeObstacle;
-using testlot::studyLot;
+using testing::cornerBox;
+using testing::makeObstacle;
+using testing::studyLot;
 
 // Optimised builds run every case; unoptimised (sanitised Debug) builds run a fraction of the
 // random sweeps and every third approach direction, so that they finish within seconds.
@@ -199,36 +199,6 @@ Pose2 poseAtSeparation(const RobotDef& robot, const OrientedBox& box, double hea
     (f(mid) <= 0.0 ? lo : hi) = mid;
   }
   return at(target > 0.0 ? hi : lo);
-}
-
-TEST(StudyLot, ParkedRobotsMatchTheStudysRectangles) {
-  const Scenario lot = studyLot();
-  ASSERT_EQ(lot.obstacles.size(), 11u);
-  const auto bounds = [](const OrientedBox& b) {
-    double x0 = 1e9, y0 = 1e9, x1 = -1e9, y1 = -1e9;
-    for (const Eigen::Vector2d& c : b.corners()) {
-      x0 = std::min(x0, c.x());
-      y0 = std::min(y0, c.y());
-      x1 = std::max(x1, c.x());
-      y1 = std::max(y1, c.y());
-    }
-    return std::array<double, 4>{x0, y0, x1 - x0, y1 - y0};
-  };
-  const std::array<std::array<double, 4>, 11> table = {{{0.500, 0.800, 0.100, 0.400},
-                                                        {0.500, 0.000, 0.100, 0.400},
-                                                        {0.700, 0.000, 0.085, 0.080},
-                                                        {1.000, 0.000, 0.085, 0.080},
-                                                        {1.300, 0.000, 0.085, 0.080},
-                                                        {1.600, 0.000, 0.085, 0.080},
-                                                        {0.800, 0.600, 0.800, 0.100},
-                                                        {0.700, 1.115, 0.080, 0.085},
-                                                        {1.000, 1.115, 0.080, 0.085},
-                                                        {1.300, 1.115, 0.080, 0.085},
-                                                        {1.600, 1.115, 0.080, 0.085}}};
-  for (std::size_t i = 0; i < table.size(); ++i) {
-    const auto got = bounds(lot.obstacles[i].box);
-    for (int j = 0; j < 4; ++j) EXPECT_NEAR(got[j], table[i][j], 1e-12) << lot.obstacles[i].name;
-  }
 }
 
 // (a) The study's lot: random poses over and around it, every heading, three margins.
@@ -427,7 +397,7 @@ TEST(BulletCollisionWorld, RejectsBadInput) {
     const BulletCollisionWorld bad(flat);
     ADD_FAILURE() << "a zero-width obstacle was accepted";
   } catch (const Error& e) {
-    EXPECT_THAT(e.what(), testing::StartsWith("worlds/flat.yaml: obstacle 'robot_4'"));
+    EXPECT_THAT(e.what(), ::testing::StartsWith("worlds/flat.yaml: obstacle 'robot_4'"));
   }
   Scenario low = studyLot();
   low.obstacles[0].height_m = -0.1;

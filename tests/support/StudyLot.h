@@ -1,8 +1,10 @@
 #pragma once
-// Test support: the study's parking lot built in code, and an exact footprint checker by
-// separating axes, independent of Bullet.
+// Test support: the study's parking lot built in code (for the planner, collision and sim tests
+// and bench_collision), and an exact footprint checker by separating axes, independent of Bullet.
 
 #include <cmath>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "core/FootprintChecker.h"
@@ -11,36 +13,48 @@
 
 namespace parksim::testing {
 
-/// The study's lot (shared/reference/README.md) with the head-in goal.
+/// Rectangle from its lower-left corner and size, as the study's table gives them.
+inline OrientedBox cornerBox(double x, double y, double width, double height) {
+  OrientedBox box;
+  box.center = {x + 0.5 * width, y + 0.5 * height};
+  box.half_extents = {0.5 * width, 0.5 * height};
+  return box;
+}
+
+inline Obstacle makeObstacle(std::string name, ObstacleKind kind, const OrientedBox& box,
+                             double height_m) {
+  Obstacle obstacle;
+  obstacle.name = std::move(name);
+  obstacle.kind = kind;
+  obstacle.box = box;
+  obstacle.height_m = height_m;
+  return obstacle;
+}
+
+/// The study's lot (its reference README, rows 1-11, named as in worlds/*.yaml) with the
+/// head-in goal.
 inline Scenario studyLot() {
   Scenario s;
   s.name = "study_lot";
-  struct Rect {
-    double x, y, w, h;
-    ObstacleKind kind;
+  const double wall_h = 0.1;
+  const double robot_h = s.robot.height_m;
+  auto parked = [&](int row, double x, double y, double w, double h) {
+    return makeObstacle("robot_" + std::to_string(row), ObstacleKind::kParkedRobot,
+                        cornerBox(x, y, w, h), robot_h);
   };
-  const Rect rects[] = {
-      {0.500, 0.800, 0.100, 0.400, ObstacleKind::kWall},
-      {0.500, 0.000, 0.100, 0.400, ObstacleKind::kWall},
-      {0.700, 0.000, 0.085, 0.080, ObstacleKind::kParkedRobot},
-      {1.000, 0.000, 0.085, 0.080, ObstacleKind::kParkedRobot},
-      {1.300, 0.000, 0.085, 0.080, ObstacleKind::kParkedRobot},
-      {1.600, 0.000, 0.085, 0.080, ObstacleKind::kParkedRobot},
-      {0.800, 0.600, 0.800, 0.100, ObstacleKind::kIsland},
-      {0.700, 1.115, 0.080, 0.085, ObstacleKind::kParkedRobot},
-      {1.000, 1.115, 0.080, 0.085, ObstacleKind::kParkedRobot},
-      {1.300, 1.115, 0.080, 0.085, ObstacleKind::kParkedRobot},
-      {1.600, 1.115, 0.080, 0.085, ObstacleKind::kParkedRobot},
+  s.obstacles = {
+      makeObstacle("wall_1", ObstacleKind::kWall, cornerBox(0.5, 0.8, 0.1, 0.4), wall_h),
+      makeObstacle("wall_2", ObstacleKind::kWall, cornerBox(0.5, 0.0, 0.1, 0.4), wall_h),
+      parked(3, 0.700, 0.000, 0.085, 0.080),
+      parked(4, 1.000, 0.000, 0.085, 0.080),
+      parked(5, 1.300, 0.000, 0.085, 0.080),
+      parked(6, 1.600, 0.000, 0.085, 0.080),
+      makeObstacle("island_7", ObstacleKind::kIsland, cornerBox(0.8, 0.6, 0.8, 0.1), wall_h),
+      parked(8, 0.700, 1.115, 0.080, 0.085),
+      parked(9, 1.000, 1.115, 0.080, 0.085),
+      parked(10, 1.300, 1.115, 0.080, 0.085),
+      parked(11, 1.600, 1.115, 0.080, 0.085),
   };
-  int i = 1;
-  for (const Rect& r : rects) {
-    Obstacle o;
-    o.name = "obstacle_" + std::to_string(i++);
-    o.kind = r.kind;
-    o.box.center = {r.x + 0.5 * r.w, r.y + 0.5 * r.h};
-    o.box.half_extents = {0.5 * r.w, 0.5 * r.h};
-    s.obstacles.push_back(o);
-  }
   s.start = {0.1, 0.1, degToRad(90)};
   s.goal.pose = {1.5, 0.04, degToRad(-90)};
   return s;
