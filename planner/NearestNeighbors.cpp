@@ -76,7 +76,17 @@ std::vector<std::size_t> NearestNeighbors::kNearest(const Pose2& query, std::siz
   return indices;
 }
 
-std::size_t NearestNeighbors::nearest(const Pose2& query) const { return kNearest(query, 1)[0]; }
+// Called once per planner iteration: a one-slot result set on the stack, no allocation. Same
+// answer as kNearest(query, 1)[0].
+std::size_t NearestNeighbors::nearest(const Pose2& query) const {
+  std::size_t index = 0;
+  double dist = 0.0;
+  nanoflann::KNNResultSet<double, std::size_t> result(1);
+  result.init(&index, &dist);
+  const Point q = embed(query, l_);
+  index_->tree.findNeighbors(result, q.data(), nanoflann::SearchParams());
+  return index;
+}
 
 std::vector<std::size_t> NearestNeighbors::withinRadius(const Pose2& query, double radius_m) const {
   std::vector<std::pair<std::size_t, double>> matches;
