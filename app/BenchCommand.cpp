@@ -27,12 +27,12 @@
 #include "bench/planning/BenchCsv.h"
 #include "bench/planning/BenchSummary.h"
 #include "bench/planning/ParksimRuns.h"
-#include "collision/BulletCollisionWorld.h"
-#include "core/AtomicFile.h"
-#include "core/Error.h"
-#include "planner/PlanScenario.h"
-#include "planner/TreePlanner.h"
-#include "scenario/ScenarioReader.h"
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/core/AtomicFile.h"
+#include "parksim/core/Error.h"
+#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/TreePlanner.h"
+#include "parksim/scenario/ScenarioReader.h"
 
 namespace parksim::app {
 namespace {

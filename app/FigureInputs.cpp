@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "planner/MoveToPoseSteering.h"
+#include "parksim/planner/MoveToPoseSteering.h"
 
 namespace parksim::app {
 

@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "core/Scenario.h"
-#include "planner/PlanScenario.h"
-#include "renders/Figures.h"
-#include "sim/Episode.h"
+#include "parksim/core/Scenario.h"
+#include "parksim/planner/PlanScenario.h"
+#include "parksim/renders/Figures.h"
+#include "parksim/sim/Episode.h"
 
 namespace parksim::app {
 

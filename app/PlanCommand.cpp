@@ -5,8 +5,8 @@
 
 #include "app/Command.h"
 #include "app/PlanOutput.h"
-#include "collision/BulletCollisionWorld.h"
-#include "scenario/ScenarioReader.h"
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/scenario/ScenarioReader.h"
 
 namespace parksim::app {
 

@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "core/AtomicFile.h"
-#include "core/Error.h"
+#include "parksim/core/AtomicFile.h"
+#include "parksim/core/Error.h"
 
 namespace parksim::app {
 

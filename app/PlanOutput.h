@@ -7,8 +7,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "core/Scenario.h"
-#include "planner/PlanScenario.h"
+#include "parksim/core/Scenario.h"
+#include "parksim/planner/PlanScenario.h"
 
 namespace parksim::app {
 

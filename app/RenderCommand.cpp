@@ -8,13 +8,13 @@
 #include "app/Command.h"
 #include "app/FigureInputs.h"
 #include "app/PlanOutput.h"
-#include "collision/BulletCollisionWorld.h"
-#include "core/AtomicFile.h"
-#include "core/Error.h"
-#include "renders/Figures.h"
-#include "renders/FrameRecorder.h"
-#include "renders/TrackingPlot.h"
-#include "scenario/ScenarioReader.h"
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/core/AtomicFile.h"
+#include "parksim/core/Error.h"
+#include "parksim/renders/Figures.h"
+#include "parksim/renders/FrameRecorder.h"
+#include "parksim/renders/TrackingPlot.h"
+#include "parksim/scenario/ScenarioReader.h"
 
 namespace parksim::app {
 

@@ -8,7 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/Command.h"
-#include "core/Error.h"
+#include "parksim/core/Error.h"
 
 int main(int argc, char** argv) {
   using namespace parksim::app;

@@ -11,8 +11,8 @@
 #include <random>
 #include <vector>
 
-#include "collision/BulletCollisionWorld.h"
-#include "core/Geometry.h"
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/core/Geometry.h"
 #include "tests/support/StudyLot.h"
 
 namespace parksim {

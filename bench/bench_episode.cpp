@@ -11,11 +11,11 @@
 
 #include <benchmark/benchmark.h>
 
-#include "collision/BulletCollisionWorld.h"
-#include "planner/PlanScenario.h"
-#include "scenario/ScenarioReader.h"
-#include "sim/Episode.h"
-#include "sim/EpisodeFiles.h"
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/planner/PlanScenario.h"
+#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/sim/Episode.h"
+#include "parksim/sim/EpisodeFiles.h"
 
 namespace parksim {
 namespace {

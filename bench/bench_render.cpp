@@ -16,11 +16,11 @@
 #include <string>
 #include <vector>
 
-#include "renders/FrameRecorder.h"
-#include "renders/PngEncoder.h"
-#include "renders/Renderer.h"
-#include "renders/SceneBuilder.h"
-#include "scenario/ScenarioReader.h"
+#include "parksim/renders/FrameRecorder.h"
+#include "parksim/renders/PngEncoder.h"
+#include "parksim/renders/Renderer.h"
+#include "parksim/renders/SceneBuilder.h"
+#include "parksim/scenario/ScenarioReader.h"
 
 namespace parksim {
 namespace {

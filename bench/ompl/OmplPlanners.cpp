@@ -27,8 +27,8 @@
 #include <ompl/util/RandomNumbers.h>
 
 #include "bench/planning/ParksimRuns.h"
-#include "core/Error.h"
-#include "core/Geometry.h"
+#include "parksim/core/Error.h"
+#include "parksim/core/Geometry.h"
 
 namespace parksim::bench {
 

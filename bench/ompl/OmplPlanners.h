@@ -20,10 +20,10 @@
 
 #include "bench/planning/BenchRecord.h"
 #include "bench/planning/PathCheck.h"
-#include "collision/BulletCollisionWorld.h"
-#include "core/FootprintChecker.h"
-#include "core/Pose2.h"
-#include "core/Scenario.h"
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/core/FootprintChecker.h"
+#include "parksim/core/Pose2.h"
+#include "parksim/core/Scenario.h"
 
 namespace parksim::bench {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/AtomicFile.h"
+#include "parksim/core/AtomicFile.h"
 
 namespace parksim::bench {
 namespace {

@@ -7,9 +7,9 @@
 
 #include "bench/planning/BenchRecord.h"
 #include "bench/planning/PathCheck.h"
-#include "collision/BulletCollisionWorld.h"
-#include "core/Scenario.h"
-#include "planner/PlanScenario.h"
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/core/Scenario.h"
+#include "parksim/planner/PlanScenario.h"
 
 namespace parksim::bench {
 

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
-#include "core/DiffDrive.h"
-#include "core/Error.h"
-#include "core/Geometry.h"
+#include "parksim/core/DiffDrive.h"
+#include "parksim/core/Error.h"
+#include "parksim/core/Geometry.h"
 
 namespace parksim::bench {
 

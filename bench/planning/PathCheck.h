@@ -8,11 +8,11 @@
 #include <cstddef>
 #include <vector>
 
-#include "collision/BulletCollisionWorld.h"
-#include "core/Pose2.h"
-#include "core/RobotDef.h"
-#include "core/Scenario.h"
-#include "core/Trajectory.h"
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/core/Pose2.h"
+#include "parksim/core/RobotDef.h"
+#include "parksim/core/Scenario.h"
+#include "parksim/core/Trajectory.h"
 
 namespace parksim::bench {
 

@@ -11,10 +11,10 @@
 
 #include "tests/support/RunParksim.h"
 
-#include "core/DiffDrive.h"
-#include "core/Geometry.h"
-#include "core/Trajectory.h"
-#include "scenario/ScenarioReader.h"
+#include "parksim/core/DiffDrive.h"
+#include "parksim/core/Geometry.h"
+#include "parksim/core/Trajectory.h"
+#include "parksim/scenario/ScenarioReader.h"
 
 namespace parksim {
 namespace {

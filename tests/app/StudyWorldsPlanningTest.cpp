@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "collision/BulletCollisionWorld.h"
-#include "planner/PlanScenario.h"
-#include "scenario/ScenarioReader.h"
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/planner/PlanScenario.h"
+#include "parksim/scenario/ScenarioReader.h"
 #include "tests/support/PlanChecks.h"
 
 namespace parksim {

@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "collision/BulletCollisionWorld.h"
-#include "core/Error.h"
-#include "scenario/ScenarioReader.h"
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/core/Error.h"
+#include "parksim/scenario/ScenarioReader.h"
 
 namespace parksim::bench {
 namespace {

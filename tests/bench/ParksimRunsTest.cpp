@@ -8,8 +8,8 @@
 #include <climits>
 #include <string>
 
-#include "collision/BulletCollisionWorld.h"
-#include "scenario/ScenarioReader.h"
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/scenario/ScenarioReader.h"
 
 namespace parksim::bench {
 namespace {

@@ -4,10 +4,10 @@
 
 #include <gtest/gtest.h>
 
-#include "collision/BulletCollisionWorld.h"
-#include "core/Angle.h"
-#include "core/Geometry.h"
-#include "scenario/ScenarioReader.h"
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/core/Angle.h"
+#include "parksim/core/Geometry.h"
+#include "parksim/scenario/ScenarioReader.h"
 
 namespace parksim::bench {
 namespace {

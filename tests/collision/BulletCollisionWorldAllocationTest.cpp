@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "collision/BulletCollisionWorld.h"
+#include "parksim/collision/BulletCollisionWorld.h"
 #include "tests/support/StudyLot.h"
 
 namespace {

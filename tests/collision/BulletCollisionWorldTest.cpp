@@ -1,4 +1,4 @@
-#include "collision/BulletCollisionWorld.h"
+#include "parksim/collision/BulletCollisionWorld.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "core/Error.h"
-#include "core/Geometry.h"
+#include "parksim/core/Error.h"
+#include "parksim/core/Geometry.h"
 #include "tests/support/StudyLot.h"
 
 namespace parksim {

@@ -1,4 +1,4 @@
-#include "core/DiffDrive.h"
+#include "parksim/core/DiffDrive.h"
 
 #include <cmath>
 #include <random>

@@ -1,4 +1,4 @@
-#include "core/Geometry.h"
+#include "parksim/core/Geometry.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "core/Trajectory.h"
+#include "parksim/core/Trajectory.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/Error.h"
+#include "parksim/core/Error.h"
 
 namespace parksim {
 namespace {

@@ -1,4 +1,4 @@
-#include "planner/MotionValidator.h"
+#include "parksim/planner/MotionValidator.h"
 
 #include <random>
 

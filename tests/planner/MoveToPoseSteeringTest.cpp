@@ -1,11 +1,11 @@
-#include "planner/MoveToPoseSteering.h"
+#include "parksim/planner/MoveToPoseSteering.h"
 
 #include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "core/Error.h"
+#include "parksim/core/Error.h"
 #include "tests/support/PlanChecks.h"
 
 namespace parksim {

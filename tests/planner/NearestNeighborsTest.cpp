@@ -1,4 +1,4 @@
-#include "planner/NearestNeighbors.h"
+#include "parksim/planner/NearestNeighbors.h"
 
 #include <limits>
 #include <random>

@@ -1,11 +1,11 @@
-#include "planner/PathSegment.h"
+#include "parksim/planner/PathSegment.h"
 
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "planner/PathCost.h"
-#include "planner/RotateTranslateRotateSteering.h"
+#include "parksim/planner/PathCost.h"
+#include "parksim/planner/RotateTranslateRotateSteering.h"
 #include "tests/support/PlanChecks.h"
 
 namespace parksim {

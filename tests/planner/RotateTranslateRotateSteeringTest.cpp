@@ -1,10 +1,10 @@
-#include "planner/RotateTranslateRotateSteering.h"
+#include "parksim/planner/RotateTranslateRotateSteering.h"
 
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "core/Error.h"
+#include "parksim/core/Error.h"
 #include "tests/support/PlanChecks.h"
 
 namespace parksim {

@@ -1,9 +1,9 @@
-#include "planner/ShortcutSmoother.h"
+#include "parksim/planner/ShortcutSmoother.h"
 
 #include <gtest/gtest.h>
 
-#include "planner/MoveToPoseSteering.h"
-#include "planner/RotateTranslateRotateSteering.h"
+#include "parksim/planner/MoveToPoseSteering.h"
+#include "parksim/planner/RotateTranslateRotateSteering.h"
 #include "tests/support/PlanChecks.h"
 
 namespace parksim {

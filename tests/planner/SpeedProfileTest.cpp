@@ -1,4 +1,4 @@
-#include "planner/SpeedProfile.h"
+#include "parksim/planner/SpeedProfile.h"
 
 #include <cmath>
 #include <numeric>
@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/Error.h"
+#include "parksim/core/Error.h"
 
 namespace parksim {
 namespace {

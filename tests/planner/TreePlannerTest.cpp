@@ -1,11 +1,11 @@
-#include "planner/TreePlanner.h"
+#include "parksim/planner/TreePlanner.h"
 
 #include <string>
 
 #include <gtest/gtest.h>
 
-#include "core/Error.h"
-#include "planner/PlanScenario.h"
+#include "parksim/core/Error.h"
+#include "parksim/planner/PlanScenario.h"
 #include "tests/support/PlanChecks.h"
 #include "tests/support/StudyLot.h"
 

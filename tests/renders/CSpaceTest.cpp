@@ -1,11 +1,11 @@
-#include "renders/CSpace.h"
+#include "parksim/renders/CSpace.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/Angle.h"
-#include "core/Geometry.h"
+#include "parksim/core/Angle.h"
+#include "parksim/core/Geometry.h"
 
 namespace parksim {
 namespace {

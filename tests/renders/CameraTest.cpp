@@ -1,4 +1,4 @@
-#include "renders/Camera.h"
+#include "parksim/renders/Camera.h"
 
 #include <gtest/gtest.h>
 

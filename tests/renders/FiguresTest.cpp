@@ -1,12 +1,12 @@
-#include "renders/Figures.h"
+#include "parksim/renders/Figures.h"
 
 #include <gtest/gtest.h>
 
 #include <set>
 
 #include "RenderTestUtil.h"
-#include "renders/CSpace.h"
-#include "renders/PngEncoder.h"
+#include "parksim/renders/CSpace.h"
+#include "parksim/renders/PngEncoder.h"
 
 namespace parksim {
 namespace {

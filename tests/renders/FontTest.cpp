@@ -1,8 +1,8 @@
-#include "renders/Font.h"
+#include "parksim/renders/Font.h"
 
 #include <gtest/gtest.h>
 
-#include "core/Error.h"
+#include "parksim/core/Error.h"
 
 namespace parksim {
 namespace {

@@ -1,4 +1,4 @@
-#include "renders/FrameRecorder.h"
+#include "parksim/renders/FrameRecorder.h"
 
 #include <gtest/gtest.h>
 
@@ -8,10 +8,10 @@
 #include <iterator>
 
 #include "RenderTestUtil.h"
-#include "core/Error.h"
-#include "renders/PngEncoder.h"
-#include "renders/Process.h"
-#include "renders/SceneBuilder.h"
+#include "parksim/core/Error.h"
+#include "parksim/renders/PngEncoder.h"
+#include "parksim/renders/Process.h"
+#include "parksim/renders/SceneBuilder.h"
 
 namespace parksim {
 namespace {

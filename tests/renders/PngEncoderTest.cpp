@@ -1,11 +1,11 @@
-#include "renders/PngEncoder.h"
+#include "parksim/renders/PngEncoder.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "RenderTestUtil.h"
-#include "core/Error.h"
+#include "parksim/core/Error.h"
 
 namespace parksim {
 namespace {

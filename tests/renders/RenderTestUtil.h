@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <string>
 
-#include "core/Angle.h"
-#include "core/Geometry.h"
-#include "core/Scenario.h"
+#include "parksim/core/Angle.h"
+#include "parksim/core/Geometry.h"
+#include "parksim/core/Scenario.h"
 
 namespace parksim::rendertest {
 
@@ -56,8 +56,8 @@ inline std::string outputDir(const std::string& name) {
 
 #include <vector>
 
-#include "core/DiffDrive.h"
-#include "core/Trajectory.h"
+#include "parksim/core/DiffDrive.h"
+#include "parksim/core/Trajectory.h"
 
 namespace parksim::rendertest {
 

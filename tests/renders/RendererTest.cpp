@@ -1,13 +1,13 @@
-#include "renders/Renderer.h"
+#include "parksim/renders/Renderer.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 
 #include "RenderTestUtil.h"
-#include "core/Error.h"
-#include "renders/PngEncoder.h"
-#include "renders/SceneBuilder.h"
+#include "parksim/core/Error.h"
+#include "parksim/renders/PngEncoder.h"
+#include "parksim/renders/SceneBuilder.h"
 
 namespace parksim {
 namespace {

@@ -1,4 +1,4 @@
-#include "renders/SceneBuilder.h"
+#include "parksim/renders/SceneBuilder.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "renders/Scene.h"
+#include "parksim/renders/Scene.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
-#include "renders/TrackingPlot.h"
+#include "parksim/renders/TrackingPlot.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 
 #include "RenderTestUtil.h"
-#include "core/Error.h"
+#include "parksim/core/Error.h"
 
 namespace parksim {
 namespace {

@@ -1,4 +1,4 @@
-#include "scenario/ScenarioReader.h"
+#include "parksim/scenario/ScenarioReader.h"
 
 #include <filesystem>
 #include <fstream>
@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "core/Angle.h"
-#include "core/Error.h"
-#include "core/Geometry.h"
+#include "parksim/core/Angle.h"
+#include "parksim/core/Error.h"
+#include "parksim/core/Geometry.h"
 
 namespace parksim {
 namespace {

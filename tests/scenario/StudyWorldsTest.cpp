@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "core/Angle.h"
-#include "core/Geometry.h"
-#include "scenario/ScenarioReader.h"
+#include "parksim/core/Angle.h"
+#include "parksim/core/Geometry.h"
+#include "parksim/scenario/ScenarioReader.h"
 
 namespace parksim {
 namespace {

@@ -1,16 +1,16 @@
 // Episodes on plans built in code: tracking, contacts, determinism, the observer.
 
-#include "sim/Episode.h"
+#include "parksim/sim/Episode.h"
 
 #include <cmath>
 #include <cstdio>
 
 #include <gtest/gtest.h>
 
-#include "core/Angle.h"
-#include "core/Error.h"
-#include "sim/EpisodeFiles.h"
-#include "sim/TrackingTolerance.h"
+#include "parksim/core/Angle.h"
+#include "parksim/core/Error.h"
+#include "parksim/sim/EpisodeFiles.h"
+#include "parksim/sim/TrackingTolerance.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

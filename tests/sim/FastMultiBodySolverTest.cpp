@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/DynamicsWorld.h"
-#include "sim/Episode.h"
-#include "sim/EpisodeFiles.h"
+#include "parksim/sim/DynamicsWorld.h"
+#include "parksim/sim/Episode.h"
+#include "parksim/sim/EpisodeFiles.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

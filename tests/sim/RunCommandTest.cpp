@@ -12,7 +12,7 @@
 
 #include "tests/support/RunParksim.h"
 
-#include "sim/TrackingTolerance.h"
+#include "parksim/sim/TrackingTolerance.h"
 
 namespace parksim {
 namespace {

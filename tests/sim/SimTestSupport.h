@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "core/DiffDrive.h"
-#include "core/Scenario.h"
-#include "core/Trajectory.h"
+#include "parksim/core/DiffDrive.h"
+#include "parksim/core/Scenario.h"
+#include "parksim/core/Trajectory.h"
 
 namespace parksim::testing {
 

@@ -8,13 +8,13 @@
 
 #include <gtest/gtest.h>
 
-#include "collision/BulletCollisionWorld.h"
-#include "core/Geometry.h"
-#include "planner/PlanScenario.h"
-#include "scenario/ScenarioReader.h"
-#include "sim/Episode.h"
-#include "sim/EpisodeFiles.h"
-#include "sim/TrackingTolerance.h"
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/core/Geometry.h"
+#include "parksim/planner/PlanScenario.h"
+#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/sim/Episode.h"
+#include "parksim/sim/EpisodeFiles.h"
+#include "parksim/sim/TrackingTolerance.h"
 
 namespace parksim {
 namespace {

@@ -1,7 +1,7 @@
 // The public tolerance helper, on a metrics struct and on a metrics.json file; the files'
 // formats.
 
-#include "sim/TrackingTolerance.h"
+#include "parksim/sim/TrackingTolerance.h"
 
 #include <filesystem>
 #include <fstream>
@@ -9,10 +9,10 @@
 
 #include <gtest/gtest.h>
 
-#include "core/AtomicFile.h"
-#include "sim/EpisodeFiles.h"
-#include "sim/ReferenceTrajectory.h"
-#include "sim/TrackingController.h"
+#include "parksim/core/AtomicFile.h"
+#include "parksim/sim/EpisodeFiles.h"
+#include "parksim/sim/ReferenceTrajectory.h"
+#include "parksim/sim/TrackingController.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

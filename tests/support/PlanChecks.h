@@ -7,11 +7,11 @@
 
 #include <gtest/gtest.h>
 
-#include "core/DiffDrive.h"
-#include "core/Scenario.h"
-#include "core/Trajectory.h"
-#include "planner/MotionValidator.h"
-#include "planner/PlanScenario.h"
+#include "parksim/core/DiffDrive.h"
+#include "parksim/core/Scenario.h"
+#include "parksim/core/Trajectory.h"
+#include "parksim/planner/MotionValidator.h"
+#include "parksim/planner/PlanScenario.h"
 #include "tests/support/StudyLot.h"
 
 namespace parksim::testing {

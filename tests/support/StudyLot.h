@@ -7,9 +7,9 @@
 #include <utility>
 #include <vector>
 
-#include "core/FootprintChecker.h"
-#include "core/Geometry.h"
-#include "core/Scenario.h"
+#include "parksim/core/FootprintChecker.h"
+#include "parksim/core/Geometry.h"
+#include "parksim/core/Scenario.h"
 
 namespace parksim::testing {
 

@@ -1,0 +1,341 @@
+#include "parksim/collision/BulletCollisionWorld.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
+#include <btBulletCollisionCommon.h>
+
+#include "parksim/core/Error.h"
+#include "parksim/core/Geometry.h"
+
+namespace parksim {
+
+namespace {
+
+// Broadphase bounds are float and Bullet rounds them; widening the query box by far more than
+// a float ulp at lot scale keeps every obstacle that could touch the footprint a candidate.
+constexpr double kBroadphasePad_m = 1e-5;
+
+// First search radius of clearance(): about the robot's size, so that a pose near obstacles
+// usually needs a single broadphase query.
+constexpr double kFirstClearanceRadius_m = 0.05;
+
+bool finite(double v) { return std::isfinite(v); }
+
+btMatrix3x3 yawBasis(double cos_yaw, double sin_yaw) {
+  const auto c = static_cast<btScalar>(cos_yaw);
+  const auto s = static_cast<btScalar>(sin_yaw);
+  return btMatrix3x3(c, -s, 0, s, c, 0, 0, 0, 1);
+}
+
+// btBoxBoxDetector reads getHalfExtentsWithMargin(). A zero margin makes that equal to the
+// requested half extents bit for bit, instead of (h - m) + m with two roundings; margins play
+// no part in the box-box test, so nothing is lost.
+void setExactHalfExtents(btBoxShape& shape, const btVector3& half_extents) {
+  shape.setMargin(0);
+  shape.setImplicitShapeDimensions(half_extents);
+}
+
+// Records whether the detector reported any point at negative distance. The detector also
+// reports touching as distance 0 (or -0), which must stay free.
+struct PenetrationResult final : btDiscreteCollisionDetectorInterface::Result {
+  bool penetrating = false;
+  void setShapeIdentifiersA(int, int) override {}
+  void setShapeIdentifiersB(int, int) override {}
+  void addContactPoint(const btVector3&, const btVector3&, btScalar distance) override {
+    if (distance < 0) penetrating = true;
+  }
+};
+
+// Collects the obstacle indices of the proxies whose bounds meet the query box. The output
+// has capacity for every obstacle, so collecting never allocates.
+struct CandidateCollector final : btBroadphaseAabbCallback {
+  explicit CandidateCollector(std::vector<int>& out) : out_(out) {}
+  bool process(const btBroadphaseProxy* proxy) override {
+    const auto* object = static_cast<const btCollisionObject*>(proxy->m_clientObject);
+    out_.push_back(object->getUserIndex());
+    return true;
+  }
+  std::vector<int>& out_;
+};
+
+double pointSegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                            const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  return (p - (a + t * ab)).norm();
+}
+
+// Exact planar distance between two boxes: 0 when they touch or overlap; otherwise the
+// closest pair of two disjoint convex polygons always includes a vertex of one of them.
+double boxDistance(const OrientedBox& a, const OrientedBox& b) {
+  if (separationAlongAxes(a, b) <= 0.0) return 0.0;
+  const auto ca = a.corners();
+  const auto cb = b.corners();
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4;
+    for (int k = 0; k < 4; ++k) {
+      best = std::min(best, pointSegmentDistance(ca[k], cb[i], cb[j]));
+      best = std::min(best, pointSegmentDistance(cb[k], ca[i], ca[j]));
+    }
+  }
+  return best;
+}
+
+// Messages start with the scenario's file when it has one, as Error messages do elsewhere.
+std::string where(const Scenario& scenario) {
+  return (scenario.source_path.empty() ? std::string("collision world") : scenario.source_path) +
+         ": ";
+}
+
+void requirePositive(const Scenario& scenario, double v, const std::string& what) {
+  if (!finite(v) || v <= 0.0) {
+    throw Error(where(scenario) + what + " must be positive and finite, got " + std::to_string(v));
+  }
+}
+
+}  // namespace
+
+struct BulletCollisionWorld::Impl {
+  // One obstacle as the queries need it, in double.
+  struct Box {
+    OrientedBox box;
+    double cos_yaw = 1.0;
+    double sin_yaw = 0.0;
+    double height_m = 0.0;
+  };
+
+  // The query footprint with its heading's cosine and sine, computed once per query.
+  struct Footprint : OrientedBox {
+    explicit Footprint(const OrientedBox& box)
+        : OrientedBox(box), cos_yaw(std::cos(box.yaw)), sin_yaw(std::sin(box.yaw)) {}
+    double cos_yaw;
+    double sin_yaw;
+  };
+
+  RobotDef robot;
+  std::vector<std::string> names;
+  std::vector<Box> boxes;
+
+  // Members are destroyed in reverse order: the world first (it touches the objects' broadphase
+  // proxies when it goes), then the objects, their shapes and the broadphase.
+  btDefaultCollisionConfiguration configuration;
+  btCollisionDispatcher dispatcher{&configuration};
+  btDbvtBroadphase broadphase;
+  std::vector<std::unique_ptr<btBoxShape>> shapes;
+  std::vector<std::unique_ptr<btCollisionObject>> objects;
+  // Mutable because Bullet's box query is non-const although it changes nothing we rely on.
+  mutable btCollisionWorld world{&dispatcher, &broadphase, &configuration};
+
+  // Query scratch: the footprint's size changes with the margin, so one shape is resized per
+  // query rather than kept per margin.
+  mutable btBoxShape footprint_shape{btVector3(1, 1, 1)};
+  mutable std::vector<int> candidates;
+  mutable Stats stats;
+
+  explicit Impl(const Scenario& scenario) : robot(scenario.robot) {
+    requirePositive(scenario, robot.length_m, "robot length");
+    requirePositive(scenario, robot.width_m, "robot width");
+    requirePositive(scenario, robot.height_m, "robot height");
+    if (!finite(robot.front_overhang_m)) {
+      throw Error(where(scenario) + "robot front overhang must be finite");
+    }
+
+    const std::size_t n = scenario.obstacles.size();
+    names.reserve(n);
+    boxes.reserve(n);
+    shapes.reserve(n);
+    objects.reserve(n);
+    candidates.reserve(n);
+    for (const Obstacle& obstacle : scenario.obstacles) {
+      const std::string what = "obstacle '" + obstacle.name + "'";
+      requirePositive(scenario, obstacle.box.half_extents.x(), what + " half extent x");
+      requirePositive(scenario, obstacle.box.half_extents.y(), what + " half extent y");
+      requirePositive(scenario, obstacle.height_m, what + " height");
+      if (!obstacle.box.center.allFinite() || !finite(obstacle.box.yaw)) {
+        throw Error(where(scenario) + what + " pose must be finite");
+      }
+
+      Box box;
+      box.box = obstacle.box;
+      box.cos_yaw = std::cos(obstacle.box.yaw);
+      box.sin_yaw = std::sin(obstacle.box.yaw);
+      box.height_m = obstacle.height_m;
+
+      const btVector3 half(static_cast<btScalar>(obstacle.box.half_extents.x()),
+                           static_cast<btScalar>(obstacle.box.half_extents.y()),
+                           static_cast<btScalar>(0.5 * obstacle.height_m));
+      auto shape = std::make_unique<btBoxShape>(half);
+      setExactHalfExtents(*shape, half);
+
+      auto object = std::make_unique<btCollisionObject>();
+      btTransform transform(yawBasis(box.cos_yaw, box.sin_yaw),
+                            btVector3(static_cast<btScalar>(obstacle.box.center.x()),
+                                      static_cast<btScalar>(obstacle.box.center.y()),
+                                      static_cast<btScalar>(0.5 * obstacle.height_m)));
+      object->setWorldTransform(transform);
+      object->setCollisionShape(shape.get());
+      object->setCollisionFlags(object->getCollisionFlags() | btCollisionObject::CF_STATIC_OBJECT);
+      object->setUserIndex(static_cast<int>(boxes.size()));
+
+      names.push_back(obstacle.name);
+      boxes.push_back(box);
+      shapes.push_back(std::move(shape));
+      objects.push_back(std::move(object));
+      // Last, so that an exception above never leaves the world holding an unowned object.
+      world.addCollisionObject(objects.back().get());
+    }
+    // The scratch shape keeps a zero margin; queries only set its half extents.
+    footprint_shape.setMargin(0);
+  }
+
+  ~Impl() {
+    for (auto& object : objects) world.removeCollisionObject(object.get());
+  }
+
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
+
+  static void requireFinitePose(const Pose2& pose) {
+    if (!finite(pose.x) || !finite(pose.y) || !finite(pose.theta)) {
+      throw Error("collision query: pose must be finite");
+    }
+  }
+
+  static void requireValidMargin(double margin_m) {
+    if (!finite(margin_m) || margin_m < 0.0) {
+      throw Error("collision query: margin must be finite and >= 0, got " +
+                  std::to_string(margin_m));
+    }
+  }
+
+  // Fills `candidates` with the obstacles whose broadphase bounds meet the footprint's
+  // bounds grown by `grow_m`.
+  void collectCandidates(const Footprint& footprint, double grow_m) const {
+    const double c = std::abs(footprint.cos_yaw);
+    const double s = std::abs(footprint.sin_yaw);
+    const double pad = grow_m + kBroadphasePad_m;
+    const double hx = c * footprint.half_extents.x() + s * footprint.half_extents.y() + pad;
+    const double hy = s * footprint.half_extents.x() + c * footprint.half_extents.y() + pad;
+    const btVector3 lo(static_cast<btScalar>(footprint.center.x() - hx),
+                       static_cast<btScalar>(footprint.center.y() - hy),
+                       static_cast<btScalar>(-pad));
+    const btVector3 hi(static_cast<btScalar>(footprint.center.x() + hx),
+                       static_cast<btScalar>(footprint.center.y() + hy),
+                       static_cast<btScalar>(robot.height_m + pad));
+    candidates.clear();
+    CandidateCollector collector(candidates);
+    // btCollisionWorld offers no box query of its own; its broadphase does.
+    world.getBroadphase()->aabbTest(lo, hi, collector);
+  }
+
+  // Sizes the scratch footprint shape; once per query, before penetrates().
+  void prepareFootprint(const Footprint& footprint) const {
+    footprint_shape.setImplicitShapeDimensions(
+        btVector3(static_cast<btScalar>(footprint.half_extents.x()),
+                  static_cast<btScalar>(footprint.half_extents.y()),
+                  static_cast<btScalar>(0.5 * robot.height_m)));
+  }
+
+  // Box-box test of the prepared footprint against obstacle i. The footprint is expressed in
+  // the obstacle's frame (computed in double) so that Bullet's float arithmetic works on
+  // offsets of a few decimetres instead of lot coordinates. Measured on the lot: answers stay
+  // right down to 1e-7 m from touching (first errors at 3e-8 m), where world coordinates
+  // misclassify 0.14% of near-contact poses at 1e-7 m.
+  bool penetrates(int i, const Footprint& footprint) const {
+    ++stats.box_box_tests;
+    const Box& obstacle = boxes[static_cast<std::size_t>(i)];
+    const Eigen::Vector2d d = footprint.center - obstacle.box.center;
+    const double rel_x = obstacle.cos_yaw * d.x() + obstacle.sin_yaw * d.y();
+    const double rel_y = -obstacle.sin_yaw * d.x() + obstacle.cos_yaw * d.y();
+    // cos and sin of (footprint yaw - obstacle yaw), without calling trigonometry per pair.
+    const double rel_cos =
+        footprint.cos_yaw * obstacle.cos_yaw + footprint.sin_yaw * obstacle.sin_yaw;
+    const double rel_sin =
+        footprint.sin_yaw * obstacle.cos_yaw - footprint.cos_yaw * obstacle.sin_yaw;
+
+    btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+    input.m_transformA.setIdentity();
+    input.m_transformB.setBasis(yawBasis(rel_cos, rel_sin));
+    input.m_transformB.setOrigin(
+        btVector3(static_cast<btScalar>(rel_x), static_cast<btScalar>(rel_y),
+                  static_cast<btScalar>(0.5 * (robot.height_m - obstacle.height_m))));
+    btBoxBoxDetector detector(shapes[static_cast<std::size_t>(i)].get(), &footprint_shape);
+    PenetrationResult result;
+    detector.getClosestPoints(input, result, nullptr);
+    return result.penetrating;
+  }
+};
+
+BulletCollisionWorld::BulletCollisionWorld(const Scenario& scenario)
+    : impl_(std::make_unique<Impl>(scenario)) {}
+
+BulletCollisionWorld::~BulletCollisionWorld() = default;
+BulletCollisionWorld::BulletCollisionWorld(BulletCollisionWorld&&) noexcept = default;
+BulletCollisionWorld& BulletCollisionWorld::operator=(BulletCollisionWorld&&) noexcept = default;
+
+bool BulletCollisionWorld::isFree(const Pose2& pose, double margin_m) const {
+  Impl& m = *impl_;
+  ++m.stats.free_queries;
+  Impl::requireFinitePose(pose);
+  Impl::requireValidMargin(margin_m);
+  const Impl::Footprint footprint(footprintAt(m.robot, pose, margin_m));
+  m.collectCandidates(footprint, 0.0);
+  if (m.candidates.empty()) return true;
+  m.prepareFootprint(footprint);
+  return std::none_of(m.candidates.begin(), m.candidates.end(),
+                      [&](int i) { return m.penetrates(i, footprint); });
+}
+
+std::vector<std::string> BulletCollisionWorld::overlapping(const Pose2& pose,
+                                                           double margin_m) const {
+  Impl& m = *impl_;
+  ++m.stats.overlapping_queries;
+  Impl::requireFinitePose(pose);
+  Impl::requireValidMargin(margin_m);
+  const Impl::Footprint footprint(footprintAt(m.robot, pose, margin_m));
+  m.collectCandidates(footprint, 0.0);
+  m.prepareFootprint(footprint);
+  std::sort(m.candidates.begin(), m.candidates.end());
+  std::vector<std::string> names;
+  for (int i : m.candidates) {
+    if (m.penetrates(i, footprint)) names.push_back(m.names[static_cast<std::size_t>(i)]);
+  }
+  return names;
+}
+
+double BulletCollisionWorld::clearance(const Pose2& pose) const {
+  Impl& m = *impl_;
+  ++m.stats.clearance_queries;
+  Impl::requireFinitePose(pose);
+  if (m.boxes.empty()) return std::numeric_limits<double>::infinity();
+  const Impl::Footprint footprint(footprintAt(m.robot, pose, 0.0));
+  // An obstacle within distance r of the footprint has bounds meeting the footprint's bounds
+  // grown by r, so the nearest candidate is the nearest obstacle once its distance is <= r.
+  double radius = kFirstClearanceRadius_m;
+  for (;;) {
+    m.collectCandidates(footprint, radius);
+    double best = std::numeric_limits<double>::infinity();
+    for (int i : m.candidates) {
+      best = std::min(best, boxDistance(footprint, m.boxes[static_cast<std::size_t>(i)].box));
+      if (best == 0.0) return 0.0;
+    }
+    if (best <= radius) return best;
+    // Either nothing within reach yet (grow geometrically), or a candidate at distance best
+    // whose bounds-based search may have missed a nearer obstacle outside the box corners.
+    radius = std::isfinite(best) ? best : 4.0 * radius;
+  }
+}
+
+std::size_t BulletCollisionWorld::obstacleCount() const { return impl_->boxes.size(); }
+
+BulletCollisionWorld::Stats BulletCollisionWorld::stats() const { return impl_->stats; }
+
+void BulletCollisionWorld::resetStats() { impl_->stats = Stats{}; }
+
+}  // namespace parksim

@@ -1,0 +1,39 @@
+#pragma once
+// Planar oriented boxes and an exact separating-axis overlap test. Used as the independent
+// reference for the Bullet collision adapter, and by rendering and C-space figures.
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "parksim/core/Pose2.h"
+#include "parksim/core/RobotDef.h"
+
+namespace parksim {
+
+/// A rectangle in the plane.
+struct OrientedBox {
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();        ///< m
+  Eigen::Vector2d half_extents = Eigen::Vector2d::Zero();  ///< m, along the box's own x and y
+  double yaw = 0.0;                                        ///< rad
+
+  /// Corners counter-clockwise, starting at (+x, -y) in the box frame.
+  std::array<Eigen::Vector2d, 4> corners() const;
+};
+
+/// Exact overlap test by separating axes. Boxes that only touch (zero-area intersection)
+/// do not overlap.
+bool boxesOverlap(const OrientedBox& a, const OrientedBox& b);
+
+/// Signed distance between two boxes along the best separating axis, m: positive when
+/// separated (a lower bound of the true gap), negative when overlapping (minus the
+/// penetration depth along the axis of least overlap).
+double separationAlongAxes(const OrientedBox& a, const OrientedBox& b);
+
+/// The robot's footprint rectangle at `pose`, grown by `margin_m` on every side.
+OrientedBox footprintAt(const RobotDef& robot, const Pose2& pose, double margin_m = 0.0);
+
+/// Largest distance from the reference point to any footprint corner, m.
+double footprintRadius(const RobotDef& robot);
+
+}  // namespace parksim

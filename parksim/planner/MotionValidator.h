@@ -1,0 +1,67 @@
+#pragma once
+// Motion validation without gaps. Between two trajectory points the robot follows an exact arc;
+// the validator checks poses along it so densely that no point of the footprint moves more than
+// `resolution_m` between two checks, and checks the footprint grown by resolution_m / 2. Every
+// point of the swept area between two checked poses then lies inside one of the grown
+// footprints, so a trajectory accepted here is free at every instant (conservative by at most
+// resolution_m / 2). The reference point must also stay inside the lot bounds, shrunk by
+// resolution_m / 2 for the same reason: the study's lot has no boundary walls, and without this a
+// trajectory could leave the lot to get around its obstacles.
+
+#include <vector>
+
+#include "parksim/core/FootprintChecker.h"
+#include "parksim/core/RobotDef.h"
+#include "parksim/core/Scenario.h"
+#include "parksim/core/Trajectory.h"
+
+namespace parksim {
+
+struct MotionValidatorDef {
+  /// Largest distance any footprint point travels between two checks, m.
+  double resolution_m = 0.001;
+};
+
+/// Not thread-safe: it counts queries and reuses a scratch buffer; use one per thread.
+class MotionValidator {
+ public:
+  MotionValidator(const FootprintChecker& checker, const RobotDef& robot, const LotBounds& lot,
+                  const MotionValidatorDef& def = {});
+
+  /// True when the whole trajectory, including its first and last pose, is collision-free.
+  /// The samples are checked coarse to fine (every 64th first), which finds collisions early;
+  /// the answer does not depend on the order.
+  bool isValid(const Trajectory& traj) const;
+
+  /// The check made for a single state: grown footprint free, reference point inside the lot.
+  bool isValid(const Pose2& pose) const;
+
+  /// True when the reference point keeps the margin from the lot edge that isValid requires;
+  /// tells "too close to the lot edge" apart from "collides".
+  bool insideLot(const Pose2& pose) const { return inner_.contains(pose.x, pose.y); }
+
+  /// Number of footprint queries made so far.
+  long queries() const { return queries_; }
+
+  const MotionValidatorDef& def() const { return def_; }
+
+ private:
+  const FootprintChecker& checker_;
+  RobotDef robot_;
+  LotBounds inner_;  // lot bounds shrunk by resolution_m / 2
+  MotionValidatorDef def_;
+  double radius_;  // farthest footprint point from the reference point, m
+  mutable long queries_ = 0;
+
+  // Samples of one trajectory period (scratch, reused between calls).
+  struct Period {
+    Twist twist;
+    double dt;
+    int samples;  // checked poses in the period, the first at its start
+    long first;   // index of its first sample in the trajectory
+  };
+  static constexpr long kCoarsestStride = 64;
+  mutable std::vector<Period> periods_;
+};
+
+}  // namespace parksim

@@ -1,0 +1,46 @@
+#pragma once
+// Plans a scenario end to end: the selected steering function, gap-free motion validation
+// against the given footprint checker, and the tree planner.
+
+#include <string>
+#include <vector>
+
+#include "parksim/core/FootprintChecker.h"
+#include "parksim/core/Scenario.h"
+#include "parksim/planner/MotionValidator.h"
+#include "parksim/planner/MoveToPoseSteering.h"
+#include "parksim/planner/RotateTranslateRotateSteering.h"
+#include "parksim/planner/TreePlanner.h"
+
+namespace parksim {
+
+enum class SteeringKind {
+  kMoveToPose,             ///< the study's polar controller ("move-to-pose")
+  kRotateTranslateRotate,  ///< turn, drive straight, turn; exact ("rotate-translate-rotate")
+};
+
+const char* toString(SteeringKind kind);
+/// Every steering kind, in a fixed order (for benchmarks and help texts).
+std::vector<SteeringKind> allSteeringKinds();
+/// Parses "move-to-pose" or "rotate-translate-rotate"; throws Error otherwise.
+SteeringKind steeringKindFromString(const std::string& name);
+
+struct PlanSetup {
+  PlannerDef planner;
+  SteeringKind steering_kind = SteeringKind::kMoveToPose;
+  /// Move-to-pose parameters; its to-goal tolerance is taken from the scenario's goal region,
+  /// scaled by goal_tolerance_fraction.
+  MoveToPoseDef steering;
+  /// The move-to-pose controller stops as soon as it is within tolerance, so aiming at the
+  /// goal's own tolerance leaves plans ending on its edge (0.496 deg of 0.5) and a tracked
+  /// execution with no margin. Plans aim at this fraction of the goal's tolerances instead.
+  double goal_tolerance_fraction = 0.5;
+  /// Rotate-translate-rotate parameters.
+  RotateTranslateRotateDef rotate_translate_rotate;
+  MotionValidatorDef validation;
+};
+
+PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
+                        const PlanSetup& setup);
+
+}  // namespace parksim

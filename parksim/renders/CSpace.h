@@ -1,0 +1,38 @@
+#pragma once
+// Configuration-space obstacles of a rectangular robot among box obstacles, exact per heading.
+//
+// At a fixed heading theta the footprint F(theta) is a rectangle rigidly attached to the
+// reference point; it overlaps obstacle O exactly when the reference point lies in
+// O (+) (-F(theta)), the Minkowski sum of the obstacle and the footprint reflected through the
+// reference point. Both are convex, so the sum is the convex hull of the 16 pairwise corner
+// sums: an octagon in general (a rectangle when the two are aligned). The study instead took one
+// hull over the corners of all headings, which over-approximates every slice (and fills in
+// the non-convex twist between headings); here each heading gets its own slice.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "parksim/core/Geometry.h"
+#include "parksim/core/RobotDef.h"
+
+namespace parksim {
+
+/// The C-space obstacle slice of `obstacle` at heading `theta_rad`: counter-clockwise convex
+/// polygon without repeated or collinear vertices (4 to 8 of them), m.
+std::vector<Eigen::Vector2d> cspaceSlice(const OrientedBox& obstacle, const RobotDef& robot,
+                                         double theta_rad);
+
+/// Corners of the footprint relative to the reference point, in the robot's frame (x forward),
+/// counter-clockwise, m.
+std::vector<Eigen::Vector2d> footprintCornersInRobotFrame(const RobotDef& robot);
+
+/// Convex hull, counter-clockwise, collinear points dropped (Andrew's monotone chain).
+std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> points);
+
+/// True when `p` lies strictly inside the counter-clockwise convex polygon, farther than
+/// `tolerance_m` from its boundary.
+bool insideConvex(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& p,
+                  double tolerance_m = 0.0);
+
+}  // namespace parksim

@@ -1,0 +1,430 @@
+#include "parksim/renders/FrameRecorder.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <condition_variable>
+#include <cstdio>
+#include <cstring>
+#include <deque>
+#include <filesystem>
+#include <mutex>
+#include <regex>
+#include <thread>
+
+#include "parksim/core/AtomicFile.h"
+#include "parksim/core/Error.h"
+#include "parksim/renders/PngEncoder.h"
+#include "parksim/renders/Process.h"
+#include "parksim/renders/Renderer.h"
+#include "parksim/renders/SceneBuilder.h"
+
+namespace parksim {
+
+const char* toString(FrameView view) {
+  switch (view) {
+    case FrameView::kTop: return "top";
+    case FrameView::k3d: return "3d";
+    case FrameView::kBoth: return "both";
+  }
+  return "?";
+}
+
+FrameView frameViewFromString(const std::string& name) {
+  if (name == "top") return FrameView::kTop;
+  if (name == "3d") return FrameView::k3d;
+  if (name == "both") return FrameView::kBoth;
+  throw Error("view must be top, 3d or both, got '" + name + "'");
+}
+
+ImageSize parseImageSize(const std::string& text) {
+  ImageSize size;
+  char x = 0;
+  char extra = 0;
+  const int n = std::sscanf(text.c_str(), "%d%c%d%c", &size.width_px, &x, &size.height_px, &extra);
+  if (n != 3 || (x != 'x' && x != 'X') || size.width_px < 16 || size.height_px < 16 ||
+      size.width_px > 8192 || size.height_px > 8192) {
+    throw Error("size must be WxH with each side from 16 to 8192 pixels, e.g. 640x480, got '" +
+                text + "'");
+  }
+  return size;
+}
+
+namespace {
+
+std::string framePathIn(const std::string& dir, int index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%06d.png", index);
+  return dir + "/" + name;
+}
+
+// Frames are written in place, not through a temporary file and a rename as other outputs are:
+// creating a file costs ~0.6 ms of kernel time on an ext4 that has seen many files come and go
+// (its inode search skips recently deleted inodes), rewriting one that exists ~0.05 ms, and a
+// rename always creates. So a second recording into the same directory rewrites its frames. A
+// frame is never left half-written unless the process dies while writing it.
+void writeFrame(const std::string& path, const std::vector<unsigned char>& bytes) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw Error(path + ": cannot write: " + std::strerror(errno));
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const std::string reason = std::strerror(errno);
+      ::close(fd);
+      ::unlink(path.c_str());
+      throw Error(path + ": write failed: " + reason);
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0) {
+    const std::string reason = std::strerror(errno);
+    ::unlink(path.c_str());
+    throw Error(path + ": write failed: " + reason);
+  }
+}
+
+// Removes frame files (six digits .png) numbered `first` and above: an earlier, longer recording
+// into the same directory must not add its tail to this one's video.
+void removeFramesFrom(const std::string& dir, int first) {
+  static const std::regex kFrameName("([0-9]{6})\\.png");
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    std::smatch m;
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file() && std::regex_match(name, m, kFrameName) &&
+        std::stoi(m[1].str()) >= first) {
+      std::filesystem::remove(entry.path(), ec);
+    }
+  }
+}
+
+// Images travel from the renderer to the encoders and back through a fixed pool, so a steady
+// recording allocates nothing per frame and never runs more than queue_depth frames ahead.
+class EncodeQueue {
+ public:
+  EncodeQueue(int threads, int depth, int width, int height) {
+    for (int i = 0; i < depth; ++i) free_.push_back(std::make_unique<RgbImage>(width, height));
+    for (int i = 0; i < threads; ++i) workers_.emplace_back([this] { work(); });
+  }
+
+  ~EncodeQueue() { stop(); }
+
+  std::unique_ptr<RgbImage> acquire() {
+    std::unique_lock lock(mutex_);
+    free_cv_.wait(lock, [this] { return !free_.empty(); });
+    std::unique_ptr<RgbImage> image = std::move(free_.back());
+    free_.pop_back();
+    return image;
+  }
+
+  void submit(std::string path, std::unique_ptr<RgbImage> image) {
+    {
+      std::lock_guard lock(mutex_);
+      jobs_.push_back({std::move(path), std::move(image)});
+    }
+    job_cv_.notify_one();
+  }
+
+  void release(std::unique_ptr<RgbImage> image) {
+    {
+      std::lock_guard lock(mutex_);
+      free_.push_back(std::move(image));
+    }
+    free_cv_.notify_one();
+  }
+
+  /// Blocks until every submitted frame is written.
+  void drain() {
+    std::unique_lock lock(mutex_);
+    idle_cv_.wait(lock, [this] { return jobs_.empty() && busy_ == 0; });
+  }
+
+  void stop() {
+    {
+      std::lock_guard lock(mutex_);
+      stopping_ = true;
+    }
+    job_cv_.notify_all();
+    for (std::thread& t : workers_) {
+      if (t.joinable()) t.join();
+    }
+  }
+
+  /// The first write error, if any.
+  std::string error() const {
+    std::lock_guard lock(mutex_);
+    return error_;
+  }
+
+ private:
+  struct Job {
+    std::string path;
+    std::unique_ptr<RgbImage> image;
+  };
+
+  void work() {
+    while (true) {
+      Job job;
+      {
+        std::unique_lock lock(mutex_);
+        job_cv_.wait(lock, [this] { return stopping_ || !jobs_.empty(); });
+        if (jobs_.empty()) return;  // stopping, and nothing left to write
+        job = std::move(jobs_.front());
+        jobs_.pop_front();
+        ++busy_;
+      }
+      std::string failure;
+      try {
+        writeFrame(job.path, encodePng(*job.image));
+      } catch (const std::exception& e) {
+        failure = e.what();
+      }
+      {
+        std::lock_guard lock(mutex_);
+        if (!failure.empty() && error_.empty()) error_ = failure;
+        free_.push_back(std::move(job.image));
+        --busy_;
+      }
+      free_cv_.notify_one();
+      idle_cv_.notify_all();
+    }
+  }
+
+  mutable std::mutex mutex_;
+  std::condition_variable job_cv_, free_cv_, idle_cv_;
+  std::deque<Job> jobs_;
+  std::vector<std::unique_ptr<RgbImage>> free_;
+  std::vector<std::thread> workers_;
+  int busy_ = 0;
+  bool stopping_ = false;
+  std::string error_;
+};
+
+std::string formatFps(double fps) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", fps);
+  return buf;
+}
+
+VideoOutcome runFfmpeg(const std::string& ffmpeg_name, const std::string& out_dir,
+                       const std::string& frames_dir, double fps, int frames, bool gif) {
+  VideoOutcome outcome;
+  const std::string what = gif ? "GIF" : "video";
+  const std::string final_path = out_dir + (gif ? "/episode.gif" : "/episode.mp4");
+  if (frames == 0) {
+    outcome.status = VideoStatus::kNoFrames;
+    outcome.message = "no " + what + ": no frames were recorded";
+    return outcome;
+  }
+  const std::string ffmpeg = findExecutable(ffmpeg_name);
+  if (ffmpeg.empty()) {
+    outcome.status = VideoStatus::kFfmpegMissing;
+    outcome.message = "no " + what + ": '" + ffmpeg_name +
+                      "' is not on PATH (install it, e.g. apt-get install ffmpeg); the frames "
+                      "are in " +
+                      frames_dir;
+    return outcome;
+  }
+  // ffmpeg picks the container from the extension, so the partial file keeps it.
+  const std::string partial = out_dir + (gif ? "/episode.partial.gif" : "/episode.partial.mp4");
+  std::vector<std::string> args = {ffmpeg,         "-hide_banner", "-loglevel",
+                                   "error",        "-y",           "-framerate",
+                                   formatFps(fps), "-i",           frames_dir + "/%06d.png"};
+  if (gif) {
+    const std::string gif_fps = formatFps(std::min(fps, 15.0));
+    args.insert(args.end(),
+                {"-vf",
+                 "fps=" + gif_fps +
+                     ",scale='min(iw,800)':-2:flags=lanczos,split[a][b];[a]palettegen[p];"
+                     "[b][p]paletteuse",
+                 partial});
+  } else {
+    // libx264 with yuv420p needs even sizes: pad by a pixel when a size is odd.
+    args.insert(args.end(), {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt",
+                             "yuv420p", "-crf", "20", partial});
+  }
+  const std::string log = out_dir + "/ffmpeg.log";
+  const ProcessResult run = runProcess(args, log);
+  std::error_code ec;
+  if (!run.ok()) {
+    std::filesystem::remove(partial, ec);
+    outcome.status = VideoStatus::kFfmpegFailed;
+    outcome.message = "no " + what + ": " + run.error + " (see " + log + ")";
+    return outcome;
+  }
+  std::filesystem::rename(partial, final_path, ec);
+  if (ec) {
+    outcome.status = VideoStatus::kFfmpegFailed;
+    outcome.message = "no " + what + ": cannot rename " + partial + ": " + ec.message();
+    return outcome;
+  }
+  outcome.status = VideoStatus::kWritten;
+  outcome.path = final_path;
+  outcome.message = what + ": " + final_path;
+  return outcome;
+}
+
+}  // namespace
+
+struct FrameRecorder::Impl {
+  Scenario scenario;
+  FrameDef def;
+  SceneStyle style;
+  std::string frames_dir;
+  std::unique_ptr<Renderer> renderer;
+  std::unique_ptr<EncodeQueue> queue;
+
+  std::vector<Pose2> planned;
+  std::vector<Trajectory> tree;
+  std::vector<Pose2> executed;
+
+  std::optional<double> t0;
+  int next_frame = 0;
+  std::optional<FrameInput> last;
+  bool last_rendered = false;
+  bool finished = false;
+
+  void render(const FrameInput& in);
+  void throwIfFailed() const {
+    const std::string error = queue->error();
+    if (!error.empty()) throw Error("frames: " + error);
+  }
+};
+
+void FrameRecorder::Impl::render(const FrameInput& in) {
+  ViewState view;
+  view.robot = in.pose;
+  view.reference = in.reference;
+  view.obstacle_poses = in.obstacle_poses;
+  view.contacts = in.contacts;
+  view.planned_path = planned;
+  view.executed_path = executed;
+  if (def.show_tree) view.tree_edges = tree;
+  view.overlay = Overlay{scenario.name, in.t_s, in.position_error_m, in.heading_error_rad};
+  const Scene scene = buildScene(scenario, view, style);
+
+  std::unique_ptr<RgbImage> image = queue->acquire();
+  try {
+    const CameraDef top{};
+    switch (def.view) {
+      case FrameView::kTop: renderer->renderInto(scene, top, *image, 0); break;
+      case FrameView::k3d: renderer->renderInto(scene, def.camera_3d, *image, 0); break;
+      case FrameView::kBoth:
+        renderer->renderInto(scene, top, *image, 0);
+        renderer->renderInto(scene, def.camera_3d, *image, def.width_px);
+        break;
+    }
+  } catch (...) {
+    queue->release(std::move(image));
+    throw;
+  }
+  queue->submit(framePathIn(frames_dir, next_frame), std::move(image));
+  ++next_frame;
+}
+
+FrameRecorder::FrameRecorder(const Scenario& scenario, const FrameDef& def)
+    : impl_(std::make_unique<Impl>()) {
+  if (!(def.fps > 0.0) || !std::isfinite(def.fps)) {
+    throw Error("frames: fps must be positive, got " + formatFps(def.fps));
+  }
+  if (def.width_px <= 0 || def.height_px <= 0 || def.width_px > 8192 || def.height_px > 8192) {
+    throw Error("frames: size must be between 1x1 and 8192x8192, got " +
+                std::to_string(def.width_px) + "x" + std::to_string(def.height_px));
+  }
+  if (def.encode_threads < 1 || def.queue_depth < 1) {
+    throw Error("frames: encode_threads and queue_depth must be at least 1");
+  }
+  impl_->scenario = scenario;
+  impl_->def = def;
+  impl_->style = def.style.scaled(styleScaleFor(def.height_px));
+  impl_->frames_dir = def.out_dir + "/frames";
+  ensureDirectory(impl_->frames_dir);
+
+  RenderDef render_def;
+  render_def.width_px = def.width_px;
+  render_def.height_px = def.height_px;
+  render_def.msaa_samples = def.msaa_samples;
+  impl_->renderer = std::make_unique<Renderer>(render_def);
+  const int image_width = def.view == FrameView::kBoth ? 2 * def.width_px : def.width_px;
+  impl_->queue = std::make_unique<EncodeQueue>(
+      def.encode_threads, def.queue_depth + def.encode_threads, image_width, def.height_px);
+}
+
+FrameRecorder::~FrameRecorder() {
+  if (impl_ && impl_->queue) impl_->queue->stop();
+}
+
+void FrameRecorder::setPlan(const Trajectory& planned, std::span<const Trajectory> tree_edges) {
+  impl_->planned = samplePath(planned, impl_->scenario.robot);
+  impl_->tree.assign(tree_edges.begin(), tree_edges.end());
+}
+
+int FrameRecorder::addFrame(const FrameInput& input) {
+  Impl& m = *impl_;
+  if (m.finished) throw Error("frames: addFrame after finish");
+  m.throwIfFailed();
+  if (!std::isfinite(input.t_s)) throw Error("frames: sample time is not finite");
+  if (m.last && input.t_s < m.last->t_s) {
+    throw Error("frames: sample time went backwards (" + formatFps(input.t_s) + " s after " +
+                formatFps(m.last->t_s) + " s)");
+  }
+  if (!m.t0) m.t0 = input.t_s;
+  // Extend the driven path only where the robot moved, so standing still adds nothing.
+  if (m.executed.empty() || positionDistance(m.executed.back(), input.pose) > 5e-4 ||
+      headingDistance(m.executed.back(), input.pose) > 0.02) {
+    m.executed.push_back(input.pose);
+  }
+  m.last = input;
+  m.last_rendered = false;
+  // A frame is due once the sample reaches its time, give or take rounding of the caller's
+  // clock (k * dt summed in floating point can fall a hair short of k / fps).
+  const double slack = 1e-6 / m.def.fps;
+  int rendered = 0;
+  while (input.t_s + slack >= *m.t0 + m.next_frame / m.def.fps) {
+    m.render(input);
+    m.last_rendered = true;
+    ++rendered;
+  }
+  return rendered;
+}
+
+RecordingResult FrameRecorder::finish() {
+  Impl& m = *impl_;
+  if (m.finished) throw Error("frames: finish called twice");
+  m.finished = true;
+  if (m.last && !m.last_rendered) m.render(*m.last);
+  m.queue->drain();
+  m.queue->stop();
+  m.throwIfFailed();
+  removeFramesFrom(m.frames_dir, m.next_frame);
+
+  RecordingResult result;
+  result.frames = m.next_frame;
+  result.frames_dir = m.frames_dir;
+  result.message = std::to_string(result.frames) + " frames: " + m.frames_dir + "/" +
+                   (result.frames > 0 ? "000000.png ..." : "(none)");
+  if (m.def.video) {
+    result.video =
+        runFfmpeg(m.def.ffmpeg, m.def.out_dir, m.frames_dir, m.def.fps, result.frames, false);
+    result.message += "\n" + result.video.message;
+  }
+  if (m.def.gif) {
+    result.gif =
+        runFfmpeg(m.def.ffmpeg, m.def.out_dir, m.frames_dir, m.def.fps, result.frames, true);
+    result.message += "\n" + result.gif.message;
+  }
+  return result;
+}
+
+int FrameRecorder::frames() const { return impl_->next_frame; }
+
+std::string FrameRecorder::framePath(int index) const {
+  return framePathIn(impl_->frames_dir, index);
+}
+
+}  // namespace parksim

@@ -1,0 +1,151 @@
+#pragma once
+// Films an episode: one PNG per 1/fps of simulated time in DIR/frames/000000.png, ...,
+// optionally turned into DIR/episode.mp4 and/or DIR/episode.gif by ffmpeg at the end.
+//
+// Usage, from a simulation observer:
+//   FrameRecorder rec(scenario, frame_def);
+//   rec.setPlan(plan.trajectory);                 // optional: draws the planned path
+//   for each sample: rec.addFrame(input);         // any rate; frames are taken at 1/fps
+//   RecordingResult r = rec.finish();             // waits for the files; runs ffmpeg if asked
+//   print r.message
+//
+// The GL context, framebuffers and image buffers are made once. PNGs are encoded and written
+// on worker threads while the next frame renders; file names come from the frame index, so the
+// files and their bytes do not depend on the threading.
+
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "parksim/core/Pose2.h"
+#include "parksim/core/Scenario.h"
+#include "parksim/core/Trajectory.h"
+#include "parksim/renders/Camera.h"
+#include "parksim/renders/SceneStyle.h"
+
+namespace parksim {
+
+enum class FrameView {
+  kTop,   ///< the top-down plan view
+  k3d,    ///< the perspective view (FrameDef::camera_3d)
+  kBoth,  ///< both, side by side in one image: top on the left, 3D on the right
+};
+
+const char* toString(FrameView view);
+/// Parses "top", "3d" or "both"; throws Error otherwise.
+FrameView frameViewFromString(const std::string& name);
+
+struct ImageSize {
+  int width_px = 0;
+  int height_px = 0;
+};
+
+/// Parses "WxH" (e.g. "640x480"), each between 16 and 8192. Throws Error otherwise.
+ImageSize parseImageSize(const std::string& text);
+
+struct FrameDef {
+  double fps = 30.0;    ///< frames per second of simulated time (> 0)
+  int width_px = 640;   ///< width of one view, pixels; kBoth images are twice as wide
+  int height_px = 480;  ///< pixels
+  FrameView view = FrameView::kTop;
+  std::string out_dir = "out";    ///< frames go to out_dir/frames/, videos to out_dir/
+  bool video = false;             ///< finish() makes out_dir/episode.mp4 (libx264, yuv420p)
+  bool gif = false;               ///< finish() makes out_dir/episode.gif (at most 15 frames/s)
+  std::string ffmpeg = "ffmpeg";  ///< program name looked up on $PATH, or a path
+  /// The 3D view's camera: by default it follows the robot from the south-south-east, 45 degrees
+  /// above the ground.
+  CameraDef camera_3d{.mode = CameraMode::kFollow,
+                      .fov_y_deg = 45.0,
+                      .azimuth_deg = -60.0,
+                      .elevation_deg = 45.0,
+                      .follow_distance_m = 0.6};
+  /// Colours and widths for a 480-pixel-high image; scaled to height_px.
+  SceneStyle style;
+  bool show_tree = false;  ///< draw the planner's tree (setPlan) under the paths
+  /// Anti-aliasing samples per pixel. 1 (the default) keeps frames fast: lines, text and the top
+  /// view's edges are then smoothed by the renderer itself. 4 is full MSAA, about 3x slower on
+  /// llvmpipe (docs/rendering.md).
+  int msaa_samples = 1;
+  /// PNG encoder threads (>= 1). One keeps a 2-core machine busy: the caller's thread and
+  /// llvmpipe's render while it encodes. A second one measured slower (more CPU per frame
+  /// from contention with llvmpipe's threads).
+  int encode_threads = 1;
+  int queue_depth = 3;  ///< frames rendered ahead of the encoders (>= 1)
+};
+
+/// One simulation sample, as plain data (mirrors sim's EpisodeSample).
+struct FrameInput {
+  double t_s = 0.0;                ///< simulated time, s; non-decreasing across calls
+  Pose2 pose;                      ///< executed pose of the reference point
+  std::optional<Pose2> reference;  ///< planned pose at t_s: drawn as an outline
+  double position_error_m = 0.0;   ///< shown in the overlay
+  double heading_error_rad = 0.0;  ///< shown in the overlay
+  std::vector<Pose2>
+      obstacle_poses;         ///< box centre and yaw per obstacle; empty: as in the scenario
+  std::vector<int> contacts;  ///< obstacles touching the robot (scenario order)
+};
+
+enum class VideoStatus {
+  kNotRequested,
+  kWritten,
+  kFfmpegMissing,  ///< ffmpeg is not on $PATH: frames are there, no video
+  kFfmpegFailed,   ///< ffmpeg ran and failed; see DIR/ffmpeg.log
+  kNoFrames,       ///< nothing to encode
+};
+
+struct VideoOutcome {
+  VideoStatus status = VideoStatus::kNotRequested;
+  std::string path;     ///< the file, when written
+  std::string message;  ///< one line for the user; empty when not requested
+};
+
+struct RecordingResult {
+  int frames = 0;          ///< PNG files written
+  std::string frames_dir;  ///< DIR/frames
+  VideoOutcome video;      ///< episode.mp4
+  VideoOutcome gif;        ///< episode.gif
+  /// One line per outcome, ready to print: frames, then video and gif when requested.
+  std::string message;
+};
+
+class FrameRecorder {
+ public:
+  /// Creates DIR/frames, the renderer and the encoder threads. Frames of an earlier recording
+  /// into the same directory are overwritten, and finish() removes those beyond this one's. Throws
+  /// Error on a bad definition, an unwritable directory or when no GL context can be made.
+  FrameRecorder(const Scenario& scenario, const FrameDef& def);
+  /// Waits for pending files (errors are dropped: call finish() to see them).
+  ~FrameRecorder();
+
+  FrameRecorder(const FrameRecorder&) = delete;
+  FrameRecorder& operator=(const FrameRecorder&) = delete;
+
+  /// The planned path (drawn in every frame) and the tree's edges (drawn when show_tree).
+  void setPlan(const Trajectory& planned, std::span<const Trajectory> tree_edges = {});
+
+  /// Takes one sample. Frames are due at t0 + k / fps, t0 being the first sample's time; every
+  /// due frame up to this sample's time is rendered from it (a sparse caller gets repeated
+  /// frames, a dense one has samples skipped). Returns the number of frames rendered. Throws
+  /// Error when a previous frame could not be written or t_s goes backwards.
+  int addFrame(const FrameInput& input);
+
+  /// Renders the last sample if it came after the last frame (so the film ends at the final
+  /// pose), waits until every PNG is written, removes frame files an earlier, longer recording
+  /// left behind, then runs ffmpeg when video or gif is set. A
+  /// missing or failing ffmpeg is reported in the result, not thrown. Throws Error when a frame
+  /// could not be written. Call once; addFrame afterwards throws.
+  RecordingResult finish();
+
+  /// Frames rendered so far.
+  int frames() const;
+  /// Path of frame `index`: DIR/frames/%06d.png.
+  std::string framePath(int index) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace parksim

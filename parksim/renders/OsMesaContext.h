@@ -1,0 +1,12 @@
+#pragma once
+// Internal to parksim_render: the OSMesa backend of OffscreenContext.
+
+#include <memory>
+
+#include "parksim/renders/OffscreenContext.h"
+
+namespace parksim::detail {
+
+std::unique_ptr<OffscreenContext> createOsMesaContext(const ContextDef& def);
+
+}  // namespace parksim::detail

@@ -1,0 +1,81 @@
+#pragma once
+// Draws a Scene through a camera into an RGB image, off screen. One renderer owns one GL
+// context and its framebuffers, vertex buffers and font textures, and reuses them for every
+// image it draws: per frame it only uploads vertices, draws and reads back.
+//
+// Anti-aliasing is multisampling (an MSAA framebuffer resolved by a blit). With multisampling
+// off, lines and text are still anti-aliased (coverage fades over their outermost pixel) and a
+// top view smooths polygon and box edges with a fading outline; only perspective edges alias.
+// Top-down views are unlit, so fully covered pixels carry their colour exactly; perspective
+// views are lit by one directional light scaled so that upward faces keep their exact colour
+// and sides darken.
+//
+// Not thread-safe; use a renderer from one thread at a time (it makes its context current on
+// the calling thread whenever it draws).
+
+#include <memory>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "parksim/renders/Camera.h"
+#include "parksim/renders/Font.h"
+#include "parksim/renders/Image.h"
+#include "parksim/renders/OffscreenContext.h"
+#include "parksim/renders/Scene.h"
+
+namespace parksim {
+
+struct RenderDef {
+  int width_px = 640;   ///< image width, pixels
+  int height_px = 480;  ///< image height, pixels
+  /// Samples per pixel for anti-aliasing; 0 or 1 turns it off. Clamped to what the GL offers
+  /// (4 on llvmpipe).
+  int msaa_samples = 4;
+  /// TrueType font for text; empty: text is not drawn.
+  std::string font_path = kDefaultFontPath;
+  /// Direction towards the light in the world frame (normalized on use).
+  Eigen::Vector3d light_direction{0.35, -0.55, 0.75};
+  /// Lit views: share of a face's colour independent of the light direction, 0..1.
+  double ambient = 0.45;
+  ContextDef context;
+};
+
+class Renderer {
+ public:
+  /// Creates the context (createOffscreenContext(def.context)), framebuffers and shaders.
+  /// Throws Error when any of them fails or the font cannot be read.
+  explicit Renderer(const RenderDef& def = {});
+  /// Uses a context made elsewhere (another backend, or a test's).
+  Renderer(const RenderDef& def, std::unique_ptr<OffscreenContext> context);
+  ~Renderer();
+
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  int width() const;
+  int height() const;
+  /// Samples per pixel actually used (1: no anti-aliasing).
+  int samples() const;
+  /// The GL context's description.
+  std::string description() const;
+
+  /// Changes the image size; reallocates framebuffers only when it differs.
+  void setSize(int width_px, int height_px);
+
+  /// The camera render() uses for `scene` at the current size.
+  Camera camera(const Scene& scene, const CameraDef& camera_def) const;
+
+  /// Draws `scene` and reads it back into `out`, resized to width() x height().
+  void render(const Scene& scene, const CameraDef& camera_def, RgbImage& out);
+
+  /// Draws `scene` into columns [x_offset_px, x_offset_px + width()) of `out`, whose height must
+  /// be height(): for views side by side in one image. Throws Error when it does not fit.
+  void renderInto(const Scene& scene, const CameraDef& camera_def, RgbImage& out, int x_offset_px);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace parksim

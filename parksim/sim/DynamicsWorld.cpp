@@ -1,0 +1,439 @@
+#include "parksim/sim/DynamicsWorld.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
+#include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
+#include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletCollision/CollisionShapes/btSphereShape.h>
+#include <BulletDynamics/Dynamics/btRigidBody.h>
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+
+#include "parksim/core/Error.h"
+#include "parksim/core/Geometry.h"
+#include "parksim/sim/FastMultiBodySolver.h"
+
+namespace parksim {
+
+namespace {
+
+// Collision filter groups. Wheels and slider touch only the ground and the chassis only
+// obstacles: the 20 mm wheels reach 10 mm past the front edge, and letting them hit obstacles
+// would make the robot's contact shape larger than the footprint the planner checks.
+enum Group : int {
+  kGroundGroup = 1 << 0,
+  kStaticGroup = 1 << 1,
+  kParkedGroup = 1 << 2,
+  kChassisGroup = 1 << 3,
+  kWheelGroup = 1 << 4,
+};
+constexpr int kGroundMask = kWheelGroup | kParkedGroup;
+constexpr int kStaticMask = kChassisGroup | kParkedGroup;
+constexpr int kParkedMask = kGroundGroup | kStaticGroup | kParkedGroup | kChassisGroup;
+constexpr int kChassisMask = kStaticGroup | kParkedGroup;
+constexpr int kWheelMask = kGroundGroup;
+
+// User index of collision objects that are not obstacles (obstacles carry their index).
+constexpr int kNotObstacle = -1;
+
+constexpr int kLeftWheel = 0;
+constexpr int kRightWheel = 1;
+constexpr int kSupport = 2;
+
+void requirePositive(double value, const char* what) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    throw Error(std::string("simulation: ") + what + " must be positive, got " +
+                std::to_string(value));
+  }
+}
+
+btTransform planarTransform(double x, double y, double z, double yaw) {
+  btTransform tr;
+  tr.setIdentity();
+  tr.setOrigin(btVector3(btScalar(x), btScalar(y), btScalar(z)));
+  tr.setRotation(btQuaternion(btVector3(0, 0, 1), btScalar(yaw)));
+  return tr;
+}
+
+double yawOf(const btTransform& tr) {
+  const btMatrix3x3& r = tr.getBasis();
+  return std::atan2(double(r[1][0]), double(r[0][0]));
+}
+
+}  // namespace
+
+struct DynamicsWorld::Impl {
+  RobotDef robot;
+  PhysicsDef physics;
+  SimModelDef model;
+  std::vector<Obstacle> obstacles;
+  LotBounds lot;
+
+  std::unique_ptr<btDefaultCollisionConfiguration> config;
+  std::unique_ptr<btCollisionDispatcher> dispatcher;
+  std::unique_ptr<btDbvtBroadphase> broadphase;
+  std::unique_ptr<btMultiBodyConstraintSolver> solver;
+  std::unique_ptr<btMultiBodyDynamicsWorld> world;
+
+  std::vector<std::unique_ptr<btCollisionShape>> shapes;
+  std::vector<std::unique_ptr<btRigidBody>> bodies;  // ground first, then obstacles in order
+  std::unique_ptr<btMultiBody> ego;
+  std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders;  // chassis, wheels, support
+  std::vector<std::unique_ptr<btMultiBodyJointMotor>> motors;       // left, right
+
+  // Chassis centre relative to the reference point, in the chassis frame, m.
+  double chassis_dx = 0.0;
+  double chassis_z = 0.0;
+
+  WheelSpeeds targets;
+  RobotState state;
+  long step_count = 0;
+  std::vector<int> contacts;
+
+  ~Impl() {
+    if (!world) return;
+    for (auto& motor : motors) world->removeMultiBodyConstraint(motor.get());
+    for (auto& collider : colliders) world->removeCollisionObject(collider.get());
+    if (ego) world->removeMultiBody(ego.get());
+    for (auto& body : bodies) world->removeRigidBody(body.get());
+  }
+
+  btBoxShape* box(double hx, double hy, double hz) {
+    auto shape = std::make_unique<btBoxShape>(btVector3(btScalar(hx), btScalar(hy), btScalar(hz)));
+    btBoxShape* raw = shape.get();
+    shapes.push_back(std::move(shape));
+    return raw;
+  }
+
+  btSphereShape* sphere(double r) {
+    auto shape = std::make_unique<btSphereShape>(btScalar(r));
+    btSphereShape* raw = shape.get();
+    shapes.push_back(std::move(shape));
+    return raw;
+  }
+
+  // Every body starts fixed (mass 0); parked robots get their mass in wake().
+  btRigidBody* addFixedBody(btCollisionShape* shape, const btTransform& tr, double friction,
+                            int group, int mask, int user_index) {
+    btRigidBody::btRigidBodyConstructionInfo info(0, nullptr, shape, btVector3(0, 0, 0));
+    info.m_startWorldTransform = tr;
+    info.m_friction = btScalar(friction);
+    info.m_linearDamping = 0;
+    info.m_angularDamping = 0;
+    auto body = std::make_unique<btRigidBody>(info);
+    body->setUserIndex(user_index);
+    btRigidBody* raw = body.get();
+    world->addRigidBody(raw, group, mask);
+    world->updateSingleAabb(raw);
+    bodies.push_back(std::move(body));
+    return raw;
+  }
+
+  void buildWorld() {
+    config = std::make_unique<btDefaultCollisionConfiguration>();
+    dispatcher = std::make_unique<btCollisionDispatcher>(config.get());
+    broadphase = std::make_unique<btDbvtBroadphase>();
+    solver = model.solver == SolverKernel::kBullet
+                 ? std::make_unique<btMultiBodyConstraintSolver>()
+                 : makeFastMultiBodySolver(model.solver == SolverKernel::kFast);
+    world = std::make_unique<btMultiBodyDynamicsWorld>(dispatcher.get(), broadphase.get(),
+                                                       solver.get(), config.get());
+    world->setGravity(btVector3(0, 0, btScalar(-physics.gravity_mps2)));
+    world->getSolverInfo().m_numIterations = physics.solver_iterations;
+    world->getSolverInfo().m_leastSquaresResidualThreshold =
+        btScalar(model.solver_residual_threshold);
+    // Bullet recomputes every object's bounding box every step by default, fixed ones
+    // included. Fixed boxes get theirs once, below (updateSingleAabb adds the contact
+    // threshold exactly as the per-step update did); moving bodies are still updated.
+    world->setForceUpdateAllAabbs(false);
+
+    // The ground is a slab, not a btStaticPlaneShape: plane contacts are made by perturbing the
+    // box, which nudged every resting parked robot by 0.03 mm on its first awake step; the
+    // box-box detector gives exact corner contacts. Sized to the lot plus a metre, not larger,
+    // so that float rounding in the detector stays near 1e-7 m.
+    const double ground_half_thickness = 0.05;
+    btBoxShape* ground_shape = box(0.5 * (lot.x_max_m - lot.x_min_m) + 1.0,
+                                   0.5 * (lot.y_max_m - lot.y_min_m) + 1.0, ground_half_thickness);
+    addFixedBody(ground_shape,
+                 planarTransform(0.5 * (lot.x_min_m + lot.x_max_m),
+                                 0.5 * (lot.y_min_m + lot.y_max_m), -ground_half_thickness, 0),
+                 physics.ground_friction, kGroundGroup, kGroundMask, kNotObstacle);
+
+    for (std::size_t i = 0; i < obstacles.size(); ++i) {
+      const Obstacle& o = obstacles[i];
+      const double hz = 0.5 * o.height_m;
+      btBoxShape* shape = box(o.box.half_extents.x(), o.box.half_extents.y(), hz);
+      const btTransform tr = planarTransform(o.box.center.x(), o.box.center.y(), hz, o.box.yaw);
+      const bool parked = o.kind == ObstacleKind::kParkedRobot;
+      // Parked robots enter as fixed boxes and become dynamic when first touched (wake()).
+      addFixedBody(shape, tr, physics.obstacle_friction, parked ? kParkedGroup : kStaticGroup,
+                   parked ? kParkedMask : kStaticMask, static_cast<int>(i));
+    }
+  }
+
+  void buildRobot(const Pose2& start) {
+    const double r = robot.wheel_radius_m;
+    const double half_track = 0.5 * robot.wheel_base_m;
+    const double bottom = model.chassis_clearance_m;
+    const double top = robot.height_m;
+    chassis_dx = robot.footprintCenterOffset();
+    chassis_z = 0.5 * (bottom + top);
+
+    btBoxShape* chassis_shape =
+        box(0.5 * robot.length_m, 0.5 * robot.width_m, 0.5 * (top - bottom));
+    btVector3 chassis_inertia;
+    chassis_shape->calculateLocalInertia(btScalar(physics.chassis_mass_kg), chassis_inertia);
+    btSphereShape* wheel_shape = sphere(r);
+    btVector3 wheel_inertia;
+    wheel_shape->calculateLocalInertia(btScalar(physics.wheel_mass_kg), wheel_inertia);
+    btSphereShape* support_shape = sphere(model.support_radius_m);
+    btVector3 support_inertia;
+    support_shape->calculateLocalInertia(btScalar(model.support_mass_kg), support_inertia);
+
+    // The base is the chassis box, its frame at the box centre (its centre of mass).
+    ego = std::make_unique<btMultiBody>(3, btScalar(physics.chassis_mass_kg), chassis_inertia,
+                                        /*fixedBase=*/false, /*canSleep=*/false);
+    const btQuaternion no_rotation(0, 0, 0, 1);
+    const btVector3 no_offset(0, 0, 0);
+    // Axis +y (to the robot's left): a positive joint speed rolls the contact point backwards,
+    // so positive drives the robot forward, as WheelSpeeds require.
+    const btVector3 axle(0, 1, 0);
+    const double axle_dx = -chassis_dx;  // reference point relative to the chassis centre
+    const double axle_dz = r - chassis_z;
+    ego->setupRevolute(kLeftWheel, btScalar(physics.wheel_mass_kg), wheel_inertia, -1, no_rotation,
+                       axle, btVector3(btScalar(axle_dx), btScalar(half_track), btScalar(axle_dz)),
+                       no_offset, true);
+    ego->setupRevolute(kRightWheel, btScalar(physics.wheel_mass_kg), wheel_inertia, -1, no_rotation,
+                       axle, btVector3(btScalar(axle_dx), btScalar(-half_track), btScalar(axle_dz)),
+                       no_offset, true);
+    const double rear_edge = robot.front_overhang_m - robot.length_m;  // from the reference point
+    const double support_x = rear_edge + model.support_inset_m - chassis_dx;
+    const double support_z = model.support_radius_m - chassis_z;
+    ego->setupFixed(kSupport, btScalar(model.support_mass_kg), support_inertia, -1, no_rotation,
+                    btVector3(btScalar(support_x), 0, btScalar(support_z)), no_offset, true);
+    ego->finalizeMultiDof();
+    // btMultiBody damps by default (0.04); an undamped model is what the plan assumes.
+    ego->setLinearDamping(0);
+    ego->setAngularDamping(0);
+    ego->setHasSelfCollision(false);
+
+    const double c = std::cos(start.theta);
+    const double s = std::sin(start.theta);
+    ego->setBaseWorldTransform(planarTransform(start.x + chassis_dx * c, start.y + chassis_dx * s,
+                                               chassis_z, start.theta));
+    world->addMultiBody(ego.get());
+
+    auto add_collider = [&](int link, btCollisionShape* shape, double friction, int group,
+                            int mask) {
+      auto collider = std::make_unique<btMultiBodyLinkCollider>(ego.get(), link);
+      collider->setCollisionShape(shape);
+      collider->setFriction(btScalar(friction));
+      collider->setUserIndex(kNotObstacle);
+      if (link >= 0)
+        collider->setContactProcessingThreshold(btScalar(model.wheel_contact_processing_m));
+      world->addCollisionObject(collider.get(), group, mask);
+      if (link < 0) {
+        ego->setBaseCollider(collider.get());
+      } else {
+        ego->getLink(link).m_collider = collider.get();
+      }
+      colliders.push_back(std::move(collider));
+    };
+    add_collider(-1, chassis_shape, physics.obstacle_friction, kChassisGroup, kChassisMask);
+    add_collider(kLeftWheel, wheel_shape, physics.wheel_friction, kWheelGroup, kWheelMask);
+    add_collider(kRightWheel, wheel_shape, physics.wheel_friction, kWheelGroup, kWheelMask);
+    add_collider(kSupport, support_shape, physics.support_friction, kWheelGroup, kWheelMask);
+
+    btAlignedObjectArray<btQuaternion> scratch_q;
+    btAlignedObjectArray<btVector3> scratch_v;
+    ego->forwardKinematics(scratch_q, scratch_v);
+    ego->updateCollisionObjectWorldTransforms(scratch_q, scratch_v);
+
+    // Motor limits are impulses per step: torque x dt.
+    const btScalar max_impulse = btScalar(physics.max_wheel_torque_nm * physics.time_step_s);
+    for (int link : {kLeftWheel, kRightWheel}) {
+      auto motor = std::make_unique<btMultiBodyJointMotor>(ego.get(), link, 0, max_impulse);
+      world->addMultiBodyConstraint(motor.get());
+      motors.push_back(std::move(motor));
+    }
+  }
+
+  // Turns a parked robot from a fixed box into a body with mass, keeping its pose. Re-adding
+  // it makes the broadphase and the solver treat it as dynamic from the next step on.
+  void wake(int obstacle_index) {
+    btRigidBody* body = bodies[static_cast<std::size_t>(obstacle_index) + 1].get();
+    if (!body->isStaticObject()) return;
+    world->removeRigidBody(body);
+    btVector3 inertia;
+    body->getCollisionShape()->calculateLocalInertia(btScalar(physics.parked_robot_mass_kg),
+                                                     inertia);
+    body->setCollisionFlags(body->getCollisionFlags() & ~btCollisionObject::CF_STATIC_OBJECT);
+    body->setMassProps(btScalar(physics.parked_robot_mass_kg), inertia);
+    body->updateInertiaTensor();
+    body->setSleepingThresholds(btScalar(model.parked_sleep_speed_mps),
+                                btScalar(model.parked_sleep_yaw_rate_radps));
+    world->addRigidBody(body, kParkedGroup, kParkedMask);
+    body->activate(true);
+  }
+
+  void collectContacts() {
+    contacts.clear();
+    const btCollisionObject* chassis = colliders.front().get();
+    const int n = dispatcher->getNumManifolds();
+    for (int i = 0; i < n; ++i) {
+      const btPersistentManifold* m = dispatcher->getManifoldByIndexInternal(i);
+      const btCollisionObject* other = nullptr;
+      if (m->getBody0() == chassis) other = m->getBody1();
+      if (m->getBody1() == chassis) other = m->getBody0();
+      if (other == nullptr || other->getUserIndex() == kNotObstacle) continue;
+      for (int p = 0; p < m->getNumContacts(); ++p) {
+        if (m->getContactPoint(p).getDistance() < 0) {
+          contacts.push_back(other->getUserIndex());
+          break;
+        }
+      }
+    }
+    std::sort(contacts.begin(), contacts.end());
+    contacts.erase(std::unique(contacts.begin(), contacts.end()), contacts.end());
+  }
+
+  // The robot's state after the last step (Episode reads it two or three times a step).
+  RobotState computeRobot() const {
+    const Impl& d = *this;
+    const btTransform base = d.ego->getBaseWorldTransform();
+    const btVector3 ref_local(btScalar(-d.chassis_dx), 0,
+                              btScalar(d.robot.wheel_radius_m - d.chassis_z));
+    const btVector3 ref = base * ref_local;
+    RobotState out;
+    out.pose = {double(ref.x()), double(ref.y()), yawOf(base)};
+    out.axle_height_m = double(ref.z());
+    const btVector3 up = base.getBasis().getColumn(2);
+    out.tilt_rad = std::acos(std::clamp(double(up.z()), -1.0, 1.0));
+    const btVector3 omega = d.ego->getBaseOmega();
+    const btVector3 vel = d.ego->getBaseVel() + omega.cross(ref - base.getOrigin());
+    out.twist = {
+        double(vel.x()) * std::cos(out.pose.theta) + double(vel.y()) * std::sin(out.pose.theta),
+        double(omega.z())};
+    out.wheels = {double(d.ego->getJointVel(kLeftWheel)), double(d.ego->getJointVel(kRightWheel))};
+    out.awake = d.ego->isAwake();
+    return out;
+  }
+
+  // Gives a parked robot its mass while the chassis is still model.parked_wake_distance_m away,
+  // so the first contact is already between two bodies with mass.
+  void wakeNearbyParkedRobots(const Pose2& ego_pose) {
+    const OrientedBox footprint = footprintAt(robot, ego_pose);
+    for (std::size_t i = 0; i < obstacles.size(); ++i) {
+      if (obstacles[i].kind != ObstacleKind::kParkedRobot) continue;
+      if (!bodies[i + 1]->isStaticObject()) continue;
+      // The separating-axis gap is a lower bound of the true gap: it wakes early, never late.
+      if (separationAlongAxes(footprint, obstacles[i].box) < model.parked_wake_distance_m) {
+        wake(static_cast<int>(i));
+      }
+    }
+  }
+};
+
+DynamicsWorld::DynamicsWorld(const Scenario& scenario, const Pose2& start, const SimModelDef& model)
+    : impl_(std::make_unique<Impl>()) {
+  const PhysicsDef& p = scenario.physics;
+  const RobotDef& r = scenario.robot;
+  requirePositive(p.time_step_s, "physics.time_step_s");
+  requirePositive(p.solver_iterations, "physics.solver_iterations");
+  requirePositive(p.chassis_mass_kg, "physics.chassis_mass_kg");
+  requirePositive(p.wheel_mass_kg, "physics.wheel_mass_kg");
+  requirePositive(p.parked_robot_mass_kg, "physics.parked_robot_mass_kg");
+  requirePositive(p.max_wheel_torque_nm, "physics.max_wheel_torque_nm");
+  requirePositive(r.length_m, "robot.length_m");
+  requirePositive(r.width_m, "robot.width_m");
+  requirePositive(r.wheel_radius_m, "robot.wheel_radius_m");
+  requirePositive(r.wheel_base_m, "robot.wheel_base_m");
+  requirePositive(model.support_radius_m, "support_radius_m");
+  requirePositive(model.support_mass_kg, "support_mass_kg");
+  requirePositive(model.wheel_contact_processing_m, "wheel_contact_processing_m");
+  if (!(model.solver_residual_threshold >= 0.0)) {
+    throw Error("simulation: solver_residual_threshold must not be negative");
+  }
+  requirePositive(r.height_m - model.chassis_clearance_m, "robot height above the clearance");
+  for (const Obstacle& o : scenario.obstacles) {
+    requirePositive(o.box.half_extents.x(), (o.name + " half length").c_str());
+    requirePositive(o.box.half_extents.y(), (o.name + " half width").c_str());
+    requirePositive(o.height_m, (o.name + " height").c_str());
+  }
+  impl_->robot = r;
+  impl_->physics = p;
+  impl_->model = model;
+  impl_->obstacles = scenario.obstacles;
+  impl_->lot = scenario.lot;
+  impl_->buildWorld();
+  impl_->buildRobot(start);
+  impl_->state = impl_->computeRobot();
+  impl_->wakeNearbyParkedRobots(start);
+}
+
+DynamicsWorld::~DynamicsWorld() = default;
+
+void DynamicsWorld::setWheelTargets(const WheelSpeeds& targets) {
+  impl_->targets = targets;
+  impl_->motors[kLeftWheel]->setVelocityTarget(btScalar(targets.left_radps));
+  impl_->motors[kRightWheel]->setVelocityTarget(btScalar(targets.right_radps));
+}
+
+const WheelSpeeds& DynamicsWorld::wheelTargets() const { return impl_->targets; }
+
+void DynamicsWorld::step() {
+  const btScalar dt = btScalar(impl_->physics.time_step_s);
+  // One internal step of exactly dt: the default arguments would step at 1/60 s and
+  // interpolate.
+  impl_->world->stepSimulation(dt, 1, dt);
+  ++impl_->step_count;
+  impl_->collectContacts();
+  impl_->state = impl_->computeRobot();
+  impl_->wakeNearbyParkedRobots(impl_->state.pose);
+}
+
+double DynamicsWorld::timeStep() const { return impl_->physics.time_step_s; }
+
+double DynamicsWorld::time() const {
+  return static_cast<double>(impl_->step_count) * impl_->physics.time_step_s;
+}
+
+long DynamicsWorld::steps() const { return impl_->step_count; }
+
+const RobotState& DynamicsWorld::robot() const { return impl_->state; }
+
+std::vector<Pose2> DynamicsWorld::obstaclePoses() const {
+  std::vector<Pose2> poses;
+  poses.reserve(impl_->obstacles.size());
+  for (std::size_t i = 0; i < impl_->obstacles.size(); ++i) {
+    const btTransform& tr = impl_->bodies[i + 1]->getWorldTransform();
+    poses.push_back({double(tr.getOrigin().x()), double(tr.getOrigin().y()), yawOf(tr)});
+  }
+  return poses;
+}
+
+Eigen::Vector2d DynamicsWorld::obstaclePosition(std::size_t index) const {
+  const btVector3& origin = impl_->bodies.at(index + 1)->getWorldTransform().getOrigin();
+  return {double(origin.x()), double(origin.y())};
+}
+
+std::vector<double> DynamicsWorld::obstacleHeights() const {
+  std::vector<double> heights;
+  heights.reserve(impl_->obstacles.size());
+  for (std::size_t i = 0; i < impl_->obstacles.size(); ++i) {
+    heights.push_back(double(impl_->bodies[i + 1]->getWorldTransform().getOrigin().z()));
+  }
+  return heights;
+}
+
+const std::vector<int>& DynamicsWorld::chassisContacts() const { return impl_->contacts; }
+
+}  // namespace parksim

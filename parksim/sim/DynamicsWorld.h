@@ -1,0 +1,136 @@
+#pragma once
+// The dynamics world of one episode: ground, the scenario's obstacles and the ego robot in
+// Bullet (btMultiBodyDynamicsWorld). Static obstacles are fixed boxes; parked robots are boxes
+// with mass, so a collision pushes them (they are fixed until the robot comes near: SimModelDef).
+// The ego robot is a btMultiBody: a chassis box that is exactly the planner's footprint, two driven
+// sphere wheels on velocity motors, and a frictionless sphere slider at the rear. Wheels and slider
+// collide with the ground only, the chassis with obstacles only, so the robot's footprint in
+// contact is the 80 x 85 mm rectangle.
+//
+// Bullet stays behind this header (pimpl): nothing that includes sim/ sees a Bullet type.
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "parksim/core/DiffDrive.h"
+#include "parksim/core/Pose2.h"
+#include "parksim/core/Scenario.h"
+
+namespace parksim {
+
+/// How the constraint solver's iterations are computed (same model, same iteration count).
+enum class SolverKernel {
+  /// Bullet's own btMultiBodyConstraintSolver: the reference.
+  kBullet,
+  /// parksim's transcription of Bullet's iterations (sim/FastMultiBodySolver.h): the same
+  /// float operations in the same order, bit-identical results (tested), ~1.45x faster.
+  kExact,
+  /// As kExact, but each row's 8-term dot product is summed pairwise instead of left to right:
+  /// a quarter of the latency in the solver's critical path; results differ from Bullet's by
+  /// float rounding only (tested against kBullet).
+  kFast,
+};
+
+/// Parts of the model that the world file does not describe. Defaults are the model parksim
+/// was measured with (docs/simulation.md).
+struct SimModelDef {
+  /// Radius of the passive slider sphere at the rear, m.
+  double support_radius_m = 0.008;
+  /// Distance from the footprint's rear edge forward to the slider's contact point, m.
+  double support_inset_m = 0.010;
+  /// Mass of the slider, kg (a link needs mass; it adds to PhysicsDef::chassis_mass_kg).
+  double support_mass_kg = 0.002;
+  /// Height of the chassis box's bottom above the ground, m. The chassis never touches the
+  /// ground (it does not collide with it); this only decides which low obstacles it can hit.
+  double chassis_clearance_m = 0.002;
+  /// Parked robots are fixed boxes until the robot's footprint comes closer than this to one,
+  /// m; from the next step on it is a body with mass (PhysicsDef::parked_robot_mass_kg) that
+  /// can be pushed. 10 mm is 12 steps ahead at the top speed (0.2 m/s). Resting bodies with
+  /// mass cost more than the robot itself (8 of them: 4-5x the step time), and Bullet's own
+  /// sleeping does not help: it wakes a body whenever the robot's bounding box, grown by 2 cm,
+  /// overlaps it.
+  double parked_wake_distance_m = 0.010;
+  /// Once woken, a parked robot falls asleep again after 2 s below this speed, m/s (and yaw
+  /// rate, rad/s). The ego robot never sleeps.
+  double parked_sleep_speed_mps = 1e-3;
+  double parked_sleep_yaw_rate_radps = 1e-2;
+  /// Contact points of the wheels and the slider farther above the ground than this are not
+  /// solved, m. A rolling sphere's contact manifold keeps up to three stale points that rolled
+  /// up and away (12 um to 0.6 mm above the ground, zero impulse at the end of every step):
+  /// solving them as speculative contacts cost time and changed nothing measurable. The
+  /// current contact point sits within 0.1 um of the ground. The chassis keeps Bullet's
+  /// default (every point, so contacts with obstacles are speculative as before).
+  double wheel_contact_processing_m = 1e-5;
+  SolverKernel solver = SolverKernel::kFast;
+  /// The solver stops iterating once no row changed its velocity by more than the square
+  /// root of this in the last iteration, (m/s)^2 (Bullet's m_leastSquaresResidualThreshold;
+  /// PhysicsDef::solver_iterations stays the maximum). 3e-7 is about 0.5 mm/s: the largest
+  /// value with which the step-response and rest tests keep their bounds (1e-6 drifts
+  /// 0.1 mm at rest); it saves about 10 % of a step. 0 always runs every iteration.
+  double solver_residual_threshold = 3e-7;
+};
+
+/// The ego robot's measured state.
+struct RobotState {
+  /// Reference point (axle middle) projected on the ground, and heading of the chassis.
+  Pose2 pose;
+  /// Height of the axle middle above the ground, m (the wheel radius when resting).
+  double axle_height_m = 0.0;
+  /// Angle between the chassis' up axis and the world's, rad.
+  double tilt_rad = 0.0;
+  /// Forward speed of the reference point along the heading and yaw rate.
+  Twist twist;
+  /// Wheel joint speeds; positive drives forward.
+  WheelSpeeds wheels;
+  /// False if Bullet put the robot to sleep (it must never happen: sleeping is disabled).
+  bool awake = true;
+};
+
+class DynamicsWorld {
+ public:
+  /// Builds the world with the ego robot at `start` (not necessarily scenario.start). Copies
+  /// what it needs; keeps no reference to `scenario`. Throws Error on non-positive sizes,
+  /// masses or time step.
+  DynamicsWorld(const Scenario& scenario, const Pose2& start, const SimModelDef& model = {});
+  ~DynamicsWorld();
+
+  DynamicsWorld(const DynamicsWorld&) = delete;
+  DynamicsWorld& operator=(const DynamicsWorld&) = delete;
+
+  /// Velocity targets of the two wheel motors, held until changed. The motors reach them as
+  /// fast as the torque limit (PhysicsDef::max_wheel_torque_nm) and ground friction allow.
+  void setWheelTargets(const WheelSpeeds& targets);
+  const WheelSpeeds& wheelTargets() const;
+
+  /// Advances by one fixed step (PhysicsDef::time_step_s).
+  void step();
+
+  double timeStep() const;
+  /// Simulated time since construction: steps() * timeStep(), s.
+  double time() const;
+  long steps() const;
+
+  /// The robot's state after the last step (computed once per step).
+  const RobotState& robot() const;
+
+  /// Planar pose (box centre, yaw) of every obstacle, in scenario order.
+  std::vector<Pose2> obstaclePoses() const;
+  /// Planar position of obstacle `index`'s box centre (scenario order), m.
+  Eigen::Vector2d obstaclePosition(std::size_t index) const;
+  /// Height of every obstacle's box centre above the ground, m, in scenario order.
+  std::vector<double> obstacleHeights() const;
+
+  /// Indices (scenario order, ascending) of the obstacles the chassis penetrates after the
+  /// last step: contact points at negative distance, so touching within Bullet's contact
+  /// threshold without overlap does not count.
+  const std::vector<int>& chassisContacts() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace parksim

@@ -1,0 +1,38 @@
+#pragma once
+// An episode's files: executed.csv (one row per recorded step) and metrics.json (flat keys).
+// Both are written atomically; numbers round-trip exactly (%.17g, and nlohmann's shortest
+// round-trip form in JSON).
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "parksim/sim/Episode.h"
+
+namespace parksim {
+
+/// executed.csv's text. Header:
+/// t,x,y,theta,x_ref,y_ref,theta_ref,omega_left_cmd,omega_right_cmd,omega_left,omega_right,
+/// pos_err,heading_err (s, m, rad, rad/s; pos_err in m, heading_err = theta - theta_ref in rad).
+std::string executedCsv(const std::vector<ExecutedRow>& rows);
+
+/// Writes executedCsv(rows) to `path`. Throws Error.
+void writeExecutedCsv(const std::string& path, const std::vector<ExecutedRow>& rows);
+
+/// metrics.json's content, flat: every value is a number, a boolean or a string, except
+/// contact_bodies (a list of names, in the order they were first touched). Parked robots get
+/// one key each, parked_displacement_m.<name>. Keys are listed in docs/simulation.md.
+nlohmann::json metricsToJson(const EpisodeMetrics& metrics);
+
+/// The metrics a TrackingTolerance checks, read back from metricsToJson's keys. Throws Error
+/// naming a missing or mistyped key.
+EpisodeMetrics metricsFromJson(const nlohmann::json& json);
+
+/// Writes `json` (pretty-printed, two-space indent, trailing newline). Throws Error.
+void writeJsonFile(const std::string& path, const nlohmann::json& json);
+
+/// Reads a JSON file. Throws Error naming the file.
+nlohmann::json readJsonFile(const std::string& path);
+
+}  // namespace parksim

@@ -1,0 +1,381 @@
+#include "parksim/sim/FastMultiBodySolver.h"
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include <BulletDynamics/ConstraintSolver/btSolverBody.h>
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+#include <BulletDynamics/Featherstone/btMultiBodySolverConstraint.h>
+
+namespace parksim {
+
+namespace {
+
+// A transcription of btMultiBodyConstraintSolver::solveSingleIteration and the two row
+// solvers it calls (Bullet 3.24, src/BulletDynamics/Featherstone/btMultiBodyConstraintSolver.cpp)
+// for DIRECTLY_UPDATE_VELOCITY_DURING_SOLVER_ITERATIONS (set in Bullet's header). Every float
+// operation is Bullet's, in Bullet's order: the dot products accumulate sequentially from
+// zero, and nothing here may be reassociated (no -ffast-math). What differs is only how the
+// work is dispatched: the rows are solved inline, and a frictionless contact's friction pair is
+// skipped (see solveConePair).
+class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
+ public:
+  explicit FastMultiBodySolver(bool pairwise) : pairwise_(pairwise) {}
+
+ protected:
+  // Bullet's setup, then the one non-zero Jacobian entry of each non-contact row (a joint
+  // motor acts on its own joint's velocity only).
+  btScalar solveGroupCacheFriendlySetup(btCollisionObject** bodies, int numBodies,
+                                        btPersistentManifold** manifoldPtr, int numManifolds,
+                                        btTypedConstraint** constraints, int numConstraints,
+                                        const btContactSolverInfo& infoGlobal,
+                                        btIDebugDraw* debugDrawer) override {
+    const btScalar result = btMultiBodyConstraintSolver::solveGroupCacheFriendlySetup(
+        bodies, numBodies, manifoldPtr, numManifolds, constraints, numConstraints, infoGlobal,
+        debugDrawer);
+    single_entry_.resize(static_cast<std::size_t>(m_multiBodyNonContactConstraints.size()));
+    for (int j = 0; j < m_multiBodyNonContactConstraints.size(); ++j) {
+      single_entry_[static_cast<std::size_t>(j)] =
+          singleNonZero(m_multiBodyNonContactConstraints[j]);
+    }
+    return result;
+  }
+
+  btScalar solveSingleIteration(int iteration, btCollisionObject** bodies, int numBodies,
+                                btPersistentManifold** manifoldPtr, int numManifolds,
+                                btTypedConstraint** constraints, int numConstraints,
+                                const btContactSolverInfo& infoGlobal,
+                                btIDebugDraw* debugDrawer) override {
+    btScalar leastSquaredResidual = btSequentialImpulseConstraintSolver::solveSingleIteration(
+        iteration, bodies, numBodies, manifoldPtr, numManifolds, constraints, numConstraints,
+        infoGlobal, debugDrawer);
+
+    btScalar nonContactResidual = 0;
+    for (int i = 0; i < infoGlobal.m_numNonContactInnerIterations; ++i) {
+      nonContactResidual = 0;
+      const int n = m_multiBodyNonContactConstraints.size();
+      for (int j = 0; j < n; j++) {
+        const int index = iteration & 1 ? j : n - 1 - j;
+        const btMultiBodySolverConstraint& constraint = m_multiBodyNonContactConstraints[index];
+        const btScalar residual =
+            solveRow(constraint, single_entry_[static_cast<std::size_t>(index)]);
+        nonContactResidual = btMax(nonContactResidual, residual * residual);
+        markMoved(constraint);
+      }
+    }
+    leastSquaredResidual = btMax(leastSquaredResidual, nonContactResidual);
+
+    for (int j0 = 0; j0 < m_multiBodyNormalContactConstraints.size(); j0++) {
+      const btMultiBodySolverConstraint& constraint = m_multiBodyNormalContactConstraints[j0];
+      btScalar residual = 0.f;
+      if (iteration < infoGlobal.m_numIterations) residual = solveRow(constraint);
+      leastSquaredResidual = btMax(leastSquaredResidual, residual * residual);
+      markMoved(constraint);
+    }
+
+    const bool cone = (infoGlobal.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) &&
+                      (infoGlobal.m_solverMode & SOLVER_DISABLE_IMPLICIT_CONE_FRICTION) == 0;
+    if (!cone) {
+      for (int j1 = 0; j1 < m_multiBodyFrictionContactConstraints.size(); j1++) {
+        if (iteration < infoGlobal.m_numIterations) {
+          btMultiBodySolverConstraint& frictionConstraint =
+              m_multiBodyFrictionContactConstraints[j1];
+          const btScalar totalImpulse =
+              m_multiBodyNormalContactConstraints[frictionConstraint.m_frictionIndex]
+                  .m_appliedImpulse;
+          if (totalImpulse > btScalar(0)) {
+            frictionConstraint.m_lowerLimit = -(frictionConstraint.m_friction * totalImpulse);
+            frictionConstraint.m_upperLimit = frictionConstraint.m_friction * totalImpulse;
+            const btScalar residual = solveRow(frictionConstraint);
+            leastSquaredResidual = btMax(leastSquaredResidual, residual * residual);
+            markMoved(frictionConstraint);
+          }
+        }
+      }
+      return leastSquaredResidual;
+    }
+
+    // Spinning and torsional friction exist only with rolling or spinning friction, which
+    // parksim does not use; they keep Bullet's own row solvers.
+    for (int j1 = 0; j1 < m_multiBodySpinningFrictionContactConstraints.size(); j1++) {
+      if (iteration < infoGlobal.m_numIterations) {
+        btMultiBodySolverConstraint& frictionConstraint =
+            m_multiBodySpinningFrictionContactConstraints[j1];
+        const btScalar totalImpulse =
+            m_multiBodyNormalContactConstraints[frictionConstraint.m_frictionIndex]
+                .m_appliedImpulse;
+        if (totalImpulse > btScalar(0)) {
+          frictionConstraint.m_lowerLimit = -(frictionConstraint.m_friction * totalImpulse);
+          frictionConstraint.m_upperLimit = frictionConstraint.m_friction * totalImpulse;
+          const btScalar residual = resolveSingleConstraintRowGeneric(frictionConstraint);
+          leastSquaredResidual = btMax(leastSquaredResidual, residual * residual);
+          markMoved(frictionConstraint);
+        }
+      }
+    }
+    for (int j1 = 0; j1 < m_multiBodyTorsionalFrictionContactConstraints.size(); j1++) {
+      if (iteration < infoGlobal.m_numIterations) {
+        btMultiBodySolverConstraint& frictionConstraint =
+            m_multiBodyTorsionalFrictionContactConstraints[j1];
+        const btScalar totalImpulse =
+            m_multiBodyNormalContactConstraints[frictionConstraint.m_frictionIndex]
+                .m_appliedImpulse;
+        j1++;
+        btMultiBodySolverConstraint& frictionConstraintB =
+            m_multiBodyTorsionalFrictionContactConstraints[j1];
+        if (totalImpulse > btScalar(0) &&
+            frictionConstraint.m_frictionIndex == frictionConstraintB.m_frictionIndex) {
+          setLimits(frictionConstraint, totalImpulse);
+          setLimits(frictionConstraintB, totalImpulse);
+          const btScalar residual =
+              resolveConeFrictionConstraintRows(frictionConstraint, frictionConstraintB);
+          leastSquaredResidual = btMax(leastSquaredResidual, residual * residual);
+          markMoved(frictionConstraint);
+          markMoved(frictionConstraintB);
+        }
+      }
+    }
+
+    for (int j1 = 0; j1 < m_multiBodyFrictionContactConstraints.size(); j1++) {
+      if (iteration < infoGlobal.m_numIterations) {
+        btMultiBodySolverConstraint& frictionConstraint = m_multiBodyFrictionContactConstraints[j1];
+        const btScalar totalImpulse =
+            m_multiBodyNormalContactConstraints[frictionConstraint.m_frictionIndex]
+                .m_appliedImpulse;
+        j1++;
+        btMultiBodySolverConstraint& frictionConstraintB =
+            m_multiBodyFrictionContactConstraints[j1];
+        if (frictionConstraint.m_frictionIndex == frictionConstraintB.m_frictionIndex) {
+          setLimits(frictionConstraint, totalImpulse);
+          setLimits(frictionConstraintB, totalImpulse);
+          const btScalar residual = solveConePair(frictionConstraint, frictionConstraintB);
+          leastSquaredResidual = btMax(leastSquaredResidual, residual * residual);
+          markMoved(frictionConstraintB);
+          markMoved(frictionConstraint);
+        }
+      }
+    }
+    return leastSquaredResidual;
+  }
+
+ private:
+  // Velocity components of the ego robot: 6 for the free base, one per wheel joint (the
+  // slider's link is fixed). Other sizes take the general loops.
+  static constexpr int kRobotDofs = 8;
+
+  bool pairwise_ = false;
+  std::vector<int> single_entry_;  // per non-contact row: singleNonZero
+
+  // Index of the only non-zero Jacobian entry of a row on one multibody (side A), or -1.
+  int singleNonZero(const btMultiBodySolverConstraint& c) const {
+    if (!c.m_multiBodyA || c.m_multiBodyB || c.m_solverBodyIdB >= 0) return -1;
+    const int ndof = c.m_multiBodyA->getNumDofs() + 6;
+    int found = -1;
+    for (int i = 0; i < ndof; ++i) {
+      if (m_data.m_jacobians[c.m_jacAindex + i] == btScalar(0)) continue;
+      if (found >= 0) return -1;
+      found = i;
+    }
+    return found;
+  }
+
+  static void setLimits(btMultiBodySolverConstraint& c, btScalar totalImpulse) {
+    c.m_lowerLimit = -(c.m_friction * totalImpulse);
+    c.m_upperLimit = c.m_friction * totalImpulse;
+  }
+
+  static void markMoved(const btMultiBodySolverConstraint& c) {
+    if (c.m_multiBodyA) c.m_multiBodyA->setPosUpdated(false);
+    if (c.m_multiBodyB) c.m_multiBodyB->setPosUpdated(false);
+  }
+
+  // Sequential dot product of a row's Jacobian with the accumulated velocity change, as
+  // Bullet's loop computes it. With the size known at compile time (kRobotDofs) the loop is
+  // unrolled; a run-time size costs several times more in loop and alias checks.
+  template <int N>
+  static btScalar dotFixed(const btScalar* jac, const btScalar* vel) {
+    btScalar sum = 0;
+    for (int i = 0; i < N; ++i) sum += jac[i] * vel[i];
+    return sum;
+  }
+
+  // The same products summed as two 4-lane halves, then the lanes pairwise: three dependent
+  // additions instead of eight.
+  static btScalar dotPairwise8(const btScalar* jac, const btScalar* vel) {
+    btScalar p[8];
+    for (int i = 0; i < 8; ++i) p[i] = jac[i] * vel[i];
+    const btScalar c0 = p[0] + p[4], c1 = p[1] + p[5], c2 = p[2] + p[6], c3 = p[3] + p[7];
+    return (c0 + c2) + (c1 + c3);
+  }
+
+  btScalar dot(int jac_index, int vel_index, int ndof) const {
+    const btScalar* jac = &m_data.m_jacobians[jac_index];
+    const btScalar* vel = &m_data.m_deltaVelocities[vel_index];
+    if (ndof == kRobotDofs) {
+      return pairwise_ ? dotPairwise8(jac, vel) : dotFixed<kRobotDofs>(jac, vel);
+    }
+    btScalar sum = 0;
+    for (int i = 0; i < ndof; ++i) sum += jac[i] * vel[i];
+    return sum;
+  }
+
+  // The unclamped impulse change of a row: Bullet's deltaImpulse before the limits.
+  // `single` >= 0: the row's only non-zero Jacobian entry on side A. Summing that one product
+  // onto zero gives Bullet's sum exactly: the other products are zeros (for finite
+  // velocities), and adding a zero to a sum that started at +0 changes neither its value nor,
+  // since a round-to-nearest sum of zero is +0, its sign.
+  btScalar unclampedDelta(const btMultiBodySolverConstraint& c, int& ndofA, int& ndofB,
+                          btSolverBody*& bodyA, btSolverBody*& bodyB, int single = -1) {
+    btScalar deltaImpulse = c.m_rhs - btScalar(c.m_appliedImpulse) * c.m_cfm;
+    btScalar deltaVelADotn = 0;
+    btScalar deltaVelBDotn = 0;
+    if (c.m_multiBodyA) {
+      ndofA = c.m_multiBodyA->getNumDofs() + 6;
+      if (single >= 0) {
+        deltaVelADotn += m_data.m_jacobians[c.m_jacAindex + single] *
+                         m_data.m_deltaVelocities[c.m_deltaVelAindex + single];
+      } else {
+        deltaVelADotn += dot(c.m_jacAindex, c.m_deltaVelAindex, ndofA);
+      }
+    } else if (c.m_solverBodyIdA >= 0) {
+      bodyA = &m_tmpSolverBodyPool[c.m_solverBodyIdA];
+      deltaVelADotn += c.m_contactNormal1.dot(bodyA->internalGetDeltaLinearVelocity()) +
+                       c.m_relpos1CrossNormal.dot(bodyA->internalGetDeltaAngularVelocity());
+    }
+    if (c.m_multiBodyB) {
+      ndofB = c.m_multiBodyB->getNumDofs() + 6;
+      deltaVelBDotn += dot(c.m_jacBindex, c.m_deltaVelBindex, ndofB);
+    } else if (c.m_solverBodyIdB >= 0) {
+      bodyB = &m_tmpSolverBodyPool[c.m_solverBodyIdB];
+      deltaVelBDotn += c.m_contactNormal2.dot(bodyB->internalGetDeltaLinearVelocity()) +
+                       c.m_relpos2CrossNormal.dot(bodyB->internalGetDeltaAngularVelocity());
+    }
+    deltaImpulse -= deltaVelADotn * c.m_jacDiagABInv;
+    deltaImpulse -= deltaVelBDotn * c.m_jacDiagABInv;
+    return deltaImpulse;
+  }
+
+  template <int N>
+  static void axpyFixed(const btScalar* unit, btScalar impulse, btScalar* __restrict vel,
+                        btScalar* __restrict body_vel) {
+    for (int i = 0; i < N; ++i) vel[i] += unit[i] * impulse;
+    for (int i = 0; i < N; ++i) body_vel[i] += unit[i] * impulse;
+  }
+
+  // Bullet's applyDeltaVee followed by btMultiBody::applyDeltaVeeMultiDof2: the solver's
+  // accumulated velocity change and the body's own (its delta-velocity vector, which Bullet
+  // only exposes read-only; the body is not const, so writing through it is what
+  // applyDeltaVeeMultiDof2 does).
+  void applyToMultiBody(btMultiBody* body, int jac_index, int vel_index, int ndof,
+                        btScalar impulse) {
+    const btScalar* unit = &m_data.m_deltaVelocitiesUnitImpulse[jac_index];
+    btScalar* vel = &m_data.m_deltaVelocities[vel_index];
+    if (ndof == kRobotDofs) {
+      axpyFixed<kRobotDofs>(unit, impulse, vel,
+                            const_cast<btScalar*>(body->getDeltaVelocityVector()));
+      return;
+    }
+    for (int i = 0; i < ndof; ++i) vel[i] += unit[i] * impulse;
+    body->applyDeltaVeeMultiDof2(unit, impulse);
+  }
+
+  void apply(const btMultiBodySolverConstraint& c, btScalar impulse, int ndofA, int ndofB,
+             btSolverBody* bodyA, btSolverBody* bodyB) {
+    if (c.m_multiBodyA) {
+      applyToMultiBody(c.m_multiBodyA, c.m_jacAindex, c.m_deltaVelAindex, ndofA, impulse);
+    } else if (c.m_solverBodyIdA >= 0) {
+      bodyA->internalApplyImpulse(c.m_contactNormal1 * bodyA->internalGetInvMass(),
+                                  c.m_angularComponentA, impulse);
+    }
+    if (c.m_multiBodyB) {
+      applyToMultiBody(c.m_multiBodyB, c.m_jacBindex, c.m_deltaVelBindex, ndofB, impulse);
+    } else if (c.m_solverBodyIdB >= 0) {
+      bodyB->internalApplyImpulse(c.m_contactNormal2 * bodyB->internalGetInvMass(),
+                                  c.m_angularComponentB, impulse);
+    }
+  }
+
+  // resolveSingleConstraintRowGeneric.
+  btScalar solveRow(const btMultiBodySolverConstraint& c, int single = -1) {
+    int ndofA = 0;
+    int ndofB = 0;
+    btSolverBody* bodyA = nullptr;
+    btSolverBody* bodyB = nullptr;
+    btScalar deltaImpulse = unclampedDelta(c, ndofA, ndofB, bodyA, bodyB, single);
+    const btScalar sum = btScalar(c.m_appliedImpulse) + deltaImpulse;
+    if (sum < c.m_lowerLimit) {
+      deltaImpulse = c.m_lowerLimit - c.m_appliedImpulse;
+      c.m_appliedImpulse = c.m_lowerLimit;
+    } else if (sum > c.m_upperLimit) {
+      deltaImpulse = c.m_upperLimit - c.m_appliedImpulse;
+      c.m_appliedImpulse = c.m_upperLimit;
+    } else {
+      c.m_appliedImpulse = sum;
+    }
+    apply(c, deltaImpulse, ndofA, ndofB, bodyA, bodyB);
+    return deltaImpulse / c.m_jacDiagABInv;
+  }
+
+  // resolveConeFrictionConstraintRows, except for a pair whose friction cone has radius zero
+  // (no friction, as the slider's, or no normal impulse, as a contact at positive distance)
+  // and that carries no impulse yet: Bullet clamps both sums into the zero cone, leaving both
+  // impulses at zero, applies changes of zero (an atan2, a sin and a cos later) and reports a
+  // zero residual. Skipping the pair leaves the same state (up to the sign of an exact zero).
+  btScalar solveConePair(const btMultiBodySolverConstraint& cA,
+                         const btMultiBodySolverConstraint& cB) {
+    if (cA.m_lowerLimit == btScalar(0) && cB.m_lowerLimit == btScalar(0) &&
+        btScalar(cA.m_appliedImpulse) == btScalar(0) &&
+        btScalar(cB.m_appliedImpulse) == btScalar(0)) {
+      return 0;
+    }
+    int ndofA = 0;
+    int ndofB = 0;
+    btSolverBody* bodyA = nullptr;
+    btSolverBody* bodyB = nullptr;
+    // Bullet computes B's row first, then A's, both before applying either.
+    btScalar deltaImpulseB = unclampedDelta(cB, ndofA, ndofB, bodyA, bodyB);
+    const btScalar sumB = btScalar(cB.m_appliedImpulse) + deltaImpulseB;
+    btScalar deltaImpulseA = unclampedDelta(cA, ndofA, ndofB, bodyA, bodyB);
+    const btScalar sumA = btScalar(cA.m_appliedImpulse) + deltaImpulseA;
+
+    if (sumA * sumA + sumB * sumB >= cA.m_lowerLimit * cB.m_lowerLimit) {
+      const btScalar angle = btAtan2(sumA, sumB);
+      const btScalar sumAclipped = btFabs(cA.m_lowerLimit * btSin(angle));
+      const btScalar sumBclipped = btFabs(cB.m_lowerLimit * btCos(angle));
+      if (sumA < -sumAclipped) {
+        deltaImpulseA = -sumAclipped - cA.m_appliedImpulse;
+        cA.m_appliedImpulse = -sumAclipped;
+      } else if (sumA > sumAclipped) {
+        deltaImpulseA = sumAclipped - cA.m_appliedImpulse;
+        cA.m_appliedImpulse = sumAclipped;
+      } else {
+        cA.m_appliedImpulse = sumA;
+      }
+      if (sumB < -sumBclipped) {
+        deltaImpulseB = -sumBclipped - cB.m_appliedImpulse;
+        cB.m_appliedImpulse = -sumBclipped;
+      } else if (sumB > sumBclipped) {
+        deltaImpulseB = sumBclipped - cB.m_appliedImpulse;
+        cB.m_appliedImpulse = sumBclipped;
+      } else {
+        cB.m_appliedImpulse = sumB;
+      }
+    } else {
+      cA.m_appliedImpulse = sumA;
+      cB.m_appliedImpulse = sumB;
+    }
+    apply(cA, deltaImpulseA, ndofA, ndofB, bodyA, bodyB);
+    apply(cB, deltaImpulseB, ndofA, ndofB, bodyA, bodyB);
+    return deltaImpulseA / cA.m_jacDiagABInv + deltaImpulseB / cB.m_jacDiagABInv;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<btMultiBodyConstraintSolver> makeFastMultiBodySolver(bool pairwise_dots) {
+  return std::make_unique<FastMultiBodySolver>(pairwise_dots);
+}
+
+}  // namespace parksim

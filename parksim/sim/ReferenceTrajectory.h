@@ -1,0 +1,41 @@
+#pragma once
+// The plan as a function of time, exactly as the planner defines it: each point's wheel speeds
+// are held from its time until the next point's, and the pose in between is their exact
+// integral (integrateExact) from the point's pose. Before the first point the reference is the
+// first pose; after the last, the last pose with zero speeds.
+
+#include "parksim/core/DiffDrive.h"
+#include "parksim/core/Pose2.h"
+#include "parksim/core/RobotDef.h"
+#include "parksim/core/Trajectory.h"
+
+namespace parksim {
+
+class ReferenceTrajectory {
+ public:
+  /// Keeps a copy of `plan`. Throws Error when it is empty or its times do not increase.
+  ReferenceTrajectory(const Trajectory& plan, const RobotDef& robot);
+
+  /// Time of the first and last point, s (the plan's clock).
+  double startTime() const;
+  double endTime() const;
+
+  /// Pose at plan time t_s.
+  Pose2 poseAt(double t_s) const;
+  /// Wheel speeds held at plan time t_s (zero outside the plan).
+  WheelSpeeds wheelsAt(double t_s) const;
+  /// Body twist held at plan time t_s.
+  Twist twistAt(double t_s) const;
+
+  const Trajectory& plan() const { return plan_; }
+
+ private:
+  /// Index of the point whose period contains t_s, or -1 before the start, or the last index
+  /// at or after the end.
+  long segmentAt(double t_s) const;
+
+  Trajectory plan_;
+  RobotDef robot_;
+};
+
+}  // namespace parksim
