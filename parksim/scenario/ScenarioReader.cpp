@@ -12,6 +12,7 @@
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
+#include "parksim/scenario/RealismSections.h"
 #include "parksim/scenario/YamlField.h"
 
 namespace parksim {
@@ -251,7 +252,9 @@ Scenario parseScenario(std::string_view yaml_text, const std::string& source_nam
   const YamlMap top(root);
   readFormat(top.required("format"));
   top.rejectUnknownKeys(
-      {"format", "name", "lot", "robot", "obstacles", "parked_robots", "start", "goal", "physics"});
+      {"format", "name", "lot", "robot", "obstacles", "parked_robots", "start", "goal", "physics",
+       "realism", "tolerance"});
+  readRealismSections(top);  // validated here, read by loadWorldRealism (scenario/RealismReader.h)
 
   Scenario s;
   s.source_path = source_name;
