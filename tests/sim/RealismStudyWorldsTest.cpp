@@ -187,6 +187,31 @@ TEST_P(RealismWorlds, ParkedRobotsFarAwayChangeNothing) {
   EXPECT_EQ(b.max_parked_displacement_m, a.max_parked_displacement_m);
 }
 
+// In a world with more parked robots than SimModelDef::parked_lazy_count, they enter Bullet only
+// when the robot comes near: one in the robot's path is still hit, named, and pushed.
+TEST(LazyParkedRobots, ARobotInThePathIsStillHitAndPushedAmongMany) {
+  Scenario s = testing::emptyLot({0.5, 0.5, 0.0});
+  s.lot = {0.0, 0.0, 40.0, 40.0};
+  for (int i = 0; i < 100; ++i) {
+    testing::addParkedRobot(s, "far_" + std::to_string(i),
+                            {10.0 + 0.3 * (i % 10), 10.0 + 0.3 * (i / 10), 0.0});
+  }
+  ASSERT_GT(s.obstacles.size(), SimModelDef{}.parked_lazy_count);
+  // 0.6 m ahead: inserted only once the robot has driven ~0.25 m.
+  testing::addParkedRobot(s, "robot_ahead", {0.5 + 0.6, 0.5, 0.0});
+  const Trajectory plan = testing::planFromSegments(
+      s.start, testing::rampedSegments({5.0, 5.0}, 6.5, s.robot), s.robot);
+  const EpisodeMetrics m = runEpisode(s, plan).metrics;
+  ASSERT_GE(m.contacts, 1);
+  EXPECT_EQ(m.first_contact_body, "robot_ahead");
+  EXPECT_GT(m.max_parked_displacement_m, 0.002);
+  for (const ParkedRobotDisplacement& p : m.parked) {
+    if (p.name != "robot_ahead") {
+      EXPECT_EQ(p.max_m, 0.0) << p.name;
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Sim, RealismWorlds, ::testing::Values("head_in", "parallel"));
 
 }  // namespace
