@@ -30,6 +30,7 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/Provenance.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/planner/TreePlanner.h"
 #include "parksim/scenario/ScenarioReader.h"
@@ -205,7 +206,8 @@ int runBench(const BenchOptions& o) {
   bench::writeBenchCsv(csv_path, all);
 
   const std::vector<bench::GroupSummary> groups = bench::summarize(all);
-  std::string summary = "## Runs\n\n" + bench::formatSummaryTable(groups);
+  std::string summary = "Built by " + versionLine(buildProvenance()) + ".\n\n## Runs\n\n" +
+                        bench::formatSummaryTable(groups);
   summary += "\n## Where parksim's planners spend their time (mean per run)\n\n" +
              bench::formatPhaseTable(groups);
   const std::string comparison = bench::formatComparison(groups);
@@ -238,7 +240,8 @@ int runBench(const BenchOptions& o) {
       info.experiment = "parksim_" + scenarios[w].name;
       info.host = hostName();
       info.start_time = start_time;
-      info.setup = "world " + scenarios[w].source_path + "\n" + settingsText(o) + "\n";
+      info.setup = "world " + scenarios[w].source_path + "\n" + settingsText(o) + "\n" +
+                   versionLine(buildProvenance()) + "\n";
       info.cpu_info = cpuInfo();
       info.time_limit_s = o.ompl ? std::max(o.budget_s, o.anytime_s) : o.anytime_s;
       info.runs_per_planner = o.seeds;

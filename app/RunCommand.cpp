@@ -17,6 +17,7 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/Provenance.h"
 #include "parksim/renders/Figures.h"
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/scenario/ScenarioReader.h"
@@ -37,7 +38,7 @@ void removeIfPresent(const std::string& path) {
 // Arrays (the RRT* cost history) stay in plan.json: metrics.json is flat.
 void addPlanKeys(nlohmann::json& metrics, const nlohmann::json& summary) {
   for (const auto& [key, value] : summary.items()) {
-    if (value.is_array()) continue;
+    if (value.is_array() || key == "provenance") continue;
     if (value.is_object()) {
       for (const auto& [sub, inner] : value.items()) metrics["plan_" + key + "." + sub] = inner;
     } else {
@@ -217,6 +218,10 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     const EpisodeMetrics& m = episode.metrics;
     writeExecutedCsv(dir + "/executed.csv", episode.rows);
     nlohmann::json metrics = metricsToJson(m);
+    const nlohmann::json provenance = provenanceToJson(buildProvenance());
+    for (const auto& [key, value] : provenance.items()) {
+      metrics["provenance." + key] = value;
+    }
     metrics["world"] = scenario.source_path;
     metrics["scenario"] = scenario.name;
     addPlanKeys(metrics, plan_summary);

@@ -19,9 +19,14 @@
 
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
+#include "parksim/core/ProvenanceConfig.h"
 #include "parksim/sim/FastMultiBodySolver.h"
 
 namespace parksim {
+
+// Result files record Bullet's precision (parksim/core/Provenance.h); it must be the one compiled.
+static_assert(sizeof(btScalar) == (PARKSIM_BULLET_DOUBLE ? sizeof(double) : sizeof(float)),
+              "cmake/Provenance.cmake and Bullet's headers disagree on BT_USE_DOUBLE_PRECISION");
 
 namespace {
 

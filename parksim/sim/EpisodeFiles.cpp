@@ -102,6 +102,13 @@ EpisodeMetrics metricsFromJson(const nlohmann::json& j) {
   return m;
 }
 
+nlohmann::json provenanceToJson(const Provenance& p) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [key, value] : provenanceFields(p)) j[key] = value;
+  j["git_dirty"] = p.git_dirty;
+  return j;
+}
+
 void writeJsonFile(const std::string& path, const nlohmann::json& json) {
   writeFileAtomically(path, json.dump(2) + "\n");
 }

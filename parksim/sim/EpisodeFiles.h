@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "parksim/core/Provenance.h"
 #include "parksim/sim/Episode.h"
 
 namespace parksim {
@@ -28,6 +29,10 @@ nlohmann::json metricsToJson(const EpisodeMetrics& metrics);
 /// The metrics a TrackingTolerance checks, read back from metricsToJson's keys. Throws Error
 /// naming a missing or mistyped key.
 EpisodeMetrics metricsFromJson(const nlohmann::json& json);
+
+/// The provenance as a JSON object (keys of provenanceFields; git_dirty a boolean), the
+/// "provenance" entry of plan.json.
+nlohmann::json provenanceToJson(const Provenance& provenance);
 
 /// Writes `json` (pretty-printed, two-space indent, trailing newline). Throws Error.
 void writeJsonFile(const std::string& path, const nlohmann::json& json);
