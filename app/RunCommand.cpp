@@ -17,6 +17,7 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 #include "parksim/core/Provenance.h"
 #include "parksim/renders/Figures.h"
 #include "parksim/renders/FrameRecorder.h"
@@ -68,34 +69,27 @@ Trajectory loadPlanFile(const std::string& path, const Scenario& scenario) {
   const Pose2& first = plan.points.front().pose;
   if (positionDistance(first, scenario.start) > 0.001 ||
       headingDistance(first, scenario.start) > degToRad(0.5)) {
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "%s: the plan starts at (%.4f, %.4f, %.2f deg), not at the world's start "
-                  "(%.4f, %.4f, %.2f deg)",
-                  path.c_str(), first.x, first.y, radToDeg(first.theta), scenario.start.x,
-                  scenario.start.y, radToDeg(scenario.start.theta));
-    throw Error(text);
+    auto pose = [](const Pose2& p) {
+      return "(" + formatFixed(p.x, 4) + ", " + formatFixed(p.y, 4) + ", " +
+             formatFixed(radToDeg(p.theta), 2) + " deg)";
+    };
+    throw Error(path + ": the plan starts at " + pose(first) + ", not at the world's start " +
+                pose(scenario.start));
   }
   return plan;
 }
 
 // Empty when the episode succeeded; otherwise the one line that says why.
 std::string failureReason(const Scenario& scenario, const EpisodeMetrics& m) {
-  char text[320];
   if (m.contacts > 0) {
-    std::snprintf(text, sizeof text, "touched %s at %.3f s (%d contact event%s)",
-                  m.first_contact_body.c_str(), m.first_contact_t_s, m.contacts,
-                  m.contacts == 1 ? "" : "s");
-    return text;
+    return "touched " + m.first_contact_body + " at " + formatFixed(m.first_contact_t_s, 3) +
+           " s (" + std::to_string(m.contacts) + " contact event" + (m.contacts == 1 ? ")" : "s)");
   }
   if (!m.goal_reached) {
-    std::snprintf(text, sizeof text,
-                  "goal not reached: ended %.3f mm / %.3f deg from the goal (tolerance %.3f mm / "
-                  "%.3f deg)",
-                  m.goal_pos_err_m * 1e3, m.goal_heading_err_deg,
-                  scenario.goal.position_tolerance_m * 1e3,
-                  radToDeg(scenario.goal.heading_tolerance_rad));
-    return text;
+    return "goal not reached: ended " + formatFixed(m.goal_pos_err_m * 1e3, 3) + " mm / " +
+           formatFixed(m.goal_heading_err_deg, 3) + " deg from the goal (tolerance " +
+           formatFixed(scenario.goal.position_tolerance_m * 1e3, 3) + " mm / " +
+           formatFixed(radToDeg(scenario.goal.heading_tolerance_rad), 3) + " deg)";
   }
   const std::vector<std::string> violations = checkTracking(TrackingTolerance{}, m);
   if (!violations.empty()) return "tracking tolerance not met: " + joinViolations(violations);

@@ -5,6 +5,8 @@
 #include <cstdio>
 
 #include "parksim/core/AtomicFile.h"
+#include "parksim/core/Csv.h"
+#include "parksim/core/NumberFormat.h"
 
 namespace parksim::bench {
 namespace {
@@ -43,23 +45,13 @@ std::vector<std::string> phaseNames(const std::vector<BenchRecord>& records) {
 
 std::string number(double v) {
   if (std::isnan(v)) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
+  return formatGeneral(v, 9);
 }
 
 std::string count(long v) { return v < 0 ? "" : std::to_string(v); }
 
 // Text fields are names chosen by parksim and OMPL; quote them anyway if they ever hold a comma.
-std::string text(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string quoted = "\"";
-  for (char c : s) {
-    if (c == '"') quoted += '"';
-    quoted += c;
-  }
-  return quoted + "\"";
-}
+std::string text(const std::string& s) { return csvField(s); }
 
 }  // namespace
 

@@ -1,12 +1,13 @@
 #include "parksim/sim/EpisodeFiles.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 
 namespace parksim {
 
@@ -15,14 +16,25 @@ std::string executedCsv(const std::vector<ExecutedRow>& rows) {
       "t,x,y,theta,x_ref,y_ref,theta_ref,omega_left_cmd,omega_right_cmd,omega_left,omega_right,"
       "pos_err,heading_err\n";
   out.reserve(out.size() + rows.size() * 300);
-  char line[640];
   for (const ExecutedRow& r : rows) {
-    std::snprintf(line, sizeof line,
-                  "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
-                  r.t_s, r.pose.x, r.pose.y, r.pose.theta, r.reference.x, r.reference.y,
-                  r.reference.theta, r.wheels_cmd.left_radps, r.wheels_cmd.right_radps,
-                  r.wheels.left_radps, r.wheels.right_radps, r.pos_err_m, r.heading_err_rad);
-    out += line;
+    const double values[] = {r.t_s,
+                             r.pose.x,
+                             r.pose.y,
+                             r.pose.theta,
+                             r.reference.x,
+                             r.reference.y,
+                             r.reference.theta,
+                             r.wheels_cmd.left_radps,
+                             r.wheels_cmd.right_radps,
+                             r.wheels.left_radps,
+                             r.wheels.right_radps,
+                             r.pos_err_m,
+                             r.heading_err_rad};
+    for (std::size_t i = 0; i < std::size(values); ++i) {
+      if (i > 0) out += ',';
+      appendShortest(out, values[i]);
+    }
+    out += '\n';
   }
   return out;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // An episode's files: executed.csv (one row per recorded step) and metrics.json (flat keys).
-// Both are written atomically; numbers round-trip exactly (%.17g, and nlohmann's shortest
-// round-trip form in JSON).
+// Both are written atomically; numbers round-trip exactly (shortest round-trip form, written
+// with std::to_chars in CSV and by nlohmann in JSON, whatever the locale).
 
 #include <string>
 #include <vector>
