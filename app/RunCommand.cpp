@@ -18,6 +18,8 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
+#include "parksim/core/Provenance.h"
 #include "parksim/renders/Figures.h"
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/scenario/RealismReader.h"
@@ -40,7 +42,7 @@ void removeIfPresent(const std::string& path) {
 // Arrays (the RRT* cost history) stay in plan.json: metrics.json is flat.
 void addPlanKeys(nlohmann::json& metrics, const nlohmann::json& summary) {
   for (const auto& [key, value] : summary.items()) {
-    if (value.is_array()) continue;
+    if (value.is_array() || key == "provenance") continue;
     if (value.is_object()) {
       for (const auto& [sub, inner] : value.items()) metrics["plan_" + key + "." + sub] = inner;
     } else {
@@ -70,13 +72,12 @@ Trajectory loadPlanFile(const std::string& path, const Scenario& scenario) {
   const Pose2& first = plan.points.front().pose;
   if (positionDistance(first, scenario.start) > 0.001 ||
       headingDistance(first, scenario.start) > degToRad(0.5)) {
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "%s: the plan starts at (%.4f, %.4f, %.2f deg), not at the world's start "
-                  "(%.4f, %.4f, %.2f deg)",
-                  path.c_str(), first.x, first.y, radToDeg(first.theta), scenario.start.x,
-                  scenario.start.y, radToDeg(scenario.start.theta));
-    throw Error(text);
+    auto pose = [](const Pose2& p) {
+      return "(" + formatFixed(p.x, 4) + ", " + formatFixed(p.y, 4) + ", " +
+             formatFixed(radToDeg(p.theta), 2) + " deg)";
+    };
+    throw Error(path + ": the plan starts at " + pose(first) + ", not at the world's start " +
+                pose(scenario.start));
   }
   return plan;
 }
@@ -84,21 +85,15 @@ Trajectory loadPlanFile(const std::string& path, const Scenario& scenario) {
 // Empty when the episode succeeded; otherwise the one line that says why.
 std::string failureReason(const Scenario& scenario, const EpisodeMetrics& m,
                           const TrackingTolerance& tolerance) {
-  char text[320];
   if (m.contacts > 0) {
-    std::snprintf(text, sizeof text, "touched %s at %.3f s (%d contact event%s)",
-                  m.first_contact_body.c_str(), m.first_contact_t_s, m.contacts,
-                  m.contacts == 1 ? "" : "s");
-    return text;
+    return "touched " + m.first_contact_body + " at " + formatFixed(m.first_contact_t_s, 3) +
+           " s (" + std::to_string(m.contacts) + " contact event" + (m.contacts == 1 ? ")" : "s)");
   }
   if (!m.goal_reached) {
-    std::snprintf(text, sizeof text,
-                  "goal not reached: ended %.3f mm / %.3f deg from the goal (tolerance %.3f mm / "
-                  "%.3f deg)",
-                  m.goal_pos_err_m * 1e3, m.goal_heading_err_deg,
-                  scenario.goal.position_tolerance_m * 1e3,
-                  radToDeg(scenario.goal.heading_tolerance_rad));
-    return text;
+    return "goal not reached: ended " + formatFixed(m.goal_pos_err_m * 1e3, 3) + " mm / " +
+           formatFixed(m.goal_heading_err_deg, 3) + " deg from the goal (tolerance " +
+           formatFixed(scenario.goal.position_tolerance_m * 1e3, 3) + " mm / " +
+           formatFixed(radToDeg(scenario.goal.heading_tolerance_rad), 3) + " deg)";
   }
   const std::vector<std::string> violations = checkTracking(tolerance, m);
   if (!violations.empty()) return "tracking tolerance not met: " + joinViolations(violations);
@@ -261,7 +256,8 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     }
     exec.noise_seed = opt->noise_seed;
     TrackingTolerance tolerance = world_realism.tolerance;
-    if (opt->max_tracking_error_mm > 0.0) tolerance.max_pos_err_m = 1e-3 * opt->max_tracking_error_mm;
+    if (opt->max_tracking_error_mm > 0.0)
+      tolerance.max_pos_err_m = 1e-3 * opt->max_tracking_error_mm;
     if (opt->max_goal_error_mm > 0.0) tolerance.goal_pos_err_m = 1e-3 * opt->max_goal_error_mm;
     if (opt->max_goal_heading_error_deg > 0.0) {
       tolerance.goal_heading_err_deg = opt->max_goal_heading_error_deg;
@@ -333,7 +329,8 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       ExecutionDef again = exec;
       again.noise_seed = exec.noise_seed + static_cast<std::uint64_t>(i);
       const EpisodeMetrics mi = runEpisode(scenario, plan, again).metrics;
-      realisations.push_back({again.noise_seed, mi, failureReason(scenario, mi, tolerance).empty()});
+      realisations.push_back(
+          {again.noise_seed, mi, failureReason(scenario, mi, tolerance).empty()});
     }
     const bool realism_columns = exec.realism.active();
     writeExecutedCsv(dir + "/executed.csv", episode.rows, realism_columns);
@@ -341,6 +338,10 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       writeFileAtomically(dir + "/sensors.csv", sensorsCsv(episode.pose_samples, m.time_step_s));
     }
     nlohmann::json metrics = metricsToJson(m);
+    const nlohmann::json provenance = provenanceToJson(buildProvenance());
+    for (const auto& [key, value] : provenance.items()) {
+      metrics["provenance." + key] = value;
+    }
     metrics["world"] = scenario.source_path;
     metrics["scenario"] = scenario.name;
     metrics["tolerance.max_pos_err_m"] = tolerance.max_pos_err_m;
@@ -396,8 +397,8 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       }
       const auto line = [](const char* what, const std::vector<double>& v, const char* unit) {
         const Distribution d = summarize(v);
-        std::printf("  %-26s median %8.3f  p95 %8.3f  max %8.3f %s\n", what, d.median, d.p95,
-                    d.max, unit);
+        std::printf("  %-26s median %8.3f  p95 %8.3f  max %8.3f %s\n", what, d.median, d.p95, d.max,
+                    unit);
       };
       const int n = opt->realisations;
       std::printf("%d realisations (%s realism, noise seeds %llu..%llu):\n", n,
@@ -407,12 +408,14 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       line("final goal error", goal_err, "mm");
       line("max estimation error", est_err, "mm");
       line("contact events", contacts, "");
-      std::printf("  goal reached in %d of %d (%.0f %%); within the tracking tolerance in %d of %d\n",
-                  reached, n, 100.0 * reached / n, succeeded, n);
+      std::printf(
+          "  goal reached in %d of %d (%.0f %%); within the tracking tolerance in %d of %d\n",
+          reached, n, 100.0 * reached / n, succeeded, n);
       if (static_cast<double>(succeeded) < opt->min_success_fraction * n - 1e-9) {
         for (const RealisationRow& r : realisations) {
           if (r.success) continue;
-          std::fprintf(stderr, "parksim run: %d of %d realisations failed; first (noise seed %llu): %s\n",
+          std::fprintf(stderr,
+                       "parksim run: %d of %d realisations failed; first (noise seed %llu): %s\n",
                        n - succeeded, n, static_cast<unsigned long long>(r.noise_seed),
                        failureReason(scenario, r.metrics, tolerance).c_str());
           break;

@@ -5,11 +5,14 @@
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
 #include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletCollision/CollisionShapes/btCylinderShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
@@ -20,9 +23,14 @@
 
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
+#include "parksim/core/ProvenanceConfig.h"
 #include "parksim/sim/FastMultiBodySolver.h"
 
 namespace parksim {
+
+// Result files record Bullet's precision (parksim/core/Provenance.h); it must be the one compiled.
+static_assert(sizeof(btScalar) == (PARKSIM_BULLET_DOUBLE ? sizeof(double) : sizeof(float)),
+              "cmake/Provenance.cmake and Bullet's headers disagree on BT_USE_DOUBLE_PRECISION");
 
 namespace {
 
@@ -62,6 +70,28 @@ btTransform planarTransform(double x, double y, double z, double yaw) {
   tr.setOrigin(btVector3(btScalar(x), btScalar(y), btScalar(z)));
   tr.setRotation(btQuaternion(btVector3(0, 0, 1), btScalar(yaw)));
   return tr;
+}
+
+// Collision margin of round and polygonal obstacles, m. Bullet's default (4 cm) would round a
+// 5 cm bollard off entirely; the shapes are built so that their outer surface, margin
+// included, is the obstacle's exact outline (polygon corners rounded by this radius).
+constexpr double kShapeMargin_m = 0.0005;
+
+// A convex counter-clockwise polygon moved inward by `d` on every edge: its vertices, grown
+// by a margin of `d`, give back the polygon (with rounded corners).
+std::vector<Eigen::Vector2d> insetPolygon(const std::vector<Eigen::Vector2d>& poly, double d) {
+  const std::size_t n = poly.size();
+  auto outward = [&](std::size_t i) {
+    const Eigen::Vector2d e = (poly[(i + 1) % n] - poly[i]).normalized();
+    return Eigen::Vector2d(e.y(), -e.x());
+  };
+  std::vector<Eigen::Vector2d> out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d n0 = outward((i + n - 1) % n);
+    const Eigen::Vector2d n1 = outward(i);
+    out[i] = poly[i] - d * (n0 + n1) / (1.0 + n0.dot(n1));
+  }
+  return out;
 }
 
 double yawOf(const btTransform& tr) {
@@ -223,10 +253,16 @@ struct DynamicsWorld::Impl {
 
   void insertObstacle(std::size_t i) {
     const Obstacle& o = obstacles[i];
-    btBoxShape* shape = box(o.box.half_extents.x(), o.box.half_extents.y(), 0.5 * o.height_m);
+    btCollisionShape* shape = obstacleShape(o);
     const bool parked = o.kind == ObstacleKind::kParkedRobot;
+    // Obstacles no higher than the ground clearance pass under the chassis (blocksRobot);
+    // they are in the world to be seen, and collide with nothing.
+    const bool blocks = blocksRobot(o, robot);
     addFixedBody(shape, obstacleTransform(i), physics.obstacle_friction,
-                 parked ? kParkedGroup : kStaticGroup, parked ? kParkedMask : kStaticMask,
+                 parked ? kParkedGroup : kStaticGroup,
+                 !blocks  ? 0
+                 : parked ? kParkedMask
+                          : kStaticMask,
                  static_cast<int>(i));
     // addFixedBody appended it; it belongs in obstacle i's slot.
     bodies[i + 1] = std::move(bodies.back());
@@ -296,10 +332,45 @@ struct DynamicsWorld::Impl {
     if (lazy) buildGrid();
   }
 
+  // The obstacle's shape in a frame at its box centre (for circles and polygons, the centre
+  // of their bounding rectangle) with the box's yaw.
+  btCollisionShape* obstacleShape(const Obstacle& o) {
+    const double hz = 0.5 * o.height_m;
+    switch (o.shape) {
+      case ObstacleShape::kBox: break;
+      case ObstacleShape::kCircle: {
+        const auto r = btScalar(o.radius_m);
+        auto shape = std::make_unique<btCylinderShapeZ>(btVector3(r, r, btScalar(hz)));
+        // btCylinderShape keeps its outer size when the margin changes.
+        shape->setMargin(btScalar(std::min(kShapeMargin_m, 0.5 * o.radius_m)));
+        btCollisionShape* raw = shape.get();
+        shapes.push_back(std::move(shape));
+        return raw;
+      }
+      case ObstacleShape::kPolygon: {
+        auto shape = std::make_unique<btConvexHullShape>();
+        const double margin = std::min(
+            kShapeMargin_m, 0.25 * std::min(o.box.half_extents.x(), o.box.half_extents.y()));
+        for (const Eigen::Vector2d& v : insetPolygon(o.vertices, margin)) {
+          const Eigen::Vector2d d = v - o.box.center;
+          for (const double z : {-(hz - margin), hz - margin}) {
+            shape->addPoint(btVector3(btScalar(d.x()), btScalar(d.y()), btScalar(z)), false);
+          }
+        }
+        shape->recalcLocalAabb();
+        shape->setMargin(btScalar(margin));
+        btCollisionShape* raw = shape.get();
+        shapes.push_back(std::move(shape));
+        return raw;
+      }
+    }
+    return box(o.box.half_extents.x(), o.box.half_extents.y(), hz);
+  }
+
   void buildRobot(const Pose2& start) {
     const double r = robot.wheel_radius_m;
     const double half_track = 0.5 * true_track;
-    const double bottom = model.chassis_clearance_m;
+    const double bottom = robot.ground_clearance_m;
     const double top = robot.height_m;
     chassis_dx = robot.footprintCenterOffset();
     chassis_z = 0.5 * (bottom + top);
@@ -345,10 +416,9 @@ struct DynamicsWorld::Impl {
     ego->setupRevolute(kLeftWheel, btScalar(physics.wheel_mass_kg), left_inertia, -1, no_rotation,
                        axle, btVector3(btScalar(axle_dx), btScalar(half_track), btScalar(left_dz)),
                        no_offset, true);
-    ego->setupRevolute(kRightWheel, btScalar(physics.wheel_mass_kg), right_inertia, -1,
-                       no_rotation, axle,
-                       btVector3(btScalar(axle_dx), btScalar(-half_track), btScalar(right_dz)),
-                       no_offset, true);
+    ego->setupRevolute(
+        kRightWheel, btScalar(physics.wheel_mass_kg), right_inertia, -1, no_rotation, axle,
+        btVector3(btScalar(axle_dx), btScalar(-half_track), btScalar(right_dz)), no_offset, true);
     const double rear_edge = robot.front_overhang_m - robot.length_m;  // from the reference point
     const double support_x = rear_edge + model.support_inset_m - chassis_dx;
     const double support_z = model.support_radius_m - chassis_z;
@@ -362,9 +432,8 @@ struct DynamicsWorld::Impl {
 
     const double c = std::cos(start.theta);
     const double s = std::sin(start.theta);
-    ego->setBaseWorldTransform(planarTransform(start.x - ox + chassis_dx * c,
-                                               start.y - oy + chassis_dx * s, chassis_z,
-                                               start.theta));
+    ego->setBaseWorldTransform(planarTransform(
+        start.x - ox + chassis_dx * c, start.y - oy + chassis_dx * s, chassis_z, start.theta));
     world->addMultiBody(ego.get());
 
     auto add_collider = [&](int link, btCollisionShape* shape, double friction, int group,
@@ -414,11 +483,12 @@ struct DynamicsWorld::Impl {
     if (body == nullptr) return;
     if (!body->isStaticObject()) return;
     world->removeRigidBody(body);
+    const Obstacle& o = obstacles[static_cast<std::size_t>(obstacle_index)];
+    const auto mass = btScalar(o.mass_kg.value_or(physics.parked_robot_mass_kg));
     btVector3 inertia;
-    body->getCollisionShape()->calculateLocalInertia(btScalar(physics.parked_robot_mass_kg),
-                                                     inertia);
+    body->getCollisionShape()->calculateLocalInertia(mass, inertia);
     body->setCollisionFlags(body->getCollisionFlags() & ~btCollisionObject::CF_STATIC_OBJECT);
-    body->setMassProps(btScalar(physics.parked_robot_mass_kg), inertia);
+    body->setMassProps(mass, inertia);
     body->updateInertiaTensor();
     body->setSleepingThresholds(btScalar(model.parked_sleep_speed_mps),
                                 btScalar(model.parked_sleep_yaw_rate_radps));
@@ -468,10 +538,10 @@ struct DynamicsWorld::Impl {
     out.wheel_angles = {double(d.ego->getJointPos(kLeftWheel)),
                         double(d.ego->getJointPos(kRightWheel))};
     const double yaw_rate = double(omega.z());
-    out.slip_mps = {out.wheels.left_radps * d.left_radius -
-                        (out.twist.v_mps - 0.5 * d.true_track * yaw_rate),
-                    out.wheels.right_radps * d.right_radius -
-                        (out.twist.v_mps + 0.5 * d.true_track * yaw_rate)};
+    out.slip_mps = {
+        out.wheels.left_radps * d.left_radius - (out.twist.v_mps - 0.5 * d.true_track * yaw_rate),
+        out.wheels.right_radps * d.right_radius -
+            (out.twist.v_mps + 0.5 * d.true_track * yaw_rate)};
     out.awake = d.ego->isAwake();
     return out;
   }
@@ -511,6 +581,7 @@ struct DynamicsWorld::Impl {
     std::sort(candidates.begin(), candidates.end());
     for (int index : candidates) {
       const auto i = static_cast<std::size_t>(index);
+      if (!blocksRobot(obstacles[i], robot)) continue;
       // The separating-axis gap is a lower bound of the true gap: it wakes early, never late.
       if (separationAlongAxes(footprint, obstacles[i].box) < model.parked_wake_distance_m) {
         wake(index);
@@ -540,11 +611,18 @@ DynamicsWorld::DynamicsWorld(const Scenario& scenario, const Pose2& start, const
   if (!(model.solver_residual_threshold >= 0.0)) {
     throw Error("simulation: solver_residual_threshold must not be negative");
   }
-  requirePositive(r.height_m - model.chassis_clearance_m, "robot height above the clearance");
+  requirePositive(r.height_m - r.ground_clearance_m, "robot height above the clearance");
+  if (!(r.ground_clearance_m >= 0.0)) throw Error("simulation: robot ground clearance < 0");
   for (const Obstacle& o : scenario.obstacles) {
     requirePositive(o.box.half_extents.x(), (o.name + " half length").c_str());
     requirePositive(o.box.half_extents.y(), (o.name + " half width").c_str());
     requirePositive(o.height_m, (o.name + " height").c_str());
+    if (o.shape == ObstacleShape::kCircle)
+      requirePositive(o.radius_m, (o.name + " radius").c_str());
+    if (o.shape == ObstacleShape::kPolygon && !isStrictlyConvexCcw(o.vertices)) {
+      throw Error("simulation: " + o.name + " must be a convex counter-clockwise polygon");
+    }
+    if (o.mass_kg) requirePositive(*o.mass_kg, (o.name + " mass").c_str());
   }
   impl_->robot = r;
   impl_->physics = p;

@@ -71,11 +71,9 @@ struct SimModelDef {
   double support_inset_m = 0.010;
   /// Mass of the slider, kg (a link needs mass; it adds to PhysicsDef::chassis_mass_kg).
   double support_mass_kg = 0.002;
-  /// Height of the chassis box's bottom above the ground, m. The chassis never touches the
-  /// ground (it does not collide with it); this only decides which low obstacles it can hit.
-  double chassis_clearance_m = 0.002;
   /// Parked robots are fixed boxes until the robot's footprint comes closer than this to one,
-  /// m; from the next step on it is a body with mass (PhysicsDef::parked_robot_mass_kg) that
+  /// m; from the next step on it is a body with mass (Obstacle::mass_kg, by default
+  /// PhysicsDef::parked_robot_mass_kg) that
   /// can be pushed. 10 mm is 12 steps ahead at the top speed (0.2 m/s). Resting bodies with
   /// mass cost more than the robot itself (8 of them: 4-5x the step time), and Bullet's own
   /// sleeping does not help: it wakes a body whenever the robot's bounding box, grown by 2 cm,

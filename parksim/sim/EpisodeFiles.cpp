@@ -1,12 +1,13 @@
 #include "parksim/sim/EpisodeFiles.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 
 namespace parksim {
 
@@ -19,25 +20,43 @@ std::string executedCsv(const std::vector<ExecutedRow>& rows, bool realism_colum
                            "encoder_left,encoder_right\n"
                          : "\n";
   out.reserve(out.size() + rows.size() * (realism_columns ? 600 : 300));
-  char line[1280];
   for (const ExecutedRow& r : rows) {
-    int n = std::snprintf(
-        line, sizeof line,
-        "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g", r.t_s,
-        r.pose.x, r.pose.y, r.pose.theta, r.reference.x, r.reference.y, r.reference.theta,
-        r.wheels_cmd.left_radps, r.wheels_cmd.right_radps, r.wheels.left_radps,
-        r.wheels.right_radps, r.pos_err_m, r.heading_err_rad);
-    if (realism_columns) {
-      n += std::snprintf(line + n, sizeof line - static_cast<std::size_t>(n),
-                         ",%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%."
-                         "17g,%.17g",
-                         r.estimate.x, r.estimate.y, r.estimate.theta, r.est_pos_err_m,
-                         r.est_heading_err_rad, r.effort.left_radps, r.effort.right_radps,
-                         r.torque_nm.left_radps, r.torque_nm.right_radps, r.slip_mps.left_radps,
-                         r.slip_mps.right_radps, r.encoder_rad.left_radps,
-                         r.encoder_rad.right_radps);
+    const double values[] = {r.t_s,
+                             r.pose.x,
+                             r.pose.y,
+                             r.pose.theta,
+                             r.reference.x,
+                             r.reference.y,
+                             r.reference.theta,
+                             r.wheels_cmd.left_radps,
+                             r.wheels_cmd.right_radps,
+                             r.wheels.left_radps,
+                             r.wheels.right_radps,
+                             r.pos_err_m,
+                             r.heading_err_rad};
+    for (std::size_t i = 0; i < std::size(values); ++i) {
+      if (i > 0) out += ',';
+      appendShortest(out, values[i]);
     }
-    out.append(line, static_cast<std::size_t>(n));
+    if (realism_columns) {
+      const double extra[] = {r.estimate.x,
+                              r.estimate.y,
+                              r.estimate.theta,
+                              r.est_pos_err_m,
+                              r.est_heading_err_rad,
+                              r.effort.left_radps,
+                              r.effort.right_radps,
+                              r.torque_nm.left_radps,
+                              r.torque_nm.right_radps,
+                              r.slip_mps.left_radps,
+                              r.slip_mps.right_radps,
+                              r.encoder_rad.left_radps,
+                              r.encoder_rad.right_radps};
+      for (const double v : extra) {
+        out += ',';
+        appendShortest(out, v);
+      }
+    }
     out += '\n';
   }
   return out;
@@ -50,13 +69,15 @@ void writeExecutedCsv(const std::string& path, const std::vector<ExecutedRow>& r
 
 std::string sensorsCsv(const std::vector<PoseMeasurement>& samples, double time_step_s) {
   std::string out = "t_received,t_taken,x,y,theta\n";
-  char line[256];
   for (const PoseMeasurement& m : samples) {
-    std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%.17g\n",
-                  static_cast<double>(m.arrival_step) * time_step_s,
-                  static_cast<double>(m.taken_step) * time_step_s, m.pose.x, m.pose.y,
-                  m.pose.theta);
-    out += line;
+    const double values[] = {static_cast<double>(m.arrival_step) * time_step_s,
+                             static_cast<double>(m.taken_step) * time_step_s, m.pose.x, m.pose.y,
+                             m.pose.theta};
+    for (std::size_t i = 0; i < std::size(values); ++i) {
+      if (i > 0) out += ',';
+      appendShortest(out, values[i]);
+    }
+    out += '\n';
   }
   return out;
 }
@@ -150,6 +171,13 @@ EpisodeMetrics metricsFromJson(const nlohmann::json& j) {
     m.tracking = trackingModeFromString(j.at("tracking").get<std::string>());
   }
   return m;
+}
+
+nlohmann::json provenanceToJson(const Provenance& p) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [key, value] : provenanceFields(p)) j[key] = value;
+  j["git_dirty"] = p.git_dirty;
+  return j;
 }
 
 void writeJsonFile(const std::string& path, const nlohmann::json& json) {

@@ -1,13 +1,14 @@
 #pragma once
 // An episode's files: executed.csv (one row per recorded step) and metrics.json (flat keys).
-// Both are written atomically; numbers round-trip exactly (%.17g, and nlohmann's shortest
-// round-trip form in JSON).
+// Both are written atomically; numbers round-trip exactly (shortest round-trip form, written
+// with std::to_chars in CSV and by nlohmann in JSON, whatever the locale).
 
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "parksim/core/Provenance.h"
 #include "parksim/sim/Episode.h"
 
 namespace parksim {
@@ -37,6 +38,10 @@ nlohmann::json metricsToJson(const EpisodeMetrics& metrics);
 /// The metrics a TrackingTolerance checks, read back from metricsToJson's keys. Throws Error
 /// naming a missing or mistyped key.
 EpisodeMetrics metricsFromJson(const nlohmann::json& json);
+
+/// The provenance as a JSON object (keys of provenanceFields; git_dirty a boolean), the
+/// "provenance" entry of plan.json.
+nlohmann::json provenanceToJson(const Provenance& provenance);
 
 /// Writes `json` (pretty-printed, two-space indent, trailing newline). Throws Error.
 void writeJsonFile(const std::string& path, const nlohmann::json& json);

@@ -95,7 +95,7 @@ double slipTorque(const Scenario& s, const SimModelDef& m) {
   const double slider = robot.length_m - robot.front_overhang_m - m.support_inset_m;
   const double com_behind =
       (p.chassis_mass_kg * chassis_dx + m.support_mass_kg * slider) / mass;
-  const double chassis_z = 0.5 * (m.chassis_clearance_m + robot.height_m);
+  const double chassis_z = 0.5 * (robot.ground_clearance_m + robot.height_m);
   const double h = (p.chassis_mass_kg * chassis_z + 2.0 * p.wheel_mass_kg * robot.wheel_radius_m +
                     m.support_mass_kg * m.support_radius_m) /
                    mass;
