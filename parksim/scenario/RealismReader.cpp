@@ -108,10 +108,11 @@ void readEstimator(const YamlField& field, EstimatorDef& d) {
 }
 
 void readControl(const YamlField& field, ControlLoopDef& d) {
-  const YamlMap m = field.map({"rate_hz", "latency_s"});
+  const YamlMap m = field.map({"rate_hz", "latency_s", "settle_s"});
   const Section s(m);
   s.nonNegative("rate_hz", d.rate_hz);
   s.nonNegative("latency_s", d.latency_s);
+  s.nonNegative("settle_s", d.settle_s);
 }
 
 RealismDef readRealism(const YamlField& field) {

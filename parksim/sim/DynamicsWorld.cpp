@@ -525,7 +525,8 @@ struct DynamicsWorld::Impl {
                               btScalar(d.robot.wheel_radius_m - d.chassis_z));
     const btVector3 ref = base * ref_local;
     RobotState out;
-    out.pose = {double(ref.x()) + d.ox, double(ref.y()) + d.oy, yawOf(base)};
+    out.local_pose = {double(ref.x()), double(ref.y()), yawOf(base)};
+    out.pose = {out.local_pose.x + d.ox, out.local_pose.y + d.oy, out.local_pose.theta};
     out.axle_height_m = double(ref.z());
     const btVector3 up = base.getBasis().getColumn(2);
     out.tilt_rad = std::acos(std::clamp(double(up.z()), -1.0, 1.0));

@@ -124,6 +124,9 @@ struct SimModelDef {
 struct RobotState {
   /// Reference point (axle middle) projected on the ground, and heading of the chassis.
   Pose2 pose;
+  /// The same in Bullet's lot-local frame (SimModelDef::local_frame_grid_m): pose minus the
+  /// frame's origin, without the rounding of adding and removing the origin.
+  Pose2 local_pose;
   /// Height of the axle middle above the ground, m (the wheel radius when resting).
   double axle_height_m = 0.0;
   /// Angle between the chassis' up axis and the world's, rad.

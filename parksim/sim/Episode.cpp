@@ -48,6 +48,19 @@ std::mt19937_64 layerRng(std::uint64_t noise_seed, std::uint32_t layer) {
   return std::mt19937_64(seq);
 }
 
+Pose2 localOrigin(const Pose2& start, double grid_m) {
+  return {grid_m * std::floor(start.x / grid_m), grid_m * std::floor(start.y / grid_m), 0.0};
+}
+
+Trajectory shiftedPlan(const Trajectory& plan, const Pose2& origin) {
+  Trajectory out = plan;
+  for (TrajectoryPoint& p : out.points) {
+    p.pose.x -= origin.x;
+    p.pose.y -= origin.y;
+  }
+  return out;
+}
+
 enum Layer : std::uint32_t { kCalibrationLayer = 1, kMotorLayer, kEncoderLayer, kPoseLayer };
 
 // The robot as built for this episode: calibration errors and motor gains drawn once.
@@ -185,13 +198,17 @@ struct Episode::Impl {
       : scenario(s),
         def(validated(d)),
         build(drawBuild(d.realism, d.noise_seed)),
-        reference(plan, s.robot),
+        origin(localOrigin(plan.points.front().pose, m.local_frame_grid_m)),
+        reference(shiftedPlan(plan, origin), s.robot),
         world(s, plan.points.front().pose, modelFor(m, plan, d.realism, build, s)),
         dt(world.timeStep()),
         t0(reference.startTime()),
         plan_steps(stepsFor(reference.endTime() - reference.startTime(), dt)),
         limit_steps(plan_steps + stepsFor(d.max_stop_time_s, dt)),
-        rest_steps(std::max(1L, stepsFor(d.rest_hold_s, dt))),
+        rest_steps(std::max(
+            1L, stepsFor(d.realism.active() ? std::max(d.rest_hold_s, d.realism.control.settle_s)
+                                            : d.rest_hold_s,
+                         dt))),
         merge_steps(stepsFor(d.contact_merge_s, dt)),
         last_contact_step(s.obstacles.size(), -1) {
     initial_obstacles = world.obstaclePoses();
@@ -212,6 +229,9 @@ struct Episode::Impl {
   Scenario scenario;
   ExecutionDef def;
   Build build;
+  // The plan and the controller live in the same lot-local frame as Bullet (DynamicsWorld),
+  // so a lot far from the origin rounds like one at it; rows are in the lot frame.
+  Pose2 origin;
   ReferenceTrajectory reference;
   DynamicsWorld world;
   double dt;
@@ -248,6 +268,9 @@ struct Episode::Impl {
   bool at_rest = false;
   std::chrono::steady_clock::duration wall{};
 
+  Pose2 local(const Pose2& p) const { return {p.x - origin.x, p.y - origin.y, p.theta}; }
+  Pose2 lotFrame(const Pose2& p) const { return {p.x + origin.x, p.y + origin.y, p.theta}; }
+
   double planTime(long step) const { return t0 + static_cast<double>(step) * dt; }
 
   void measure(const WheelSpeeds& command) {
@@ -256,7 +279,7 @@ struct Episode::Impl {
     ExecutedRow row;
     row.t_s = static_cast<double>(k) * dt;
     row.pose = state.pose;
-    row.reference = reference.poseAt(planTime(k));
+    row.reference = lotFrame(reference.poseAt(planTime(k)));
     row.wheels_cmd = command;
     row.wheels = state.wheels;
     row.pos_err_m = positionDistance(row.pose, row.reference);
@@ -338,8 +361,8 @@ struct Episode::Impl {
         cmd = reference.wheelsAt(hold_mid);
       } else {
         const Pose2 estimate = r.def.estimator.kind == EstimatorKind::kTruth
-                                   ? world.robot().pose
-                                   : r.estimator.pose();
+                                   ? world.robot().local_pose
+                                   : local(r.estimator.pose());
         cmd = trackingCommand(estimate, reference.poseAt(planTime(k)),
                               reference.twistAt(hold_mid), def.gains, scenario.robot);
       }
@@ -395,7 +418,7 @@ struct Episode::Impl {
     // depending on how k * dt rounds at a period boundary.
     const double mid = planTime(k) + 0.5 * dt;
     if (def.tracking == TrackingMode::kOpen) return reference.wheelsAt(mid);
-    return trackingCommand(world.robot().pose, reference.poseAt(planTime(k)),
+    return trackingCommand(world.robot().local_pose, reference.poseAt(planTime(k)),
                            reference.twistAt(mid), def.gains, scenario.robot);
   }
 };
