@@ -7,6 +7,7 @@
 
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 #include "parksim/renders/CSpace.h"
 #include "parksim/renders/PngEncoder.h"
 #include "parksim/renders/Renderer.h"
@@ -15,12 +16,6 @@
 namespace parksim {
 
 namespace {
-
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
 
 // Room for axis labels and the title, as fractions of the data extent: label sizes are in
 // pixels, the extent in metres, and figures are about 1.5:1, so fractions fit well enough.
@@ -185,10 +180,10 @@ Scene buildSteeringFigure(const Scenario& scenario, const SteeringExample& ex,
   scene.arrows.push_back({ex.target, a, 0.3 * a, Layers::kArrow, style.goal, style.arrow_px});
 
   const double span = std::max(data.width(), data.height());
-  addLabel(scene, "solid: fixed horizon (" + fmt("%.1f", ex.fixed_horizon.duration()) + " s)",
+  addLabel(scene, "solid: fixed horizon (" + formatFixed(ex.fixed_horizon.duration(), 1) + " s)",
            {data.x_min + 0.03 * span, data.y_max - 0.03 * span}, style.planned, style,
            HAlign::kLeft, VAlign::kTop);
-  addLabel(scene, "dashed: to goal (" + fmt("%.1f", ex.to_goal.duration()) + " s)",
+  addLabel(scene, "dashed: to goal (" + formatFixed(ex.to_goal.duration(), 1) + " s)",
            {data.x_min + 0.03 * span, data.y_max - 0.09 * span}, style.executed, style,
            HAlign::kLeft, VAlign::kTop);
   addAxesAndTitle(scene, data, "Move-to-pose steering in both modes (Fig. 2)", style);
@@ -226,7 +221,7 @@ Scene buildCSpaceSliceFigure(const Scenario& scenario, double theta_rad, const S
        style.outline_px,
        false});
   addAxesAndTitle(scene, lotExtent(scenario),
-                  "C-space obstacles at heading " + fmt("%.0f", radToDeg(theta_rad)) +
+                  "C-space obstacles at heading " + formatFixed(radToDeg(theta_rad), 0) +
                       "\u00b0 (Fig. 5): exact Minkowski slices",
                   style);
   return scene;

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "parksim/core/DiffDrive.h"
+#include "parksim/core/NumberFormat.h"
 
 namespace parksim {
 
@@ -67,10 +68,8 @@ void addGrid(Scene& scene, const LotBounds& lot, const SceneStyle& style) {
 // Tracking errors are sub-millimetre when all goes well: two decimals, and no "-0.00".
 std::string formatOverlayLine2(const Overlay& o) {
   auto tidy = [](double v) { return std::abs(v) < 0.005 ? 0.0 : v; };
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "tracking error %6.2f mm %6.2f\u00b0",
-                tidy(o.position_error_m * 1000.0), tidy(radToDeg(o.heading_error_rad)));
-  return buf;
+  return "tracking error " + padLeft(formatFixed(tidy(o.position_error_m * 1000.0), 2), 6) +
+         " mm " + padLeft(formatFixed(tidy(radToDeg(o.heading_error_rad)), 2), 6) + "\u00b0";
 }
 
 }  // namespace
@@ -204,9 +203,8 @@ Scene buildScene(const Scenario& scenario, const ViewState& view, const SceneSty
   }
   if (view.overlay) {
     const Overlay& o = *view.overlay;
-    char line1[160];
-    std::snprintf(line1, sizeof line1, "%s%st = %6.2f s", o.title.c_str(),
-                  o.title.empty() ? "" : "   ", o.time_s);
+    const std::string line1 = o.title + (o.title.empty() ? "" : "   ") +
+                              "t = " + padLeft(formatFixed(o.time_s, 2), 6) + " s";
     const float size = style.text_px;
     const double pad = 0.5 * size;
     scene.texts.push_back({line1,

@@ -17,6 +17,7 @@
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
 #include "parksim/core/Text.h"
+#include "parksim/scenario/RealismSections.h"
 #include "parksim/scenario/YamlField.h"
 
 namespace parksim {
@@ -117,9 +118,9 @@ LotBounds readLot(const YamlField& field) {
 }
 
 RobotDef readRobot(const YamlField& field) {
-  const YamlMap m = field.map({"length", "width", "front_overhang", "wheel_base", "wheel_radius",
-                               "max_wheel_speed_radps", "max_wheel_accel_radps2", "height",
-                               "ground_clearance"});
+  const YamlMap m =
+      field.map({"length", "width", "front_overhang", "wheel_base", "wheel_radius",
+                 "max_wheel_speed_radps", "max_wheel_accel_radps2", "height", "ground_clearance"});
   RobotDef robot;
   // Each key overrides one field; absent keys keep the study's robot.
   const auto set = [&m](std::string_view key, double& out) {
@@ -225,8 +226,9 @@ std::vector<Eigen::Vector2d> readVertices(const YamlField& field) {
   for (const YamlField& item : items) vertices.push_back(readPoint(item));
   if (signedDoubleArea(vertices) < 0.0) std::reverse(vertices.begin(), vertices.end());
   if (!isStrictlyConvexCcw(vertices)) {
-    field.fail("must be a convex polygon: vertices in order around it, no repeated or collinear "
-               "vertices, no self-crossing");
+    field.fail(
+        "must be a convex polygon: vertices in order around it, no repeated or collinear "
+        "vertices, no self-crossing");
   }
   return vertices;
 }
@@ -244,8 +246,9 @@ Obstacle readObstacle(const YamlField& field) {
   if (shapes != 1) {
     const YamlField at = shapes == 0 ? m.required("kind") : *(vertices ? vertices : radius);
     YamlField(at.node(), field.path(), at.line(), field.source())
-        .fail("give exactly one shape: size (a box), radius (a circle) or vertices (a convex "
-              "polygon)");
+        .fail(
+            "give exactly one shape: size (a box), radius (a circle) or vertices (a convex "
+            "polygon)");
   }
   if (vertices) {
     for (const char* key : {"center", "yaw_deg"}) {
@@ -369,9 +372,9 @@ std::string readWholeFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     const int err = errno;
-    throw Error(escapeText(path + ": cannot open: " +
-                           (err != 0 ? std::generic_category().message(err)
-                                     : std::string("unknown error"))));
+    throw Error(escapeText(
+        path + ": cannot open: " +
+        (err != 0 ? std::generic_category().message(err) : std::string("unknown error"))));
   }
   // Read at most one byte past the limit, in case the file grew since it was measured.
   std::string text(kMaxWorldFileBytes + 1, '\0');
@@ -480,8 +483,9 @@ Scenario parseScenario(std::string_view yaml_text, const std::string& source_nam
   const YamlField root(document, "", 1, source_name);
   const YamlMap top(root);
   readFormat(top.required("format"));
-  top.rejectUnknownKeys(
-      {"format", "name", "lot", "robot", "obstacles", "parked_robots", "start", "goal", "physics"});
+  top.rejectUnknownKeys({"format", "name", "lot", "robot", "obstacles", "parked_robots", "start",
+                         "goal", "physics", "realism", "tolerance"});
+  readRealismSections(top);  // validated here, read by loadWorldRealism (scenario/RealismReader.h)
 
   Scenario s;
   s.source_path = source_name;
@@ -520,12 +524,13 @@ Pose2 parsePose(std::string_view text, const std::string& what) {
   YAML::Node node;
   try {
     // "x,y,deg" as a command line writes it is a list without brackets.
-    const std::string_view trimmed = text.substr(std::min(text.find_first_not_of(" \t"), text.size()));
+    const std::string_view trimmed =
+        text.substr(std::min(text.find_first_not_of(" \t"), text.size()));
     const bool bare = !trimmed.empty() && trimmed.front() != '[' && trimmed.front() != '{';
     node = YAML::Load(bare ? "[" + std::string(text) + "]" : std::string(text));
   } catch (const YAML::Exception& e) {
-    throw Error(escapeText(what + ": cannot read a pose from \"" + std::string(text) +
-                           "\": " + e.msg));
+    throw Error(
+        escapeText(what + ": cannot read a pose from \"" + std::string(text) + "\": " + e.msg));
   }
   return readPose(YamlField(node, what, 0, ""));
 }
