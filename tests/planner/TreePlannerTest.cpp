@@ -318,8 +318,7 @@ TEST(TreePlanner, StartAndGoalFollowThePlacementRule) {
   Scenario s = testing::studyLot();
   const double front = s.start.y + s.robot.front_overhang_m;  // facing +y
   s.obstacles.push_back(Obstacle::makeBox("near", ObstacleKind::kBox,
-                                          testing::cornerBox(0.0, front + 0.0003, 0.3, 0.05),
-                                          0.1));
+                                          testing::cornerBox(0.0, front + 0.0003, 0.3, 0.05), 0.1));
   SatChecker checker(s);
   PlanResult r = planScenario(s, checker, PlanSetup{});
   EXPECT_EQ(r.status, PlanStatus::kInvalidStart);

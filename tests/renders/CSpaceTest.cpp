@@ -125,7 +125,8 @@ TEST(CSpaceTest, PolygonAndCircleSlicesAreExact) {
   const RobotDef robot;
   const Obstacle polygon = Obstacle::makePolygon(
       "p", ObstacleKind::kIsland, {{0.9, 0.4}, {1.2, 0.45}, {1.1, 0.7}, {0.85, 0.6}}, 0.1);
-  const Obstacle circle = Obstacle::makeCircle("c", ObstacleKind::kBollard, {{0.5, 0.5}, 0.03}, 0.1);
+  const Obstacle circle =
+      Obstacle::makeCircle("c", ObstacleKind::kBollard, {{0.5, 0.5}, 0.03}, 0.1);
   for (const double theta_deg : {0.0, 30.0, -75.0, 180.0}) {
     const double theta = degToRad(theta_deg);
     const std::vector<Eigen::Vector2d> slice = cspaceSlice(polygon, robot, theta);

@@ -99,10 +99,9 @@ TEST(SceneBuilderTest, SampledPathFollowsTheTrajectorysArcs) {
 
 TEST(SceneBuilderTest, RoundAndPolygonalObstaclesArePrisms) {
   Scenario s;
-  s.obstacles = {
-      Obstacle::makeCircle("c", ObstacleKind::kBollard, {{0.5, 0.5}, 0.03}, 0.12),
-      Obstacle::makePolygon("p", ObstacleKind::kIsland, {{0.9, 0.4}, {1.2, 0.45}, {1.1, 0.7}},
-                            0.05)};
+  s.obstacles = {Obstacle::makeCircle("c", ObstacleKind::kBollard, {{0.5, 0.5}, 0.03}, 0.12),
+                 Obstacle::makePolygon("p", ObstacleKind::kIsland,
+                                       {{0.9, 0.4}, {1.2, 0.45}, {1.1, 0.7}}, 0.05)};
   const SceneStyle style;
   const Scene scene = buildLotScene(s, style);
   EXPECT_TRUE(scene.boxes.empty());
@@ -115,8 +114,9 @@ TEST(SceneBuilderTest, RoundAndPolygonalObstaclesArePrisms) {
   EXPECT_EQ(scene.prisms[0].color, style.bollard);
   EXPECT_EQ(scene.prisms[1].footprint, s.obstacles[1].vertices);
   // Moved by the simulation (bounding-box centre and yaw): the outline moves with it.
-  const std::vector<Pose2> poses{{0.5, 0.5, 0.0}, {s.obstacles[1].box.center.x() + 0.1,
-                                                   s.obstacles[1].box.center.y(), kPi / 2}};
+  const std::vector<Pose2> poses{
+      {0.5, 0.5, 0.0},
+      {s.obstacles[1].box.center.x() + 0.1, s.obstacles[1].box.center.y(), kPi / 2}};
   const std::vector<int> contacts{1};
   const Scene moved = buildLotScene(s, style, poses, contacts);
   const Eigen::Vector2d c = s.obstacles[1].box.center;

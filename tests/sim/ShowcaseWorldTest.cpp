@@ -73,8 +73,8 @@ TEST(ShowcaseBodies, ACircleAndAPolygonAreSolidAndALowKerbIsNot) {
   bollard.obstacles.push_back(
       Obstacle::makeCircle("bollard", ObstacleKind::kBollard, {{0.58, 0.5}, 0.02}, 0.1));
   Scenario island = testing::emptyLot({0.5, 0.5, 0.0});
-  island.obstacles.push_back(Obstacle::makePolygon(
-      "island", ObstacleKind::kIsland, {{0.56, 0.5}, {0.7, 0.4}, {0.7, 0.6}}, 0.05));
+  island.obstacles.push_back(Obstacle::makePolygon("island", ObstacleKind::kIsland,
+                                                   {{0.56, 0.5}, {0.7, 0.4}, {0.7, 0.6}}, 0.05));
   Scenario kerb = testing::emptyLot({0.5, 0.5, 0.0});
   kerb.obstacles.push_back(Obstacle::makeBox("kerb", ObstacleKind::kCurb,
                                              testing::cornerBox(0.56, 0.3, 0.02, 0.4), 0.001));
