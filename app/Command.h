@@ -10,6 +10,15 @@
 
 namespace parksim::app {
 
+/// The process exit codes, the same for every command (README "Exit codes").
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitUnsolved = 1,         ///< the planner found no plan (plan, run)
+  kExitBadInput = 2,         ///< bad input or usage; nothing was written
+  kExitInternal = 3,         ///< a bug or an environment failure (out of memory, no OpenGL, ...)
+  kExitToleranceNotMet = 4,  ///< run: goal or tracking tolerance missed, or a contact
+};
+
 using CommandRunner = std::function<int()>;
 
 CommandRunner setupPlanCommand(CLI::App& sub);

@@ -21,7 +21,7 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
   opt->plan.addTo(sub);
   sub.add_option("--out", opt->out, "output directory")->capture_default_str();
 
-  return [opt] {
+  return [opt]() -> int {
     const Scenario scenario = loadScenario(opt->world);
     const PlanSetup setup = opt->plan.toSetup(scenario);
     const BulletCollisionWorld collision(scenario);
@@ -30,7 +30,7 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
     if (!result.solved()) {
       std::fprintf(stderr, "parksim plan: unsolved (%s): %s\n", toString(result.status),
                    result.message.c_str());
-      return 1;
+      return kExitUnsolved;
     }
     std::printf(
         "solved %s with %s (seed %llu): %d iterations, %d tree nodes, path %.3f m, %.1f s of "

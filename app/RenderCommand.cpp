@@ -50,7 +50,7 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
       ->expected(3);
   CLI::App* app = &sub;
 
-  return [opt, app] {
+  return [opt, app]() -> int {
     const Scenario scenario = loadScenario(opt->world);
     const ImageSize size = parseImageSize(opt->size);
     FigureDef def;

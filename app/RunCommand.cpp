@@ -3,8 +3,8 @@
 // DIR/executed.csv, DIR/metrics.json, and with --frames DIR/frames/*.png and the figures in
 // DIR/figures/ (--video, --gif: DIR/episode.mp4, DIR/episode.gif). Exit status: 0 when the robot
 // ends within the world's goal tolerance and the default TrackingTolerance holds (no contact,
-// tracking error <= 5 mm, ...); 1 otherwise, or when planning fails, with a one-line reason on
-// stderr; 2 on bad input.
+// tracking error <= 5 mm, ...); 4 when it does not and 1 when planning fails, each with a
+// one-line reason on stderr; 2 on bad input (app/Command.h lists the exit codes).
 
 #include <cstdio>
 #include <filesystem>
@@ -147,7 +147,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       ->capture_default_str()
       ->check(CLI::IsMember({"top", "3d", "both"}));
 
-  return [opt] {
+  return [opt]() -> int {
     const Scenario scenario = loadScenario(opt->world);
     ExecutionDef exec;
     exec.tracking = trackingModeFromString(opt->tracking);
@@ -192,7 +192,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       if (!result.solved()) {
         std::fprintf(stderr, "parksim run: unsolved plan (%s): %s\n", toString(result.status),
                      result.message.c_str());
-        return 1;
+        return kExitUnsolved;
       }
       plan = result.trajectory;
       plan_summary = planSummary(scenario, setup, result);
@@ -245,9 +245,9 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     const std::string failure = failureReason(scenario, m);
     if (!failure.empty()) {
       std::fprintf(stderr, "parksim run: %s\n", failure.c_str());
-      return 1;
+      return kExitToleranceNotMet;
     }
-    return 0;
+    return kExitOk;
   };
 }
 

@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // CLI11 prints help (success) or the usage error; usage errors exit 2 like any bad input.
-    return app.exit(e) == 0 ? 0 : 2;
+    return app.exit(e) == 0 ? kExitOk : kExitBadInput;
   }
   try {
     for (auto& [sub, run] : commands) {
@@ -42,10 +42,10 @@ int main(int argc, char** argv) {
     }
   } catch (const parksim::Error& e) {
     std::fprintf(stderr, "parksim: error: %s\n", e.what());
-    return 2;
+    return kExitBadInput;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "parksim: internal error: %s\n", e.what());
-    return 3;
+    return kExitInternal;
   }
-  return 2;
+  return kExitBadInput;
 }
