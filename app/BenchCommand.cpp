@@ -6,6 +6,7 @@
 // Exit status: 0 when every run finished (unsolved runs are results, not errors), 2 on bad input.
 
 #include "app/Command.h"
+#include "app/Validators.h"
 
 #ifdef PARKSIM_HAVE_OMPL_BENCH
 
@@ -210,7 +211,7 @@ int runBench(const BenchOptions& o) {
   summary += "\n## Where parksim's planners spend their time (mean per run)\n\n" +
              bench::formatPhaseTable(groups);
   const std::string comparison = bench::formatComparison(groups);
-  if (!comparison.empty()) summary += "\n## parksim vs OMPL (issue 5 targets)\n\n" + comparison;
+  if (!comparison.empty()) summary += "\n## parksim vs OMPL\n\n" + comparison;
   std::string invalid;
   for (const bench::BenchRecord& r : all) {
     if (r.solved && !r.valid) {
@@ -251,17 +252,6 @@ int runBench(const BenchOptions& o) {
   return 0;
 }
 
-// CLI11's PositiveNumber prints its whole range (up to DBL_MAX) when it rejects a value.
-CLI::Validator positive() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        double value = 0.0;
-        if (parseDouble(text, value) && value > 0.0) return "";
-        return "must be a positive number, got " + text;
-      },
-      "POSITIVE");
-}
-
 }  // namespace
 
 CommandRunner setupBenchCommand(CLI::App& sub) {
@@ -269,7 +259,7 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("worlds", opt->worlds, "world files (YAML, see docs/world-format.md)")->required();
   sub.add_option("--seeds", opt->seeds, "runs per planner and world, with seeds 1..N")
       ->capture_default_str()
-      ->check(positive());
+      ->check(positiveNumber());
   sub.add_option("--planners", opt->planners,
                  "parksim planners, comma-separated (default: every planner kind; none: OMPL only)")
       ->delimiter(',');
@@ -281,11 +271,11 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("--max-iterations", opt->max_iterations,
                  "iteration budget of parksim's first-solution runs")
       ->capture_default_str()
-      ->check(positive());
+      ->check(positiveNumber());
   sub.add_option("--anytime-s", opt->anytime_s,
                  "wall-time budget of the extra run of parksim's anytime planners (RRT*), s")
       ->capture_default_str()
-      ->check(positive());
+      ->check(positiveNumber());
   sub.add_flag("--ompl", opt->ompl, "also run OMPL's planners on the same footprint checker");
   sub.add_option("--ompl-planners", opt->ompl_planners, "OMPL planners, comma-separated")
       ->delimiter(',')
@@ -297,15 +287,15 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("--budget-s", opt->budget_s,
                  "OMPL's wall-time limit per run, s (RRT* improves its path until then)")
       ->capture_default_str()
-      ->check(positive());
+      ->check(positiveNumber());
   sub.add_option("--turning-radius", opt->turning_radius_m,
                  "Reeds-Shepp minimum turning radius for OMPL, m")
       ->capture_default_str()
-      ->check(positive());
+      ->check(positiveNumber());
   sub.add_option("--segment", opt->segment_m,
                  "longest motion OMPL's motion validator leaves unchecked (state-space distance)")
       ->capture_default_str()
-      ->check(positive());
+      ->check(positiveNumber());
   sub.add_option("--out", opt->out, "output directory for bench.csv and summary.md")
       ->capture_default_str();
   sub.add_option("--ompl-log", opt->ompl_log,

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "app/Validators.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/Provenance.h"
@@ -31,14 +32,14 @@ void PlanCliOptions::addTo(CLI::App& sub) {
   // CLI11 would wrap "-3" into a 64-bit unsigned seed; refuse it instead.
   sub.add_option("--seed", seed, "seed of the planner's random number generator")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   sub.add_option("--max-iterations", max_iterations, "iteration budget of the tree search")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   sub.add_flag("--smooth", smooth, "shortcut-smooth the plan (study 3(c)(3))");
   sub.add_option("--smoothing-attempts", smoothing_attempts, "random shortcuts tried by --smooth")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
 }
 
 PlanSetup PlanCliOptions::toSetup(const Scenario&) const {

@@ -32,6 +32,11 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
   opt->plan.addTo(sub);
+  // render draws both of the study's planners unless --planner names one: no single default.
+  CLI::Option* planner = sub.get_option("--planner");
+  planner->default_str("")->description(
+      "draw only this planner's plan, " + planner->get_description() +
+      " (default: rrt and rrt-goal-connect, the study's Figs. 7 and 8)");
   sub.add_option("--size", opt->size, "figure size WxH in pixels")->capture_default_str();
   sub.add_option("--out", opt->out, "output directory; figures go to OUT/figures")
       ->capture_default_str();

@@ -14,6 +14,7 @@
 #include "app/Command.h"
 #include "app/FigureInputs.h"
 #include "app/PlanOutput.h"
+#include "app/Validators.h"
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
@@ -141,7 +142,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
   sub.add_flag("--gif", opt->gif, "also OUT/episode.gif (needs ffmpeg; implies --frames)");
   sub.add_option("--fps", opt->fps, "frames per second of simulated time")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   sub.add_option("--size", opt->size, "size of one view, WxH pixels")->capture_default_str();
   sub.add_option("--view", opt->view, "top, 3d or both (side by side)")
       ->capture_default_str()

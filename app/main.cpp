@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -13,7 +14,8 @@
 
 int main(int argc, char** argv) {
   using namespace parksim::app;
-  CLI::App app{"parksim: plan, simulate, render and benchmark parking manoeuvres"};
+  // Named, so that usage lines say "parksim", not the path the binary was started from.
+  CLI::App app{"parksim: plan, simulate, render and benchmark parking manoeuvres", "parksim"};
   app.require_subcommand(1);
   const std::string version = parksim::versionLine(parksim::buildProvenance());
   app.set_version_flag("--version", version, "print parksim's version and build, then exit");
@@ -30,6 +32,19 @@ int main(int argc, char** argv) {
       setupRenderCommand);
   add("bench", "benchmark parksim's planners, optionally against OMPL", setupBenchCommand);
 
+  // CLI11 says "A subcommand is required" about `parksim foo`; say what was wrong instead.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string names;
+    bool known = false;
+    for (const auto& [sub, run] : commands) {
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+      known = known || sub->get_name() == argv[1];
+    }
+    if (!known) {
+      std::fprintf(stderr, "parksim: unknown command '%s'; commands: %s\n", argv[1], names.c_str());
+      return kExitBadInput;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

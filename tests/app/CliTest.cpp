@@ -137,6 +137,9 @@ TEST_F(Cli, BenchWritesTheCsvWithItsRequiredColumns) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * (2 * 2 + 1)) << csv;
   EXPECT_NE(csv.find("\nompl,"), std::string::npos);
   EXPECT_NE(csv.find("\nparksim,"), std::string::npos);
+  const std::string summary = slurp(out / "summary.md");
+  EXPECT_NE(summary.find("## parksim vs OMPL\n"), std::string::npos) << summary;
+  EXPECT_EQ(summary.find("issue"), std::string::npos) << summary;  // speaks to users
 }
 
 TEST_F(Cli, RunWithFramesFilmsTheEpisodeAndDrawsTheFigures) {
@@ -197,6 +200,28 @@ TEST_F(Cli, EveryCommandHasHelp) {
     EXPECT_EQ(r.exit_code, 0) << cmd;
     EXPECT_NE(r.out.find("--help"), std::string::npos) << cmd;
   }
+}
+
+TEST_F(Cli, MessagesSayWhatIsWrongInFewWords) {
+  CliRun r = parksim("foo");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "parksim: unknown command 'foo'; commands: plan, run, render, bench\n");
+  // Bounds are stated, not printed as the 309-digit largest double.
+  r = parksim("plan " + world("head_in.yaml") + " --seed -1");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("--seed: must be zero or a positive number, got -1"), std::string::npos)
+      << r.out;
+  r = parksim("run " + world("head_in.yaml") + " --fps 0");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("--fps: must be a positive number, got 0"), std::string::npos) << r.out;
+  EXPECT_LT(r.out.size(), 200u) << r.out;
+  // Usage lines name the program, not the path it was started from.
+  r = parksim("plan --help");
+  EXPECT_NE(r.out.find("Usage: parksim plan "), std::string::npos) << r.out;
+  // render draws two planners by default, so --planner shows no single default.
+  r = parksim("render --help");
+  EXPECT_NE(r.out.find("--planner TEXT "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("--planner TEXT="), std::string::npos) << r.out;
 }
 
 TEST_F(Cli, EveryCommandPrintsTheVersionAndBuild) {
