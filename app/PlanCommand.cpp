@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/Command.h"
+#include "app/Overrides.h"
 #include "app/PlanOutput.h"
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/scenario/ScenarioReader.h"
@@ -15,14 +16,16 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
     std::string world;
     std::string out = "out";
     PlanCliOptions plan;
+    WorldOverrideOptions world_overrides;
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
   opt->plan.addTo(sub);
+  opt->world_overrides.addTo(sub);
   sub.add_option("--out", opt->out, "output directory")->capture_default_str();
 
   return [opt]() -> int {
-    const Scenario scenario = loadScenario(opt->world);
+    const Scenario scenario = loadWorld(opt->world, opt->world_overrides);
     const PlanSetup setup = opt->plan.toSetup(scenario);
     const BulletCollisionWorld collision(scenario);
     const PlanResult result = planScenario(scenario, collision, setup);

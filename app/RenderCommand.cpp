@@ -7,6 +7,7 @@
 
 #include "app/Command.h"
 #include "app/FigureInputs.h"
+#include "app/Overrides.h"
 #include "app/PlanOutput.h"
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/AtomicFile.h"
@@ -28,10 +29,12 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     int slices = 36;
     std::vector<double> steer_target;
     PlanCliOptions plan;
+    WorldOverrideOptions world_overrides;
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
   opt->plan.addTo(sub);
+  opt->world_overrides.addTo(sub);
   // render draws both of the study's planners unless --planner names one: no single default.
   CLI::Option* planner = sub.get_option("--planner");
   planner->default_str("")->description(
@@ -56,7 +59,7 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
   CLI::App* app = &sub;
 
   return [opt, app]() -> int {
-    const Scenario scenario = loadScenario(opt->world);
+    const Scenario scenario = loadWorld(opt->world, opt->world_overrides);
     const ImageSize size = parseImageSize(opt->size);
     FigureDef def;
     def.width_px = size.width_px;

@@ -13,6 +13,7 @@
 
 #include "app/Command.h"
 #include "app/FigureInputs.h"
+#include "app/Overrides.h"
 #include "app/PlanOutput.h"
 #include "app/Validators.h"
 #include "parksim/collision/BulletCollisionWorld.h"
@@ -118,6 +119,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     std::string tracking = "closed";
     std::string plan_file;
     PlanCliOptions plan;
+    WorldOverrideOptions world_overrides;
     bool frames = false;
     bool video = false;
     bool gif = false;
@@ -128,6 +130,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
   opt->plan.addTo(sub);
+  opt->world_overrides.addTo(sub);
   sub.add_option("--tracking", opt->tracking,
                  "closed: planned wheel speeds plus pose feedback; open: planned wheel speeds only")
       ->capture_default_str()
@@ -149,7 +152,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       ->check(CLI::IsMember({"top", "3d", "both"}));
 
   return [opt]() -> int {
-    const Scenario scenario = loadScenario(opt->world);
+    const Scenario scenario = loadWorld(opt->world, opt->world_overrides);
     ExecutionDef exec;
     exec.tracking = trackingModeFromString(opt->tracking);
     const bool film = opt->frames || opt->video || opt->gif;

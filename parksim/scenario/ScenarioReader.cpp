@@ -12,6 +12,7 @@
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
+#include "parksim/scenario/WorldDocument.h"
 #include "parksim/scenario/YamlField.h"
 
 namespace parksim {
@@ -232,6 +233,10 @@ std::string readWholeFile(const std::string& path) {
 }  // namespace
 
 Scenario parseScenario(std::string_view yaml_text, const std::string& source_name) {
+  return readWorldDocument(loadWorldDocument(yaml_text, source_name), source_name);
+}
+
+YAML::Node loadWorldDocument(std::string_view yaml_text, const std::string& source_name) {
   std::vector<YAML::Node> documents;
   try {
     documents = YAML::LoadAll(std::string(yaml_text));
@@ -246,8 +251,11 @@ Scenario parseScenario(std::string_view yaml_text, const std::string& source_nam
     YamlField(documents[1], "", lineOf(documents[1].Mark()), source_name)
         .fail("a world file holds one YAML document, found " + std::to_string(documents.size()));
   }
+  return documents.front();
+}
 
-  const YamlField root(documents.front(), "", 1, source_name);
+Scenario readWorldDocument(const YAML::Node& document, const std::string& source_name) {
+  const YamlField root(document, "", 1, source_name);
   const YamlMap top(root);
   readFormat(top.required("format"));
   top.rejectUnknownKeys(
