@@ -195,7 +195,9 @@ Scene buildCSpaceSliceFigure(const Scenario& scenario, double theta_rad, const S
   const Rgba8 fill = withAlpha(style.cspace, 80);
   const Rgba8 edge = darker(style.cspace, 0.2);
   for (const Obstacle& obstacle : scenario.obstacles) {
-    const std::vector<Eigen::Vector2d> slice = cspaceSlice(obstacle.box, scenario.robot, theta_rad);
+    // Obstacles that pass under the chassis are no C-space obstacles (blocksRobot).
+    if (!blocksRobot(obstacle, scenario.robot)) continue;
+    const std::vector<Eigen::Vector2d> slice = cspaceSlice(obstacle, scenario.robot, theta_rad);
     scene.polygons.push_back({slice, Layers::kCSpace, fill});
     ScenePolyline outline{{}, edge, style.outline_px * 1.3f, true};
     for (const Eigen::Vector2d& p : slice)
@@ -242,8 +244,8 @@ Scene buildCSpaceStackFigure(const Scenario& scenario, int slices, const SceneSt
                             Layers::kGround,
                             style.lot});
   for (const Obstacle& o : scenario.obstacles) {
-    const auto c = o.box.corners();
-    scene.polygons.push_back({{c.begin(), c.end()}, Layers::kGrid, style.colorFor(o.kind)});
+    scene.polygons.push_back(
+        {outline(o, style.circle_segments), Layers::kGrid, style.colorFor(o.kind)});
   }
   const Rgba8 cool = rgb(60, 110, 200);
   for (int k = 0; k < slices; ++k) {
@@ -252,7 +254,8 @@ Scene buildCSpaceStackFigure(const Scenario& scenario, int slices, const SceneSt
     // Cyclic colours: -180 and +180 degrees are the same heading and get the same colour.
     const Rgba8 color = mix(cool, style.cspace, 0.5 * (1.0 + std::cos(theta)));
     for (const Obstacle& o : scenario.obstacles) {
-      const std::vector<Eigen::Vector2d> slice = cspaceSlice(o.box, scenario.robot, theta);
+      if (!blocksRobot(o, scenario.robot)) continue;
+      const std::vector<Eigen::Vector2d> slice = cspaceSlice(o, scenario.robot, theta);
       scene.polygons.push_back({slice, z, color});
       ScenePolyline outline{{}, darker(color, 0.45), style.tree_px, true};
       for (const Eigen::Vector2d& p : slice) outline.points.emplace_back(p.x(), p.y(), z + 1e-4);

@@ -1,12 +1,5 @@
 #include "parksim/scenario/ScenarioOverrides.h"
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <system_error>
-
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
 #include "parksim/scenario/WorldDocument.h"
@@ -120,23 +113,6 @@ bool startsWithField(std::string_view text, std::string_view path) {
     }
   }
   throw e;
-}
-
-// As the reader's own file reading (ScenarioReader.cpp), with the same messages.
-std::string readWorldFile(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Error(path + ": cannot open: is a directory");
-  errno = 0;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    const int err = errno;
-    throw Error(path + ": cannot open: " +
-                (err != 0 ? std::generic_category().message(err) : std::string("unknown error")));
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw Error(path + ": cannot read: input error");
-  return text.str();
 }
 
 }  // namespace

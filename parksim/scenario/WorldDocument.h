@@ -11,6 +11,9 @@
 
 namespace parksim {
 
+/// The text of the world file at `path`, with loadScenario's checks (type, size) and messages.
+std::string readWorldFile(const std::string& path);
+
 /// Parses world-file text into its one YAML document. Throws Error on syntax errors, an empty
 /// text or several documents.
 YAML::Node loadWorldDocument(std::string_view yaml_text, const std::string& source_name);

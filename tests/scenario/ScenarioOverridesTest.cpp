@@ -48,8 +48,9 @@ TEST(ScenarioOverrides, ReplaceFieldsAndCreateMissingSections) {
 TEST(ScenarioOverrides, BadValuesGetTheFilesChecksAndNameTheOverride) {
   EXPECT_EQ(errorOf({{"robot.wheel_radius", "-1", "--set robot.wheel_radius=-1"}}),
             "--set robot.wheel_radius=-1: robot.wheel_radius: must be positive, got -1");
-  EXPECT_EQ(errorOf({{"start", "[0.3, 0.6]", "--start 0.3,0.6"}}),
-            "--start 0.3,0.6: start: must be a list [x, y, yaw_deg] of 3 numbers, got a list of 2");
+  EXPECT_EQ(errorOf({{"start", "[0.3, 0.6]", "--start 0.3,0.6"}})
+                .rfind("--start 0.3,0.6: start: must be a list [x, y, yaw_deg] of 3 numbers", 0),
+            0u);
   EXPECT_EQ(errorOf({{"robot.bogus", "1", "--set robot.bogus=1"}})
                 .rfind("--set robot.bogus=1: "
                        "robot.bogus: unknown field",
