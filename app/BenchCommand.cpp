@@ -6,6 +6,7 @@
 // Exit status: 0 when every run finished (unsolved runs are results, not errors), 2 on bad input.
 
 #include "app/Command.h"
+#include "app/Progress.h"
 #include "app/Validators.h"
 
 #ifdef PARKSIM_HAVE_OMPL_BENCH
@@ -115,7 +116,7 @@ std::string settingsText(const BenchOptions& o) {
          " m, validity margin 0; exact path check at 0.2 mm, margin 0";
 }
 
-int runBench(const BenchOptions& o) {
+int runBench(const BenchOptions& o, const OutputOptions& output) {
   if (o.seeds < 1) throw Error("--seeds must be at least 1");
   std::vector<PlannerKind> kinds;
   if (o.planners.empty()) {
@@ -160,6 +161,8 @@ int runBench(const BenchOptions& o) {
   for (const Scenario& scenario : scenarios) {
     const BulletCollisionWorld world(scenario);
     const Clock::time_point t0 = Clock::now();
+    Progress progress(scenario.name + " seeds", o.seeds,
+                      progressWanted(output.progress, output.quiet));
     for (int seed = 1; seed <= o.seeds; ++seed) {
       for (SteeringKind steering : steerings) {
         for (PlannerKind kind : kinds) {
@@ -193,11 +196,9 @@ int runBench(const BenchOptions& o) {
           all.push_back(bench::runOmpl(scenario, world, def, check));
         }
       }
-      if (seed % 10 == 0 || seed == o.seeds) {
-        std::fprintf(stderr, "  %s: seed %d/%d done, %.1f s\n", scenario.name.c_str(), seed,
-                     o.seeds, std::chrono::duration<double>(Clock::now() - t0).count());
-      }
+      progress.update(seed);
     }
+    progress.finish();
     world_seconds.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
   }
   const double load_after = loadAverage();
@@ -301,7 +302,7 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("--ompl-log", opt->ompl_log,
                  "also write OMPL's benchmark log format here (one file per world: "
                  "FILE.<scenario>.log when there are several)");
-  return [opt] { return runBench(*opt); };
+  return [opt](const OutputOptions& output) { return runBench(*opt, output); };
 }
 
 }  // namespace parksim::app
@@ -313,7 +314,7 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
 namespace parksim::app {
 
 CommandRunner setupBenchCommand(CLI::App&) {
-  return [] {
+  return [](const OutputOptions&) {
     std::fprintf(stderr,
                  "parksim bench: not built (configure with PARKSIM_BUILD_BENCH=ON and link "
                  "parksim_ompl_bench)\n");

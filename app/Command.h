@@ -19,7 +19,14 @@ enum ExitCode : int {
   kExitToleranceNotMet = 4,  ///< run: goal or tracking tolerance missed, or a contact
 };
 
-using CommandRunner = std::function<int()>;
+/// -q, -v and --progress, which every command takes (registered by main()).
+struct OutputOptions {
+  bool quiet = false;     ///< -q: nothing on stdout; errors only on stderr
+  bool verbose = false;   ///< -v: also the build and the settings on stderr
+  bool progress = false;  ///< --progress: draw progress even when stderr is not a terminal
+};
+
+using CommandRunner = std::function<int(const OutputOptions&)>;
 
 CommandRunner setupPlanCommand(CLI::App& sub);
 CommandRunner setupRunCommand(CLI::App& sub);

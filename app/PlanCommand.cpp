@@ -24,7 +24,7 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
   opt->world_overrides.addTo(sub);
   sub.add_option("--out", opt->out, "output directory")->capture_default_str();
 
-  return [opt]() -> int {
+  return [opt](const OutputOptions&) -> int {
     const Scenario scenario = loadWorld(opt->world, opt->world_overrides);
     const PlanSetup setup = opt->plan.toSetup(scenario);
     const BulletCollisionWorld collision(scenario);

@@ -58,7 +58,7 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
       ->expected(3);
   CLI::App* app = &sub;
 
-  return [opt, app]() -> int {
+  return [opt, app](const OutputOptions&) -> int {
     const Scenario scenario = loadWorld(opt->world, opt->world_overrides);
     const ImageSize size = parseImageSize(opt->size);
     FigureDef def;

@@ -16,6 +16,7 @@
 #include "app/FigureInputs.h"
 #include "app/Overrides.h"
 #include "app/PlanOutput.h"
+#include "app/Progress.h"
 #include "app/Validators.h"
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/AtomicFile.h"
@@ -247,7 +248,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
                  "tracking tolerance: final heading error against the goal (default 1.5)")
       ->check(positiveNumber());
 
-  return [opt]() -> int {
+  return [opt](const OutputOptions& output) -> int {
     const Scenario scenario = loadWorld(opt->world, opt->world_overrides);
     const WorldRealism world_realism = loadWorldRealism(opt->world);
     ExecutionDef exec;
@@ -316,15 +317,22 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     }
 
     std::unique_ptr<FrameRecorder> recorder;
+    std::unique_ptr<Progress> frame_progress;
     EpisodeObserver observer;
     if (film) {
       recorder = std::make_unique<FrameRecorder>(scenario, frame_def);
       recorder->setPlan(plan);
-      observer = [&recorder](const EpisodeSample& sample) {
+      // One frame per 1/fps of simulated time over the plan (the episode may run a little longer).
+      const long expected_frames = static_cast<long>(plan.duration() * opt->fps) + 1;
+      frame_progress = std::make_unique<Progress>("frames", expected_frames,
+                                                  progressWanted(output.progress, output.quiet));
+      observer = [&recorder, &frame_progress, frames = 0L](const EpisodeSample& sample) mutable {
         recorder->addFrame(frameInput(sample));
+        frame_progress->update(++frames);
       };
     }
     const EpisodeResult episode = runEpisode(scenario, plan, exec, observer, 1.0 / opt->fps);
+    if (frame_progress) frame_progress->finish();
     const EpisodeMetrics& m = episode.metrics;
     // The same plan under the next noise seeds (no frames; their files are not kept).
     std::vector<RealisationRow> realisations;

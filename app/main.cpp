@@ -19,10 +19,15 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   const std::string version = parksim::versionLine(parksim::buildProvenance());
   app.set_version_flag("--version", version, "print parksim's version and build, then exit");
+  OutputOptions output;
   std::vector<std::pair<CLI::App*, CommandRunner>> commands;
   auto add = [&](const char* name, const char* help, CommandRunner (*setup)(CLI::App&)) {
     CLI::App* sub = app.add_subcommand(name, help);
     sub->set_version_flag("--version", version);
+    sub->add_flag("-q,--quiet", output.quiet, "print nothing but errors");
+    sub->add_flag("-v,--verbose", output.verbose, "also print the build and the settings (stderr)");
+    sub->add_flag("--progress", output.progress,
+                  "show progress even when stderr is not a terminal (default: on a terminal)");
     commands.emplace_back(sub, setup(*sub));
   };
   add("plan", "plan a parking manoeuvre and write trajectory.csv and plan.json", setupPlanCommand);
@@ -53,7 +58,19 @@ int main(int argc, char** argv) {
   }
   try {
     for (auto& [sub, run] : commands) {
-      if (sub->parsed()) return run();
+      if (!sub->parsed()) continue;
+      if (output.verbose) {
+        std::fprintf(stderr, "%s\n", version.c_str());
+        for (const CLI::Option* o : sub->get_options()) {
+          if (o->count() > 0 && o->get_name() != "--help") {
+            std::fprintf(stderr, "  %s = %s\n", o->get_name().c_str(),
+                         o->as<std::string>().c_str());
+          }
+        }
+      }
+      // -q: the summaries go nowhere; errors still reach stderr.
+      if (output.quiet && std::freopen("/dev/null", "w", stdout) == nullptr) return kExitInternal;
+      return run(output);
     }
   } catch (const parksim::Error& e) {
     std::fprintf(stderr, "parksim: error: %s\n", e.what());

@@ -231,6 +231,21 @@ TEST_F(Cli, StartGoalAndSetOverrideTheWorldOnEveryWorldCommand) {
   EXPECT_FALSE(fs::exists(dir_ / "never"));
 }
 
+TEST_F(Cli, QuietPrintsNothingAndVerboseTellsTheBuild) {
+  const std::string out = " --out " + (dir_ / "q").string();
+  CliRun r = parksim("plan " + world("head_in.yaml") + " -q" + out);
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.out, "");
+  r = parksim("plan " + world("head_in.yaml") + " -v --seed 2" + out);
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.out.rfind(versionLine(buildProvenance()) + "\n", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("--seed = 2"), std::string::npos) << r.out;
+  // Errors still show under -q.
+  r = parksim("plan " + world("head_in.yaml") + " -q --planner nope" + out);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("unknown planner 'nope'"), std::string::npos) << r.out;
+}
+
 TEST_F(Cli, MessagesSayWhatIsWrongInFewWords) {
   CliRun r = parksim("foo");
   EXPECT_EQ(r.exit_code, 2);
