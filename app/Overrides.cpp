@@ -18,9 +18,14 @@ void WorldOverrideOptions::addTo(CLI::App& sub) {
 
 std::vector<ScenarioOverride> WorldOverrideOptions::overrides() const {
   std::vector<ScenarioOverride> out;
-  // A pose list with yaw in degrees, the file's own [x, y, yaw_deg] form.
-  if (!start.empty()) out.push_back({"start", "[" + start + "]", "--start " + start});
-  if (!goal.empty()) out.push_back({"goal.pose", "[" + goal + "]", "--goal " + goal});
+  // "x,y,deg" is the file's [x, y, yaw_deg] list without brackets; a list or map is YAML as is.
+  auto pose = [](const std::string& text) {
+    const std::size_t first = text.find_first_not_of(" \t");
+    const bool yaml = first != std::string::npos && (text[first] == '[' || text[first] == '{');
+    return yaml ? text : "[" + text + "]";
+  };
+  if (!start.empty()) out.push_back({"start", pose(start), "--start " + start});
+  if (!goal.empty()) out.push_back({"goal.pose", pose(goal), "--goal " + goal});
   for (const std::string& set : sets) {
     const std::size_t eq = set.find('=');
     if (eq == std::string::npos || eq == 0) {
