@@ -65,6 +65,14 @@ struct PlanSetup {
   double feedback_headroom = 0.2;
 };
 
+/// Area of the study's lot (1.8 x 1.2 m), the unit of the default budget's scaling, m^2.
+inline constexpr double kStudyLotAreaM2 = 1.8 * 1.2;
+
+/// The default iteration budget of `kind` on `lot`: the base budget (tree planners: the study's
+/// 2000 iterations; hybrid-a-star: 20000 node expansions) times max(1, lot area / study lot
+/// area), rounded up, so budgets grow with the space to search.
+int defaultIterationBudget(PlannerKind kind, const LotBounds& lot);
+
 /// Plans with the selected planner and steering, then times the plan as `timing` says (the
 /// re-timed trajectory is validated again; if rounding ever made it fail, the planner's own
 /// timing is kept) and sets its duration lower bound.
