@@ -22,6 +22,7 @@
 
 #include <vector>
 
+#include "app/PlanOutput.h"
 #include "bench/ompl/OmplLog.h"
 #include "bench/ompl/OmplPlanners.h"
 #include "bench/planning/BenchCsv.h"
@@ -45,7 +46,8 @@ struct BenchOptions {
   std::vector<std::string> planners;   // parksim planner kinds; empty: all
   std::vector<std::string> steerings;  // parksim steering kinds; empty: all
   bool smooth = false;                 // also run every parksim planner with smoothing
-  int max_iterations = 2000;
+  std::string max_iterations = "auto";
+  double time_limit_s = 0.0;  // parksim first-solution runs: wall-time budget, 0 = none
   double anytime_s = 0.1;
   bool ompl = false;
   std::vector<std::string> ompl_planners = {"RRT", "RRTConnect", "RRTstar"};
@@ -106,11 +108,12 @@ std::string logPathFor(const std::string& path, const std::string& scenario, boo
 std::string settingsText(const BenchOptions& o) {
   char buf[512];
   std::snprintf(buf, sizeof buf,
-                "seeds 1..%d; parksim: max_iterations %d, anytime budget %g s; OMPL: %s, time "
+                "seeds 1..%d; parksim: max_iterations %s, time limit %g s, anytime budget %g s; "
+                "OMPL: %s, time "
                 "limit %g s, Reeds-Shepp turning radius %g m, motion-check segment %g m, "
                 "validity margin 0; exact path check at 0.2 mm, margin 0",
-                o.seeds, o.max_iterations, o.anytime_s, o.ompl ? "on" : "off", o.budget_s,
-                o.turning_radius_m, o.segment_m);
+                o.seeds, o.max_iterations.c_str(), o.time_limit_s, o.anytime_s,
+                o.ompl ? "on" : "off", o.budget_s, o.turning_radius_m, o.segment_m);
   return buf;
 }
 
@@ -144,6 +147,10 @@ int runBench(const BenchOptions& o) {
   }
   std::vector<Scenario> scenarios;
   for (const std::string& path : o.worlds) scenarios.push_back(loadScenario(path));
+  // Bad budgets fail before anything runs.
+  for (const Scenario& s : scenarios) {
+    for (PlannerKind kind : kinds) app::parseIterationBudget(o.max_iterations, kind, s.lot);
+  }
   ensureDirectory(o.out);
 
   const double load_before = loadAverage();
@@ -160,14 +167,20 @@ int runBench(const BenchOptions& o) {
     const BulletCollisionWorld world(scenario);
     const Clock::time_point t0 = Clock::now();
     for (int seed = 1; seed <= o.seeds; ++seed) {
-      for (SteeringKind steering : steerings) {
+      for (std::size_t si = 0; si < steerings.size(); ++si) {
+        const SteeringKind steering = steerings[si];
         for (PlannerKind kind : kinds) {
+          // Hybrid A* has its own moves: run it once per seed, under the first steering listed.
+          if (kind == PlannerKind::kHybridAStar && si > 0) continue;
           for (bool smooth : smoothing) {
+            if (kind == PlannerKind::kHybridAStar && smooth) continue;  // nothing to smooth
             bench::ParksimRunDef def;
             def.setup.steering_kind = steering;
             def.setup.planner.kind = kind;
             def.setup.planner.seed = static_cast<std::uint64_t>(seed);
-            def.setup.planner.max_iterations = o.max_iterations;
+            def.setup.planner.max_iterations =
+                app::parseIterationBudget(o.max_iterations, kind, scenario.lot);
+            def.setup.planner.max_time_s = o.time_limit_s;
             def.setup.planner.record_tree = false;
             def.setup.planner.smooth = smooth;
             def.check = check;
@@ -281,9 +294,13 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_flag("--smooth", opt->smooth,
                "also run every parksim planner with shortcut smoothing (planner name +smooth)");
   sub.add_option("--max-iterations", opt->max_iterations,
-                 "iteration budget of parksim's first-solution runs")
+                 "iteration budget of parksim's first-solution runs (auto: scaled with the lot, "
+                 "as for plan)")
+      ->capture_default_str();
+  sub.add_option("--time-limit", opt->time_limit_s,
+                 "wall-time budget of parksim's first-solution runs, s (0: none)")
       ->capture_default_str()
-      ->check(positive());
+      ->check(CLI::NonNegativeNumber);
   sub.add_option("--anytime-s", opt->anytime_s,
                  "wall-time budget of the extra run of parksim's anytime planners (RRT*), s")
       ->capture_default_str()
