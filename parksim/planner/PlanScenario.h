@@ -41,9 +41,12 @@ const char* toString(TimingKind kind);
 /// Parses "time-optimal" or "study"; throws Error otherwise.
 TimingKind timingKindFromString(const std::string& name);
 
+/// Defaults are the command line's: hybrid-a-star (with its base budget of 20000 expansions;
+/// the command line scales it with the lot, defaultIterationBudget), reeds-shepp steering for
+/// the tree planners, time-optimal timing with 20% feedback headroom.
 struct PlanSetup {
-  PlannerDef planner;
-  SteeringKind steering_kind = SteeringKind::kMoveToPose;
+  PlannerDef planner{.kind = PlannerKind::kHybridAStar, .max_iterations = 20000};
+  SteeringKind steering_kind = SteeringKind::kReedsShepp;
   /// Move-to-pose parameters; its to-goal tolerance is taken from the scenario's goal region,
   /// scaled by goal_tolerance_fraction.
   MoveToPoseDef steering;
