@@ -6,6 +6,8 @@
 
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/Provenance.h"
+#include "parksim/sim/EpisodeFiles.h"
 
 namespace parksim::app {
 
@@ -94,6 +96,7 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
                            const PlanResult& result) {
   const PhaseTimes& t = result.stats.times;
   nlohmann::json j = {
+      {"provenance", provenanceToJson(buildProvenance())},
       {"world", scenario.source_path},
       {"scenario", scenario.name},
       {"status", toString(result.status)},

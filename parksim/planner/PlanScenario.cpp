@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "parksim/core/Error.h"
 
@@ -82,6 +84,21 @@ PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checke
     throw Error("planScenario: feedback_headroom must be in [0, 1)");
   }
   if (!steering) throw Error("planScenario: unknown steering kind");
+  // The same rule as the world reader's, so a world the reader accepts never fails here for
+  // its start or goal (the tree planner's own checks then agree up to Bullet's rounding).
+  const double margin = 0.5 * setup.validation.resolution_m;
+  if (const std::optional<std::string> problem = placementProblem(scenario, scenario.start, margin)) {
+    PlanResult r;
+    r.status = PlanStatus::kInvalidStart;
+    r.message = "start: " + *problem;
+    return r;
+  }
+  if (const std::optional<std::string> problem = goalPlacementProblem(scenario, margin)) {
+    PlanResult r;
+    r.status = PlanStatus::kInvalidGoal;
+    r.message = "goal: " + *problem;
+    return r;
+  }
   const MotionValidator validator(checker, scenario.robot, scenario.lot, setup.validation);
   const TimingLimits limits = timingLimits(scenario.robot, setup.feedback_headroom);
   PlanResult result;

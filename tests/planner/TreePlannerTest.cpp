@@ -308,7 +308,35 @@ TEST(TreePlanner, InvalidStartAndGoalAreStatuses) {
   EXPECT_EQ(planScenario(s, checker, PlanSetup{}).status, PlanStatus::kInvalidGoal);
   s.goal.either_heading = true;  // turned, it is on the parked robot too
   EXPECT_EQ(planScenario(s, checker, PlanSetup{}).status, PlanStatus::kInvalidGoal);
-  EXPECT_EQ(planScenario(s, checker, PlanSetup{}).message, "goal pose collides");
+  EXPECT_EQ(planScenario(s, checker, PlanSetup{}).message,
+            "goal: robot footprint overlaps obstacle \"robot_5\" (in both accepted headings)");
+}
+
+// The reader's rule, applied by the planner too: a start 0.3 mm from an obstacle is refused
+// naming the margin (not "collides"), a goal on the lot edge likewise, and low obstacles are
+// not obstacles.
+TEST(TreePlanner, StartAndGoalFollowThePlacementRule) {
+  Scenario s = testing::studyLot();
+  const double front = s.start.y + s.robot.front_overhang_m;  // facing +y
+  s.obstacles.push_back(Obstacle::makeBox("near", ObstacleKind::kBox,
+                                          testing::cornerBox(0.0, front + 0.0003, 0.3, 0.05),
+                                          0.1));
+  SatChecker checker(s);
+  PlanResult r = planScenario(s, checker, PlanSetup{});
+  EXPECT_EQ(r.status, PlanStatus::kInvalidStart);
+  EXPECT_EQ(r.message,
+            "start: robot footprint is 0.3 mm from obstacle \"near\"; start and goal keep at "
+            "least the 0.5 mm margin of the planner's motion checks");
+  EXPECT_EQ(r.message, "start: " + *placementProblem(s, s.start));
+  s.obstacles.back().height_m = 0.001;  // under the 2 mm ground clearance
+  EXPECT_FALSE(placementProblem(s, s.start).has_value());
+  s = testing::studyLot();
+  s.goal.pose.y = s.lot.y_min_m;
+  checker = SatChecker(s);
+  r = planScenario(s, checker, PlanSetup{});
+  EXPECT_EQ(r.status, PlanStatus::kInvalidGoal);
+  EXPECT_NE(r.message.find("closer than the 0.5 mm margin to the lot edge"), std::string::npos)
+      << r.message;
 }
 
 TEST(TreePlanner, AStartOnTheLotEdgeIsNotReportedAsACollision) {
