@@ -24,6 +24,7 @@
 
 #include <vector>
 
+#include "app/PlanOutput.h"
 #include "bench/ompl/OmplLog.h"
 #include "bench/ompl/OmplPlanners.h"
 #include "bench/planning/BenchCsv.h"
@@ -49,7 +50,8 @@ struct BenchOptions {
   std::vector<std::string> planners;   // parksim planner kinds; empty: all
   std::vector<std::string> steerings;  // parksim steering kinds; empty: all
   bool smooth = false;                 // also run every parksim planner with smoothing
-  int max_iterations = 2000;
+  std::string max_iterations = "auto";
+  double time_limit_s = 0.0;  // parksim first-solution runs: wall-time budget, 0 = none
   double anytime_s = 0.1;
   bool ompl = false;
   std::vector<std::string> ompl_planners = {"RRT", "RRTConnect", "RRTstar"};
@@ -108,12 +110,12 @@ std::string logPathFor(const std::string& path, const std::string& scenario, boo
 }
 
 std::string settingsText(const BenchOptions& o) {
-  return "seeds 1.." + std::to_string(o.seeds) + "; parksim: max_iterations " +
-         std::to_string(o.max_iterations) + ", anytime budget " + formatGeneral(o.anytime_s) +
-         " s; OMPL: " + (o.ompl ? "on" : "off") + ", time limit " + formatGeneral(o.budget_s) +
-         " s, Reeds-Shepp turning radius " + formatGeneral(o.turning_radius_m) +
-         " m, motion-check segment " + formatGeneral(o.segment_m) +
-         " m, validity margin 0; exact path check at 0.2 mm, margin 0";
+  return "seeds 1.." + std::to_string(o.seeds) + "; parksim: max_iterations " + o.max_iterations +
+         ", time limit " + formatGeneral(o.time_limit_s) + " s, anytime budget " +
+         formatGeneral(o.anytime_s) + " s; OMPL: " + (o.ompl ? "on" : "off") + ", time limit " +
+         formatGeneral(o.budget_s) + " s, Reeds-Shepp turning radius " +
+         formatGeneral(o.turning_radius_m) + " m, motion-check segment " +
+         formatGeneral(o.segment_m) + " m, validity margin 0; exact path check at 0.2 mm, margin 0";
 }
 
 int runBench(const BenchOptions& o, const OutputOptions& output) {
@@ -146,6 +148,10 @@ int runBench(const BenchOptions& o, const OutputOptions& output) {
   }
   std::vector<Scenario> scenarios;
   for (const std::string& path : o.worlds) scenarios.push_back(loadScenario(path));
+  // Bad budgets fail before anything runs.
+  for (const Scenario& s : scenarios) {
+    for (PlannerKind kind : kinds) app::parseIterationBudget(o.max_iterations, kind, s.lot);
+  }
   ensureDirectory(o.out);
 
   const double load_before = loadAverage();
@@ -164,14 +170,20 @@ int runBench(const BenchOptions& o, const OutputOptions& output) {
     Progress progress(scenario.name + " seeds", o.seeds,
                       progressWanted(output.progress, output.quiet));
     for (int seed = 1; seed <= o.seeds; ++seed) {
-      for (SteeringKind steering : steerings) {
+      for (std::size_t si = 0; si < steerings.size(); ++si) {
+        const SteeringKind steering = steerings[si];
         for (PlannerKind kind : kinds) {
+          // Hybrid A* has its own moves: run it once per seed, under the first steering listed.
+          if (kind == PlannerKind::kHybridAStar && si > 0) continue;
           for (bool smooth : smoothing) {
+            if (kind == PlannerKind::kHybridAStar && smooth) continue;  // nothing to smooth
             bench::ParksimRunDef def;
             def.setup.steering_kind = steering;
             def.setup.planner.kind = kind;
             def.setup.planner.seed = static_cast<std::uint64_t>(seed);
-            def.setup.planner.max_iterations = o.max_iterations;
+            def.setup.planner.max_iterations =
+                app::parseIterationBudget(o.max_iterations, kind, scenario.lot);
+            def.setup.planner.max_time_s = o.time_limit_s;
             def.setup.planner.record_tree = false;
             def.setup.planner.smooth = smooth;
             def.check = check;
@@ -270,9 +282,13 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_flag("--smooth", opt->smooth,
                "also run every parksim planner with shortcut smoothing (planner name +smooth)");
   sub.add_option("--max-iterations", opt->max_iterations,
-                 "iteration budget of parksim's first-solution runs")
+                 "iteration budget of parksim's first-solution runs (auto: scaled with the lot, "
+                 "as for plan)")
+      ->capture_default_str();
+  sub.add_option("--time-limit", opt->time_limit_s,
+                 "wall-time budget of parksim's first-solution runs, s (0: none)")
       ->capture_default_str()
-      ->check(positiveNumber());
+      ->check(nonNegativeNumber());
   sub.add_option("--anytime-s", opt->anytime_s,
                  "wall-time budget of the extra run of parksim's anytime planners (RRT*), s")
       ->capture_default_str()

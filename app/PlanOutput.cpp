@@ -33,9 +33,10 @@ void PlanCliOptions::addTo(CLI::App& sub) {
   sub.add_option("--seed", seed, "seed of the planner's random number generator")
       ->capture_default_str()
       ->check(nonNegativeNumber());
-  sub.add_option("--max-iterations", max_iterations, "iteration budget of the tree search")
-      ->capture_default_str()
-      ->check(nonNegativeNumber());
+  sub.add_option("--max-iterations", max_iterations,
+                 "iteration budget (hybrid-a-star: node expansions); auto: 2000 for tree "
+                 "planners, 20000 for hybrid-a-star, times max(1, lot area / 2.16 m^2)")
+      ->capture_default_str();
   sub.add_option("--time-limit", time_limit_s,
                  "wall-time budget of the search, s (0: none); the plan then depends on the "
                  "machine's speed, so reproducible runs use --max-iterations alone")
@@ -60,11 +61,28 @@ void PlanCliOptions::addTo(CLI::App& sub) {
       ->check(positiveNumber());
 }
 
-PlanSetup PlanCliOptions::toSetup(const Scenario&) const {
+int parseIterationBudget(const std::string& text, PlannerKind kind, const LotBounds& lot,
+                         const std::string& option) {
+  if (text == "auto") return defaultIterationBudget(kind, lot);
+  std::size_t used = 0;
+  long value = -1;
+  try {
+    value = std::stol(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || value < 0 || value > 2000000000L) {
+    throw Error(option + ": expected auto or a non-negative integer, got '" + text + "'");
+  }
+  return static_cast<int>(value);
+}
+
+PlanSetup PlanCliOptions::toSetup(const Scenario& scenario) const {
   PlanSetup setup;
   setup.planner.kind = plannerKindFromString(planner);
   setup.planner.seed = seed;
-  setup.planner.max_iterations = max_iterations;
+  setup.planner.max_iterations =
+      parseIterationBudget(max_iterations, setup.planner.kind, scenario.lot);
   setup.planner.max_time_s = time_limit_s;
   setup.timing = timingKindFromString(timing);
   setup.feedback_headroom = feedback_headroom;

@@ -16,10 +16,10 @@ namespace parksim::app {
 /// --time-limit, --smooth, --smoothing-attempts, --timing, --feedback-headroom,
 /// --turning-radius.
 struct PlanCliOptions {
-  std::string planner = "rrt-goal-connect";
-  std::string steering = "move-to-pose";
+  std::string planner = "hybrid-a-star";
+  std::string steering = "reeds-shepp";
   std::uint64_t seed = 1;
-  int max_iterations = 2000;
+  std::string max_iterations = "auto";
   double time_limit_s = 0.0;
   bool smooth = false;
   int smoothing_attempts = 100;
@@ -32,6 +32,11 @@ struct PlanCliOptions {
   /// The planning setup these options select for `scenario`. Throws Error on bad values.
   PlanSetup toSetup(const Scenario& scenario) const;
 };
+
+/// "auto" -> defaultIterationBudget(kind, lot); otherwise a non-negative integer. Throws Error
+/// naming `option` on anything else.
+int parseIterationBudget(const std::string& text, PlannerKind kind, const LotBounds& lot,
+                         const std::string& option = "--max-iterations");
 
 /// plan.json's content: status, planner, steering, seed, iterations, tree sizes, per-phase
 /// times, planning_time_s, first solution, cost and its history, path_length_m, cusps, final

@@ -33,6 +33,10 @@ struct BenchRecord {
   double cpu_total_s = kNotMeasured;
   double length_m = kNotMeasured;  ///< length travelled by the reference point, m
   int cusps = -1;                  ///< direction reversals along the path
+  /// parksim: duration of the planned trajectory, s (as timed: time-optimal by default).
+  double duration_s = kNotMeasured;
+  /// parksim: lower bound on any timing of the path's geometry (TimeOptimalTiming.h), s.
+  double duration_lower_bound_s = kNotMeasured;
   /// parksim: the planner's path cost (length + reverse and cusp penalties, PathCost.h), m.
   double cost = kNotMeasured;
   double min_clearance_m = kNotMeasured;  ///< smallest footprint-obstacle distance along the path

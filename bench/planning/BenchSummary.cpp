@@ -99,7 +99,7 @@ std::optional<double> studyPlanningTime(const std::string& scenario, const std::
 std::vector<GroupSummary> summarize(const std::vector<BenchRecord>& records) {
   struct Acc {
     GroupSummary g;
-    std::vector<double> times, lengths, cusps, clearances, totals, cpus;
+    std::vector<double> times, lengths, cusps, clearances, totals, cpus, durations, ratios;
     std::vector<std::pair<std::string, double>> phase_sum;
   };
   std::vector<Acc> accs;
@@ -127,6 +127,10 @@ std::vector<GroupSummary> summarize(const std::vector<BenchRecord>& records) {
       if (r.valid) ++a.g.valid;
       if (!std::isnan(r.length_m)) a.lengths.push_back(r.length_m);
       if (r.cusps >= 0) a.cusps.push_back(r.cusps);
+      if (!std::isnan(r.duration_s)) a.durations.push_back(r.duration_s);
+      if (!std::isnan(r.duration_s) && r.duration_lower_bound_s > 0.0) {
+        a.ratios.push_back(r.duration_s / r.duration_lower_bound_s);
+      }
       if (!std::isnan(r.min_clearance_m)) a.clearances.push_back(r.min_clearance_m);
     }
     for (const auto& [name, seconds] : r.phases_s) {
@@ -146,6 +150,8 @@ std::vector<GroupSummary> summarize(const std::vector<BenchRecord>& records) {
     g.time_first_p90_s = quantile(a.times, 0.9);
     g.length_median_m = quantile(a.lengths, 0.5);
     g.cusps_median = quantile(a.cusps, 0.5);
+    g.duration_median_s = quantile(a.durations, 0.5);
+    g.duration_ratio_median = quantile(a.ratios, 0.5);
     g.clearance_median_m = quantile(a.clearances, 0.5);
     g.cpu_total_median_s = quantile(a.cpus, 0.5);
     if (!a.totals.empty()) {
@@ -175,6 +181,8 @@ std::string formatSummaryTable(const std::vector<GroupSummary>& groups) {
                                            "CPU per run median",
                                            "length median",
                                            "cusps median",
+                                           "duration median",
+                                           "duration / bound median",
                                            "clearance median",
                                            "study (Python)"};
   std::vector<std::vector<std::string>> rows;
@@ -193,7 +201,10 @@ std::string formatSummaryTable(const std::vector<GroupSummary>& groups) {
                     g.solved > 0 ? fixed(100.0 * g.valid / g.solved, 0) + "%" : "-",
                     timeText(g.time_first_median_s), timeText(g.time_first_p90_s),
                     timeText(g.cpu_total_median_s), lengthText(g.length_median_m),
-                    plainText(g.cusps_median), mmText(g.clearance_median_m), study});
+                    plainText(g.cusps_median),
+                    std::isnan(g.duration_median_s) ? "-" : fixed(g.duration_median_s, 1) + " s",
+                    std::isnan(g.duration_ratio_median) ? "-" : fixed(g.duration_ratio_median, 2),
+                    mmText(g.clearance_median_m), study});
   }
   return markdownTable(header, rows);
 }

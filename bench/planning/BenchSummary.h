@@ -29,6 +29,9 @@ struct GroupSummary {
   double time_first_p90_s = kNotMeasured;
   double length_median_m = kNotMeasured;
   double cusps_median = kNotMeasured;
+  double duration_median_s = kNotMeasured;  ///< planned trajectory's duration (parksim)
+  /// Median over solved runs of duration / its lower bound (parksim).
+  double duration_ratio_median = kNotMeasured;
   double clearance_median_m = kNotMeasured;
   double time_total_mean_s = kNotMeasured;
   double cpu_total_median_s = kNotMeasured;  ///< median CPU time of a whole run

@@ -28,10 +28,17 @@ std::string budgetName(const PlannerDef& planner) {
 }
 
 std::vector<std::pair<std::string, double>> phaseList(const PhaseTimes& t) {
-  return {
-      {"sampling", t.sampling_s},     {"nearest", t.nearest_s},       {"steering", t.steering_s},
-      {"collision", t.collision_s},   {"goal_check", t.goal_check_s}, {"rewiring", t.rewiring_s},
-      {"connection", t.connection_s}, {"smoothing", t.smoothing_s},   {"total", t.total_s}};
+  return {{"sampling", t.sampling_s},
+          {"nearest", t.nearest_s},
+          {"steering", t.steering_s},
+          {"collision", t.collision_s},
+          {"goal_check", t.goal_check_s},
+          {"rewiring", t.rewiring_s},
+          {"connection", t.connection_s},
+          {"smoothing", t.smoothing_s},
+          {"heuristic", t.heuristic_s},
+          {"timing", t.timing_s},
+          {"total", t.total_s}};
 }
 
 BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& world,
@@ -43,7 +50,9 @@ BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& wor
   r.library = "parksim";
   r.planner = toString(def.setup.planner.kind);
   if (def.setup.planner.smooth) r.planner += "+smooth";
-  r.space = toString(def.setup.steering_kind);
+  // Hybrid A* drives its own motion primitives and Reeds-Shepp curves, whatever the steering.
+  r.space = def.setup.planner.kind == PlannerKind::kHybridAStar ? "primitives+reeds-shepp"
+                                                                : toString(def.setup.steering_kind);
   r.scenario = scenario.name;
   r.seed = def.setup.planner.seed;
   r.budget = budgetName(def.setup.planner);
@@ -65,6 +74,8 @@ BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& wor
     r.min_clearance_m = check.min_clearance_m;
     r.length_m = result.trajectory.pathLength(scenario.robot);
     r.cusps = result.trajectory.cusps(scenario.robot);
+    r.duration_s = result.trajectory.duration();
+    r.duration_lower_bound_s = result.duration_lower_bound_s;
     r.cost = result.cost;
   }
   return r;

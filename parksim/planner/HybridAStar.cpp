@@ -113,7 +113,9 @@ PlanResult HybridAStar::solve(const Pose2& start, const GoalRegion& goal) const 
       makePrimitives(hybrid_.fine_step_m, radii, hybrid_.fine_turn_in_place_rad);
   const double fine_zone =
       hybrid_.fine_zone_m < 0.0 ? 2.0 * footprintRadius(robot_) : hybrid_.fine_zone_m;
+  bool fine_on = false;  // the first attempt is coarse everywhere
   auto inFineZone = [&](const Pose2& p) {
+    if (!fine_on) return false;
     for (const Pose2& q : sources) {
       if (positionDistance(p, q) < fine_zone) return true;
     }
@@ -157,80 +159,91 @@ PlanResult HybridAStar::solve(const Pose2& start, const GoalRegion& goal) const 
   std::unordered_map<std::int64_t, char> closed;
   using Item = std::pair<double, int>;  // f, node; ties broken by node id (deterministic)
   std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
-  for (const Pose2& p : sources) {
-    if (best.count(key(p))) continue;
-    best[key(p)] = static_cast<int>(nodes.size());
-    open.push({hybrid_.heuristic_weight * heuristic(p), static_cast<int>(nodes.size())});
-    nodes.push_back({p, 0.0, -1, -1, 0, false});
-  }
-
   std::vector<PathPiece> expansion;  // the analytic curve that reached the goal
   int reached_from = -1;
   bool timed_out = false;
   int expansions = 0;
-  while (!open.empty() && expansions < def_.max_iterations) {
-    if (def_.max_time_s > 0.0 && seconds(t_begin) > def_.max_time_s) {
-      timed_out = true;
-      break;
+  // Coarse first; if that runs out of cells to expand (the sources are hemmed in), once more
+  // with the fine zone, on what is left of the budget.
+  for (int attempt = 0; attempt < 2 && reached_from < 0 && !timed_out; ++attempt) {
+    if (attempt == 1) {
+      if (!open.empty() || fine_zone <= 0.0) break;
+      fine_on = true;
+      nodes.clear();
+      best.clear();
+      closed.clear();
     }
-    const auto [f, id] = open.top();
-    open.pop();
-    const std::int64_t k = key(nodes[id].pose);
-    if (closed.count(k) || best[k] != id) continue;
-    closed[k] = 1;
-    ++expansions;
-    const Node n = nodes[id];
-    const double h = (f - n.g) / hybrid_.heuristic_weight;
+    for (const Pose2& p : sources) {
+      if (best.count(key(p))) continue;
+      best[key(p)] = static_cast<int>(nodes.size());
+      open.push({hybrid_.heuristic_weight * heuristic(p), static_cast<int>(nodes.size())});
+      nodes.push_back({p, 0.0, -1, -1, 0, false});
+    }
 
-    if (h < hybrid_.analytic_near_steps * step || expansions % hybrid_.analytic_interval == 1 ||
-        hybrid_.analytic_interval == 1) {
-      const Clock::time_point t0 = Clock::now();
-      for (const Pose2& r : targets) {
-        ++st.goal_attempts;
-        std::vector<PathPiece> curve = reeds_shepp_.pieces(n.pose, r);
-        if (validator_.isValid(geometryOf(n.pose, curve, robot_))) {
-          expansion = std::move(curve);
-          reached_from = id;
-          break;
+    while (!open.empty() && expansions < def_.max_iterations) {
+      if (def_.max_time_s > 0.0 && seconds(t_begin) > def_.max_time_s) {
+        timed_out = true;
+        break;
+      }
+      const auto [f, id] = open.top();
+      open.pop();
+      const std::int64_t k = key(nodes[id].pose);
+      if (closed.count(k) || best[k] != id) continue;
+      closed[k] = 1;
+      ++expansions;
+      const Node n = nodes[id];
+      const double h = (f - n.g) / hybrid_.heuristic_weight;
+
+      if (h < hybrid_.analytic_near_steps * step || expansions % hybrid_.analytic_interval == 1 ||
+          hybrid_.analytic_interval == 1) {
+        const Clock::time_point t0 = Clock::now();
+        for (const Pose2& r : targets) {
+          ++st.goal_attempts;
+          std::vector<PathPiece> curve = reeds_shepp_.pieces(n.pose, r);
+          if (validator_.isValid(geometryOf(n.pose, curve, robot_))) {
+            expansion = std::move(curve);
+            reached_from = id;
+            break;
+          }
         }
+        st.times.goal_check_s += seconds(t0);
+        if (reached_from >= 0) break;
       }
-      st.times.goal_check_s += seconds(t0);
-      if (reached_from >= 0) break;
-    }
 
-    const bool in_fine = inFineZone(n.pose);
-    const std::vector<MotionPrimitive>& primitives = in_fine ? fine : coarse;
-    for (int m = 0; m < static_cast<int>(primitives.size()); ++m) {
-      const MotionPrimitive& prim = primitives[m];
-      Pose2 next;
-      {
-        const Clock::time_point t0 = Clock::now();
-        next = applyPrimitive(n.pose, prim);
-        st.times.steering_s += seconds(t0);
+      const bool in_fine = inFineZone(n.pose);
+      const std::vector<MotionPrimitive>& primitives = in_fine ? fine : coarse;
+      for (int m = 0; m < static_cast<int>(primitives.size()); ++m) {
+        const MotionPrimitive& prim = primitives[m];
+        Pose2 next;
+        {
+          const Clock::time_point t0 = Clock::now();
+          next = applyPrimitive(n.pose, prim);
+          st.times.steering_s += seconds(t0);
+        }
+        if (!lot_.contains(next.x, next.y)) continue;
+        const std::int64_t nk = key(next);
+        if (closed.count(nk)) continue;
+        // Searching backwards, a move forward here is driven in reverse.
+        const bool driven_reverse = backward ? prim.direction > 0 : prim.direction < 0;
+        double g = n.g + prim.length_m * (driven_reverse ? 1.0 + def_.reverse_penalty : 1.0) +
+                   (prim.direction == 0 ? turn_cost_per_rad * prim.turn_rad : 0.0);
+        const bool cusp =
+            prim.direction != 0 && n.last_direction != 0 && prim.direction != n.last_direction;
+        if (cusp) g += def_.cusp_penalty_m;
+        const auto it = best.find(nk);
+        if (it != best.end() && nodes[it->second].g <= g) continue;
+        {
+          const Clock::time_point t0 = Clock::now();
+          const bool ok = validator_.isValid(geometryOf(n.pose, {pieceOf(prim, robot_)}, robot_));
+          st.times.collision_s += seconds(t0);
+          if (!ok) continue;
+        }
+        const int child = static_cast<int>(nodes.size());
+        nodes.push_back(
+            {next, g, id, m, prim.direction != 0 ? prim.direction : n.last_direction, in_fine});
+        best[nk] = child;
+        open.push({g + hybrid_.heuristic_weight * heuristic(next), child});
       }
-      if (!lot_.contains(next.x, next.y)) continue;
-      const std::int64_t nk = key(next);
-      if (closed.count(nk)) continue;
-      // Searching backwards, a move forward here is driven in reverse.
-      const bool driven_reverse = backward ? prim.direction > 0 : prim.direction < 0;
-      double g = n.g + prim.length_m * (driven_reverse ? 1.0 + def_.reverse_penalty : 1.0) +
-                 (prim.direction == 0 ? turn_cost_per_rad * prim.turn_rad : 0.0);
-      const bool cusp =
-          prim.direction != 0 && n.last_direction != 0 && prim.direction != n.last_direction;
-      if (cusp) g += def_.cusp_penalty_m;
-      const auto it = best.find(nk);
-      if (it != best.end() && nodes[it->second].g <= g) continue;
-      {
-        const Clock::time_point t0 = Clock::now();
-        const bool ok = validator_.isValid(geometryOf(n.pose, {pieceOf(prim, robot_)}, robot_));
-        st.times.collision_s += seconds(t0);
-        if (!ok) continue;
-      }
-      const int child = static_cast<int>(nodes.size());
-      nodes.push_back(
-          {next, g, id, m, prim.direction != 0 ? prim.direction : n.last_direction, in_fine});
-      best[nk] = child;
-      open.push({g + hybrid_.heuristic_weight * heuristic(next), child});
     }
   }
   st.iterations = expansions;

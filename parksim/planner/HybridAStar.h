@@ -37,14 +37,15 @@ struct HybridAStarDef {
   /// the search from there finds the few ways out, and the analytic expansion then reaches the
   /// start across open space. Costs are those of the driven direction either way.
   bool from_goal = true;
-  /// Near the poses the search grows from (within fine_zone_m), cells, heading bins, steps and
-  /// in-place turns are finer: a tight slot has only a few ways out, and coarse cells would
-  /// let the first pose that reaches a cell shut the others out. 0 disables the zone; a
-  /// negative value selects twice the footprint radius.
+  /// When the coarse search runs out of cells to expand (every reachable cell expanded: the
+  /// poses it grows from are hemmed in), it starts again with a fine zone: near those poses
+  /// (within fine_zone_m) cells, heading bins, steps and in-place turns are finer. A tight slot
+  /// has only a few ways out, and coarse cells let the first pose that reaches a cell shut the
+  /// others out. 0 disables the zone; a negative value selects twice the footprint radius.
   double fine_zone_m = -1.0;
-  double fine_cell_m = 0.003;   ///< (x, y) cell side in the fine zone, m
-  int fine_heading_bins = 180;  ///< heading cells in the fine zone (2 degrees)
-  double fine_step_m = 0.005;   ///< primitive arc length in the fine zone, m
+  double fine_cell_m = 0.001;   ///< (x, y) cell side in the fine zone, m
+  int fine_heading_bins = 360;  ///< heading cells in the fine zone (1 degree)
+  double fine_step_m = 0.003;   ///< primitive arc length in the fine zone, m
   double fine_turn_in_place_rad = 2.0 * 3.14159265358979323846 / 180.0;
   /// In-place turn primitive, rad; 0 disables them.
   double turn_in_place_rad = 10.0 * 3.14159265358979323846 / 180.0;

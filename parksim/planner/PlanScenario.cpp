@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -46,6 +47,12 @@ TimingKind timingKindFromString(const std::string& name) {
     if (name == toString(k)) return k;
   }
   throw Error("unknown timing '" + name + "' (expected one of time-optimal, study)");
+}
+
+int defaultIterationBudget(PlannerKind kind, const LotBounds& lot) {
+  const double base = kind == PlannerKind::kHybridAStar ? 20000.0 : 2000.0;
+  const double area = (lot.x_max_m - lot.x_min_m) * (lot.y_max_m - lot.y_min_m);
+  return static_cast<int>(std::ceil(base * std::max(1.0, area / kStudyLotAreaM2)));
 }
 
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,

@@ -41,9 +41,12 @@ const char* toString(TimingKind kind);
 /// Parses "time-optimal" or "study"; throws Error otherwise.
 TimingKind timingKindFromString(const std::string& name);
 
+/// Defaults are the command line's: hybrid-a-star (with its base budget of 20000 expansions;
+/// the command line scales it with the lot, defaultIterationBudget), reeds-shepp steering for
+/// the tree planners, time-optimal timing with 20% feedback headroom.
 struct PlanSetup {
-  PlannerDef planner;
-  SteeringKind steering_kind = SteeringKind::kMoveToPose;
+  PlannerDef planner{.kind = PlannerKind::kHybridAStar, .max_iterations = 20000};
+  SteeringKind steering_kind = SteeringKind::kReedsShepp;
   /// Move-to-pose parameters; its to-goal tolerance is taken from the scenario's goal region,
   /// scaled by goal_tolerance_fraction.
   MoveToPoseDef steering;
@@ -64,6 +67,14 @@ struct PlanSetup {
   /// without saturating. In [0, 1).
   double feedback_headroom = 0.2;
 };
+
+/// Area of the study's lot (1.8 x 1.2 m), the unit of the default budget's scaling, m^2.
+inline constexpr double kStudyLotAreaM2 = 1.8 * 1.2;
+
+/// The default iteration budget of `kind` on `lot`: the base budget (tree planners: the study's
+/// 2000 iterations; hybrid-a-star: 20000 node expansions) times max(1, lot area / study lot
+/// area), rounded up, so budgets grow with the space to search.
+int defaultIterationBudget(PlannerKind kind, const LotBounds& lot);
 
 /// Plans with the selected planner and steering, then times the plan as `timing` says (the
 /// re-timed trajectory is validated again; if rounding ever made it fail, the planner's own

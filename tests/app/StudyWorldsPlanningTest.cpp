@@ -21,6 +21,8 @@ TEST_P(StudyWorldsPlanning, GoalConnectRrtSolvesAtLeast99Of100Seeds) {
   const BulletCollisionWorld checker(s);
   PlanSetup setup;
   setup.planner.kind = PlannerKind::kRrtGoalConnect;
+  setup.planner.max_iterations = 2000;
+  setup.steering_kind = SteeringKind::kMoveToPose;
   setup.planner.record_tree = false;
   int solved = 0;
   for (int seed = 1; seed <= 100; ++seed) {

@@ -1,0 +1,96 @@
+// Issue 9's promise on the harder world files, with the production checker (Bullet) and the
+// command line's default settings (hybrid-a-star, reeds-shepp curves, the lot-scaled budget,
+// time-optimal timing): every world is solved, every plan passes the independent checks (exact
+// SAT footprint at 0.2 mm travel, exact integration, wheel limits within the feedback headroom,
+// goal tolerance), and the study's scenarios take at most 1.5x their duration lower bound.
+// Hybrid A* uses no randomness, so one seed stands for all (checked: another seed gives the same
+// bytes).
+
+#include <gtest/gtest.h>
+
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/TimeOptimalTiming.h"
+#include "parksim/scenario/ScenarioReader.h"
+#include "tests/support/PlanChecks.h"
+
+namespace parksim {
+namespace {
+
+Scenario world(const std::string& name) {
+  return loadScenario(std::string(PARKSIM_SOURCE_DIR) + "/worlds/" + name + ".yaml");
+}
+
+// What `parksim plan WORLD` uses.
+PlanSetup cliDefaults(const Scenario& s) {
+  PlanSetup setup;
+  setup.planner.kind = PlannerKind::kHybridAStar;
+  setup.steering_kind = SteeringKind::kReedsShepp;
+  setup.planner.max_iterations = defaultIterationBudget(setup.planner.kind, s.lot);
+  setup.planner.record_tree = false;
+  return setup;
+}
+
+class DefaultPlanning : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(DefaultPlanning, SolvesWithAValidPlanWithinTheHeadroom) {
+  const Scenario s = world(GetParam());
+  const BulletCollisionWorld checker(s);
+  const PlanSetup setup = cliDefaults(s);
+  const PlanResult r = planScenario(s, checker, setup);
+  ASSERT_TRUE(r.solved()) << r.message;
+  testing::expectValidPlan(s, checker, setup, r);
+  RobotDef limited = s.robot;
+  limited.max_wheel_speed_radps *= 1.0 - setup.feedback_headroom;
+  testing::expectConsistentWithLimits(r.trajectory, limited);
+  EXPECT_GE(r.trajectory.duration(), r.duration_lower_bound_s);
+  const std::string name = GetParam();
+  if (name == "head_in" || name == "parallel") {
+    EXPECT_LE(r.trajectory.duration(), 1.5 * r.duration_lower_bound_s);
+  }
+  if (name == "tight_parallel") EXPECT_GE(r.trajectory.cusps(s.robot), 2);
+}
+
+INSTANTIATE_TEST_SUITE_P(Worlds, DefaultPlanning,
+                         ::testing::Values("head_in", "parallel", "tight_parallel",
+                                           "garage_reverse", "clutter", "corridor", "big_lot"));
+
+TEST(DefaultPlanning, HybridAStarIgnoresTheSeed) {
+  const Scenario s = world("garage_reverse");
+  const BulletCollisionWorld checker(s);
+  PlanSetup setup = cliDefaults(s);
+  const PlanResult a = planScenario(s, checker, setup);
+  setup.planner.seed = 12345;
+  const PlanResult b = planScenario(s, checker, setup);
+  ASSERT_TRUE(a.solved());
+  EXPECT_EQ(a.trajectory, b.trajectory);
+}
+
+TEST(DefaultPlanning, StudyTimingKeepsTheSteeringsOwnTrajectory) {
+  const Scenario s = world("parallel");
+  const BulletCollisionWorld checker(s);
+  PlanSetup setup;
+  setup.planner.kind = PlannerKind::kRrtGoalConnect;
+  setup.steering_kind = SteeringKind::kMoveToPose;
+  setup.timing = TimingKind::kStudy;
+  const PlanResult study = planScenario(s, checker, setup);
+  setup.timing = TimingKind::kTimeOptimal;
+  const PlanResult timed = planScenario(s, checker, setup);
+  ASSERT_TRUE(study.solved());
+  ASSERT_TRUE(timed.solved());
+  // Same search, same geometry; only the timing differs.
+  EXPECT_NEAR(study.trajectory.pathLength(s.robot), timed.trajectory.pathLength(s.robot), 1e-9);
+  EXPECT_EQ(study.stats.iterations, timed.stats.iterations);
+  EXPECT_NE(study.trajectory, timed.trajectory);
+  EXPECT_EQ(study.duration_lower_bound_s, timed.duration_lower_bound_s);
+}
+
+TEST(DefaultPlanning, BudgetGrowsWithTheLot) {
+  EXPECT_EQ(defaultIterationBudget(PlannerKind::kRrtGoalConnect, world("head_in").lot), 2000);
+  EXPECT_EQ(defaultIterationBudget(PlannerKind::kHybridAStar, world("tight_parallel").lot), 20000);
+  // 100 m^2 / 2.16 m^2 = 46.3 study lots.
+  EXPECT_EQ(defaultIterationBudget(PlannerKind::kRrtConnect, world("big_lot").lot), 92593);
+}
+
+}  // namespace
+}  // namespace parksim
