@@ -128,10 +128,10 @@ int runSweepCommand(const SweepOptions& o) {
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const std::vector<SweepEpisode> episodes = selectShard(all, shard);
 
+  ResultsTable table(o.out);  // refuses a table with other columns before anything is written
   SweepManifest manifest{o.spec, spec.name, shard, {}};
   for (const SweepEpisode& e : all) manifest.episode_ids.push_back(e.id);
   writeSweepManifest(o.out, manifest);
-  ResultsTable table(o.out);
 
   SweepRunnerDef def;
   def.workers = workers;

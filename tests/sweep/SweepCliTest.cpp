@@ -91,6 +91,14 @@ TEST(SweepCli, SurvivesAKillAndCompletesEachEpisodeOnceThenReports) {
   EXPECT_NE(
       slurp(out + "/report/summary.md").find("| head_in | rrt-goal-connect | ideal | 6 | 6/6"),
       std::string::npos);
+#ifdef PARKSIM_HAVE_BENCH
+  // Planner Arena's reader: one run line and one progress line (cost over time) per episode.
+  const std::string log = slurp(out + "/report/ompl_head_in.log");
+  EXPECT_NE(log.find("6 runs per planner"), std::string::npos) << log;
+  EXPECT_NE(log.find("2 progress properties for each run\nbest cost REAL\ntime REAL\n6 runs\n"),
+            std::string::npos)
+      << log;
+#endif
 }
 
 TEST(SweepCli, ExitsOneWhenAnEpisodeMissesItsToleranceAndShardsMerge) {

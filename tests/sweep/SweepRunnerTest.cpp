@@ -210,13 +210,17 @@ TEST(MergeResults, ListsMissingEpisodesFromTheManifest) {
   }
 }
 
-TEST(EpisodeRecording, ExecutedCsvOfFailuresOnlyAtTheChosenRate) {
+TEST(EpisodeRecording, ExecutedCsvAndFilmOfFailuresAtTheChosenRates) {
   const std::string dir = scratchDir();
   // Closed loop meets the default tolerance; with a 0.1 um bound on the tracking error it fails.
   const SmallSweep sweep("seeds: [1]\ntracking: [closed]\ntolerance: {max_pos_err_m: 1e-7}\n");
   RecordDef record;
   record.executed_csv = ExecutedCsvPolicy::kFailures;
   record.executed_rate_hz = 10.0;
+  record.film_failures = true;
+  record.film_fps = 1.0;  // few, small frames: the test checks that the failure is filmed
+  record.film_width_px = 64;
+  record.film_height_px = 48;
   SweepRunnerDef def;
   ResultsTable table(dir);
   def.episode.record = record;
@@ -232,6 +236,12 @@ TEST(EpisodeRecording, ExecutedCsvOfFailuresOnlyAtTheChosenRate) {
   const double sim_time_s = rows[0]["sim_time_s"].get<double>();
   const double rows_written = static_cast<double>(lineCount(csv) - 1);
   EXPECT_NEAR(rows_written, std::floor(sim_time_s * 10.0) + 2.0, 1.0);
+  // Filmed: one frame per simulated second from t = 0, and the final instant.
+  const std::string frames = dir + "/episodes/" + sweep.episodes[0].id + "/frames";
+  ASSERT_TRUE(std::filesystem::is_directory(frames));
+  const auto n = std::distance(std::filesystem::directory_iterator(frames),
+                               std::filesystem::directory_iterator());
+  EXPECT_NEAR(static_cast<double>(n), std::floor(sim_time_s) + 2.0, 1.0);
 }
 
 TEST(ResultsTableFile, RejectsATableWithOtherColumns) {
