@@ -116,7 +116,7 @@ int writeSlurm(const SweepOptions& o, const SweepSpec& spec,
 int runSweepCommand(const SweepOptions& o) {
   // Everything is read and checked before DIR is touched.
   const SweepSpec spec = loadSweepSpec(o.spec);
-  const std::vector<Scenario> worlds = loadSweepWorlds(spec);
+  const std::vector<SweepWorld> worlds = loadSweepWorlds(spec);
   const std::vector<SweepEpisode> all = expandEpisodes(spec, worlds);
   const Shard shard = parseShard(o.shard);
   if (o.slurm) {
@@ -136,9 +136,7 @@ int runSweepCommand(const SweepOptions& o) {
   SweepRunnerDef def;
   def.workers = workers;
   def.episode.record = spec.record;
-  def.episode.tolerance = spec.tolerance;
   def.episode.episodes_dir = o.out + "/episodes";
-  def.provenance = currentProvenance();
 
   std::size_t already = 0;
   for (const SweepEpisode& e : episodes) already += table.done().count(e.id);

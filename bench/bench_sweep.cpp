@@ -45,9 +45,7 @@ Measurement measure(const std::vector<SweepEpisode>& episodes, const SweepSpec& 
     SweepRunnerDef def;
     def.workers = workers;
     def.episode.record = spec.record;
-    def.episode.tolerance = spec.tolerance;
     def.episode.episodes_dir = dir + "/episodes";
-    def.provenance = currentProvenance();
     runSweep(episodes, def, table);
   }
   m.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -67,7 +65,7 @@ int main(int argc, char** argv) {
   const int rounds = argc > 2 ? std::max(1, std::atoi(argv[2])) : 2;
   try {
     const SweepSpec spec = loadSweepSpec(spec_path);
-    const std::vector<Scenario> worlds = loadSweepWorlds(spec);
+    const std::vector<SweepWorld> worlds = loadSweepWorlds(spec);
     const std::vector<SweepEpisode> episodes = expandEpisodes(spec, worlds);
     const std::string dir = (std::filesystem::temp_directory_path() /
                              ("parksim-bench-sweep-" + std::to_string(getpid())))

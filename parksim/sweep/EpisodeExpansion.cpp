@@ -8,15 +8,16 @@
 
 namespace parksim {
 
-std::vector<Scenario> loadSweepWorlds(const SweepSpec& spec) {
-  std::vector<Scenario> worlds;
+std::vector<SweepWorld> loadSweepWorlds(const SweepSpec& spec) {
+  std::vector<SweepWorld> worlds;
   for (std::size_t i = 0; i < spec.world_paths.size(); ++i) {
-    worlds.push_back(loadScenario(spec.world_paths[i]));
+    Scenario scenario = loadScenario(spec.world_paths[i]);
+    worlds.push_back({std::move(scenario), loadWorldRealism(spec.world_paths[i])});
     for (std::size_t j = 0; j < i; ++j) {
-      if (worlds[j].name == worlds[i].name) {
+      if (worlds[j].scenario.name == worlds[i].scenario.name) {
         throw Error(spec.source_path + ":" + std::to_string(spec.worlds_line) +
                     ": worlds: " + spec.world_files[j] + " and " + spec.world_files[i] +
-                    " both name their scenario '" + worlds[i].name +
+                    " both name their scenario '" + worlds[i].scenario.name +
                     "' (episode ids use the name; rename one)");
       }
     }
@@ -25,7 +26,7 @@ std::vector<Scenario> loadSweepWorlds(const SweepSpec& spec) {
 }
 
 std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
-                                         const std::vector<Scenario>& worlds) {
+                                         const std::vector<SweepWorld>& worlds) {
   std::vector<SweepEpisode> out;
   for (std::size_t w = 0; w < worlds.size(); ++w) {
     for (const std::string& planner : spec.planners)
@@ -40,7 +41,7 @@ std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
                       for (const PoseOffset& start : spec.start_offsets)
                         for (const PoseOffset& goal : spec.goal_offsets) {
                           EpisodeParams p;
-                          p.world = worlds[w].name;
+                          p.world = worlds[w].scenario.name;
                           p.world_file = spec.world_files.at(w);
                           p.planner = planner;
                           p.steering = steering;
@@ -53,14 +54,14 @@ std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
                           p.noise_seed = noise_seed;
                           p.start_offset = start;
                           p.goal_offset = goal;
-                          out.push_back({p, episodeId(p), &worlds[w]});
+                          out.push_back({p, episodeId(p), &worlds[w], &spec.tolerance});
                         }
   }
   // Every combination is checked before anything runs: a bad offset stops the sweep before it
   // writes anything.
   for (const SweepEpisode& e : out) {
     try {
-      (void)setupEpisode(e.params, *e.world);
+      (void)setupEpisode(e.params, *e.world, spec.tolerance);
     } catch (const Error& err) {
       throw Error(spec.source_path + ": " + err.what());
     }

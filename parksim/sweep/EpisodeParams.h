@@ -35,12 +35,14 @@ struct EpisodeParams {
   bool smooth = false;
   std::uint64_t seed = 1;  ///< planner seed
   int max_iterations = 2000;
-  std::string tracking = "closed";  ///< "closed" or "open"
-  std::string timing = "study";     ///< how the plan is timed
-  std::string realism = "ideal";    ///< robot realism preset
-  std::uint64_t noise_seed = 0;     ///< seeds the realism preset's noise
-  PoseOffset start_offset;          ///< applied to the world's start
-  PoseOffset goal_offset;           ///< applied to the world's goal pose
+  std::string tracking = "closed";      ///< "closed" or "open"
+  std::string timing = "time-optimal";  ///< how the plan is timed ("time-optimal", "study")
+  /// The robot's realism: "world" (the world file's realism: section; ideal without one) or a
+  /// preset name ("ideal", "lab", "odometry").
+  std::string realism = "world";
+  std::uint64_t noise_seed = 1;  ///< seeds the realism's random draws (as `parksim run`)
+  PoseOffset start_offset;       ///< applied to the world's start
+  PoseOffset goal_offset;        ///< applied to the world's goal pose
 
   friend bool operator==(const EpisodeParams&, const EpisodeParams&) = default;
 };

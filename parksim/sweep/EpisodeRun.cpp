@@ -88,7 +88,9 @@ void film(const EpisodeSetup& setup, const Trajectory& plan, const RecordDef& re
 
 nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const EpisodeRunDef& def) {
   const Clock::time_point t0 = Clock::now();
-  const EpisodeSetup setup = setupEpisode(episode.params, *episode.world);
+  static const ToleranceOverrides kNoOverrides;
+  const EpisodeSetup setup = setupEpisode(episode.params, *episode.world,
+                                          episode.tolerance ? *episode.tolerance : kNoOverrides);
   const Scenario& scenario = setup.scenario;
 
   nlohmann::ordered_json row;
@@ -155,7 +157,7 @@ nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const Episod
     for (const ParkedRobotDisplacement& p : m.parked) {
       row["parked_displacement_m." + p.name] = p.max_m;
     }
-    const auto [status, failure] = judge(scenario, m, def.tolerance);
+    const auto [status, failure] = judge(scenario, m, setup.tolerance);
     met = failure.empty();
     row["status"] = status;
     row["failure"] = failure;
@@ -163,7 +165,7 @@ nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const Episod
                           (def.record.executed_csv == ExecutedCsvPolicy::kFailures && !met);
     if (keep_csv) {
       ensureDirectory(dir);
-      writeExecutedCsv(dir + "/executed.csv", result.rows);
+      writeExecutedCsv(dir + "/executed.csv", result.rows, exec.realism.active());
       writeTrajectoryCsv(dir + "/trajectory.csv", plan.trajectory, scenario.robot);
     }
     if (def.record.film_failures && !met) {

@@ -8,7 +8,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/sim/TrackingTolerance.h"
 #include "parksim/sweep/EpisodeExpansion.h"
 #include "parksim/sweep/SweepSpec.h"
 
@@ -16,7 +15,6 @@ namespace parksim {
 
 struct EpisodeRunDef {
   RecordDef record;
-  TrackingTolerance tolerance;
   /// Episode files go to episodes_dir/<episode_id>/ (executed.csv, trajectory.csv, frames/).
   std::string episodes_dir;
   /// Serialises filming (one off-screen GL context at a time); required when
@@ -33,7 +31,8 @@ inline constexpr const char* kStatusToleranceMissed = "tolerance_missed";
 
 /// The episode's results row, without provenance (see ResultsTable.h for its keys): id,
 /// parameters, status, met_tolerance, failure (one line; empty when met), plan statistics,
-/// simulation metrics (absent when the plan failed) and timing. Throws Error when a file cannot
+/// simulation metrics (absent when the plan failed) and timing. The tolerance is the episode's
+/// (EpisodeSetup::tolerance). Throws Error when a file cannot
 /// be written.
 nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const EpisodeRunDef& def);
 

@@ -1,9 +1,11 @@
 #include "parksim/sweep/EpisodeSetup.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
+#include "parksim/sim/RealismDef.h"
 
 namespace parksim {
 namespace {
@@ -22,31 +24,34 @@ void requireOneOf(const std::string& what, const std::string& value,
 
 }  // namespace
 
-const std::vector<std::string>& supportedRealismPresets() {
-  static const std::vector<std::string> presets = {"ideal"};
-  return presets;
+std::vector<std::string> supportedRealismPresets() {
+  std::vector<std::string> names = {"world"};
+  for (const std::string& n : realismPresetNames()) names.push_back(n);
+  return names;
 }
 
-const std::vector<std::string>& supportedTimings() {
-  static const std::vector<std::string> timings = {"study"};
-  return timings;
+std::vector<std::string> supportedTimings() {
+  return {toString(TimingKind::kTimeOptimal), toString(TimingKind::kStudy)};
 }
 
-EpisodeSetup setupEpisode(const EpisodeParams& p, const Scenario& world) {
+EpisodeSetup setupEpisode(const EpisodeParams& p, const SweepWorld& world,
+                          const ToleranceOverrides& tolerance) {
   requireOneOf("realism", p.realism, supportedRealismPresets());
   requireOneOf("timing", p.timing, supportedTimings());
-  if (p.realism == "ideal" && p.noise_seed != 0) {
-    throw Error("noise_seed: the ideal preset has no noise; use 0");
-  }
   EpisodeSetup s;
-  s.scenario = world;
-  s.scenario.start = applyOffset(world.start, p.start_offset);
-  s.scenario.goal.pose = applyOffset(world.goal.pose, p.goal_offset);
-  if (!s.scenario.lot.contains(s.scenario.start.x, s.scenario.start.y)) {
-    throw Error("start offset moves the start of " + world.name + " outside the lot");
+  s.scenario = world.scenario;
+  s.scenario.start = applyOffset(world.scenario.start, p.start_offset);
+  s.scenario.goal.pose = applyOffset(world.scenario.goal.pose, p.goal_offset);
+  // The world reader's one placement rule, so a perturbed episode is one it would accept.
+  if (!p.start_offset.isZero()) {
+    if (const std::optional<std::string> why = placementProblem(s.scenario, s.scenario.start)) {
+      throw Error("start offset on " + world.scenario.name + ": " + *why);
+    }
   }
-  if (!s.scenario.lot.contains(s.scenario.goal.pose.x, s.scenario.goal.pose.y)) {
-    throw Error("goal offset moves the goal of " + world.name + " outside the lot");
+  if (!p.goal_offset.isZero()) {
+    if (const std::optional<std::string> why = goalPlacementProblem(s.scenario)) {
+      throw Error("goal offset on " + world.scenario.name + ": " + *why);
+    }
   }
 
   s.plan.planner.kind = plannerKindFromString(p.planner);
@@ -55,8 +60,17 @@ EpisodeSetup setupEpisode(const EpisodeParams& p, const Scenario& world) {
   s.plan.planner.smooth = p.smooth;
   s.plan.planner.record_tree = false;  // the tree is for figures; a sweep keeps statistics only
   s.plan.steering_kind = steeringKindFromString(p.steering);
+  s.plan.timing = timingKindFromString(p.timing);
 
   s.execution.tracking = trackingModeFromString(p.tracking);
+  // As `parksim run`: a preset replaces the world's realism: section; "world" keeps it.
+  if (p.realism != "world") {
+    s.execution.realism = presetRealism(p.realism);
+  } else if (world.realism.has_realism) {
+    s.execution.realism = world.realism.realism;
+  }
+  s.execution.noise_seed = p.noise_seed;
+  s.tolerance = tolerance.appliedTo(world.realism.tolerance);
   return s;
 }
 

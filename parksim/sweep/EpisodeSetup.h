@@ -9,7 +9,10 @@
 #include "parksim/core/Scenario.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/sim/ExecutionDef.h"
+#include "parksim/sim/TrackingTolerance.h"
+#include "parksim/sweep/EpisodeExpansion.h"
 #include "parksim/sweep/EpisodeParams.h"
+#include "parksim/sweep/SweepSpec.h"
 
 namespace parksim {
 
@@ -17,16 +20,17 @@ struct EpisodeSetup {
   Scenario scenario;  ///< the world with the episode's start and goal offsets applied
   PlanSetup plan;
   ExecutionDef execution;
+  TrackingTolerance tolerance;  ///< the world's (or parksim's default) with the spec's overrides
 };
 
-/// Values each axis accepts in this build (the spec reader checks against these).
-/// Issue 8 adds realism presets beyond "ideal" (and with them noise seeds other than 0);
-/// issue 9 adds timings beyond "study".
-const std::vector<std::string>& supportedRealismPresets();
-const std::vector<std::string>& supportedTimings();
+/// Values the realism and timing axes accept: "world" and every realism preset; every timing.
+std::vector<std::string> supportedRealismPresets();
+std::vector<std::string> supportedTimings();
 
-/// `world` with `params` applied. Throws Error when a value is unknown or an offset moves the
-/// start or the goal outside the lot bounds.
-EpisodeSetup setupEpisode(const EpisodeParams& params, const Scenario& world);
+/// `world` with `params` applied. Throws Error when a value is unknown or an offset puts the
+/// start or the goal where the world reader would not accept it (outside the lot, too close to
+/// an obstacle).
+EpisodeSetup setupEpisode(const EpisodeParams& params, const SweepWorld& world,
+                          const ToleranceOverrides& tolerance);
 
 }  // namespace parksim

@@ -105,8 +105,8 @@ std::string plannerLabel(const Json& row) {
     s += " it=";
     s += std::to_string(static_cast<long long>(iterations));
   }
-  const std::string timing = str(row, "timing", "study");
-  if (timing != "study") {
+  const std::string timing = str(row, "timing", "time-optimal");
+  if (timing != "time-optimal") {
     s += " timing=";
     s += timing;
   }
@@ -118,7 +118,7 @@ std::vector<ReportGroup> groupResults(const std::vector<Json>& rows) {
   for (const Json& row : rows) {
     const std::string world = str(row, "world", "?");
     const std::string planner = plannerLabel(row);
-    const std::string realism = str(row, "realism", "ideal");
+    const std::string realism = str(row, "realism", "world");
     ReportGroup& g = groups[{world, planner, realism}];
     g.world = world;
     g.planner = planner;

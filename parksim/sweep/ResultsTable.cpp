@@ -131,10 +131,15 @@ const std::vector<std::string>& resultColumns() {
       "goal_pos_err_m", "goal_heading_err_deg", "goal_reached", "contacts", "first_contact_t_s",
       "first_contact_body", "contact_bodies", "max_parked_displacement_m", "sim_time_s", "steps",
       "ended_at_rest",
+      // realism layers (empty for the ideal robot's episodes that do not report them)
+      "estimator", "max_est_pos_err_m", "rms_est_pos_err_m", "max_est_heading_err_deg",
+      "final_est_pos_err_m", "max_slip_mps", "rms_slip_mps", "slip_fraction", "max_motor_torque_nm",
+      "max_motor_effort", "pose_samples_dropped",
       // timing
       "plan_time_s", "plan_first_solution_s", "sim_wall_s", "episode_wall_s",
       // provenance
-      "parksim_version", "git_commit", "build_type", "bullet_precision", "host"};
+      "parksim_version", "git_commit", "git_dirty", "build_type", "compiler", "bullet_precision",
+      "host"};
   return columns;
 }
 

@@ -1,5 +1,7 @@
 #include "parksim/sweep/SweepRunner.h"
 
+#include <unistd.h>
+
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -9,8 +11,23 @@
 #include <thread>
 
 #include "parksim/core/Error.h"
+#include "parksim/core/Provenance.h"
 
 namespace parksim {
+
+nlohmann::ordered_json provenanceColumns() {
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  for (const auto& [key, value] : provenanceFields(buildProvenance())) {
+    if (key == "git_dirty") {
+      j[key] = value == "true";
+    } else {
+      j[key] = value;
+    }
+  }
+  char host[256] = {};
+  j["host"] = gethostname(host, sizeof host - 1) == 0 ? host : "unknown";
+  return j;
+}
 
 SweepProgress runSweep(const std::vector<SweepEpisode>& episodes, const SweepRunnerDef& def,
                        ResultsTable& table, const SweepProgressFn& progress) {
@@ -76,7 +93,7 @@ SweepProgress runSweep(const std::vector<SweepEpisode>& episodes, const SweepRun
       nlohmann::ordered_json row = std::move(finished.front());
       finished.pop_front();
       lock.unlock();
-      appendProvenance(def.provenance, row);
+      for (const auto& [key, value] : def.provenance.items()) row[key] = value;
       const bool met = row.value("met_tolerance", false);
       table.append(row);
       ++p.done;

@@ -10,7 +10,6 @@
 
 #include "parksim/sweep/EpisodeExpansion.h"
 #include "parksim/sweep/EpisodeRun.h"
-#include "parksim/sweep/Provenance.h"
 #include "parksim/sweep/ResultsTable.h"
 
 namespace parksim {
@@ -25,10 +24,14 @@ struct SweepProgress {
 
 using SweepProgressFn = std::function<void(const SweepProgress&)>;
 
+/// The provenance columns of every row: this binary's (core/Provenance.h: parksim_version,
+/// git_commit, git_dirty, build_type, compiler, bullet_precision) and this machine's `host`.
+nlohmann::ordered_json provenanceColumns();
+
 struct SweepRunnerDef {
   int workers = 1;  ///< threads, >= 1
   EpisodeRunDef episode;
-  Provenance provenance;
+  nlohmann::ordered_json provenance = provenanceColumns();  ///< added to every row
 };
 
 /// Runs the episodes of `episodes` not yet in `table` and appends their rows (with provenance).

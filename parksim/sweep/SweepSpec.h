@@ -4,6 +4,7 @@
 // docs/sweeps.md) by SweepSpecReader.h.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,25 @@ struct RecordDef {
   bool film_video = false;        ///< also episode.mp4 (needs ffmpeg)
 };
 
+/// Bounds of the spec's `tolerance:` section; unset ones keep the world's.
+struct ToleranceOverrides {
+  std::optional<double> max_pos_err_m;
+  std::optional<double> goal_pos_err_m;
+  std::optional<double> goal_heading_err_deg;
+  std::optional<int> max_contacts;
+  std::optional<double> max_parked_displacement_m;
+
+  /// `base` with the set bounds replaced.
+  TrackingTolerance appliedTo(TrackingTolerance base) const {
+    if (max_pos_err_m) base.max_pos_err_m = *max_pos_err_m;
+    if (goal_pos_err_m) base.goal_pos_err_m = *goal_pos_err_m;
+    if (goal_heading_err_deg) base.goal_heading_err_deg = *goal_heading_err_deg;
+    if (max_contacts) base.max_contacts = *max_contacts;
+    if (max_parked_displacement_m) base.max_parked_displacement_m = *max_parked_displacement_m;
+    return base;
+  }
+};
+
 struct SweepSpec {
   std::string source_path;  ///< the spec file, for messages
   std::string name;         ///< sweep name (job names, report titles)
@@ -53,16 +73,17 @@ struct SweepSpec {
   std::vector<std::uint64_t> seeds = {1};
   std::vector<int> max_iterations = {2000};
   std::vector<std::string> tracking = {"closed"};
-  std::vector<std::string> timing = {"study"};
-  std::vector<std::string> realism = {"ideal"};
-  std::vector<std::uint64_t> noise_seeds = {0};
+  std::vector<std::string> timing = {"time-optimal"};
+  std::vector<std::string> realism = {"world"};
+  std::vector<std::uint64_t> noise_seeds = {1};
   std::vector<PoseOffset> start_offsets = {PoseOffset{}};
   std::vector<PoseOffset> goal_offsets = {PoseOffset{}};
 
   RecordDef record;
-  /// An episode meets its tolerance when its plan is solved, the robot ends within the world's
-  /// goal tolerance, and these bounds hold.
-  TrackingTolerance tolerance;
+  /// Overrides of the tracking tolerance (ToleranceOverrides): an episode meets its tolerance
+  /// when its plan is solved, the robot ends within the world's goal tolerance, and the world's
+  /// tolerance (its tolerance: section, else parksim's defaults) with these overrides holds.
+  ToleranceOverrides tolerance;
 };
 
 }  // namespace parksim

@@ -200,7 +200,7 @@ void readRecord(const YamlField& field, RecordDef& r) {
   }
 }
 
-void readTolerance(const YamlField& field, TrackingTolerance& t) {
+void readTolerance(const YamlField& field, ToleranceOverrides& t) {
   const YamlMap m = field.map({"max_pos_err_m", "goal_pos_err_m", "goal_heading_err_deg",
                                "max_contacts", "max_parked_displacement_m"});
   if (const std::optional<YamlField> f = m.optional("max_pos_err_m"))
@@ -293,20 +293,19 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
     spec.tracking = namesAxis(*f, {"closed", "open"}, "tracking mode");
   }
   if (const auto f = top.optional("timing")) {
-    spec.timing = namesAxis(*f, supportedTimings(), "timing", "; more arrive with issue 9");
+    spec.timing = namesAxis(*f, supportedTimings(), "timing");
   }
   if (const auto f = top.optional("realism")) {
-    spec.realism =
-        namesAxis(*f, supportedRealismPresets(), "realism preset", "; more arrive with issue 8");
+    spec.realism = namesAxis(*f, supportedRealismPresets(), "realism");
   }
   if (const auto f = top.optional("noise_seeds")) {
     spec.noise_seeds = seedsAxis(*f);
-    const bool any_noise = std::any_of(spec.realism.begin(), spec.realism.end(),
-                                       [](const std::string& r) { return r != "ideal"; });
-    if (!any_noise && spec.noise_seeds != std::vector<std::uint64_t>{0}) {
+    const bool all_ideal = std::all_of(spec.realism.begin(), spec.realism.end(),
+                                       [](const std::string& r) { return r == "ideal"; });
+    if (all_ideal && spec.noise_seeds.size() > 1) {
       f->fail(
-          "the realism presets of this sweep have no noise, so noise seeds other than 0 "
-          "would repeat identical episodes; use [0] or leave it out");
+          "the ideal realism has no random draws, so several noise seeds would repeat "
+          "identical episodes; give one seed or add a realism preset (lab, odometry)");
     }
   }
   if (const auto f = top.optional("start_offsets")) spec.start_offsets = offsetsAxis(*f);

@@ -28,6 +28,10 @@ TEST(EpisodeParams, CanonicalTextOmitsDefaultsSoNewAxesKeepIds) {
   p.seed = 7;
   EXPECT_EQ(canonicalString(p), "world=head_in;planner=rrt-goal-connect;seed=7");
   EXPECT_EQ(episodeId(p), episodeId(p));
+  p.noise_seed = 1;  // the default, as `parksim run`
+  p.timing = "time-optimal";
+  p.realism = "world";
+  EXPECT_EQ(canonicalString(p), "world=head_in;planner=rrt-goal-connect;seed=7");
   EXPECT_EQ(episodeId(p).size(), 16u);
   p.world_file = "elsewhere/head_in.yaml";  // provenance, not identity
   EXPECT_EQ(canonicalString(p), "world=head_in;planner=rrt-goal-connect;seed=7");
@@ -61,7 +65,7 @@ TEST(EpisodeParams, EveryParameterChangesTheId) {
 
 std::vector<std::string> idsOf(const std::string& axes) {
   const SweepSpec spec = parseSweepSpec(testing::studySpec(axes), "spec.yaml", "");
-  const std::vector<Scenario> worlds = loadSweepWorlds(spec);
+  const std::vector<SweepWorld> worlds = loadSweepWorlds(spec);
   std::vector<std::string> ids;
   for (const SweepEpisode& e : expandEpisodes(spec, worlds)) ids.push_back(e.id);
   return ids;
@@ -82,22 +86,36 @@ TEST(EpisodeExpansion, IdsDependOnParametersNotOnTheirPositionInTheSpec) {
 }
 
 TEST(EpisodeSetup, AppliesOffsetsAndRejectsOnesThatLeaveTheLot) {
-  const Scenario world = loadScenario(PARKSIM_SOURCE_DIR "/worlds/head_in.yaml");
+  const SweepWorld sweep_world{loadScenario(PARKSIM_SOURCE_DIR "/worlds/head_in.yaml"), {}};
+  const Scenario& world = sweep_world.scenario;
   EpisodeParams p;
   p.world = world.name;
   p.start_offset = {0.01, -0.02, 0.0};
   p.goal_offset = {0.0, 0.0, 90.0};
   p.tracking = "open";
   p.seed = 9;
-  const EpisodeSetup s = setupEpisode(p, world);
+  p.realism = "lab";
+  p.noise_seed = 4;
+  p.timing = "study";
+  ToleranceOverrides overrides;
+  overrides.goal_pos_err_m = 0.01;
+  const EpisodeSetup s = setupEpisode(p, sweep_world, overrides);
   EXPECT_DOUBLE_EQ(s.scenario.start.x, world.start.x + 0.01);
   EXPECT_DOUBLE_EQ(s.scenario.start.y, world.start.y - 0.02);
   EXPECT_NEAR(std::remainder(s.scenario.goal.pose.theta - world.goal.pose.theta - kPi / 2, 2 * kPi),
               0.0, 1e-12);
   EXPECT_EQ(s.plan.planner.seed, 9u);
   EXPECT_EQ(s.execution.tracking, TrackingMode::kOpen);
+  EXPECT_EQ(s.execution.realism.name, "lab");
+  EXPECT_EQ(s.execution.noise_seed, 4u);
+  EXPECT_EQ(s.plan.timing, TimingKind::kStudy);
+  EXPECT_EQ(s.tolerance.goal_pos_err_m, 0.01);
+  EXPECT_EQ(s.tolerance.max_pos_err_m, TrackingTolerance{}.max_pos_err_m);
+  // "world" keeps the world's realism (none here: the ideal robot).
+  p.realism = "world";
+  EXPECT_EQ(setupEpisode(p, sweep_world, {}).execution.realism.name, "ideal");
   p.start_offset = {5.0, 0.0, 0.0};
-  EXPECT_THROW((void)setupEpisode(p, world), Error);
+  EXPECT_THROW((void)setupEpisode(p, sweep_world, {}), Error);
 }
 
 }  // namespace

@@ -89,7 +89,7 @@ TEST(SweepCli, SurvivesAKillAndCompletesEachEpisodeOnceThenReports) {
     EXPECT_TRUE(fs::exists(out + "/report/" + f)) << f;
   }
   EXPECT_NE(
-      slurp(out + "/report/summary.md").find("| head_in | rrt-goal-connect | ideal | 6 | 6/6"),
+      slurp(out + "/report/summary.md").find("| head_in | rrt-goal-connect | world | 6 | 6/6"),
       std::string::npos);
 #ifdef PARKSIM_HAVE_BENCH
   // Planner Arena's reader: one run line and one progress line (cost over time) per episode.

@@ -26,7 +26,7 @@ using testing::studySpec;
 
 struct SmallSweep {
   SweepSpec spec;
-  std::vector<Scenario> worlds;
+  std::vector<SweepWorld> worlds;
   std::vector<SweepEpisode> episodes;
 
   explicit SmallSweep(const std::string& axes)
@@ -46,7 +46,6 @@ SweepProgress run(const std::vector<SweepEpisode>& episodes, const std::string& 
   def.workers = workers;
   def.episode.record = record;
   def.episode.episodes_dir = dir + "/episodes";
-  def.provenance = currentProvenance();
   return runSweep(episodes, def, table);
 }
 
@@ -224,7 +223,6 @@ TEST(EpisodeRecording, ExecutedCsvAndFilmOfFailuresAtTheChosenRates) {
   SweepRunnerDef def;
   ResultsTable table(dir);
   def.episode.record = record;
-  def.episode.tolerance = sweep.spec.tolerance;
   def.episode.episodes_dir = dir + "/episodes";
   runSweep(sweep.episodes, def, table);
   const std::vector<Json> rows = readResultsJsonl(dir + "/results.jsonl");

@@ -25,7 +25,8 @@ TEST(SweepSpecReader, ReadsEveryAxis) {
   const SweepSpec s = parseSweepSpec(
       studySpec("planners: [rrt, rrt-star]\nsteering: rotate-translate-rotate\n"
                 "smoothing: [false, true]\nseeds: {from: 3, to: 7}\nmax_iterations: [500]\n"
-                "tracking: [open, closed]\ntiming: [study]\nrealism: ideal\nnoise_seeds: [0]\n"
+                "tracking: [open, closed]\ntiming: [study]\nrealism: [ideal, lab]\n"
+                "noise_seeds: {from: 1, to: 3}\n"
                 "start_offsets: [[0, 0, 0], [0.01, -0.02, 5]]\n"
                 "record: {executed_csv: failures, executed_rate_hz: 30, film_failures: true,\n"
                 "         film: {fps: 10, size: 320x240, view: both, video: false}}\n"
@@ -38,6 +39,8 @@ TEST(SweepSpecReader, ReadsEveryAxis) {
   EXPECT_EQ(s.seeds, (std::vector<std::uint64_t>{3, 4, 5, 6, 7}));
   EXPECT_EQ(s.max_iterations, (std::vector<int>{500}));
   EXPECT_EQ(s.tracking, (std::vector<std::string>{"open", "closed"}));
+  EXPECT_EQ(s.realism, (std::vector<std::string>{"ideal", "lab"}));
+  EXPECT_EQ(s.noise_seeds, (std::vector<std::uint64_t>{1, 2, 3}));
   ASSERT_EQ(s.start_offsets.size(), 2u);
   EXPECT_EQ(s.start_offsets[1], (PoseOffset{0.01, -0.02, 5.0}));
   EXPECT_EQ(s.goal_offsets.size(), 1u);
@@ -48,23 +51,24 @@ TEST(SweepSpecReader, ReadsEveryAxis) {
   EXPECT_EQ(s.record.film_view, "both");
   EXPECT_EQ(s.tolerance.max_pos_err_m, 0.01);
   EXPECT_EQ(s.tolerance.max_contacts, 1);
+  EXPECT_FALSE(s.tolerance.goal_pos_err_m.has_value());
 }
 
 TEST(SweepSpecReader, ErrorsNameFileLineAndField) {
   EXPECT_EQ(errorOf(studySpec("planners: [rrt, rrt*]\n")),
             "spec.yaml:4: planners[1]: unknown planner 'rrt*' (this build has: rrt, "
-            "rrt-goal-connect, rrt-star, rrt-connect)");
+            "rrt-goal-connect, rrt-star, rrt-connect, hybrid-a-star)");
   EXPECT_EQ(errorOf(studySpec("seeds: [1, 2,\n  1]\n")), "spec.yaml:5: seeds[2]: repeats seeds[0]");
   EXPECT_EQ(errorOf(studySpec("seeds: {from: 5, to: 2}\n")),
             "spec.yaml:4: seeds.to: must be at least from (5)");
-  EXPECT_THAT(errorOf(studySpec("realism: [ideal, lab]\n")),
-              HasSubstr("spec.yaml:4: realism[1]: unknown realism preset 'lab' (this build has: "
-                        "ideal); more arrive with issue 8"));
-  EXPECT_THAT(errorOf(studySpec("noise_seeds: {from: 1, to: 3}\n")),
-              HasSubstr("spec.yaml:4: noise_seeds: the realism presets of this sweep have no "
-                        "noise"));
+  EXPECT_THAT(errorOf(studySpec("realism: [ideal, perfect]\n")),
+              HasSubstr("spec.yaml:4: realism[1]: unknown realism 'perfect' (this build has: "
+                        "world, ideal"));
+  EXPECT_THAT(errorOf(studySpec("realism: ideal\nnoise_seeds: {from: 1, to: 3}\n")),
+              HasSubstr("spec.yaml:5: noise_seeds: the ideal realism has no random draws"));
   EXPECT_THAT(errorOf(studySpec("timing: optimal\n")),
-              HasSubstr("spec.yaml:4: timing: unknown timing 'optimal'"));
+              HasSubstr("spec.yaml:4: timing: unknown timing 'optimal' (this build has: "
+                        "time-optimal, study)"));
   EXPECT_THAT(
       errorOf(studySpec("planner: rrt\n")),
       HasSubstr("spec.yaml:4: planner: unknown field; expected one of: format, name, worlds"));
