@@ -32,5 +32,8 @@ CommandRunner setupPlanCommand(CLI::App& sub);
 CommandRunner setupRunCommand(CLI::App& sub);
 CommandRunner setupRenderCommand(CLI::App& sub);
 CommandRunner setupBenchCommand(CLI::App& sub);
+CommandRunner setupSweepCommand(CLI::App& sub);
+CommandRunner setupMergeCommand(CLI::App& sub);
+CommandRunner setupReportCommand(CLI::App& sub);
 
 }  // namespace parksim::app

@@ -36,6 +36,10 @@ int main(int argc, char** argv) {
   add("render", "draw the study's figures for a world, without running an episode",
       setupRenderCommand);
   add("bench", "benchmark parksim's planners, optionally against OMPL", setupBenchCommand);
+  add("sweep", "run a sweep spec's episodes (plan + simulate + measure) into one results table",
+      setupSweepCommand);
+  add("merge", "merge sweep results (shards, machines) into one table", setupMergeCommand);
+  add("report", "summary tables, figures and OMPL logs of a sweep's results", setupReportCommand);
 
   // CLI11 says "A subcommand is required" about `parksim foo`; say what was wrong instead.
   if (argc > 1 && argv[1][0] != '-') {
