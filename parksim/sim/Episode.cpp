@@ -142,6 +142,12 @@ struct Episode::Impl {
     if (k % def.csv_stride_steps == 0 || finished) rows.push_back(row);
   }
 
+  void advance(const WheelSpeeds& cmd) {
+    world.setWheelTargets(cmd);
+    world.step();
+    measure(cmd);
+  }
+
   WheelSpeeds command() const {
     const long k = world.steps();
     // Wheel speeds are held per control period; the step's midpoint picks the period without
@@ -165,12 +171,19 @@ void Episode::step() {
   Impl& d = *impl_;
   if (d.finished) return;
   const auto start = std::chrono::steady_clock::now();
-  const WheelSpeeds cmd = d.command();
-  d.world.setWheelTargets(cmd);
-  d.world.step();
-  d.measure(cmd);
+  d.advance(d.command());
   d.wall += std::chrono::steady_clock::now() - start;
 }
+
+void Episode::step(const WheelSpeeds& command) {
+  Impl& d = *impl_;
+  if (d.finished) return;
+  const auto start = std::chrono::steady_clock::now();
+  d.advance(command);
+  d.wall += std::chrono::steady_clock::now() - start;
+}
+
+WheelSpeeds Episode::controllerCommand() const { return impl_->command(); }
 
 bool Episode::finished() const { return impl_->finished; }
 

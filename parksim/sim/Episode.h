@@ -104,8 +104,16 @@ class Episode {
   Episode(const Episode&) = delete;
   Episode& operator=(const Episode&) = delete;
 
-  /// One simulation step with its measurement. Does nothing once finished().
+  /// One simulation step with its measurement, driven by the tracking controller
+  /// (ExecutionDef::tracking). Does nothing once finished().
   void step();
+  /// One step driven by `command` instead: the wheel motors' targets for this step, for a
+  /// controller outside parksim. The step is measured against the plan as usual, and the
+  /// episode still ends at rest after the plan's end or at the time limit. Does nothing once
+  /// finished().
+  void step(const WheelSpeeds& command);
+  /// What the tracking controller commands for the next step (what step() would apply).
+  WheelSpeeds controllerCommand() const;
   /// At rest after the plan's end, or at the time limit.
   bool finished() const;
 
