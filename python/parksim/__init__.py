@@ -47,6 +47,13 @@ from . import _parksim
 __version__ = "0.2.0"
 
 
+def _plain(value):
+    """NumPy scalars and arrays in a world dict, as JSON numbers and lists."""
+    if hasattr(value, "tolist"):
+        return value.tolist()
+    raise TypeError(f"a world dict holds numbers, strings, lists and dicts, not {type(value)}")
+
+
 def load_world(source, name="<dict>"):
     """A World from a world file (path) or from a dict with the file's structure.
 
@@ -55,7 +62,8 @@ def load_world(source, name="<dict>"):
     makes of it (one key per line), named `name` in messages.
     """
     if isinstance(source, dict):
-        return _parksim._parse_world(_json.dumps(source, indent=1), name)
+        text = _json.dumps(source, indent=1, default=_plain)
+        return _parksim._parse_world(text, name)
     return _parksim._load_world(_os.fspath(source))
 
 

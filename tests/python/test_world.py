@@ -91,3 +91,12 @@ def test_collision_checker_and_cspace_agree(head_in):
     centroid = poly.mean(axis=0)
     assert not checker.is_free((centroid[0], centroid[1], 0.3))
     assert math.isfinite(checker.clearance(head_in.start))
+
+
+def test_a_dict_may_hold_numpy_values(head_in_path):
+    import numpy as np
+
+    data = yaml.safe_load(head_in_path.read_text())
+    data["start"] = np.array(data["start"], dtype=np.float64)
+    data["goal"]["position_tolerance"] = np.float64(data["goal"]["position_tolerance"])
+    assert parksim.load_world(data).start == parksim.load_world(head_in_path).start
