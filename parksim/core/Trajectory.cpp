@@ -1,13 +1,12 @@
 #include "parksim/core/Trajectory.h"
 
-#include <charconv>
 #include <cmath>
-#include <fstream>
-#include <map>
-#include <sstream>
+#include <iterator>
 
 #include "parksim/core/AtomicFile.h"
+#include "parksim/core/Csv.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 
 namespace parksim {
 
@@ -51,64 +50,37 @@ void Trajectory::append(const Trajectory& tail) {
 
 void writeTrajectoryCsv(const std::string& path, const Trajectory& traj, const RobotDef& robot) {
   std::string out = "t,x,y,theta,omega_left,omega_right,v,omega\n";
-  char line[320];
+  out.reserve(out.size() + traj.points.size() * 160);
   for (const TrajectoryPoint& p : traj.points) {
     const Twist tw = toTwist(p.wheels, robot);
-    std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", p.t_s,
-                  p.pose.x, p.pose.y, p.pose.theta, p.wheels.left_radps, p.wheels.right_radps,
-                  tw.v_mps, tw.omega_radps);
-    out += line;
+    const double values[] = {
+        p.t_s,    p.pose.x,      p.pose.y, p.pose.theta, p.wheels.left_radps, p.wheels.right_radps,
+        tw.v_mps, tw.omega_radps};
+    for (std::size_t i = 0; i < std::size(values); ++i) {
+      if (i > 0) out += ',';
+      appendShortest(out, values[i]);
+    }
+    out += '\n';
   }
   writeFileAtomically(path, out);
 }
 
 Trajectory readTrajectoryCsv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(path + ": cannot open trajectory file");
-  std::string line;
-  if (!std::getline(in, line)) throw Error(path + ":1: empty trajectory file (expected a header)");
-  std::map<std::string, int> column;
-  {
-    std::stringstream ss(line);
-    std::string name;
-    int i = 0;
-    while (std::getline(ss, name, ',')) {
-      if (!name.empty() && name.back() == '\r') name.pop_back();
-      column[name] = i++;
-    }
-  }
-  const char* required[] = {"t", "x", "y", "theta", "omega_left", "omega_right"};
-  for (const char* name : required) {
-    if (!column.count(name)) throw Error(path + ":1: header lacks column '" + name + "'");
-  }
+  const CsvTable csv = readCsvFile(path);
+  const std::size_t t = csv.column("t");
+  const std::size_t x = csv.column("x");
+  const std::size_t y = csv.column("y");
+  const std::size_t theta = csv.column("theta");
+  const std::size_t left = csv.column("omega_left");
+  const std::size_t right = csv.column("omega_right");
   Trajectory traj;
-  int line_no = 1;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty()) continue;
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    auto get = [&](const char* name) {
-      const int idx = column[name];
-      const std::string where = path + ":" + std::to_string(line_no) + ": column '" + name + "'";
-      if (idx >= static_cast<int>(cells.size())) throw Error(where + ": missing value");
-      const std::string& s = cells[idx];
-      double value = 0.0;
-      const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
-      if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(value)) {
-        throw Error(where + ": '" + s + "' is not a finite number");
-      }
-      return value;
-    };
+  for (const CsvTable::Row& row : csv.rows()) {
     TrajectoryPoint p;
-    p.t_s = get("t");
-    p.pose = {get("x"), get("y"), get("theta")};
-    p.wheels = {get("omega_left"), get("omega_right")};
+    p.t_s = csv.number(row, t);
+    p.pose = {csv.number(row, x), csv.number(row, y), csv.number(row, theta)};
+    p.wheels = {csv.number(row, left), csv.number(row, right)};
     if (!traj.points.empty() && !(p.t_s > traj.points.back().t_s)) {
-      throw Error(path + ":" + std::to_string(line_no) + ": column 't': time does not increase");
+      throw Error(path + ":" + std::to_string(row.line) + ": column 't': time does not increase");
     }
     traj.points.push_back(p);
   }

@@ -1,7 +1,10 @@
 #include "parksim/planner/PlanScenario.h"
 
 #include <algorithm>
+#include <chrono>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "parksim/core/Error.h"
 
@@ -11,12 +14,14 @@ const char* toString(SteeringKind kind) {
   switch (kind) {
     case SteeringKind::kMoveToPose: return "move-to-pose";
     case SteeringKind::kRotateTranslateRotate: return "rotate-translate-rotate";
+    case SteeringKind::kReedsShepp: return "reeds-shepp";
   }
   return "?";
 }
 
 std::vector<SteeringKind> allSteeringKinds() {
-  return {SteeringKind::kMoveToPose, SteeringKind::kRotateTranslateRotate};
+  return {SteeringKind::kMoveToPose, SteeringKind::kRotateTranslateRotate,
+          SteeringKind::kReedsShepp};
 }
 
 SteeringKind steeringKindFromString(const std::string& name) {
@@ -26,6 +31,21 @@ SteeringKind steeringKindFromString(const std::string& name) {
     known += (known.empty() ? "" : ", ") + std::string(toString(k));
   }
   throw Error("unknown steering '" + name + "' (expected one of " + known + ")");
+}
+
+const char* toString(TimingKind kind) {
+  switch (kind) {
+    case TimingKind::kTimeOptimal: return "time-optimal";
+    case TimingKind::kStudy: return "study";
+  }
+  return "?";
+}
+
+TimingKind timingKindFromString(const std::string& name) {
+  for (TimingKind k : {TimingKind::kTimeOptimal, TimingKind::kStudy}) {
+    if (name == toString(k)) return k;
+  }
+  throw Error("unknown timing '" + name + "' (expected one of time-optimal, study)");
 }
 
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
@@ -49,11 +69,60 @@ PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checke
       steering = std::make_unique<RotateTranslateRotateSteering>(scenario.robot,
                                                                  setup.rotate_translate_rotate);
       break;
+    case SteeringKind::kReedsShepp:
+      steering = std::make_unique<ReedsSheppSteering>(scenario.robot, setup.reeds_shepp);
+      break;
+  }
+  if (!(setup.feedback_headroom >= 0.0 && setup.feedback_headroom < 1.0)) {
+    throw Error("planScenario: feedback_headroom must be in [0, 1)");
   }
   if (!steering) throw Error("planScenario: unknown steering kind");
+  // The same rule as the world reader's, so a world the reader accepts never fails here for
+  // its start or goal (the tree planner's own checks then agree up to Bullet's rounding).
+  const double margin = 0.5 * setup.validation.resolution_m;
+  if (const std::optional<std::string> problem = placementProblem(scenario, scenario.start, margin)) {
+    PlanResult r;
+    r.status = PlanStatus::kInvalidStart;
+    r.message = "start: " + *problem;
+    return r;
+  }
+  if (const std::optional<std::string> problem = goalPlacementProblem(scenario, margin)) {
+    PlanResult r;
+    r.status = PlanStatus::kInvalidGoal;
+    r.message = "goal: " + *problem;
+    return r;
+  }
   const MotionValidator validator(checker, scenario.robot, scenario.lot, setup.validation);
-  const TreePlanner planner(scenario.robot, scenario.lot, *steering, validator, setup.planner);
-  return planner.solve(scenario.start, scenario.goal);
+  const TimingLimits limits = timingLimits(scenario.robot, setup.feedback_headroom);
+  PlanResult result;
+  if (setup.planner.kind == PlannerKind::kHybridAStar) {
+    const ReedsSheppSteering curves(scenario.robot, setup.reeds_shepp);
+    const HybridAStar planner(scenario.robot, scenario.lot, curves, validator, setup.planner,
+                              setup.hybrid_a_star);
+    result = planner.solve(scenario.start, scenario.goal);
+  } else {
+    const TreePlanner planner(scenario.robot, scenario.lot, *steering, validator, setup.planner);
+    result = planner.solve(scenario.start, scenario.goal);
+  }
+  if (!result.solved()) return result;
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<PathPiece> pieces = pathPieces(result.trajectory);
+  if (setup.timing == TimingKind::kTimeOptimal) {
+    const long before = validator.queries();
+    Trajectory timed =
+        timePieces(result.trajectory.points.front().pose, pieces, scenario.robot, limits);
+    if (validator.isValid(timed)) {
+      result.trajectory = std::move(timed);
+      const CostWeights w{setup.planner.reverse_penalty, setup.planner.cusp_penalty_m};
+      result.cost = trajectoryCost(result.trajectory, scenario.robot, w);
+    }
+    result.stats.collision_queries += validator.queries() - before;
+  }
+  result.duration_lower_bound_s = durationLowerBound(pieces, limits);
+  result.stats.times.timing_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  result.stats.times.total_s += result.stats.times.timing_s;
+  return result;
 }
 
 }  // namespace parksim

@@ -17,6 +17,7 @@
 
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 #include "parksim/renders/PngEncoder.h"
 #include "parksim/renders/Process.h"
 #include "parksim/renders/Renderer.h"
@@ -205,11 +206,8 @@ class EncodeQueue {
   std::string error_;
 };
 
-std::string formatFps(double fps) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", fps);
-  return buf;
-}
+// ffmpeg reads its arguments in the C locale: never "29,97".
+std::string formatFps(double fps) { return formatGeneral(fps, 6); }
 
 VideoOutcome runFfmpeg(const std::string& ffmpeg_name, const std::string& out_dir,
                        const std::string& frames_dir, double fps, int frames, bool gif) {

@@ -2,7 +2,10 @@
 // How an episode drives a plan: open loop (exactly the planned wheel speeds) or closed loop
 // (planned wheel speeds plus feedback on the pose error), and when the episode ends.
 
+#include <cstdint>
 #include <string>
+
+#include "parksim/sim/RealismDef.h"
 
 namespace parksim {
 
@@ -44,6 +47,13 @@ struct ExecutionDef {
   double contact_merge_s = 0.1;
   /// executed.csv gets one row every this many simulation steps (1: every step).
   int csv_stride_steps = 1;
+  /// Motors, calibration, sensors, estimation and control-loop timing (sim/RealismDef.h);
+  /// the default is the `ideal` robot.
+  RealismDef realism;
+  /// Seed of every random draw of the realism layers (calibration errors, motor gains, sensor
+  /// noise), independent of the planner's seed. Each layer draws from its own generator
+  /// seeded by (noise_seed, layer), so switching one layer off leaves the others' draws.
+  std::uint64_t noise_seed = 0;
 };
 
 }  // namespace parksim
