@@ -391,6 +391,7 @@ struct Episode::Impl {
       }
     }
     measure(r.setpoint);
+  }
 
   // One step, driven by the tracking controller or by `external`.
   void advance(const std::optional<WheelSpeeds>& external) {

@@ -13,6 +13,7 @@
 #include "parksim/core/Pose2.h"
 #include "parksim/core/Scenario.h"
 #include "parksim/core/Trajectory.h"
+#include "parksim/scenario/RealismReader.h"
 #include "parksim/sim/Episode.h"
 
 namespace parksim::python {
@@ -28,7 +29,13 @@ void bindRender(py::module_& m);   // RenderBindings.cpp: images, figures, Frame
 /// A loaded world: immutable, shared by every plan and episode made from it.
 struct World {
   std::shared_ptr<const Scenario> scenario;
+  /// The file's realism: and tolerance: sections.
+  std::shared_ptr<const WorldRealism> realism;
 };
+
+/// How run() and Episode() execute: as `parksim run` by default (the world's realism section,
+/// noise seed 1), with the ExecutionDef fields in `options` taken from it.
+ExecutionDef executionFrom(const World& world, py::dict& options);
 
 /// Copies the keys of `options` that name a field of `def`'s Python class onto it, removing
 /// them from `options`. Fields are the class's properties (DefBindings.cpp), so a field added to
@@ -80,7 +87,8 @@ py::array trajectoryArray(const Trajectory& trajectory, const RobotDef& robot);
 /// A trajectory from a PlanResult, a structured array with fields t, x, y, theta, omega_left,
 /// omega_right (others ignored), or a trajectory.csv path.
 Trajectory trajectoryFrom(const py::handle& plan);
-/// Executed rows as a structured array with executed.csv's columns.
-py::array executedArray(const std::vector<ExecutedRow>& rows);
+/// Executed rows as a structured array with executed.csv's columns (its realism columns too
+/// when `realism_columns`, as executedCsv writes them under an active realism).
+py::array executedArray(const std::vector<ExecutedRow>& rows, bool realism_columns);
 
 }  // namespace parksim::python

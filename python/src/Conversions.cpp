@@ -23,11 +23,24 @@ struct ExecutedRecord {
       omega_right, pos_err, heading_err;
 };
 
+// Under a realism, executed.csv's extra columns too.
+struct ExecutedRealismRecord {
+  double t, x, y, theta, x_ref, y_ref, theta_ref, omega_left_cmd, omega_right_cmd, omega_left,
+      omega_right, pos_err, heading_err, x_est, y_est, theta_est, est_pos_err, est_heading_err,
+      effort_left, effort_right, torque_left, torque_right, slip_left, slip_right, encoder_left,
+      encoder_right;
+};
+
 void registerDtypes() {
   static const bool done = [] {
     PYBIND11_NUMPY_DTYPE(TrajectoryRecord, t, x, y, theta, omega_left, omega_right, v, omega);
     PYBIND11_NUMPY_DTYPE(ExecutedRecord, t, x, y, theta, x_ref, y_ref, theta_ref, omega_left_cmd,
                          omega_right_cmd, omega_left, omega_right, pos_err, heading_err);
+    PYBIND11_NUMPY_DTYPE(ExecutedRealismRecord, t, x, y, theta, x_ref, y_ref, theta_ref,
+                         omega_left_cmd, omega_right_cmd, omega_left, omega_right, pos_err,
+                         heading_err, x_est, y_est, theta_est, est_pos_err, est_heading_err,
+                         effort_left, effort_right, torque_left, torque_right, slip_left,
+                         slip_right, encoder_left, encoder_right);
     return true;
   }();
   (void)done;
@@ -119,8 +132,41 @@ Trajectory trajectoryFrom(const py::handle& plan) {
   return traj;
 }
 
-py::array executedArray(const std::vector<ExecutedRow>& rows) {
+py::array executedArray(const std::vector<ExecutedRow>& rows, bool realism_columns) {
   registerDtypes();
+  if (realism_columns) {
+    py::array_t<ExecutedRealismRecord> out(static_cast<py::ssize_t>(rows.size()));
+    ExecutedRealismRecord* r = out.mutable_data();
+    for (const ExecutedRow& row : rows) {
+      *r++ = {row.t_s,
+              row.pose.x,
+              row.pose.y,
+              row.pose.theta,
+              row.reference.x,
+              row.reference.y,
+              row.reference.theta,
+              row.wheels_cmd.left_radps,
+              row.wheels_cmd.right_radps,
+              row.wheels.left_radps,
+              row.wheels.right_radps,
+              row.pos_err_m,
+              row.heading_err_rad,
+              row.estimate.x,
+              row.estimate.y,
+              row.estimate.theta,
+              row.est_pos_err_m,
+              row.est_heading_err_rad,
+              row.effort.left_radps,
+              row.effort.right_radps,
+              row.torque_nm.left_radps,
+              row.torque_nm.right_radps,
+              row.slip_mps.left_radps,
+              row.slip_mps.right_radps,
+              row.encoder_rad.left_radps,
+              row.encoder_rad.right_radps};
+    }
+    return out;
+  }
   py::array_t<ExecutedRecord> out(static_cast<py::ssize_t>(rows.size()));
   ExecutedRecord* r = out.mutable_data();
   // Columns and values as executedCsv writes them (sim/EpisodeFiles.h).

@@ -10,6 +10,7 @@
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/ExecutionDef.h"
+#include "parksim/sim/RealismDef.h"
 #include "python/src/Bindings.h"
 
 namespace parksim::python {
@@ -141,6 +142,29 @@ void bindDefs(py::module_& m) {
                                "Motion validation (planner/MotionValidator.h).")
       .def_readwrite("resolution_m", &MotionValidatorDef::resolution_m);
 
+  defClass<ReedsSheppDef>(m, "ReedsSheppDef",
+                          "Reeds-Shepp steering (planner/ReedsSheppSteering.h).")
+      .def_readwrite("turning_radius_m", &ReedsSheppDef::turning_radius_m)
+      .def_readwrite("period_s", &ReedsSheppDef::period_s)
+      .def_readwrite("horizon_s", &ReedsSheppDef::horizon_s)
+      .def_readwrite("speed_fraction", &ReedsSheppDef::speed_fraction);
+
+  defClass<HybridAStarDef>(m, "HybridAStarDef", "Hybrid A* (planner/HybridAStar.h).")
+      .def_readwrite("cell_m", &HybridAStarDef::cell_m)
+      .def_readwrite("heading_bins", &HybridAStarDef::heading_bins)
+      .def_readwrite("step_m", &HybridAStarDef::step_m)
+      .def_readwrite("tight_turning_radius_m", &HybridAStarDef::tight_turning_radius_m)
+      .def_readwrite("from_goal", &HybridAStarDef::from_goal)
+      .def_readwrite("fine_zone_m", &HybridAStarDef::fine_zone_m)
+      .def_readwrite("fine_cell_m", &HybridAStarDef::fine_cell_m)
+      .def_readwrite("fine_heading_bins", &HybridAStarDef::fine_heading_bins)
+      .def_readwrite("fine_step_m", &HybridAStarDef::fine_step_m)
+      .def_readwrite("fine_turn_in_place_rad", &HybridAStarDef::fine_turn_in_place_rad)
+      .def_readwrite("turn_in_place_rad", &HybridAStarDef::turn_in_place_rad)
+      .def_readwrite("analytic_near_steps", &HybridAStarDef::analytic_near_steps)
+      .def_readwrite("analytic_interval", &HybridAStarDef::analytic_interval)
+      .def_readwrite("heuristic_weight", &HybridAStarDef::heuristic_weight);
+
   // plan()'s options besides PlannerDef's: `steering` is the kind, as on the command line.
   defClass<PlanSetup>(m, "PlanSetup", "Everything planScenario takes (planner/PlanScenario.h).")
       .def_readwrite("planner", &PlanSetup::planner)
@@ -152,7 +176,13 @@ void bindDefs(py::module_& m) {
       .def_readwrite("move_to_pose", &PlanSetup::steering)
       .def_readwrite("goal_tolerance_fraction", &PlanSetup::goal_tolerance_fraction)
       .def_readwrite("rotate_translate_rotate", &PlanSetup::rotate_translate_rotate)
-      .def_readwrite("validation", &PlanSetup::validation);
+      .def_readwrite("validation", &PlanSetup::validation)
+      .def_readwrite("reeds_shepp", &PlanSetup::reeds_shepp)
+      .def_readwrite("hybrid_a_star", &PlanSetup::hybrid_a_star)
+      .def_property(
+          "timing", [](const PlanSetup& s) { return std::string(toString(s.timing)); },
+          [](PlanSetup& s, const std::string& name) { s.timing = timingKindFromString(name); })
+      .def_readwrite("feedback_headroom", &PlanSetup::feedback_headroom);
 
   defClass<TrackingGains>(m, "TrackingGains", "Kanayama tracking gains (sim/ExecutionDef.h).")
       .def_readwrite("k_x", &TrackingGains::k_x)
@@ -169,7 +199,12 @@ void bindDefs(py::module_& m) {
       .def_readwrite("rest_hold_s", &ExecutionDef::rest_hold_s)
       .def_readwrite("max_stop_time_s", &ExecutionDef::max_stop_time_s)
       .def_readwrite("contact_merge_s", &ExecutionDef::contact_merge_s)
-      .def_readwrite("csv_stride_steps", &ExecutionDef::csv_stride_steps);
+      .def_readwrite("csv_stride_steps", &ExecutionDef::csv_stride_steps)
+      // A preset name, as --realism (the world's realism: section applies when none is given).
+      .def_property(
+          "realism", [](const ExecutionDef& d) { return d.realism.name; },
+          [](ExecutionDef& d, const std::string& preset) { d.realism = presetRealism(preset); })
+      .def_readwrite("noise_seed", &ExecutionDef::noise_seed);
 
   defClass<SimModelDef>(m, "SimModelDef",
                         "Simulation model parts the world file does not describe "
@@ -177,7 +212,6 @@ void bindDefs(py::module_& m) {
       .def_readwrite("support_radius_m", &SimModelDef::support_radius_m)
       .def_readwrite("support_inset_m", &SimModelDef::support_inset_m)
       .def_readwrite("support_mass_kg", &SimModelDef::support_mass_kg)
-      .def_readwrite("chassis_clearance_m", &SimModelDef::chassis_clearance_m)
       .def_readwrite("parked_wake_distance_m", &SimModelDef::parked_wake_distance_m)
       .def_readwrite("parked_sleep_speed_mps", &SimModelDef::parked_sleep_speed_mps)
       .def_readwrite("parked_sleep_yaw_rate_radps", &SimModelDef::parked_sleep_yaw_rate_radps)
@@ -185,7 +219,9 @@ void bindDefs(py::module_& m) {
       .def_property(
           "solver", [](const SimModelDef& d) { return std::string(solverName(d.solver)); },
           [](SimModelDef& d, const std::string& s) { d.solver = solverFromName(s); })
-      .def_readwrite("solver_residual_threshold", &SimModelDef::solver_residual_threshold);
+      .def_readwrite("solver_residual_threshold", &SimModelDef::solver_residual_threshold)
+      .def_readwrite("ground_margin_m", &SimModelDef::ground_margin_m)
+      .def_readwrite("local_frame_grid_m", &SimModelDef::local_frame_grid_m);
 
   defClass<FrameDef>(m, "FrameDef", "Filming an episode (renders/FrameRecorder.h).")
       .def_readwrite("fps", &FrameDef::fps)

@@ -63,6 +63,7 @@ struct RunOutcome {
   nlohmann::json metrics;
   std::optional<RecordingResult> recording;
   bool ran = false;
+  bool realism = false;  // executed.csv has the realism columns
 };
 
 RunOutcome runWorld(const World& world, const py::object& plan, const py::object& film,
@@ -72,8 +73,9 @@ RunOutcome runWorld(const World& world, const py::object& plan, const py::object
   const Scenario& scenario = *world.scenario;
   std::optional<PlanSetup> setup;
   if (plan.is_none()) setup = planSetupFrom(options);
-  const ExecutionDef exec = takeOptions(ExecutionDef{}, options);
+  const ExecutionDef exec = executionFrom(world, options);
   rejectUnknownOptions(options, "run");
+  out.realism = exec.realism.active();
   std::optional<FrameDef> frame_def;
   if (!film.is_none()) frame_def = defFrom<FrameDef>(film, "film");
 
@@ -116,11 +118,13 @@ struct EpisodeHandle {
   Trajectory plan;
   std::unique_ptr<Episode> episode;
   std::optional<WheelSpeeds> held;  // unset: the tracking controller drives
+  bool realism = false;
 
   EpisodeHandle(const World& w, Trajectory p, const ExecutionDef& def, const SimModelDef& model)
       : scenario(w.scenario),
         plan(std::move(p)),
-        episode(std::make_unique<Episode>(*scenario, plan, def, model)) {}
+        episode(std::make_unique<Episode>(*scenario, plan, def, model)),
+        realism(def.realism.active()) {}
 
   bool step(long n) {
     py::gil_scoped_release release;
@@ -142,9 +146,11 @@ py::dict observation(const EpisodeHandle& h) {
   py::dict d;
   d["t"] = sample.tracking.t_s;
   d["pose"] = poseTuple(state.pose);
-  // What a controller may use. Without sensor models it is the true pose; realism options
-  // replace it with the estimate.
-  d["estimated_pose"] = poseTuple(state.pose);
+  // What the controller believes: the true pose for an ideal robot, the estimator's output
+  // under a realism (ExecutionDef.realism).
+  d["estimated_pose"] = poseTuple(sample.tracking.estimate);
+  d["encoders"] = py::make_tuple(sample.tracking.encoder_rad.left_radps,
+                                 sample.tracking.encoder_rad.right_radps);
   d["wheel_speeds"] = py::make_tuple(state.wheels.left_radps, state.wheels.right_radps);
   d["twist"] = py::make_tuple(state.twist.v_mps, state.twist.omega_radps);
   d["reference"] = poseTuple(sample.tracking.reference);
@@ -198,6 +204,13 @@ py::dict robotState(const RobotState& s) {
 
 }  // namespace
 
+ExecutionDef executionFrom(const World& world, py::dict& options) {
+  ExecutionDef def;
+  if (world.realism->has_realism) def.realism = world.realism->realism;
+  def.noise_seed = 1;  // --noise-seed's default
+  return takeOptions(def, options);
+}
+
 void bindEpisode(py::module_& m) {
   py::class_<RunOutcome>(m, "RunResult", "An episode run by parksim.run().")
       .def_property_readonly(
@@ -215,7 +228,7 @@ void bindEpisode(py::module_& m) {
           [](const RunOutcome& r) { return trajectoryArray(r.trajectory, r.scenario->robot); },
           "The plan driven, as trajectory.csv.")
       .def_property_readonly(
-          "executed", [](const RunOutcome& r) { return executedArray(r.episode.rows); },
+          "executed", [](const RunOutcome& r) { return executedArray(r.episode.rows, r.realism); },
           "Structured array with executed.csv's columns.")
       .def_property_readonly(
           "metrics",
@@ -258,7 +271,7 @@ Releases the GIL while planning and simulating.)");
       .def(py::init([](const World& world, const py::object& plan, const py::object& model,
                        const py::kwargs& kwargs) {
              py::dict options = optionsDict(kwargs);
-             const ExecutionDef exec = takeOptions(ExecutionDef{}, options);
+             const ExecutionDef exec = executionFrom(world, options);
              rejectUnknownOptions(options, "Episode");
              const SimModelDef sim_model =
                  model.is_none() ? SimModelDef{} : defFrom<SimModelDef>(model, "model");
@@ -288,9 +301,10 @@ Releases the GIL while planning and simulating.)");
           },
           "(left, right) rad/s the tracking controller would command for the next step.")
       .def("observation", &observation,
-           "Dict: t, pose (true), estimated_pose (what a controller sees), wheel_speeds "
-           "(encoders, rad/s), twist (v, omega), reference (plan pose now), wheel_speeds_cmd, "
-           "pos_err, heading_err, contacts (obstacle indices), stopping.")
+           "Dict: t, pose (true), estimated_pose (what the controller believes), encoders (wheel "
+           "angles as reported, rad), wheel_speeds (measured, rad/s), twist (v, omega), "
+           "reference (plan pose now), wheel_speeds_cmd, pos_err, heading_err, contacts "
+           "(obstacle indices), stopping.")
       .def_property_readonly(
           "plan", [](const EpisodeHandle& h) { return trajectoryArray(h.plan, h.scenario->robot); },
           "The plan the episode is measured against (structured array).")
@@ -310,7 +324,8 @@ Releases the GIL while planning and simulating.)");
           [](const EpisodeHandle& h) { return posesArray(h.episode->world().obstaclePoses()); },
           "N x 3 array: box centre x, y and yaw of every obstacle now.")
       .def_property_readonly(
-          "executed", [](const EpisodeHandle& h) { return executedArray(h.episode->rows()); },
+          "executed",
+          [](const EpisodeHandle& h) { return executedArray(h.episode->rows(), h.realism); },
           "Rows recorded so far (executed.csv's columns).")
       .def_property_readonly(
           "metrics",

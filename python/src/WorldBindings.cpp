@@ -7,6 +7,7 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/Geometry.h"
 #include "parksim/renders/CSpace.h"
+#include "parksim/scenario/RealismReader.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "python/src/Bindings.h"
 
@@ -35,15 +36,28 @@ py::array polygon(const std::vector<Eigen::Vector2d>& points) {
   return out;
 }
 
+const char* shapeName(ObstacleShape shape) {
+  switch (shape) {
+    case ObstacleShape::kBox: return "box";
+    case ObstacleShape::kCircle: return "circle";
+    case ObstacleShape::kPolygon: return "polygon";
+  }
+  return "box";
+}
+
 py::dict obstacleDict(const Obstacle& o) {
   py::dict d;
   d["name"] = o.name;
   d["kind"] = toString(o.kind);
+  d["shape"] = shapeName(o.shape);
+  // Boxes: the box; circles and polygons: their axis-aligned bounding rectangle.
   d["center"] = py::make_tuple(o.box.center.x(), o.box.center.y());
   d["size"] = py::make_tuple(2.0 * o.box.half_extents.x(), 2.0 * o.box.half_extents.y());
   d["yaw"] = o.box.yaw;
   d["height"] = o.height_m;
   d["corners"] = corners(o.box);
+  if (o.shape == ObstacleShape::kCircle) d["radius"] = o.radius_m;
+  if (o.shape == ObstacleShape::kPolygon) d["vertices"] = polygon(o.vertices);
   return d;
 }
 
@@ -96,6 +110,13 @@ void bindWorld(py::module_& m) {
                                d["either_heading"] = g.either_heading;
                                return d;
                              })
+      .def_property_readonly(
+          "realism",
+          [](const World& w) -> py::object {
+            if (!w.realism->has_realism) return py::none();
+            return py::str(w.realism->realism.name);
+          },
+          "The realism: section's preset name (None: the ideal robot).")
       .def_property_readonly("time_step_s",
                              [](const World& w) { return w.scenario->physics.time_step_s; })
       .def(
@@ -113,13 +134,16 @@ void bindWorld(py::module_& m) {
   m.def(
       "_load_world",
       [](const std::string& path) {
-        return World{std::make_shared<const Scenario>(loadScenario(path))};
+        auto scenario = std::make_shared<const Scenario>(loadScenario(path));
+        return World{scenario, std::make_shared<const WorldRealism>(loadWorldRealism(path))};
       },
       py::arg("path"));
   m.def(
       "_parse_world",
       [](const std::string& text, const std::string& source_name) {
-        return World{std::make_shared<const Scenario>(parseScenario(text, source_name))};
+        auto scenario = std::make_shared<const Scenario>(parseScenario(text, source_name));
+        return World{scenario,
+                     std::make_shared<const WorldRealism>(parseWorldRealism(text, source_name))};
       },
       py::arg("text"), py::arg("source_name"));
 
@@ -152,7 +176,7 @@ void bindWorld(py::module_& m) {
       [](const World& w, double theta_rad) {
         py::list out;
         for (const Obstacle& o : w.scenario->obstacles) {
-          out.append(polygon(cspaceSlice(o.box, w.scenario->robot, theta_rad)));
+          out.append(polygon(cspaceSlice(o, w.scenario->robot, theta_rad)));
         }
         return out;
       },

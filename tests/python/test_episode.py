@@ -108,3 +108,26 @@ def test_model_and_execution_options_are_taken(head_in, head_in_plan):
     with pytest.raises(ValueError, match="solver"):
         parksim.Episode(head_in, head_in_plan, model={"solver": "nope"})
     assert np.all(np.diff(ep.executed["t"]) > 0)
+
+
+def test_a_realism_preset_gives_an_estimate_and_matches_the_command_line(
+        tmp_path, head_in, head_in_path, head_in_plan):
+    from conftest import run_cli
+    from test_plan_run import read_csv
+
+    ep = parksim.Episode(head_in, head_in_plan, realism="lab", noise_seed=2)
+    ep.step(240)
+    obs = ep.observation()
+    assert obs["estimated_pose"] != obs["pose"]  # the estimator's pose, not the truth
+    assert obs["estimated_pose"] == pytest.approx(obs["pose"], abs=0.01)
+    # run() with the same realism and seeds drives the robot as `parksim run` does.
+    run = parksim.run(head_in, seed=1, realism="lab", noise_seed=2)
+    out = tmp_path / "cli"
+    run_cli("run", head_in_path, "--seed", 1, "--realism", "lab", "--noise-seed", 2,
+            "--out", out)
+    header, values = read_csv(out / "executed.csv")
+    assert run.executed.dtype.names == tuple(header)  # the realism columns too
+    for name in header:
+        column = values[:, header.index(name)]
+        np.testing.assert_array_equal(run.executed[name].view(np.uint64),
+                                      column.view(np.uint64), err_msg=name)

@@ -6,6 +6,7 @@
 
 #include "parksim/sim/Episode.h"
 #include "parksim/sim/EpisodeFiles.h"
+#include "parksim/sim/RealismDef.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {
@@ -29,6 +30,21 @@ TEST(EpisodeCommand, CommandingTheControllersOwnCommandIsBitIdenticalToStep) {
     EXPECT_EQ(executedCsv(episode.rows()), executedCsv(reference.rows)) << toString(mode);
     EXPECT_EQ(episode.metrics().steps, reference.metrics.steps);
   }
+}
+
+TEST(EpisodeCommand, UnderARealismTheCommandGoesThroughItsControlLoop) {
+  // The lab preset: motors, encoders, an estimator and a control loop with latency. Commanding
+  // what the controller would command at every step is then still the controller.
+  Scenario s = testing::emptyLot({0.5, 0.5, 0.3});
+  const Trajectory plan = straightPlan(s);
+  s.goal.pose = plan.points.back().pose;
+  ExecutionDef def;
+  def.realism = presetRealism("lab");
+  def.noise_seed = 3;
+  const EpisodeResult reference = runEpisode(s, plan, def);
+  Episode episode(s, plan, def);
+  while (!episode.finished()) episode.step(episode.controllerCommand());
+  EXPECT_EQ(executedCsv(episode.rows()), executedCsv(reference.rows));
 }
 
 TEST(EpisodeCommand, TheCommandIsAppliedAndRecordedAndTheRobotFollowsIt) {
