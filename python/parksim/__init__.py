@@ -22,11 +22,13 @@ from ._parksim import (  # noqa: F401  (re-exported)
     ExecutionDef,
     FrameDef,
     FrameRecorder,
+    HybridAStarDef,
     MotionValidatorDef,
     MoveToPoseDef,
     PlannerDef,
     PlanResult,
     PlanSetup,
+    ReedsSheppDef,
     RobotDef,
     RotateTranslateRotateDef,
     RunResult,
@@ -96,12 +98,12 @@ def render_frame(world, pose=None, plan=None, reference=None, episode=None,
 
 
 from .env import ParkingEnv  # noqa: E402
-from . import spaces  # noqa: E402,F401
+from . import spaces  # noqa: E402
 
 __all__ = [
     "CollisionChecker", "DynamicsWorld", "Episode", "Error", "ExecutionDef", "FrameDef",
-    "FrameRecorder", "MotionValidatorDef", "MoveToPoseDef", "ParkingEnv", "PlannerDef",
-    "PlanResult", "PlanSetup", "RobotDef", "RotateTranslateRotateDef", "RunResult",
+    "FrameRecorder", "HybridAStarDef", "MotionValidatorDef", "MoveToPoseDef", "ParkingEnv", "PlannerDef",
+    "PlanResult", "PlanSetup", "ReedsSheppDef", "RobotDef", "RotateTranslateRotateDef", "RunResult",
     "SimModelDef", "TrackingGains", "World", "cspace_slice", "encode_png", "load_world", "plan",
-    "read_png", "read_trajectory", "render_figure", "render_frame", "run", "write_png",
+    "read_png", "read_trajectory", "render_figure", "render_frame", "run", "spaces", "write_png",
 ]
