@@ -348,25 +348,30 @@ struct Episode::Impl {
     if (k % def.csv_stride_steps == 0 || finished) rows.push_back(row);
   }
 
+  // The realism controller's command at a control tick: from its estimate (or the truth),
+  // held from the tick plus the latency for one hold period.
+  WheelSpeeds realismCommand() const {
+    const RealismLoop& r = *loop;
+    const long k = world.steps();
+    const double hold_mid = planTime(k) + r.def.control.latency_s + 0.5 * r.holdPeriod();
+    if (def.tracking == TrackingMode::kOpen) return reference.wheelsAt(hold_mid);
+    const Pose2 estimate = r.def.estimator.kind == EstimatorKind::kTruth
+                               ? world.robot().local_pose
+                               : local(r.estimator.pose());
+    return trackingCommand(estimate, reference.poseAt(planTime(k)), reference.twistAt(hold_mid),
+                           def.gains, scenario.robot);
+  }
+
   // The realism's step: control tick (estimate -> set-points, delivered after the latency),
   // wheel-speed loop and motors, physics, then encoders, odometry, the pose sensor and the
   // estimator's corrections, in that order.
-  void realismStep() {
+  // `external`: a command from outside (Episode::step(command)) replaces the controller's at
+  // the control ticks and goes the same way (latency, wheel-speed loop, motors).
+  void realismStep(const std::optional<WheelSpeeds>& external) {
     RealismLoop& r = *loop;
     const long k = world.steps();
     if (r.controlDue(k)) {
-      const double hold_mid = planTime(k) + r.def.control.latency_s + 0.5 * r.holdPeriod();
-      WheelSpeeds cmd;
-      if (def.tracking == TrackingMode::kOpen) {
-        cmd = reference.wheelsAt(hold_mid);
-      } else {
-        const Pose2 estimate = r.def.estimator.kind == EstimatorKind::kTruth
-                                   ? world.robot().local_pose
-                                   : local(r.estimator.pose());
-        cmd = trackingCommand(estimate, reference.poseAt(planTime(k)),
-                              reference.twistAt(hold_mid), def.gains, scenario.robot);
-      }
-      r.pending.emplace_back(k + r.latency_steps, cmd);
+      r.pending.emplace_back(k + r.latency_steps, external ? *external : realismCommand());
       r.advanceTick(k);
     }
     while (!r.pending.empty() && r.pending.front().first <= k) {
@@ -412,6 +417,18 @@ struct Episode::Impl {
     measure(r.setpoint);
   }
 
+  // One step, driven by the tracking controller or by `external`.
+  void advance(const std::optional<WheelSpeeds>& external) {
+    if (loop) {
+      realismStep(external);
+      return;
+    }
+    const WheelSpeeds cmd = external ? *external : command();
+    world.setWheelTargets(cmd);
+    world.step();
+    measure(cmd);
+  }
+
   WheelSpeeds command() const {
     const long k = world.steps();
     // Wheel speeds are held per control period; the step's midpoint picks the period without
@@ -435,15 +452,20 @@ void Episode::step() {
   Impl& d = *impl_;
   if (d.finished) return;
   const auto start = std::chrono::steady_clock::now();
-  if (d.loop) {
-    d.realismStep();
-  } else {
-    const WheelSpeeds cmd = d.command();
-    d.world.setWheelTargets(cmd);
-    d.world.step();
-    d.measure(cmd);
-  }
+  d.advance(std::nullopt);
   d.wall += std::chrono::steady_clock::now() - start;
+}
+
+void Episode::step(const WheelSpeeds& command) {
+  Impl& d = *impl_;
+  if (d.finished) return;
+  const auto start = std::chrono::steady_clock::now();
+  d.advance(command);
+  d.wall += std::chrono::steady_clock::now() - start;
+}
+
+WheelSpeeds Episode::controllerCommand() const {
+  return impl_->loop ? impl_->realismCommand() : impl_->command();
 }
 
 bool Episode::finished() const { return impl_->finished; }
