@@ -375,12 +375,13 @@ CommandRunner setupRunCommand(CLI::App& sub) {
         m.wall_time_s > 0.0 ? m.sim_time_s / m.wall_time_s : 0.0, dir.c_str(), dir.c_str(),
         dir.c_str());
     if (realism_columns) {
-      std::printf("%s realism, noise seed %llu (%s estimate): estimate error max %.3f mm, wheel "
-                  "slip max %.1f mm/s, motor torque max %.4f N m%s\n",
-                  exec.realism.name.c_str(), static_cast<unsigned long long>(exec.noise_seed),
-                  m.estimator.c_str(), m.max_est_pos_err_m * 1e3, m.max_slip_mps * 1e3,
-                  m.max_motor_torque_nm,
-                  exec.realism.pose_sensor.enabled ? "; pose samples in sensors.csv" : "");
+      std::printf(
+          "%s realism, noise seed %llu (%s estimate): estimate error max %.3f mm, wheel "
+          "slip max %.1f mm/s, motor torque max %.4f N m%s\n",
+          exec.realism.name.c_str(), static_cast<unsigned long long>(exec.noise_seed),
+          m.estimator.c_str(), m.max_est_pos_err_m * 1e3, m.max_slip_mps * 1e3,
+          m.max_motor_torque_nm,
+          exec.realism.pose_sensor.enabled ? "; pose samples in sensors.csv" : "");
     }
     if (recorder) {
       std::printf("%s\n", recorder->finish().message.c_str());

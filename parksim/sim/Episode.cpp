@@ -120,8 +120,9 @@ SimModelDef modelFor(const SimModelDef& base, const Trajectory& plan, const Real
     const double weight_per_wheel =
         0.5 * s.physics.gravity_mps2 *
         (s.physics.chassis_mass_kg + 2.0 * s.physics.wheel_mass_kg + base.support_mass_kg);
-    m.body.joint_friction_nm =
-        motor.frictionTorque() + r.motor.rolling_resistance * weight_per_wheel * s.robot.wheel_radius_m;
+    m.body.joint_friction_nm = motor.frictionTorque() + r.motor.rolling_resistance *
+                                                            weight_per_wheel *
+                                                            s.robot.wheel_radius_m;
   }
   return m;
 }
@@ -166,7 +167,7 @@ struct RealismLoop {
   long latency_steps;
   long wheel_loop_steps;
 
-  long next_tick = 0;  // index of the next control tick
+  long next_tick = 0;                                // index of the next control tick
   std::deque<std::pair<long, WheelSpeeds>> pending;  // set-points and the step they arrive
   WheelSpeeds setpoint;
   WheelSpeeds effort;
@@ -188,9 +189,7 @@ struct RealismLoop {
       ++next_tick;
     }
   }
-  double holdPeriod() const {
-    return def.control.rate_hz > 0.0 ? 1.0 / def.control.rate_hz : dt;
-  }
+  double holdPeriod() const { return def.control.rate_hz > 0.0 ? 1.0 / def.control.rate_hz : dt; }
 };
 
 struct Episode::Impl {
@@ -297,10 +296,10 @@ struct Episode::Impl {
       max_est_pos = std::max(max_est_pos, row.est_pos_err_m);
       sum_sq_est_pos += row.est_pos_err_m * row.est_pos_err_m;
       max_est_heading = std::max(max_est_heading, std::abs(row.est_heading_err_rad));
-      max_torque = std::max({max_torque, std::abs(row.torque_nm.left_radps),
-                             std::abs(row.torque_nm.right_radps)});
-      max_effort = std::max(
-          {max_effort, std::abs(row.effort.left_radps), std::abs(row.effort.right_radps)});
+      max_torque = std::max(
+          {max_torque, std::abs(row.torque_nm.left_radps), std::abs(row.torque_nm.right_radps)});
+      max_effort =
+          std::max({max_effort, std::abs(row.effort.left_radps), std::abs(row.effort.right_radps)});
     }
     for (double slip : {state.slip_mps.left_radps, state.slip_mps.right_radps}) {
       max_slip = std::max(max_slip, std::abs(slip));

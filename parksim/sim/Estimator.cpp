@@ -11,12 +11,9 @@ namespace parksim {
 
 const char* toString(EstimatorKind kind) {
   switch (kind) {
-    case EstimatorKind::kTruth:
-      return "truth";
-    case EstimatorKind::kOdometry:
-      return "odometry";
-    case EstimatorKind::kFused:
-      return "fused";
+    case EstimatorKind::kTruth: return "truth";
+    case EstimatorKind::kOdometry: return "odometry";
+    case EstimatorKind::kFused: return "fused";
   }
   return "?";
 }
@@ -31,8 +28,8 @@ EstimatorKind estimatorKindFromString(const std::string& name) {
 Estimator::Estimator(const EstimatorDef& def, const RobotDef& nominal, const PoseSensorDef& sensor,
                      const Pose2& start)
     : def_(def), track_(nominal.wheel_base_m) {
-  const double sp = def.assumed_position_noise_m > 0.0 ? def.assumed_position_noise_m
-                                                       : sensor.position_noise_m;
+  const double sp =
+      def.assumed_position_noise_m > 0.0 ? def.assumed_position_noise_m : sensor.position_noise_m;
   const double sh = def.assumed_heading_noise_rad > 0.0 ? def.assumed_heading_noise_rad
                                                         : sensor.heading_noise_rad;
   r_ = Eigen::Vector3d(sp * sp, sp * sp, sh * sh).asDiagonal();
@@ -57,8 +54,7 @@ void Estimator::propagate(const Entry& from, Entry& to) const {
   // Wheel travels -> pose: d(x, y, theta)/d(left, right).
   Eigen::Matrix<double, 3, 2> g;
   g << 0.5 * c + 0.5 * ds * s / track_, 0.5 * c - 0.5 * ds * s / track_,
-      0.5 * s - 0.5 * ds * c / track_, 0.5 * s + 0.5 * ds * c / track_, -1.0 / track_,
-      1.0 / track_;
+      0.5 * s - 0.5 * ds * c / track_, 0.5 * s + 0.5 * ds * c / track_, -1.0 / track_, 1.0 / track_;
   const Eigen::Vector2d q(def_.odometry_variance_per_m * std::abs(to.left_m),
                           def_.odometry_variance_per_m * std::abs(to.right_m));
   to.p = f * from.p * f.transpose() + g * q.asDiagonal() * g.transpose();

@@ -16,17 +16,17 @@ namespace parksim {
 struct PoseSensorDef {
   /// Off: no pose measurements (dead reckoning or truth only).
   bool enabled = false;
-  double rate_hz = 100.0;           ///< samples per second
-  double latency_s = 0.06;          ///< from sampling to delivery, s
-  double position_noise_m = 5e-4;   ///< standard deviation of x and y each, m
+  double rate_hz = 100.0;             ///< samples per second
+  double latency_s = 0.06;            ///< from sampling to delivery, s
+  double position_noise_m = 5e-4;     ///< standard deviation of x and y each, m
   double heading_noise_rad = 0.0054;  ///< standard deviation of the heading, rad
-  double dropout_probability = 0.0;  ///< share of samples lost, 0..1
+  double dropout_probability = 0.0;   ///< share of samples lost, 0..1
 };
 
 struct PoseMeasurement {
-  long taken_step = 0;     ///< physics step at whose end it was taken
-  long arrival_step = 0;   ///< physics step at whose end the controller gets it
-  Pose2 pose;              ///< measured pose (with noise), lot frame
+  long taken_step = 0;    ///< physics step at whose end it was taken
+  long arrival_step = 0;  ///< physics step at whose end the controller gets it
+  Pose2 pose;             ///< measured pose (with noise), lot frame
 };
 
 class PoseSensor {

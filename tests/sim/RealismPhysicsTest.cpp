@@ -10,8 +10,8 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
 #include "parksim/core/DiffDrive.h"
+#include "parksim/core/Error.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/Encoder.h"
 #include "parksim/sim/Episode.h"
@@ -71,7 +71,8 @@ TEST(MotorModel, OnTheRobotTheLoadAddsItsInertiaToTheTimeConstant) {
   double crossed = -1.0;
   while (world.time() < 5.0 * tau && crossed < 0.0) {
     const WheelSpeeds w = world.robot().wheels;
-    world.setWheelTorques({motor.torque(effort, w.left_radps), motor.torque(effort, w.right_radps)});
+    world.setWheelTorques(
+        {motor.torque(effort, w.left_radps), motor.torque(effort, w.right_radps)});
     world.step();
     if (world.robot().wheels.left_radps >= (1.0 - std::exp(-1.0)) * final_speed) {
       crossed = world.time();
@@ -93,16 +94,14 @@ double slipTorque(const Scenario& s, const SimModelDef& m) {
   const double mass = robotMass(s, m);
   const double chassis_dx = -robot.footprintCenterOffset();  // chassis centre behind the axle
   const double slider = robot.length_m - robot.front_overhang_m - m.support_inset_m;
-  const double com_behind =
-      (p.chassis_mass_kg * chassis_dx + m.support_mass_kg * slider) / mass;
+  const double com_behind = (p.chassis_mass_kg * chassis_dx + m.support_mass_kg * slider) / mass;
   const double chassis_z = 0.5 * (robot.ground_clearance_m + robot.height_m);
   const double h = (p.chassis_mass_kg * chassis_z + 2.0 * p.wheel_mass_kg * robot.wheel_radius_m +
                     m.support_mass_kg * m.support_radius_m) /
                    mass;
   const double mu = p.wheel_friction * p.ground_friction;
   // Both wheels: F = mu (M g (L - c) / L - F h / L)  ->  F = mu M g (L - c) / (L + mu h).
-  const double force_total =
-      mu * mass * p.gravity_mps2 * (slider - com_behind) / (slider + mu * h);
+  const double force_total = mu * mass * p.gravity_mps2 * (slider - com_behind) / (slider + mu * h);
   const double f = 0.5 * force_total;
   const double r = robot.wheel_radius_m;
   const double j = 0.4 * p.wheel_mass_kg * r * r;  // sphere about its axle
@@ -178,9 +177,10 @@ TEST(Odometry, OnePercentTrackErrorGivesAboutThreePointSixDegreesPerTurn) {
   // revolution). The calibrated robot's own error (slip in the ramps) is measured apart.
   const double predicted = radToDeg(turn * (1.0 - 1.0 / 1.01));
   const double calibrated = radToDeg(turnHeadingError(0.0, &turn));
-  std::printf("turned %.1f deg: odometry heading error %.3f deg (%.3f deg calibrated), predicted "
-              "%.3f deg\n",
-              radToDeg(turn), err, calibrated, predicted);
+  std::printf(
+      "turned %.1f deg: odometry heading error %.3f deg (%.3f deg calibrated), predicted "
+      "%.3f deg\n",
+      radToDeg(turn), err, calibrated, predicted);
   EXPECT_NEAR(radToDeg(turn), 360.0, 6.0);
   EXPECT_NEAR(err - calibrated, predicted, 0.2 * predicted);
   EXPECT_NEAR(err, 3.6, 0.2 * 3.6);
@@ -189,15 +189,14 @@ TEST(Odometry, OnePercentTrackErrorGivesAboutThreePointSixDegreesPerTurn) {
 TEST(Odometry, OnePercentRadiusMismatchCurvesAStraightDriveAsPredicted) {
   const Scenario s = emptyLot({0.2, 0.5, 0.0});
   const double w = 5.0;  // 0.1 m/s: about 1 m in 10 s
-  const Trajectory plan =
-      planFromSegments(s.start, rampedSegments({w, w}, 9.5, s.robot), s.robot);
+  const Trajectory plan = planFromSegments(s.start, rampedSegments({w, w}, 9.5, s.robot), s.robot);
   ExecutionDef exec;
   exec.tracking = TrackingMode::kOpen;  // the wheels turn as planned, the robot curves
   exec.realism = calibrationOnly(0.0, 1.0, 0.0);
   const EpisodeResult result = runEpisode(s, plan, exec);
   const ExecutedRow& last = result.rows.back();
   const double r = s.robot.wheel_radius_m;
-  const double left = r * last.encoder_rad.left_radps;          // true travel of the left rim
+  const double left = r * last.encoder_rad.left_radps;           // true travel of the left rim
   const double right = 1.01 * r * last.encoder_rad.right_radps;  // the right wheel is 1 % larger
   const double turn = (right - left) / s.robot.wheel_base_m;
   const double distance = 0.5 * (left + right);

@@ -77,11 +77,12 @@ TEST_P(RealismWorlds, LabClosedLoopTracksWithinItsBandOverSeveralNoiseSeeds) {
   double worst_goal = 0.0;
   for (std::uint64_t seed : {1, 2, 3}) {
     const EpisodeMetrics m = runEpisode(p.scenario, p.plan, withRealism("lab", seed)).metrics;
-    std::printf("%s lab seed %llu: max %.3f mm, goal %.3f mm / %.3f deg, est max %.3f mm, slip "
-                "max %.1f mm/s, ideal max %.3f mm\n",
-                GetParam(), static_cast<unsigned long long>(seed), m.max_pos_err_m * 1e3,
-                m.goal_pos_err_m * 1e3, m.goal_heading_err_deg, m.max_est_pos_err_m * 1e3,
-                m.max_slip_mps * 1e3, ideal.max_pos_err_m * 1e3);
+    std::printf(
+        "%s lab seed %llu: max %.3f mm, goal %.3f mm / %.3f deg, est max %.3f mm, slip "
+        "max %.1f mm/s, ideal max %.3f mm\n",
+        GetParam(), static_cast<unsigned long long>(seed), m.max_pos_err_m * 1e3,
+        m.goal_pos_err_m * 1e3, m.goal_heading_err_deg, m.max_est_pos_err_m * 1e3,
+        m.max_slip_mps * 1e3, ideal.max_pos_err_m * 1e3);
     EXPECT_TRUE(m.goal_reached) << seed;
     EXPECT_EQ(m.contacts, 0) << seed;
     EXPECT_GT(m.max_pos_err_m, 1e-3) << seed;
@@ -94,8 +95,8 @@ TEST_P(RealismWorlds, LabClosedLoopTracksWithinItsBandOverSeveralNoiseSeeds) {
   }
   const EpisodeMetrics open =
       runEpisode(p.scenario, p.plan, withRealism("lab", 1, TrackingMode::kOpen)).metrics;
-  std::printf("%s lab open loop: max %.3f mm, goal %.3f mm\n", GetParam(),
-              open.max_pos_err_m * 1e3, open.goal_pos_err_m * 1e3);
+  std::printf("%s lab open loop: max %.3f mm, goal %.3f mm\n", GetParam(), open.max_pos_err_m * 1e3,
+              open.goal_pos_err_m * 1e3);
   // Open loop has the motors' own speed loops but nothing that sees the pose.
   EXPECT_GT(open.max_pos_err_m, 1.5 * worst);
   EXPECT_GT(open.goal_pos_err_m, 2.0 * worst_goal);
@@ -142,8 +143,8 @@ TEST_P(RealismWorlds, TheLotTracksTheSameTenKilometresAway) {
   const EpisodeMetrics here = runEpisode(p.scenario, p.plan, ExecutionDef{}).metrics;
   const EpisodeMetrics there = runEpisode(far, far_plan, ExecutionDef{}).metrics;
   std::printf("%s: steps %ld / %ld, rest %d / %d, max %.9g / %.9g, goal %.9g / %.9g\n", GetParam(),
-              here.steps, there.steps, here.ended_at_rest, there.ended_at_rest,
-              here.max_pos_err_m, there.max_pos_err_m, here.goal_pos_err_m, there.goal_pos_err_m);
+              here.steps, there.steps, here.ended_at_rest, there.ended_at_rest, here.max_pos_err_m,
+              there.max_pos_err_m, here.goal_pos_err_m, there.goal_pos_err_m);
   EXPECT_NEAR(there.max_pos_err_m, here.max_pos_err_m, 1e-6);
   EXPECT_NEAR(there.rms_pos_err_m, here.rms_pos_err_m, 1e-6);
   // Where the robot comes to rest after the plan (the closed loop holding the last pose below

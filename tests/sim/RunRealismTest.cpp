@@ -90,8 +90,7 @@ TEST_F(RunRealism, TheToleranceComesFromTheCommandLineOrTheWorld) {
   EXPECT_EQ(m["realism"], "lab+world");
   EXPECT_EQ(m["tolerance.max_pos_err_m"], 0.001);
   // A command-line tolerance wins over the world's.
-  const CliRun loose =
-      runParksim("run " + path + " --max-tracking-error-mm 30 --out " + out("l"));
+  const CliRun loose = runParksim("run " + path + " --max-tracking-error-mm 30 --out " + out("l"));
   EXPECT_EQ(loose.exit_code, 0) << loose.out;
 }
 
