@@ -319,8 +319,7 @@ TEST(TreePlanner, StartAndGoalFollowThePlacementRule) {
   Scenario s = testing::studyLot();
   const double front = s.start.y + s.robot.front_overhang_m;  // facing +y
   s.obstacles.push_back(Obstacle::makeBox("near", ObstacleKind::kBox,
-                                          testing::cornerBox(0.0, front + 0.0003, 0.3, 0.05),
-                                          0.1));
+                                          testing::cornerBox(0.0, front + 0.0003, 0.3, 0.05), 0.1));
   SatChecker checker(s);
   PlanResult r = planScenario(s, checker, PlanSetup{});
   EXPECT_EQ(r.status, PlanStatus::kInvalidStart);
@@ -345,9 +344,12 @@ TEST(TreePlanner, AStartOnTheLotEdgeIsNotReportedAsACollision) {
   s.start = {0.1, 0.0002, kPi / 2};  // nothing there, but 0.2 mm from the edge y = 0
   const PlanResult r = planScenario(s, checker, PlanSetup{});
   EXPECT_EQ(r.status, PlanStatus::kInvalidStart);
-  EXPECT_EQ(r.message, "start pose lies within half the motion-check resolution of the lot edge");
+  EXPECT_EQ(r.message,
+            "start: reference point (0.1, 2e-04) is closer than the 0.5 mm margin to the lot edge "
+            "[0, 1.8] x [0, 1.2]");
   s.start = {0.55, 0.2, 0.0};  // inside a wall
-  EXPECT_EQ(planScenario(s, checker, PlanSetup{}).message, "start pose collides");
+  EXPECT_EQ(planScenario(s, checker, PlanSetup{}).message,
+            "start: robot footprint overlaps obstacle \"wall_2\"");
 }
 
 TEST(TreePlanner, NamesRoundTripAndUnknownNamesThrow) {
@@ -369,13 +371,16 @@ TEST(TreePlanner, NamesRoundTripAndUnknownNamesThrow) {
 TEST(TreePlanner, RejectsBadDefinitions) {
   const Scenario s = testing::studyLot();
   const SatChecker checker(s);
+  // The tree planner's definition (PlanSetup's default planner is hybrid-a-star).
   PlanSetup setup;
+  setup.planner.kind = PlannerKind::kRrtGoalConnect;
   setup.planner.extend_distance_m = 0.0;
   EXPECT_THROW(planScenario(s, checker, setup), Error);
   setup = {};
   setup.planner.cusp_penalty_m = -1.0;
   EXPECT_THROW(planScenario(s, checker, setup), Error);
   setup = {};
+  setup.planner.kind = PlannerKind::kRrtGoalConnect;
   setup.planner.smoothing_attempts = -1;
   EXPECT_THROW(planScenario(s, checker, setup), Error);
 }
