@@ -6,6 +6,8 @@
 // Exit status: 0 when every run finished (unsolved runs are results, not errors), 2 on bad input.
 
 #include "app/Command.h"
+#include "app/Progress.h"
+#include "app/Validators.h"
 
 #ifdef PARKSIM_HAVE_OMPL_BENCH
 
@@ -116,7 +118,7 @@ std::string settingsText(const BenchOptions& o) {
          formatGeneral(o.segment_m) + " m, validity margin 0; exact path check at 0.2 mm, margin 0";
 }
 
-int runBench(const BenchOptions& o) {
+int runBench(const BenchOptions& o, const OutputOptions& output) {
   if (o.seeds < 1) throw Error("--seeds must be at least 1");
   std::vector<PlannerKind> kinds;
   if (o.planners.empty()) {
@@ -165,6 +167,8 @@ int runBench(const BenchOptions& o) {
   for (const Scenario& scenario : scenarios) {
     const BulletCollisionWorld world(scenario);
     const Clock::time_point t0 = Clock::now();
+    Progress progress(scenario.name + " seeds", o.seeds,
+                      progressWanted(output.progress, output.quiet));
     for (int seed = 1; seed <= o.seeds; ++seed) {
       for (std::size_t si = 0; si < steerings.size(); ++si) {
         const SteeringKind steering = steerings[si];
@@ -204,11 +208,9 @@ int runBench(const BenchOptions& o) {
           all.push_back(bench::runOmpl(scenario, world, def, check));
         }
       }
-      if (seed % 10 == 0 || seed == o.seeds) {
-        std::fprintf(stderr, "  %s: seed %d/%d done, %.1f s\n", scenario.name.c_str(), seed,
-                     o.seeds, std::chrono::duration<double>(Clock::now() - t0).count());
-      }
+      progress.update(seed);
     }
+    progress.finish();
     world_seconds.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
   }
   const double load_after = loadAverage();
@@ -222,7 +224,7 @@ int runBench(const BenchOptions& o) {
   summary += "\n## Where parksim's planners spend their time (mean per run)\n\n" +
              bench::formatPhaseTable(groups);
   const std::string comparison = bench::formatComparison(groups);
-  if (!comparison.empty()) summary += "\n## parksim vs OMPL (issue 5 targets)\n\n" + comparison;
+  if (!comparison.empty()) summary += "\n## parksim vs OMPL\n\n" + comparison;
   std::string invalid;
   for (const bench::BenchRecord& r : all) {
     if (r.solved && !r.valid) {
@@ -263,17 +265,6 @@ int runBench(const BenchOptions& o) {
   return 0;
 }
 
-// CLI11's PositiveNumber prints its whole range (up to DBL_MAX) when it rejects a value.
-CLI::Validator positive() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        double value = 0.0;
-        if (parseDouble(text, value) && value > 0.0) return "";
-        return "must be a positive number, got " + text;
-      },
-      "POSITIVE");
-}
-
 }  // namespace
 
 CommandRunner setupBenchCommand(CLI::App& sub) {
@@ -281,7 +272,7 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("worlds", opt->worlds, "world files (YAML, see docs/world-format.md)")->required();
   sub.add_option("--seeds", opt->seeds, "runs per planner and world, with seeds 1..N")
       ->capture_default_str()
-      ->check(positive());
+      ->check(positiveNumber());
   sub.add_option("--planners", opt->planners,
                  "parksim planners, comma-separated (default: every planner kind; none: OMPL only)")
       ->delimiter(',');
@@ -297,11 +288,11 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("--time-limit", opt->time_limit_s,
                  "wall-time budget of parksim's first-solution runs, s (0: none)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   sub.add_option("--anytime-s", opt->anytime_s,
                  "wall-time budget of the extra run of parksim's anytime planners (RRT*), s")
       ->capture_default_str()
-      ->check(positive());
+      ->check(positiveNumber());
   sub.add_flag("--ompl", opt->ompl, "also run OMPL's planners on the same footprint checker");
   sub.add_option("--ompl-planners", opt->ompl_planners, "OMPL planners, comma-separated")
       ->delimiter(',')
@@ -313,21 +304,21 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("--budget-s", opt->budget_s,
                  "OMPL's wall-time limit per run, s (RRT* improves its path until then)")
       ->capture_default_str()
-      ->check(positive());
+      ->check(positiveNumber());
   sub.add_option("--turning-radius", opt->turning_radius_m,
                  "Reeds-Shepp minimum turning radius for OMPL, m")
       ->capture_default_str()
-      ->check(positive());
+      ->check(positiveNumber());
   sub.add_option("--segment", opt->segment_m,
                  "longest motion OMPL's motion validator leaves unchecked (state-space distance)")
       ->capture_default_str()
-      ->check(positive());
+      ->check(positiveNumber());
   sub.add_option("--out", opt->out, "output directory for bench.csv and summary.md")
       ->capture_default_str();
   sub.add_option("--ompl-log", opt->ompl_log,
                  "also write OMPL's benchmark log format here (one file per world: "
                  "FILE.<scenario>.log when there are several)");
-  return [opt] { return runBench(*opt); };
+  return [opt](const OutputOptions& output) { return runBench(*opt, output); };
 }
 
 }  // namespace parksim::app
@@ -339,7 +330,7 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
 namespace parksim::app {
 
 CommandRunner setupBenchCommand(CLI::App&) {
-  return [] {
+  return [](const OutputOptions&) {
     std::fprintf(stderr,
                  "parksim bench: not built (configure with PARKSIM_BUILD_BENCH=ON and link "
                  "parksim_ompl_bench)\n");

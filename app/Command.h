@@ -10,11 +10,30 @@
 
 namespace parksim::app {
 
-using CommandRunner = std::function<int()>;
+/// The process exit codes, the same for every command (README "Exit codes").
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitUnsolved = 1,         ///< the planner found no plan (plan, run)
+  kExitBadInput = 2,         ///< bad input or usage; nothing was written
+  kExitInternal = 3,         ///< a bug or an environment failure (out of memory, no OpenGL, ...)
+  kExitToleranceNotMet = 4,  ///< run: goal or tracking tolerance missed, or a contact
+};
+
+/// -q, -v and --progress, which every command takes (registered by main()).
+struct OutputOptions {
+  bool quiet = false;     ///< -q: nothing on stdout; errors only on stderr
+  bool verbose = false;   ///< -v: also the build and the settings on stderr
+  bool progress = false;  ///< --progress: draw progress even when stderr is not a terminal
+};
+
+using CommandRunner = std::function<int(const OutputOptions&)>;
 
 CommandRunner setupPlanCommand(CLI::App& sub);
 CommandRunner setupRunCommand(CLI::App& sub);
 CommandRunner setupRenderCommand(CLI::App& sub);
 CommandRunner setupBenchCommand(CLI::App& sub);
+CommandRunner setupSweepCommand(CLI::App& sub);
+CommandRunner setupMergeCommand(CLI::App& sub);
+CommandRunner setupReportCommand(CLI::App& sub);
 
 }  // namespace parksim::app

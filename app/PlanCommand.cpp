@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/Command.h"
+#include "app/Overrides.h"
 #include "app/PlanOutput.h"
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/scenario/ScenarioReader.h"
@@ -15,14 +16,16 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
     std::string world;
     std::string out = "out";
     PlanCliOptions plan;
+    WorldOverrideOptions world_overrides;
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
   opt->plan.addTo(sub);
+  opt->world_overrides.addTo(sub);
   sub.add_option("--out", opt->out, "output directory")->capture_default_str();
 
-  return [opt] {
-    const Scenario scenario = loadScenario(opt->world);
+  return [opt](const OutputOptions&) -> int {
+    const Scenario scenario = loadWorld(opt->world, opt->world_overrides);
     const PlanSetup setup = opt->plan.toSetup(scenario);
     const BulletCollisionWorld collision(scenario);
     const PlanResult result = planScenario(scenario, collision, setup);
@@ -30,7 +33,7 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
     if (!result.solved()) {
       std::fprintf(stderr, "parksim plan: unsolved (%s): %s\n", toString(result.status),
                    result.message.c_str());
-      return 1;
+      return kExitUnsolved;
     }
     std::printf(
         "solved %s with %s (seed %llu): %d iterations, %d tree nodes, path %.3f m, %.1f s of "

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "app/Validators.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/Provenance.h"
@@ -31,7 +32,7 @@ void PlanCliOptions::addTo(CLI::App& sub) {
   // CLI11 would wrap "-3" into a 64-bit unsigned seed; refuse it instead.
   sub.add_option("--seed", seed, "seed of the planner's random number generator")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   sub.add_option("--max-iterations", max_iterations,
                  "iteration budget (hybrid-a-star: node expansions); auto: 2000 for tree "
                  "planners, 20000 for hybrid-a-star, times max(1, lot area / 2.16 m^2)")
@@ -40,11 +41,11 @@ void PlanCliOptions::addTo(CLI::App& sub) {
                  "wall-time budget of the search, s (0: none); the plan then depends on the "
                  "machine's speed, so reproducible runs use --max-iterations alone")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   sub.add_flag("--smooth", smooth, "shortcut-smooth the plan (study 3(c)(3))");
   sub.add_option("--smoothing-attempts", smoothing_attempts, "random shortcuts tried by --smooth")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   sub.add_option("--timing", timing,
                  "time-optimal: re-time the plan to the fastest wheel speeds within the limits "
                  "(less the feedback headroom); study: keep the steering controller's timing")
@@ -57,7 +58,7 @@ void PlanCliOptions::addTo(CLI::App& sub) {
   sub.add_option("--turning-radius", turning_radius_m,
                  "arc radius of reeds-shepp steering and of hybrid-a-star's primitives, m")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
 }
 
 int parseIterationBudget(const std::string& text, PlannerKind kind, const LotBounds& lot,

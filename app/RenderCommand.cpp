@@ -7,6 +7,7 @@
 
 #include "app/Command.h"
 #include "app/FigureInputs.h"
+#include "app/Overrides.h"
 #include "app/PlanOutput.h"
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/AtomicFile.h"
@@ -28,10 +29,17 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     int slices = 36;
     std::vector<double> steer_target;
     PlanCliOptions plan;
+    WorldOverrideOptions world_overrides;
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
   opt->plan.addTo(sub);
+  opt->world_overrides.addTo(sub);
+  // render draws both of the study's planners unless --planner names one: no single default.
+  CLI::Option* planner = sub.get_option("--planner");
+  planner->default_str("")->description(
+      "draw only this planner's plan, " + planner->get_description() +
+      " (default: rrt and rrt-goal-connect, the study's Figs. 7 and 8)");
   sub.add_option("--size", opt->size, "figure size WxH in pixels")->capture_default_str();
   sub.add_option("--out", opt->out, "output directory; figures go to OUT/figures")
       ->capture_default_str();
@@ -50,8 +58,8 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
       ->expected(3);
   CLI::App* app = &sub;
 
-  return [opt, app] {
-    const Scenario scenario = loadScenario(opt->world);
+  return [opt, app](const OutputOptions&) -> int {
+    const Scenario scenario = loadWorld(opt->world, opt->world_overrides);
     const ImageSize size = parseImageSize(opt->size);
     FigureDef def;
     def.width_px = size.width_px;

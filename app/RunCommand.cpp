@@ -3,8 +3,8 @@
 // DIR/executed.csv, DIR/metrics.json, and with --frames DIR/frames/*.png and the figures in
 // DIR/figures/ (--video, --gif: DIR/episode.mp4, DIR/episode.gif). Exit status: 0 when the robot
 // ends within the world's goal tolerance and the default TrackingTolerance holds (no contact,
-// tracking error <= 5 mm, ...); 1 otherwise, or when planning fails, with a one-line reason on
-// stderr; 2 on bad input.
+// tracking error <= 5 mm, ...); 4 when it does not and 1 when planning fails, each with a
+// one-line reason on stderr; 2 on bad input (app/Command.h lists the exit codes).
 
 #include <cmath>
 #include <cstdio>
@@ -14,7 +14,10 @@
 
 #include "app/Command.h"
 #include "app/FigureInputs.h"
+#include "app/Overrides.h"
 #include "app/PlanOutput.h"
+#include "app/Progress.h"
+#include "app/Validators.h"
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
@@ -177,6 +180,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     std::string tracking = "closed";
     std::string plan_file;
     PlanCliOptions plan;
+    WorldOverrideOptions world_overrides;
     bool frames = false;
     bool video = false;
     bool gif = false;
@@ -194,6 +198,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
   opt->plan.addTo(sub);
+  opt->world_overrides.addTo(sub);
   sub.add_option("--tracking", opt->tracking,
                  "closed: planned wheel speeds plus pose feedback; open: planned wheel speeds only")
       ->capture_default_str()
@@ -208,7 +213,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
   sub.add_flag("--gif", opt->gif, "also OUT/episode.gif (needs ffmpeg; implies --frames)");
   sub.add_option("--fps", opt->fps, "frames per second of simulated time")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   sub.add_option("--size", opt->size, "size of one view, WxH pixels")->capture_default_str();
   sub.add_option("--view", opt->view, "top, 3d or both (side by side)")
       ->capture_default_str()
@@ -222,7 +227,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
                  "seed of the realism's random draws (calibration, motor gains, sensor noise), "
                  "independent of --seed")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   sub.add_option("--realisations", opt->realisations,
                  "drive the plan N times under noise seeds S, S+1, ... and report the "
                  "distribution (files of the first)")
@@ -235,16 +240,16 @@ CommandRunner setupRunCommand(CLI::App& sub) {
   sub.add_option("--max-tracking-error-mm", opt->max_tracking_error_mm,
                  "tracking tolerance: largest error against the plan (default 5, or the world's "
                  "tolerance: section)")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   sub.add_option("--max-goal-error-mm", opt->max_goal_error_mm,
                  "tracking tolerance: final distance from the goal (default 3)")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   sub.add_option("--max-goal-heading-error-deg", opt->max_goal_heading_error_deg,
                  "tracking tolerance: final heading error against the goal (default 1.5)")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
 
-  return [opt] {
-    const Scenario scenario = loadScenario(opt->world);
+  return [opt](const OutputOptions& output) -> int {
+    const Scenario scenario = loadWorld(opt->world, opt->world_overrides);
     const WorldRealism world_realism = loadWorldRealism(opt->world);
     ExecutionDef exec;
     exec.tracking = trackingModeFromString(opt->tracking);
@@ -304,7 +309,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       if (!result.solved()) {
         std::fprintf(stderr, "parksim run: unsolved plan (%s): %s\n", toString(result.status),
                      result.message.c_str());
-        return 1;
+        return kExitUnsolved;
       }
       plan = result.trajectory;
       plan_summary = planSummary(scenario, setup, result);
@@ -312,15 +317,22 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     }
 
     std::unique_ptr<FrameRecorder> recorder;
+    std::unique_ptr<Progress> frame_progress;
     EpisodeObserver observer;
     if (film) {
       recorder = std::make_unique<FrameRecorder>(scenario, frame_def);
       recorder->setPlan(plan);
-      observer = [&recorder](const EpisodeSample& sample) {
+      // One frame per 1/fps of simulated time over the plan (the episode may run a little longer).
+      const long expected_frames = static_cast<long>(plan.duration() * opt->fps) + 1;
+      frame_progress = std::make_unique<Progress>("frames", expected_frames,
+                                                  progressWanted(output.progress, output.quiet));
+      observer = [&recorder, &frame_progress, frames = 0L](const EpisodeSample& sample) mutable {
         recorder->addFrame(frameInput(sample));
+        frame_progress->update(++frames);
       };
     }
     const EpisodeResult episode = runEpisode(scenario, plan, exec, observer, 1.0 / opt->fps);
+    if (frame_progress) frame_progress->finish();
     const EpisodeMetrics& m = episode.metrics;
     // The same plan under the next noise seeds (no frames; their files are not kept).
     std::vector<RealisationRow> realisations;
@@ -362,6 +374,14 @@ CommandRunner setupRunCommand(CLI::App& sub) {
         m.contacts, m.contacts == 1 ? "" : "s", m.sim_time_s, m.wall_time_s,
         m.wall_time_s > 0.0 ? m.sim_time_s / m.wall_time_s : 0.0, dir.c_str(), dir.c_str(),
         dir.c_str());
+    if (realism_columns) {
+      std::printf("%s realism, noise seed %llu (%s estimate): estimate error max %.3f mm, wheel "
+                  "slip max %.1f mm/s, motor torque max %.4f N m%s\n",
+                  exec.realism.name.c_str(), static_cast<unsigned long long>(exec.noise_seed),
+                  m.estimator.c_str(), m.max_est_pos_err_m * 1e3, m.max_slip_mps * 1e3,
+                  m.max_motor_torque_nm,
+                  exec.realism.pose_sensor.enabled ? "; pose samples in sensors.csv" : "");
+    }
     if (recorder) {
       std::printf("%s\n", recorder->finish().message.c_str());
       FigureInputs figures;
@@ -412,16 +432,16 @@ CommandRunner setupRunCommand(CLI::App& sub) {
                        failureReason(scenario, r.metrics, tolerance).c_str());
           break;
         }
-        return 1;
+        return kExitToleranceNotMet;
       }
-      return 0;
+      return kExitOk;
     }
     const std::string failure = failureReason(scenario, m, tolerance);
     if (!failure.empty()) {
       std::fprintf(stderr, "parksim run: %s\n", failure.c_str());
-      return 1;
+      return kExitToleranceNotMet;
     }
-    return 0;
+    return kExitOk;
   };
 }
 

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -13,14 +14,20 @@
 
 int main(int argc, char** argv) {
   using namespace parksim::app;
-  CLI::App app{"parksim: plan, simulate, render and benchmark parking manoeuvres"};
+  // Named, so that usage lines say "parksim", not the path the binary was started from.
+  CLI::App app{"parksim: plan, simulate, render and benchmark parking manoeuvres", "parksim"};
   app.require_subcommand(1);
   const std::string version = parksim::versionLine(parksim::buildProvenance());
   app.set_version_flag("--version", version, "print parksim's version and build, then exit");
+  OutputOptions output;
   std::vector<std::pair<CLI::App*, CommandRunner>> commands;
   auto add = [&](const char* name, const char* help, CommandRunner (*setup)(CLI::App&)) {
     CLI::App* sub = app.add_subcommand(name, help);
     sub->set_version_flag("--version", version);
+    sub->add_flag("-q,--quiet", output.quiet, "print nothing but errors");
+    sub->add_flag("-v,--verbose", output.verbose, "also print the build and the settings (stderr)");
+    sub->add_flag("--progress", output.progress,
+                  "show progress even when stderr is not a terminal (default: on a terminal)");
     commands.emplace_back(sub, setup(*sub));
   };
   add("plan", "plan a parking manoeuvre and write trajectory.csv and plan.json", setupPlanCommand);
@@ -29,23 +36,52 @@ int main(int argc, char** argv) {
   add("render", "draw the study's figures for a world, without running an episode",
       setupRenderCommand);
   add("bench", "benchmark parksim's planners, optionally against OMPL", setupBenchCommand);
+  add("sweep", "run a sweep spec's episodes (plan + simulate + measure) into one results table",
+      setupSweepCommand);
+  add("merge", "merge sweep results (shards, machines) into one table", setupMergeCommand);
+  add("report", "summary tables, figures and OMPL logs of a sweep's results", setupReportCommand);
 
+  // CLI11 says "A subcommand is required" about `parksim foo`; say what was wrong instead.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string names;
+    bool known = false;
+    for (const auto& [sub, run] : commands) {
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+      known = known || sub->get_name() == argv[1];
+    }
+    if (!known) {
+      std::fprintf(stderr, "parksim: unknown command '%s'; commands: %s\n", argv[1], names.c_str());
+      return kExitBadInput;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // CLI11 prints help (success) or the usage error; usage errors exit 2 like any bad input.
-    return app.exit(e) == 0 ? 0 : 2;
+    return app.exit(e) == 0 ? kExitOk : kExitBadInput;
   }
   try {
     for (auto& [sub, run] : commands) {
-      if (sub->parsed()) return run();
+      if (!sub->parsed()) continue;
+      if (output.verbose) {
+        std::fprintf(stderr, "%s\n", version.c_str());
+        for (const CLI::Option* o : sub->get_options()) {
+          if (o->count() > 0 && o->get_name() != "--help") {
+            std::fprintf(stderr, "  %s = %s\n", o->get_name().c_str(),
+                         o->as<std::string>().c_str());
+          }
+        }
+      }
+      // -q: the summaries go nowhere; errors still reach stderr.
+      if (output.quiet && std::freopen("/dev/null", "w", stdout) == nullptr) return kExitInternal;
+      return run(output);
     }
   } catch (const parksim::Error& e) {
     std::fprintf(stderr, "parksim: error: %s\n", e.what());
-    return 2;
+    return kExitBadInput;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "parksim: internal error: %s\n", e.what());
-    return 3;
+    return kExitInternal;
   }
-  return 2;
+  return kExitBadInput;
 }

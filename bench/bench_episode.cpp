@@ -5,6 +5,10 @@
 // Arguments: world (0 head_in, 1 parallel), tracking (0 closed, 1 open), solver iterations,
 // solver (0: parksim's default, SimModelDef{}; 1: Bullet's own solver running every iteration,
 // the model as it was before the solver work, for before/after ratios in one binary).
+// - BM_SimulateRealism: BM_Simulate under a realism preset (0 ideal, 1 lab, 2 odometry), closed
+//   loop, noise seed 1: the real-time factors of the presets side by side (docs/realism.md).
+// - BM_SimulateCrowded: head_in with N more parked robots 20 m or more away (ideal, closed):
+//   what far parked robots cost per step (docs/realism.md).
 
 #include <map>
 #include <string>
@@ -12,6 +16,7 @@
 #include <benchmark/benchmark.h>
 
 #include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/core/Geometry.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/Episode.h"
@@ -79,6 +84,51 @@ void BM_Simulate(benchmark::State& state) {
                                         : ""));
 }
 
+const char* const kPresets[] = {"ideal", "lab", "odometry"};
+
+void simulate(benchmark::State& state, const Scenario& s, const Trajectory& plan,
+              const ExecutionDef& def) {
+  double sim_s = 0.0;
+  double max_err = 0.0;
+  for (auto _ : state) {
+    Episode episode(s, plan, def);
+    while (!episode.finished()) episode.step();
+    const EpisodeMetrics m = episode.metrics();
+    sim_s += m.sim_time_s;
+    max_err = m.max_pos_err_m;
+    benchmark::DoNotOptimize(episode.rows().data());
+  }
+  state.counters["rtf"] = benchmark::Counter(sim_s, benchmark::Counter::kIsRate);
+  state.counters["sim_s"] = sim_s / static_cast<double>(state.iterations());
+  state.counters["max_err_mm"] = max_err * 1e3;
+}
+
+void BM_SimulateRealism(benchmark::State& state) {
+  const Scenario s = world(state.range(0), 50);
+  const Trajectory& plan = plannedOnce(state.range(0));
+  ExecutionDef def;
+  def.realism = presetRealism(kPresets[state.range(1)]);
+  def.noise_seed = 1;
+  simulate(state, s, plan, def);
+  state.SetLabel(std::string(kWorlds[state.range(0)]) + " " + kPresets[state.range(1)]);
+}
+
+void BM_SimulateCrowded(benchmark::State& state) {
+  Scenario s = world(0, 50);
+  const Trajectory& plan = plannedOnce(0);
+  for (long i = 0; i < state.range(0); ++i) {
+    Obstacle o;
+    o.name = "far_" + std::to_string(i);
+    o.kind = ObstacleKind::kParkedRobot;
+    o.box = footprintAt(s.robot, {20.0 + 0.2 * static_cast<double>(i % 100),
+                                  20.0 + 0.2 * static_cast<double>(i / 100), 0.0});
+    o.height_m = s.robot.height_m;
+    s.obstacles.push_back(o);
+  }
+  simulate(state, s, plan, ExecutionDef{});
+  state.SetLabel("head_in + " + std::to_string(state.range(0)) + " far parked robots");
+}
+
 void BM_Episode(benchmark::State& state) {
   const Scenario s = world(state.range(0), state.range(2));
   double sim_s = 0.0;
@@ -111,6 +161,17 @@ BENCHMARK(BM_Simulate)
     ->Args({1, 0, 20, 0})
     ->Args({0, 0, 10, 0})
     ->Args({1, 0, 10, 0})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SimulateRealism)
+    ->ArgNames({"world", "preset"})
+    ->ArgsProduct({{0, 1}, {0, 1, 2}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SimulateCrowded)
+    ->ArgNames({"far_parked"})
+    ->Args({0})
+    ->Args({1000})
+    ->Args({10000})
+    ->Args({100000})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Episode)
     ->ArgNames({"world", "open", "iters"})

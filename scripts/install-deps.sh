@@ -7,6 +7,9 @@ packages=(
   libbullet-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libnanoflann-dev libosmesa6-dev libstb-dev zlib1g-dev fonts-dejavu-core
   libgtest-dev libgmock-dev libbenchmark-dev libompl-dev ffmpeg locales
+  slurm-wlm munge python3
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-yaml
+  jupyter-nbconvert python3-nbformat python3-ipykernel
 )
 
 # The locale tests run parksim inside a decimal-comma locale (tests/app/LocaleRoundTripTest.cpp).

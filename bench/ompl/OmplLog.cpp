@@ -128,6 +128,24 @@ std::string omplBenchmarkLog(const OmplLogInfo& info, const std::vector<BenchRec
       for (const std::string& v : values) out += v + "; ";
       out += "\n";
     }
+    // Progress properties, when recorded: values of one sample separated by ',' and samples by
+    // ';'. OMPL writes a sample's values in the alphabetical order of the property names (a
+    // std::map); the names are listed in that order too, so both readings agree.
+    const bool any_progress = std::any_of(
+        p.runs.begin(), p.runs.end(), [](const BenchRecord* r) { return !r->progress.empty(); });
+    if (any_progress) {
+      out += "2 progress properties for each run\nbest cost REAL\ntime REAL\n";
+      out += std::to_string(p.runs.size()) + " runs\n";
+      for (const BenchRecord* r : p.runs) {
+        for (const auto& [t, cost] : r->progress) {
+          out += number(cost);
+          out += ',';
+          out += number(t);
+          out += ",;";
+        }
+        out += '\n';
+      }
+    }
     out += ".\n";
   }
   return out;

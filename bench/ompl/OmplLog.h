@@ -7,7 +7,8 @@
 // budgets. Run properties: time REAL (whole run), first solution time REAL, solved BOOLEAN,
 // valid BOOLEAN, status ENUM (OMPL's PlannerStatus), solution length REAL, solution clearance
 // REAL, cusps INTEGER, graph states INTEGER, iterations INTEGER, seed INTEGER. Missing values
-// are left empty, as OMPL does.
+// are left empty, as OMPL does. Records with a cost history (BenchRecord::progress) add the
+// progress properties time REAL and best cost REAL, which Planner Arena plots over time.
 
 #include <string>
 #include <vector>

@@ -47,6 +47,9 @@ struct BenchRecord {
   long collision_queries = -1;  ///< parksim: footprint queries of the planner itself
   /// parksim: wall time per phase of the search, s, as (name, seconds), in the planner's order.
   std::vector<std::pair<std::string, double>> phases_s;
+  /// The best solution cost over the run as (wall time s, cost m) pairs, in time order; empty
+  /// when not recorded. Written to OMPL logs as progress properties (Planner Arena plots them).
+  std::vector<std::pair<double, double>> progress;
 };
 
 }  // namespace parksim::bench

@@ -185,9 +185,8 @@ struct BulletCollisionWorld::Impl {
           for (const Eigen::Vector2d& v : obstacle.vertices) {
             const Eigen::Vector2d d = v - obstacle.box.center;
             for (const btScalar z : {-hz, hz}) {
-              hull->addPoint(btVector3(static_cast<btScalar>(d.x()),
-                                       static_cast<btScalar>(d.y()), z),
-                             false);
+              hull->addPoint(
+                  btVector3(static_cast<btScalar>(d.x()), static_cast<btScalar>(d.y()), z), false);
             }
           }
           hull->recalcLocalAabb();

@@ -130,8 +130,7 @@ bool blocksRobot(const Obstacle& obstacle, const RobotDef& robot) {
   return obstacle.height_m > robot.ground_clearance_m;
 }
 
-std::optional<std::string> placementProblem(const Scenario& s, const Pose2& pose,
-                                            double margin_m) {
+std::optional<std::string> placementProblem(const Scenario& s, const Pose2& pose, double margin_m) {
   const std::string margin = shortest(margin_m * 1000.0) + " mm";
   const double inset = margin_m - kPlacementTolerance_m;
   const LotBounds& lot = s.lot;

@@ -44,9 +44,9 @@ enum class ObstacleShape {
 /// An obstacle standing on the ground. Parked robots are boxes with the parked vehicle's
 /// footprint.
 struct Obstacle {
-  std::string name;                          ///< unique within the scenario, e.g. "wall_1"
-  ObstacleKind kind = ObstacleKind::kBox;    ///< what it is; parked robots have mass
-  ObstacleShape shape = ObstacleShape::kBox; ///< which of the fields below is the footprint
+  std::string name;                           ///< unique within the scenario, e.g. "wall_1"
+  ObstacleKind kind = ObstacleKind::kBox;     ///< what it is; parked robots have mass
+  ObstacleShape shape = ObstacleShape::kBox;  ///< which of the fields below is the footprint
   /// kBox: the footprint in the lot frame. kCircle and kPolygon: the axis-aligned bounding
   /// rectangle (centre = the disc's centre for circles), for code that only needs extents.
   OrientedBox box;

@@ -87,7 +87,8 @@ PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checke
   // The same rule as the world reader's, so a world the reader accepts never fails here for
   // its start or goal (the tree planner's own checks then agree up to Bullet's rounding).
   const double margin = 0.5 * setup.validation.resolution_m;
-  if (const std::optional<std::string> problem = placementProblem(scenario, scenario.start, margin)) {
+  if (const std::optional<std::string> problem =
+          placementProblem(scenario, scenario.start, margin)) {
     PlanResult r;
     r.status = PlanStatus::kInvalidStart;
     r.message = "start: " + *problem;

@@ -3,8 +3,8 @@
 // renderer turns into pixels. Building a Scene needs no OpenGL, so its content is unit-tested
 // on its own (MuJoCo's mjvScene / mjr_render split).
 //
-// Draw order: polygons, then boxes and prisms, then lines, then arrows, then text. Within each kind the
-// list order is kept, so a later item wins over an earlier one at the same height. The depth
+// Draw order: polygons, then boxes and prisms, then lines, then arrows, then text. Within each kind
+// the list order is kept, so a later item wins over an earlier one at the same height. The depth
 // test still hides lines and polygons below the top of a box.
 
 #include <optional>

@@ -37,9 +37,9 @@ struct Section {
 };
 
 void readMotor(const YamlField& field, MotorDef& d) {
-  const YamlMap m = field.map({"enabled", "stall_torque_nm", "no_load_speed_radps",
-                               "time_constant_s", "startup_effort", "rolling_resistance",
-                               "supply_limit", "gain_mismatch_pct"});
+  const YamlMap m =
+      field.map({"enabled", "stall_torque_nm", "no_load_speed_radps", "time_constant_s",
+                 "startup_effort", "rolling_resistance", "supply_limit", "gain_mismatch_pct"});
   const Section s(m);
   s.boolean("enabled", d.enabled);
   s.positive("stall_torque_nm", d.stall_torque_nm);
@@ -60,9 +60,9 @@ void readWheelLoop(const YamlField& field, WheelSpeedLoopDef& d) {
 }
 
 void readCalibration(const YamlField& field, CalibrationDef& d) {
-  const YamlMap m = field.map({"left_radius_error_pct", "right_radius_error_pct",
-                               "radius_error_range_pct", "track_error_pct",
-                               "track_error_range_pct"});
+  const YamlMap m =
+      field.map({"left_radius_error_pct", "right_radius_error_pct", "radius_error_range_pct",
+                 "track_error_pct", "track_error_range_pct"});
   const Section s(m);
   s.number("left_radius_error_pct", d.left_radius_error_pct);
   s.number("right_radius_error_pct", d.right_radius_error_pct);
@@ -108,10 +108,11 @@ void readEstimator(const YamlField& field, EstimatorDef& d) {
 }
 
 void readControl(const YamlField& field, ControlLoopDef& d) {
-  const YamlMap m = field.map({"rate_hz", "latency_s"});
+  const YamlMap m = field.map({"rate_hz", "latency_s", "settle_s"});
   const Section s(m);
   s.nonNegative("rate_hz", d.rate_hz);
   s.nonNegative("latency_s", d.latency_s);
+  s.nonNegative("settle_s", d.settle_s);
 }
 
 RealismDef readRealism(const YamlField& field) {
@@ -149,9 +150,9 @@ RealismDef readRealism(const YamlField& field) {
 }
 
 TrackingTolerance readTolerance(const YamlField& field) {
-  const YamlMap m = field.map({"max_pos_err_m", "goal_pos_err_m", "goal_heading_err_deg",
-                               "max_contacts", "max_parked_displacement_m",
-                               "require_goal_reached"});
+  const YamlMap m =
+      field.map({"max_pos_err_m", "goal_pos_err_m", "goal_heading_err_deg", "max_contacts",
+                 "max_parked_displacement_m", "require_goal_reached"});
   TrackingTolerance t;
   const Section s(m);
   s.positive("max_pos_err_m", t.max_pos_err_m);

@@ -18,6 +18,7 @@
 #include "parksim/core/Geometry.h"
 #include "parksim/core/Text.h"
 #include "parksim/scenario/RealismSections.h"
+#include "parksim/scenario/WorldDocument.h"
 #include "parksim/scenario/YamlField.h"
 
 namespace parksim {
@@ -469,6 +470,10 @@ YAML::Node loadSingleDocument(const std::string& text, const std::string& source
 }  // namespace
 
 Scenario parseScenario(std::string_view yaml_text, const std::string& source_name) {
+  return readWorldDocument(loadWorldDocument(yaml_text, source_name), source_name);
+}
+
+YAML::Node loadWorldDocument(std::string_view yaml_text, const std::string& source_name) {
   if (yaml_text.size() > kMaxWorldFileBytes) {
     throw Error(escapeText(source_name + ": file size: " + std::to_string(yaml_text.size()) +
                            " bytes; a world file may hold at most " +
@@ -479,7 +484,10 @@ Scenario parseScenario(std::string_view yaml_text, const std::string& source_nam
     YamlField(document, "", 1, source_name)
         .fail("empty; a world file is a map that starts with format: " + std::string(kFormat));
   }
+  return document;
+}
 
+Scenario readWorldDocument(const YAML::Node& document, const std::string& source_name) {
   const YamlField root(document, "", 1, source_name);
   const YamlMap top(root);
   readFormat(top.required("format"));
@@ -519,6 +527,8 @@ Scenario parseScenario(std::string_view yaml_text, const std::string& source_nam
 }
 
 Scenario loadScenario(const std::string& path) { return parseScenario(readWholeFile(path), path); }
+
+std::string readWorldFile(const std::string& path) { return readWholeFile(path); }
 
 Pose2 parsePose(std::string_view text, const std::string& what) {
   YAML::Node node;

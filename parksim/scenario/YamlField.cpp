@@ -210,8 +210,8 @@ std::vector<YamlField> YamlField::items() const {
 std::vector<YamlField> YamlField::listUpTo(std::size_t max_items) const {
   if (node_.IsNull()) return {};
   if (node_.IsSequence() && node_.size() > max_items) {
-    fail("holds " + std::to_string(node_.size()) + " items; at most " +
-         std::to_string(max_items) + " are allowed");
+    fail("holds " + std::to_string(node_.size()) + " items; at most " + std::to_string(max_items) +
+         " are allowed");
   }
   return items();
 }

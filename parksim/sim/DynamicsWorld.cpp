@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
@@ -143,7 +144,9 @@ struct DynamicsWorld::Impl {
     for (auto& motor : motors) world->removeMultiBodyConstraint(motor.get());
     for (auto& collider : colliders) world->removeCollisionObject(collider.get());
     if (ego) world->removeMultiBody(ego.get());
-    for (auto& body : bodies) world->removeRigidBody(body.get());
+    for (auto& body : bodies) {
+      if (body) world->removeRigidBody(body.get());
+    }
   }
 
   btBoxShape* box(double hx, double hy, double hz) {
@@ -175,6 +178,95 @@ struct DynamicsWorld::Impl {
     world->updateSingleAabb(raw);
     bodies.push_back(std::move(body));
     return raw;
+  }
+
+  // The fixed box of obstacle i, as buildWorld places it.
+  btTransform obstacleTransform(std::size_t i) const {
+    const Obstacle& o = obstacles[i];
+    return planarTransform(o.box.center.x() - ox, o.box.center.y() - oy, 0.5 * o.height_m,
+                           o.box.yaw);
+  }
+
+  // Where obstacle i is: its body's transform, or for a parked robot not inserted yet the
+  // transform it will get (the same floats).
+  btTransform obstacleWorldTransform(std::size_t i) const {
+    const btRigidBody* body = bodies[i + 1].get();
+    return body != nullptr ? body->getWorldTransform() : obstacleTransform(i);
+  }
+
+  // Lazy parked robots (SimModelDef::parked_lazy_count): a grid of cells of
+  // parked_insert_distance_m, each listing the robots whose box touches it.
+  bool lazy = false;
+  double cell = 1.0;
+  std::unordered_map<std::int64_t, std::vector<int>> grid;
+  bool queried = false;
+  Eigen::Vector2d last_query{0.0, 0.0};
+
+  static std::int64_t cellKey(std::int64_t cx, std::int64_t cy) {
+    return (cx << 32) ^ (cy & 0xffffffffLL);
+  }
+
+  void buildGrid() {
+    for (std::size_t i = 0; i < obstacles.size(); ++i) {
+      if (obstacles[i].kind != ObstacleKind::kParkedRobot) continue;
+      const OrientedBox& b = obstacles[i].box;
+      const double r = b.half_extents.norm();
+      const auto lo_x = static_cast<std::int64_t>(std::floor((b.center.x() - r) / cell));
+      const auto hi_x = static_cast<std::int64_t>(std::floor((b.center.x() + r) / cell));
+      const auto lo_y = static_cast<std::int64_t>(std::floor((b.center.y() - r) / cell));
+      const auto hi_y = static_cast<std::int64_t>(std::floor((b.center.y() + r) / cell));
+      for (std::int64_t cx = lo_x; cx <= hi_x; ++cx) {
+        for (std::int64_t cy = lo_y; cy <= hi_y; ++cy) {
+          grid[cellKey(cx, cy)].push_back(static_cast<int>(i));
+        }
+      }
+    }
+  }
+
+  // Inserts every parked robot within ~parked_insert_distance_m of the robot. Re-queried only
+  // after the robot moved a quarter of that distance, so a step costs O(1) however many
+  // parked robots the world has.
+  void insertNearbyParkedRobots(const Pose2& ego_pose) {
+    const Eigen::Vector2d p(ego_pose.x, ego_pose.y);
+    if (queried && (p - last_query).norm() < 0.25 * cell) return;
+    queried = true;
+    last_query = p;
+    const double reach = cell + robot.length_m + robot.width_m;
+    std::vector<int> found;
+    const auto lo_x = static_cast<std::int64_t>(std::floor((p.x() - reach) / cell));
+    const auto hi_x = static_cast<std::int64_t>(std::floor((p.x() + reach) / cell));
+    const auto lo_y = static_cast<std::int64_t>(std::floor((p.y() - reach) / cell));
+    const auto hi_y = static_cast<std::int64_t>(std::floor((p.y() + reach) / cell));
+    for (std::int64_t cx = lo_x; cx <= hi_x; ++cx) {
+      for (std::int64_t cy = lo_y; cy <= hi_y; ++cy) {
+        const auto it = grid.find(cellKey(cx, cy));
+        if (it == grid.end()) continue;
+        for (int i : it->second) {
+          if (!bodies[static_cast<std::size_t>(i) + 1]) found.push_back(i);
+        }
+      }
+    }
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    for (int i : found) insertObstacle(static_cast<std::size_t>(i));
+  }
+
+  void insertObstacle(std::size_t i) {
+    const Obstacle& o = obstacles[i];
+    btCollisionShape* shape = obstacleShape(o);
+    const bool parked = o.kind == ObstacleKind::kParkedRobot;
+    // Obstacles no higher than the ground clearance pass under the chassis (blocksRobot);
+    // they are in the world to be seen, and collide with nothing.
+    const bool blocks = blocksRobot(o, robot);
+    addFixedBody(shape, obstacleTransform(i), physics.obstacle_friction,
+                 parked ? kParkedGroup : kStaticGroup,
+                 !blocks  ? 0
+                 : parked ? kParkedMask
+                          : kStaticMask,
+                 static_cast<int>(i));
+    // addFixedBody appended it; it belongs in obstacle i's slot.
+    bodies[i + 1] = std::move(bodies.back());
+    bodies.pop_back();
   }
 
   void buildWorld() {
@@ -225,23 +317,19 @@ struct DynamicsWorld::Impl {
     addFixedBody(ground_shape, planarTransform(cx - ox, cy - oy, -ground_half_thickness, 0),
                  physics.ground_friction, kGroundGroup, kGroundMask, kNotObstacle);
 
+    // Parked robots enter as fixed boxes and become dynamic when the robot comes near (wake()).
+    // In worlds with many of them, each enters Bullet only when the robot comes within
+    // parked_insert_distance_m: Bullet loops over every object it holds at every step.
+    std::size_t parked_count = 0;
+    for (const Obstacle& o : obstacles) parked_count += o.kind == ObstacleKind::kParkedRobot;
+    lazy = parked_count > model.parked_lazy_count;
+    cell = model.parked_insert_distance_m;
+    bodies.resize(obstacles.size() + 1);
     for (std::size_t i = 0; i < obstacles.size(); ++i) {
-      const Obstacle& o = obstacles[i];
-      const double hz = 0.5 * o.height_m;
-      btCollisionShape* shape = obstacleShape(o);
-      const btTransform tr =
-          planarTransform(o.box.center.x() - ox, o.box.center.y() - oy, hz, o.box.yaw);
-      const bool parked = o.kind == ObstacleKind::kParkedRobot;
-      // Obstacles no higher than the ground clearance pass under the chassis (blocksRobot);
-      // they are in the world to be seen, and collide with nothing.
-      const bool blocks = blocksRobot(o, robot);
-      // Parked robots enter as fixed boxes and become dynamic when first touched (wake()).
-      addFixedBody(shape, tr, physics.obstacle_friction, parked ? kParkedGroup : kStaticGroup,
-                   !blocks  ? 0
-                   : parked ? kParkedMask
-                            : kStaticMask,
-                   static_cast<int>(i));
+      if (lazy && obstacles[i].kind == ObstacleKind::kParkedRobot) continue;
+      insertObstacle(i);
     }
+    if (lazy) buildGrid();
   }
 
   // The obstacle's shape in a frame at its box centre (for circles and polygons, the centre
@@ -392,6 +480,7 @@ struct DynamicsWorld::Impl {
   // it makes the broadphase and the solver treat it as dynamic from the next step on.
   void wake(int obstacle_index) {
     btRigidBody* body = bodies[static_cast<std::size_t>(obstacle_index) + 1].get();
+    if (body == nullptr) return;
     if (!body->isStaticObject()) return;
     world->removeRigidBody(body);
     const Obstacle& o = obstacles[static_cast<std::size_t>(obstacle_index)];
@@ -436,7 +525,8 @@ struct DynamicsWorld::Impl {
                               btScalar(d.robot.wheel_radius_m - d.chassis_z));
     const btVector3 ref = base * ref_local;
     RobotState out;
-    out.pose = {double(ref.x()) + d.ox, double(ref.y()) + d.oy, yawOf(base)};
+    out.local_pose = {double(ref.x()), double(ref.y()), yawOf(base)};
+    out.pose = {out.local_pose.x + d.ox, out.local_pose.y + d.oy, out.local_pose.theta};
     out.axle_height_m = double(ref.z());
     const btVector3 up = base.getBasis().getColumn(2);
     out.tilt_rad = std::acos(std::clamp(double(up.z()), -1.0, 1.0));
@@ -462,6 +552,7 @@ struct DynamicsWorld::Impl {
   // Candidates come from the broadphase (the footprint's bounding box grown by the wake
   // distance against every proxy's box), so parked robots far away cost nothing per step.
   void wakeNearbyParkedRobots(const Pose2& ego_pose) {
+    if (lazy) insertNearbyParkedRobots(ego_pose);
     const OrientedBox footprint = footprintAt(robot, ego_pose);
     const double c = std::abs(std::cos(footprint.yaw));
     const double sn = std::abs(std::sin(footprint.yaw));
@@ -605,7 +696,7 @@ std::vector<Pose2> DynamicsWorld::obstaclePoses() const {
   std::vector<Pose2> poses;
   poses.reserve(impl_->obstacles.size());
   for (std::size_t i = 0; i < impl_->obstacles.size(); ++i) {
-    const btTransform& tr = impl_->bodies[i + 1]->getWorldTransform();
+    const btTransform tr = impl_->obstacleWorldTransform(i);
     poses.push_back({double(tr.getOrigin().x()) + impl_->ox, double(tr.getOrigin().y()) + impl_->oy,
                      yawOf(tr)});
   }
@@ -613,7 +704,7 @@ std::vector<Pose2> DynamicsWorld::obstaclePoses() const {
 }
 
 Eigen::Vector2d DynamicsWorld::obstaclePosition(std::size_t index) const {
-  const btVector3& origin = impl_->bodies.at(index + 1)->getWorldTransform().getOrigin();
+  const btVector3 origin = impl_->obstacleWorldTransform(index).getOrigin();
   return {double(origin.x()) + impl_->ox, double(origin.y()) + impl_->oy};
 }
 
@@ -621,7 +712,7 @@ std::vector<double> DynamicsWorld::obstacleHeights() const {
   std::vector<double> heights;
   heights.reserve(impl_->obstacles.size());
   for (std::size_t i = 0; i < impl_->obstacles.size(); ++i) {
-    heights.push_back(double(impl_->bodies[i + 1]->getWorldTransform().getOrigin().z()));
+    heights.push_back(double(impl_->obstacleWorldTransform(i).getOrigin().z()));
   }
   return heights;
 }

@@ -83,6 +83,13 @@ struct SimModelDef {
   /// rate, rad/s). The ego robot never sleeps.
   double parked_sleep_speed_mps = 1e-3;
   double parked_sleep_yaw_rate_radps = 1e-2;
+  /// Worlds with more parked robots than this insert each into Bullet only once the robot
+  /// comes within about parked_insert_distance_m (m) of it; Bullet loops over every object it
+  /// holds at every step (islands, bounding boxes), so far robots would cost time. Smaller
+  /// worlds insert all at the start, in scenario order, as parksim always did (the order of
+  /// Bullet's objects decides float rounding in the solver).
+  std::size_t parked_lazy_count = 64;
+  double parked_insert_distance_m = 1.0;
   /// Contact points of the wheels and the slider farther above the ground than this are not
   /// solved, m. A rolling sphere's contact manifold keeps up to three stale points that rolled
   /// up and away (12 um to 0.6 mm above the ground, zero impulse at the end of every step):
@@ -117,6 +124,9 @@ struct SimModelDef {
 struct RobotState {
   /// Reference point (axle middle) projected on the ground, and heading of the chassis.
   Pose2 pose;
+  /// The same in Bullet's lot-local frame (SimModelDef::local_frame_grid_m): pose minus the
+  /// frame's origin, without the rounding of adding and removing the origin.
+  Pose2 local_pose;
   /// Height of the axle middle above the ground, m (the wheel radius when resting).
   double axle_height_m = 0.0;
   /// Angle between the chassis' up axis and the world's, rad.

@@ -48,6 +48,19 @@ std::mt19937_64 layerRng(std::uint64_t noise_seed, std::uint32_t layer) {
   return std::mt19937_64(seq);
 }
 
+Pose2 localOrigin(const Pose2& start, double grid_m) {
+  return {grid_m * std::floor(start.x / grid_m), grid_m * std::floor(start.y / grid_m), 0.0};
+}
+
+Trajectory shiftedPlan(const Trajectory& plan, const Pose2& origin) {
+  Trajectory out = plan;
+  for (TrajectoryPoint& p : out.points) {
+    p.pose.x -= origin.x;
+    p.pose.y -= origin.y;
+  }
+  return out;
+}
+
 enum Layer : std::uint32_t { kCalibrationLayer = 1, kMotorLayer, kEncoderLayer, kPoseLayer };
 
 // The robot as built for this episode: calibration errors and motor gains drawn once.
@@ -185,13 +198,17 @@ struct Episode::Impl {
       : scenario(s),
         def(validated(d)),
         build(drawBuild(d.realism, d.noise_seed)),
-        reference(plan, s.robot),
+        origin(localOrigin(plan.points.front().pose, m.local_frame_grid_m)),
+        reference(shiftedPlan(plan, origin), s.robot),
         world(s, plan.points.front().pose, modelFor(m, plan, d.realism, build, s)),
         dt(world.timeStep()),
         t0(reference.startTime()),
         plan_steps(stepsFor(reference.endTime() - reference.startTime(), dt)),
         limit_steps(plan_steps + stepsFor(d.max_stop_time_s, dt)),
-        rest_steps(std::max(1L, stepsFor(d.rest_hold_s, dt))),
+        rest_steps(std::max(
+            1L, stepsFor(d.realism.active() ? std::max(d.rest_hold_s, d.realism.control.settle_s)
+                                            : d.rest_hold_s,
+                         dt))),
         merge_steps(stepsFor(d.contact_merge_s, dt)),
         last_contact_step(s.obstacles.size(), -1) {
     initial_obstacles = world.obstaclePoses();
@@ -212,6 +229,9 @@ struct Episode::Impl {
   Scenario scenario;
   ExecutionDef def;
   Build build;
+  // The plan and the controller live in the same lot-local frame as Bullet (DynamicsWorld),
+  // so a lot far from the origin rounds like one at it; rows are in the lot frame.
+  Pose2 origin;
   ReferenceTrajectory reference;
   DynamicsWorld world;
   double dt;
@@ -248,6 +268,9 @@ struct Episode::Impl {
   bool at_rest = false;
   std::chrono::steady_clock::duration wall{};
 
+  Pose2 local(const Pose2& p) const { return {p.x - origin.x, p.y - origin.y, p.theta}; }
+  Pose2 lotFrame(const Pose2& p) const { return {p.x + origin.x, p.y + origin.y, p.theta}; }
+
   double planTime(long step) const { return t0 + static_cast<double>(step) * dt; }
 
   void measure(const WheelSpeeds& command) {
@@ -256,7 +279,7 @@ struct Episode::Impl {
     ExecutedRow row;
     row.t_s = static_cast<double>(k) * dt;
     row.pose = state.pose;
-    row.reference = reference.poseAt(planTime(k));
+    row.reference = lotFrame(reference.poseAt(planTime(k)));
     row.wheels_cmd = command;
     row.wheels = state.wheels;
     row.pos_err_m = positionDistance(row.pose, row.reference);
@@ -325,25 +348,30 @@ struct Episode::Impl {
     if (k % def.csv_stride_steps == 0 || finished) rows.push_back(row);
   }
 
+  // The realism controller's command at a control tick: from its estimate (or the truth),
+  // held from the tick plus the latency for one hold period.
+  WheelSpeeds realismCommand() const {
+    const RealismLoop& r = *loop;
+    const long k = world.steps();
+    const double hold_mid = planTime(k) + r.def.control.latency_s + 0.5 * r.holdPeriod();
+    if (def.tracking == TrackingMode::kOpen) return reference.wheelsAt(hold_mid);
+    const Pose2 estimate = r.def.estimator.kind == EstimatorKind::kTruth
+                               ? world.robot().local_pose
+                               : local(r.estimator.pose());
+    return trackingCommand(estimate, reference.poseAt(planTime(k)), reference.twistAt(hold_mid),
+                           def.gains, scenario.robot);
+  }
+
   // The realism's step: control tick (estimate -> set-points, delivered after the latency),
   // wheel-speed loop and motors, physics, then encoders, odometry, the pose sensor and the
   // estimator's corrections, in that order.
-  void realismStep() {
+  // `external`: a command from outside (Episode::step(command)) replaces the controller's at
+  // the control ticks and goes the same way (latency, wheel-speed loop, motors).
+  void realismStep(const std::optional<WheelSpeeds>& external) {
     RealismLoop& r = *loop;
     const long k = world.steps();
     if (r.controlDue(k)) {
-      const double hold_mid = planTime(k) + r.def.control.latency_s + 0.5 * r.holdPeriod();
-      WheelSpeeds cmd;
-      if (def.tracking == TrackingMode::kOpen) {
-        cmd = reference.wheelsAt(hold_mid);
-      } else {
-        const Pose2 estimate = r.def.estimator.kind == EstimatorKind::kTruth
-                                   ? world.robot().pose
-                                   : r.estimator.pose();
-        cmd = trackingCommand(estimate, reference.poseAt(planTime(k)),
-                              reference.twistAt(hold_mid), def.gains, scenario.robot);
-      }
-      r.pending.emplace_back(k + r.latency_steps, cmd);
+      r.pending.emplace_back(k + r.latency_steps, external ? *external : realismCommand());
       r.advanceTick(k);
     }
     while (!r.pending.empty() && r.pending.front().first <= k) {
@@ -389,13 +417,25 @@ struct Episode::Impl {
     measure(r.setpoint);
   }
 
+  // One step, driven by the tracking controller or by `external`.
+  void advance(const std::optional<WheelSpeeds>& external) {
+    if (loop) {
+      realismStep(external);
+      return;
+    }
+    const WheelSpeeds cmd = external ? *external : command();
+    world.setWheelTargets(cmd);
+    world.step();
+    measure(cmd);
+  }
+
   WheelSpeeds command() const {
     const long k = world.steps();
     // Wheel speeds are held per control period; the step's midpoint picks the period without
     // depending on how k * dt rounds at a period boundary.
     const double mid = planTime(k) + 0.5 * dt;
     if (def.tracking == TrackingMode::kOpen) return reference.wheelsAt(mid);
-    return trackingCommand(world.robot().pose, reference.poseAt(planTime(k)),
+    return trackingCommand(world.robot().local_pose, reference.poseAt(planTime(k)),
                            reference.twistAt(mid), def.gains, scenario.robot);
   }
 };
@@ -412,15 +452,20 @@ void Episode::step() {
   Impl& d = *impl_;
   if (d.finished) return;
   const auto start = std::chrono::steady_clock::now();
-  if (d.loop) {
-    d.realismStep();
-  } else {
-    const WheelSpeeds cmd = d.command();
-    d.world.setWheelTargets(cmd);
-    d.world.step();
-    d.measure(cmd);
-  }
+  d.advance(std::nullopt);
   d.wall += std::chrono::steady_clock::now() - start;
+}
+
+void Episode::step(const WheelSpeeds& command) {
+  Impl& d = *impl_;
+  if (d.finished) return;
+  const auto start = std::chrono::steady_clock::now();
+  d.advance(command);
+  d.wall += std::chrono::steady_clock::now() - start;
+}
+
+WheelSpeeds Episode::controllerCommand() const {
+  return impl_->loop ? impl_->realismCommand() : impl_->command();
 }
 
 bool Episode::finished() const { return impl_->finished; }

@@ -32,13 +32,13 @@ struct ExecutedRow {
   double pos_err_m = 0.0;        ///< |position - reference position|, m
   double heading_err_rad = 0.0;  ///< heading - reference heading, wrapped to [-pi, pi), rad
   // Realism (written to executed.csv only when the realism is not ideal):
-  Pose2 estimate;                ///< the pose the controller believes (the true pose for truth)
-  double est_pos_err_m = 0.0;    ///< |estimate - pose| in position, m
+  Pose2 estimate;                    ///< the pose the controller believes (the true pose for truth)
+  double est_pos_err_m = 0.0;        ///< |estimate - pose| in position, m
   double est_heading_err_rad = 0.0;  ///< estimate - pose heading, wrapped, rad
-  WheelSpeeds effort;            ///< motor effort (PWM duty), -1..1; 0 with ideal motors
-  WheelSpeeds torque_nm;         ///< motor drive torque at the wheel, N m; 0 with ideal motors
-  WheelSpeeds slip_mps;          ///< rim speed minus contact ground speed per wheel, m/s
-  WheelSpeeds encoder_rad;       ///< wheel angles as the encoders report them, rad
+  WheelSpeeds effort;                ///< motor effort (PWM duty), -1..1; 0 with ideal motors
+  WheelSpeeds torque_nm;             ///< motor drive torque at the wheel, N m; 0 with ideal motors
+  WheelSpeeds slip_mps;              ///< rim speed minus contact ground speed per wheel, m/s
+  WheelSpeeds encoder_rad;           ///< wheel angles as the encoders report them, rad
 };
 
 /// What an observer (a renderer, a logger) receives: the row plus the world's moving parts.
@@ -139,8 +139,18 @@ class Episode {
   Episode(const Episode&) = delete;
   Episode& operator=(const Episode&) = delete;
 
-  /// One simulation step with its measurement. Does nothing once finished().
+  /// One simulation step with its measurement, driven by the tracking controller
+  /// (ExecutionDef::tracking). Does nothing once finished().
   void step();
+  /// One step driven by `command` instead, for a controller outside parksim: the wheel
+  /// motors' targets for this step. With a realism control loop (RealismDef) the command
+  /// replaces the tracking controller's at the control ticks only and goes the same way
+  /// (latency, wheel-speed loop, motors); between ticks it is ignored. The step is measured
+  /// against the plan as usual, and the episode still ends at rest after the plan's end or at
+  /// the time limit. Does nothing once finished().
+  void step(const WheelSpeeds& command);
+  /// What the tracking controller would command now (from its estimate under a realism).
+  WheelSpeeds controllerCommand() const;
   /// At rest after the plan's end, or at the time limit.
   bool finished() const;
 

@@ -63,6 +63,7 @@ RealismDef presetRealism(const std::string& name) {
   // High-level control at 50 Hz (30-50 Hz typical), 5 ms computation and link.
   r.control.rate_hz = 50.0;
   r.control.latency_s = 0.005;
+  r.control.settle_s = 2.0;
   return r;
 }
 
@@ -126,6 +127,7 @@ void validateRealism(const RealismDef& d) {
   if (d.estimator.history_steps < 1) throw Error("realism.estimator.history_steps must be >= 1");
   nonNegative(d.control.rate_hz, "control.rate_hz");
   nonNegative(d.control.latency_s, "control.latency_s");
+  nonNegative(d.control.settle_s, "control.settle_s");
 }
 
 }  // namespace parksim

@@ -37,6 +37,11 @@ struct ControlLoopDef {
   /// From reading the estimate to the set-points reaching the motors, s (computation and
   /// link); set-points are held until the next ones arrive.
   double latency_s = 0.0;
+  /// After the plan, the robot counts as at rest only after standing still this long (at
+  /// least ExecutionDef::rest_hold_s), s: a wheel loop stuck in the motors' static friction
+  /// needs time to integrate past it, and ending the episode sooner would end it inside the
+  /// friction's dead band.
+  double settle_s = 0.0;
 };
 
 struct RealismDef {

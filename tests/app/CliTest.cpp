@@ -1,5 +1,6 @@
 // End-to-end tests of the parksim executable: exit codes, files written, messages.
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -137,6 +138,9 @@ TEST_F(Cli, BenchWritesTheCsvWithItsRequiredColumns) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * (2 * 3 + 1)) << csv;
   EXPECT_NE(csv.find("\nompl,"), std::string::npos);
   EXPECT_NE(csv.find("\nparksim,"), std::string::npos);
+  const std::string summary = slurp(out / "summary.md");
+  EXPECT_NE(summary.find("## parksim vs OMPL\n"), std::string::npos) << summary;
+  EXPECT_EQ(summary.find("issue"), std::string::npos) << summary;  // speaks to users
 }
 
 TEST_F(Cli, RunWithFramesFilmsTheEpisodeAndDrawsTheFigures) {
@@ -197,6 +201,71 @@ TEST_F(Cli, EveryCommandHasHelp) {
     EXPECT_EQ(r.exit_code, 0) << cmd;
     EXPECT_NE(r.out.find("--help"), std::string::npos) << cmd;
   }
+}
+
+TEST_F(Cli, StartGoalAndSetOverrideTheWorldOnEveryWorldCommand) {
+  const fs::path out = dir_ / "moved";
+  CliRun r = parksim("plan " + world("head_in.yaml") +
+                     " --start 0.2,0.15,45 --goal 1.5,0.05,-90 --set robot.max_wheel_speed_radps=8"
+                     " --out " +
+                     out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const Trajectory t = readTrajectoryCsv((out / "trajectory.csv").string());
+  EXPECT_EQ(t.points.front().pose.x, 0.2);
+  EXPECT_EQ(t.points.front().pose.y, 0.15);
+  EXPECT_LT(std::hypot(t.points.back().pose.x - 1.5, t.points.back().pose.y - 0.05), 1e-3);
+  for (const TrajectoryPoint& p : t.points) {
+    EXPECT_LE(std::abs(p.wheels.left_radps), 8.0 + 1e-9);
+    EXPECT_LE(std::abs(p.wheels.right_radps), 8.0 + 1e-9);
+  }
+  // Checked like the file, named by the override, on run and render too; nothing written.
+  for (const char* cmd : {"plan", "run", "render"}) {
+    r = parksim(std::string(cmd) + " " + world("head_in.yaml") +
+                " --set robot.wheel_radius=-1 --out " + (dir_ / "never").string());
+    EXPECT_EQ(r.exit_code, 2) << cmd;
+    EXPECT_EQ(r.out,
+              "parksim: error: --set robot.wheel_radius=-1: robot.wheel_radius: must be positive, "
+              "got -1\n")
+        << cmd;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "never"));
+}
+
+TEST_F(Cli, QuietPrintsNothingAndVerboseTellsTheBuild) {
+  const std::string out = " --out " + (dir_ / "q").string();
+  CliRun r = parksim("plan " + world("head_in.yaml") + " -q" + out);
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.out, "");
+  r = parksim("plan " + world("head_in.yaml") + " -v --seed 2" + out);
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.out.rfind(versionLine(buildProvenance()) + "\n", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("--seed = 2"), std::string::npos) << r.out;
+  // Errors still show under -q.
+  r = parksim("plan " + world("head_in.yaml") + " -q --planner nope" + out);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("unknown planner 'nope'"), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, MessagesSayWhatIsWrongInFewWords) {
+  CliRun r = parksim("foo");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "parksim: unknown command 'foo'; commands: plan, run, render, bench\n");
+  // Bounds are stated, not printed as the 309-digit largest double.
+  r = parksim("plan " + world("head_in.yaml") + " --seed -1");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("--seed: must be zero or a positive number, got -1"), std::string::npos)
+      << r.out;
+  r = parksim("run " + world("head_in.yaml") + " --fps 0");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("--fps: must be a positive number, got 0"), std::string::npos) << r.out;
+  EXPECT_LT(r.out.size(), 200u) << r.out;
+  // Usage lines name the program, not the path it was started from.
+  r = parksim("plan --help");
+  EXPECT_NE(r.out.find("Usage: parksim plan "), std::string::npos) << r.out;
+  // render draws two planners by default, so --planner shows no single default.
+  r = parksim("render --help");
+  EXPECT_NE(r.out.find("--planner TEXT "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("--planner TEXT="), std::string::npos) << r.out;
 }
 
 TEST_F(Cli, EveryCommandPrintsTheVersionAndBuild) {

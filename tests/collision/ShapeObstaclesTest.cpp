@@ -85,8 +85,8 @@ TEST(ShapeObstacles, RandomPosesAgreeWithTheIndependentExactReference) {
       const bool expected_free = d >= 0.0;
       colliding += expected_free ? 0 : 1;
       if (world.isFree(pose, margin) != expected_free && ++disagreements <= 5) {
-        ADD_FAILURE() << "pose (" << pose.x << ", " << pose.y << ", " << pose.theta
-                      << ") margin " << margin << ": reference distance " << d;
+        ADD_FAILURE() << "pose (" << pose.x << ", " << pose.y << ", " << pose.theta << ") margin "
+                      << margin << ": reference distance " << d;
       }
     }
     EXPECT_EQ(disagreements, 0);
@@ -189,7 +189,8 @@ TEST(ShapeObstacles, TouchingACircleOrAPolygonEdgeIsFree) {
 TEST(ShapeObstacles, ObstaclesBelowTheGroundClearanceAreNotObstacles) {
   Scenario s;
   s.obstacles = {
-      Obstacle::makeBox("painted", ObstacleKind::kCurb, testing::cornerBox(0.4, 0.0, 0.02, 1), 0.001),
+      Obstacle::makeBox("painted", ObstacleKind::kCurb, testing::cornerBox(0.4, 0.0, 0.02, 1),
+                        0.001),
       Obstacle::makeCircle("low_disc", ObstacleKind::kBollard, {{1.0, 0.5}, 0.05}, 0.002),
       Obstacle::makeCircle("bollard", ObstacleKind::kBollard, {{1.5, 0.5}, 0.05}, 0.0021)};
   const BulletCollisionWorld world(s);

@@ -75,8 +75,8 @@ TEST(Geometry, CircleAndPolygonSeparationsAgreeWithTheIndependentReference) {
     box.center = {pos(rng), pos(rng)};
     box.half_extents = {size(rng), size(rng)};
     box.yaw = angle(rng);
-    const Obstacle circle = Obstacle::makeCircle("c", ObstacleKind::kBollard,
-                                                 {{pos(rng), pos(rng)}, size(rng)}, 0.1);
+    const Obstacle circle =
+        Obstacle::makeCircle("c", ObstacleKind::kBollard, {{pos(rng), pos(rng)}, size(rng)}, 0.1);
     EXPECT_NEAR(separation(box, circle), testing::exactSignedDistance(box, circle), 1e-12);
     const double phase = angle(rng);
     const Eigen::Vector2d c(pos(rng), pos(rng));

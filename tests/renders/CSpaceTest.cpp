@@ -6,6 +6,8 @@
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Geometry.h"
+#include "parksim/core/Scenario.h"
+#include "tests/support/ExactShapes.h"
 
 namespace parksim {
 namespace {
@@ -113,6 +115,38 @@ TEST(CSpaceTest, ConvexHullDropsInteriorAndCollinearPoints) {
       convexHull({{0, 0}, {1, 0}, {2, 0}, {2, 1}, {1, 0.5}, {0, 1}, {1, 1}, {0, 0}});
   EXPECT_EQ(hull.size(), 4u);
   EXPECT_NEAR(area(hull), 2.0, 1e-15);
+}
+
+// Polygons: the slice is exact; a reference point inside it (by more than a micrometre) puts
+// the footprint into the polygon, one outside it keeps them apart, by the independent exact
+// distance. Circles: every vertex of the slice lies on the exact boundary (distance 0), and
+// the chords cut inside it by at most r (1 - cos(pi / 32)).
+TEST(CSpaceTest, PolygonAndCircleSlicesAreExact) {
+  const RobotDef robot;
+  const Obstacle polygon = Obstacle::makePolygon(
+      "p", ObstacleKind::kIsland, {{0.9, 0.4}, {1.2, 0.45}, {1.1, 0.7}, {0.85, 0.6}}, 0.1);
+  const Obstacle circle =
+      Obstacle::makeCircle("c", ObstacleKind::kBollard, {{0.5, 0.5}, 0.03}, 0.1);
+  for (const double theta_deg : {0.0, 30.0, -75.0, 180.0}) {
+    const double theta = degToRad(theta_deg);
+    const std::vector<Eigen::Vector2d> slice = cspaceSlice(polygon, robot, theta);
+    int inside = 0;
+    for (double x = 0.7; x <= 1.35; x += 0.005) {
+      for (double y = 0.25; y <= 0.85; y += 0.005) {
+        const double d = testing::exactSignedDistance(footprintAt(robot, {x, y, theta}), polygon);
+        if (std::abs(d) < 1e-6) continue;
+        EXPECT_EQ(insideConvex(slice, {x, y}), d < 0.0) << x << " " << y << " " << theta_deg;
+        inside += d < 0.0;
+      }
+    }
+    EXPECT_GT(inside, 100);
+    const std::vector<Eigen::Vector2d> round = cspaceSlice(circle, robot, theta, 8);
+    EXPECT_GE(round.size(), 32u);
+    for (const Eigen::Vector2d& q : round) {
+      EXPECT_NEAR(testing::exactSignedDistance(footprintAt(robot, {q.x(), q.y(), theta}), circle),
+                  0.0, 1e-12);
+    }
+  }
 }
 
 }  // namespace

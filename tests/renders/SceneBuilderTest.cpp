@@ -97,5 +97,34 @@ TEST(SceneBuilderTest, SampledPathFollowsTheTrajectorysArcs) {
   EXPECT_TRUE(samplePath(Trajectory{}, robot).empty());
 }
 
+TEST(SceneBuilderTest, RoundAndPolygonalObstaclesArePrisms) {
+  Scenario s;
+  s.obstacles = {Obstacle::makeCircle("c", ObstacleKind::kBollard, {{0.5, 0.5}, 0.03}, 0.12),
+                 Obstacle::makePolygon("p", ObstacleKind::kIsland,
+                                       {{0.9, 0.4}, {1.2, 0.45}, {1.1, 0.7}}, 0.05)};
+  const SceneStyle style;
+  const Scene scene = buildLotScene(s, style);
+  EXPECT_TRUE(scene.boxes.empty());
+  ASSERT_EQ(scene.prisms.size(), 2u);
+  EXPECT_EQ(scene.prisms[0].footprint.size(), static_cast<std::size_t>(style.circle_segments));
+  for (const Eigen::Vector2d& p : scene.prisms[0].footprint) {
+    EXPECT_NEAR((p - Eigen::Vector2d(0.5, 0.5)).norm(), 0.03, 1e-12);
+  }
+  EXPECT_EQ(scene.prisms[0].height_m, 0.12);
+  EXPECT_EQ(scene.prisms[0].color, style.bollard);
+  EXPECT_EQ(scene.prisms[1].footprint, s.obstacles[1].vertices);
+  // Moved by the simulation (bounding-box centre and yaw): the outline moves with it.
+  const std::vector<Pose2> poses{
+      {0.5, 0.5, 0.0},
+      {s.obstacles[1].box.center.x() + 0.1, s.obstacles[1].box.center.y(), kPi / 2}};
+  const std::vector<int> contacts{1};
+  const Scene moved = buildLotScene(s, style, poses, contacts);
+  const Eigen::Vector2d c = s.obstacles[1].box.center;
+  const Eigen::Vector2d d = s.obstacles[1].vertices[0] - c;
+  EXPECT_NEAR((moved.prisms[1].footprint[0] - (c + Eigen::Vector2d(0.1 - d.y(), d.x()))).norm(),
+              0.0, 1e-12);
+  EXPECT_EQ(moved.prisms[1].color, style.contact);
+}
+
 }  // namespace
 }  // namespace parksim

@@ -191,9 +191,9 @@ TEST(ScenarioReader, AcceptsWhatIsOnlyUnusual) {
             "(accepted)");
   // The lot bounds the reference point only (with the 0.5 mm margin): a footprint may reach
   // past them.
-  EXPECT_EQ(
-      errorOf(std::string(kHead) + "start: [0.0005, 0.0005, 0]\ngoal: {pose: [1.9995, 1.9995, 0]}\n"),
-      "(accepted)");
+  EXPECT_EQ(errorOf(std::string(kHead) +
+                    "start: [0.0005, 0.0005, 0]\ngoal: {pose: [1.9995, 1.9995, 0]}\n"),
+            "(accepted)");
   // Zero friction and zero front overhang are real designs; '+' signs and True are YAML.
   EXPECT_EQ(errorOf(valid("physics: {support_friction: 0, wheel_friction: +0.5}\n"
                           "robot: {front_overhang: 0}\n")),
@@ -215,7 +215,6 @@ TEST(ScenarioReader, HeadingsAreStoredAsWrittenInRadians) {
   EXPECT_EQ(s.start.theta, degToRad(270.0));
   EXPECT_EQ(s.goal.pose.theta, degToRad(-180.0));
 }
-
 
 TEST(ScenarioReader, ReadsCirclesAndConvexPolygonsInEitherWinding) {
   const Scenario s = parseScenario(
@@ -360,7 +359,8 @@ TEST(ScenarioReader, ListsLongerThanTheLimitAreRefusedBeforeTheyAreRead) {
   std::string many = "obstacles: [";
   for (std::size_t i = 0; i <= kMaxObstacles; ++i) many += "{},";
   many += "]\n";
-  EXPECT_EQ(errorOf(valid(many)), "t.yaml:6: obstacles: holds 10001 items; at most 10000 are allowed");
+  EXPECT_EQ(errorOf(valid(many)),
+            "t.yaml:6: obstacles: holds 10001 items; at most 10000 are allowed");
   std::string parked = "parked_robots: [";
   for (std::size_t i = 0; i <= kMaxParkedRobots; ++i) parked += "{},";
   parked += "]\n";
@@ -558,7 +558,7 @@ const BadCase kBadCases[] = {
     // Unknown fields, at every level.
     {"UnknownTopLevelField", valid("nmae: t\n"),
      "t.yaml:6: nmae: unknown field; expected one of: format, name, lot, robot, obstacles, "
-     "parked_robots, start, goal, physics"},
+     "parked_robots, start, goal, physics, realism, tolerance"},
     {"UnknownLotField", "format: parksim-world/1\nname: t\nlot: {x_min: 0, y_min: 0, z_max: 1}\n",
      "t.yaml:3: lot.z_max: unknown field; expected one of: x_min, y_min, x_max, y_max"},
     {"UnknownRobotField", valid("robot:\n  length: 0.08\n  lenght: 0.09\n"),
@@ -601,8 +601,7 @@ const BadCase kBadCases[] = {
     {"PoseMapWithBothHeadings",
      head("start: {x: 0.5, y: 0.5, yaw_deg: 0, yaw_rad: 0}\ngoal: {pose: [1.5, 1.5, 90]}\n"),
      "t.yaml:4: start.yaw_rad: give the heading once: yaw_deg or yaw_rad, not both"},
-    {"PoseMapUnknownKey",
-     head("start: {x: 0.5, y: 0.5, theta: 0}\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+    {"PoseMapUnknownKey", head("start: {x: 0.5, y: 0.5, theta: 0}\ngoal: {pose: [1.5, 1.5, 90]}\n"),
      "t.yaml:4: start.theta: unknown field; expected one of: x, y, yaw_deg, yaw_rad"},
     {"PoseEmpty", head("start:\ngoal: {pose: [1.5, 1.5, 90]}\n"),
      "t.yaml:4: start: must be a list [x, y, yaw_deg] of 3 numbers or a map {x, y, yaw_deg}, "
@@ -778,7 +777,8 @@ const BadCase kBadCases[] = {
      valid("obstacles: [{name: a, kind: box, center: [1.9, 0.1], size: [0.1, 0.1], "
            "yaw_deg: 1e308}]\n"),
      "t.yaml:6: obstacles[0].yaw_deg: must be in [-3600, 3600] degrees, got 1e308"},
-    {"HugeCoordinate", "format: parksim-world/1\nname: t\nlot: {x_min: 0, y_min: 0, x_max: 1e300, "
+    {"HugeCoordinate",
+     "format: parksim-world/1\nname: t\nlot: {x_min: 0, y_min: 0, x_max: 1e300, "
      "y_max: 2}\n",
      "t.yaml:3: lot.x_max: must be in [-10000, 10000], got 1e300"},
     {"HugeSize", valid("obstacles: [{name: a, kind: box, center: [1, 1], size: [1e6, 1]}]\n"),
@@ -787,7 +787,7 @@ const BadCase kBadCases[] = {
      "t.yaml:2: name: must be UTF-8 text without control characters, got \"\\x1b[31mred\""},
     {"TerminalEscapeInKeyIsEscaped", valid("\"\\e[2J\": 1\n"),
      "t.yaml:6: \\x1b[2J: unknown field; expected one of: format, name, lot, robot, obstacles, "
-     "parked_robots, start, goal, physics"},
+     "parked_robots, start, goal, physics, realism, tolerance"},
     {"ControlCharacterInObstacleName",
      valid("obstacles: [{name: \"a\\tb\", kind: box, center: [1.9, 0.1], size: [0.1, 0.1]}]\n"),
      "t.yaml:6: obstacles[0].name: must be UTF-8 text without control characters, got \"a\\tb\""},

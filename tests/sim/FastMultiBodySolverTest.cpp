@@ -58,7 +58,7 @@ EpisodeResult run(const Case& c, TrackingMode mode, SolverKernel kernel,
   model.solver_residual_threshold = residual_threshold;
   Episode episode(c.scenario, c.plan, def, model);
   while (!episode.finished()) episode.step();
-  return {episode.metrics(), episode.rows()};
+  return {episode.metrics(), episode.rows(), {}};
 }
 
 // With the default early exit too: the residuals are bit-identical, so both stop at the same

@@ -69,7 +69,7 @@ TEST_F(RunCommand, ExecutesAGivenPlanOpenLoopAndReportsTheMiss) {
   ASSERT_EQ(parksim("plan " + world("head_in") + " --seed 1 --out " + out("plan")).exit_code, 0);
   const CliRun r = parksim("run " + world("head_in") + " --plan " + out("plan") +
                            "/trajectory.csv --tracking open --out " + out("open"));
-  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_EQ(r.exit_code, 4) << r.out;  // tolerance not met, distinct from "unsolved"
   EXPECT_NE(r.out.find("open-loop episode on head_in"), std::string::npos);
   EXPECT_NE(r.out.find("parksim run: goal not reached: ended "), std::string::npos) << r.out;
   EXPECT_EQ(slurp(dir_ / "plan" / "trajectory.csv"), slurp(dir_ / "open" / "trajectory.csv"));
@@ -85,7 +85,7 @@ TEST_F(RunCommand, AnUnsolvedPlanWritesNoEpisodeFiles) {
   ASSERT_EQ(parksim("run " + world("head_in") + " --out " + out("x")).exit_code, 0);
   const CliRun r =
       parksim("run " + world("head_in") + " --max-iterations 0 --planner rrt --out " + out("x"));
-  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.exit_code, 1);  // unsolved, distinct from "tolerance not met"
   EXPECT_NE(r.out.find("parksim run: unsolved plan"), std::string::npos) << r.out;
   EXPECT_FALSE(fs::exists(dir_ / "x" / "executed.csv"));
   EXPECT_FALSE(fs::exists(dir_ / "x" / "metrics.json"));

@@ -73,10 +73,10 @@ TEST_F(RunRealism, IdealWritesTodaysColumnsAndNoSensorFile) {
 }
 
 TEST_F(RunRealism, TheToleranceComesFromTheCommandLineOrTheWorld) {
-  // lab tracks to a few millimetres: a 1 mm tolerance fails, exit 1 with the reason.
+  // lab tracks to a few millimetres: a 1 mm tolerance fails, exit 4 with the reason.
   const CliRun tight = runParksim("run " + world("head_in") +
                                   " --realism lab --max-tracking-error-mm 1 --out " + out("t"));
-  EXPECT_EQ(tight.exit_code, 1) << tight.out;
+  EXPECT_EQ(tight.exit_code, 4) << tight.out;
   EXPECT_NE(tight.out.find("tracking tolerance not met: max_pos_err_m"), std::string::npos)
       << tight.out;
   // The same from a world file's tolerance: section, and a realism: section used by default.
@@ -85,7 +85,7 @@ TEST_F(RunRealism, TheToleranceComesFromTheCommandLineOrTheWorld) {
   const std::string path = out("w.yaml");
   std::ofstream(path) << text;
   const CliRun from_world = runParksim("run " + path + " --out " + out("w"));
-  EXPECT_EQ(from_world.exit_code, 1) << from_world.out;
+  EXPECT_EQ(from_world.exit_code, 4) << from_world.out;
   const nlohmann::json m = nlohmann::json::parse(slurp(dir_ / "w" / "metrics.json"));
   EXPECT_EQ(m["realism"], "lab+world");
   EXPECT_EQ(m["tolerance.max_pos_err_m"], 0.001);

@@ -73,8 +73,8 @@ TEST(ShowcaseBodies, ACircleAndAPolygonAreSolidAndALowKerbIsNot) {
   bollard.obstacles.push_back(
       Obstacle::makeCircle("bollard", ObstacleKind::kBollard, {{0.58, 0.5}, 0.02}, 0.1));
   Scenario island = testing::emptyLot({0.5, 0.5, 0.0});
-  island.obstacles.push_back(Obstacle::makePolygon(
-      "island", ObstacleKind::kIsland, {{0.56, 0.5}, {0.7, 0.4}, {0.7, 0.6}}, 0.05));
+  island.obstacles.push_back(Obstacle::makePolygon("island", ObstacleKind::kIsland,
+                                                   {{0.56, 0.5}, {0.7, 0.4}, {0.7, 0.6}}, 0.05));
   Scenario kerb = testing::emptyLot({0.5, 0.5, 0.0});
   kerb.obstacles.push_back(Obstacle::makeBox("kerb", ObstacleKind::kCurb,
                                              testing::cornerBox(0.56, 0.3, 0.02, 0.4), 0.001));
@@ -82,10 +82,20 @@ TEST(ShowcaseBodies, ACircleAndAPolygonAreSolidAndALowKerbIsNot) {
     const EpisodeResult r = runEpisode(*s, straightAhead(*s));
     ASSERT_GE(r.metrics.contacts, 1) << s->obstacles[0].name;
     EXPECT_EQ(r.metrics.first_contact_body, s->obstacles[0].name);
-    // 50 mm at 0.1 m/s after the ramp: the first contact comes where the geometry says,
-    // which a 4 cm Bullet margin or a bounding box would have moved by centimetres.
-    EXPECT_GT(r.metrics.first_contact_t_s, 0.5) << s->obstacles[0].name;
-    EXPECT_LT(r.metrics.first_contact_t_s, 0.7) << s->obstacles[0].name;
+    // The robot is stopped where the geometry says: its front edge (10 mm ahead of the
+    // reference point) reaches x = 0.56 and no further than the 0.5 mm rounding of the shapes'
+    // collision margins; a 4 cm Bullet margin or a bounding box would stop it centimetres early.
+    // Measured when the plan is 10 mm past the contact (later the robot, still pushing, slides
+    // around the round or pointed obstacle).
+    double front = 0.0;
+    for (const ExecutedRow& row : r.rows) {
+      if (row.reference.x + 0.010 >= 0.57) {
+        front = row.pose.x + 0.010;
+        break;
+      }
+    }
+    EXPECT_GT(front, 0.56 - 0.0005) << s->obstacles[0].name;
+    EXPECT_LT(front, 0.56 + 0.001) << s->obstacles[0].name;
   }
   const EpisodeResult r = runEpisode(kerb, straightAhead(kerb));
   EXPECT_EQ(r.metrics.contacts, 0);

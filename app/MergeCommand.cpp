@@ -1,0 +1,77 @@
+// parksim merge SRC... [--out DIR]: merges sweep output directories (shards, machines, runs)
+// into one results table, each episode once, sorted by episode id; idempotent. `parksim merge
+// DIR` merges DIR/shards/* (a Slurm sweep) into DIR. Lists the episodes that are missing (from
+// the sweeps' manifests), duplicated or conflicting. Exit status: 0 when the table is complete
+// and without conflicts, 1 otherwise, 2 on bad input.
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/Command.h"
+#include "parksim/core/Error.h"
+#include "parksim/sweep/Merge.h"
+#include "parksim/sweep/ResultsTable.h"
+
+namespace parksim::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+void list(const char* what, const std::vector<std::string>& ids) {
+  if (ids.empty()) return;
+  std::fprintf(stderr, "%zu %s:", ids.size(), what);
+  for (std::size_t i = 0; i < ids.size() && i < 20; ++i)
+    std::fprintf(stderr, " %s", ids[i].c_str());
+  std::fprintf(stderr, "%s\n", ids.size() > 20 ? " ..." : "");
+}
+
+int runMerge(const std::vector<std::string>& sources, std::string out) {
+  std::vector<std::string> dirs;
+  std::vector<std::string> manifest_dirs;
+  for (const std::string& src : sources) {
+    std::error_code ec;
+    if (!fs::is_directory(src, ec)) throw Error(src + ": not a directory");
+    const std::vector<std::string> found = mergeSources(src);
+    dirs.insert(dirs.end(), found.begin(), found.end());
+    if (found.size() != 1 || found.front() != src) manifest_dirs.push_back(src);
+  }
+  if (out.empty()) {
+    if (sources.size() != 1) throw Error("--out is required when merging several sources");
+    out = sources.front();
+  }
+  if (dirs.empty()) throw Error(sources.front() + "/shards: no shard directories");
+  const MergeResult r = mergeResults(dirs, manifest_dirs);
+  writeResultsTable(out, r.rows);
+  std::printf("merged %zu source%s: %zu episodes", dirs.size(), dirs.size() == 1 ? "" : "s",
+              r.rows.size());
+  if (r.expected > 0) std::printf(" of %zu expected", r.expected);
+  std::printf(
+      ", %zu missing, %zu duplicated, %zu conflicting\nwrote %s/results.csv and "
+      "%s/results.jsonl\n",
+      r.missing.size(), r.duplicated.size(), r.conflicting.size(), out.c_str(), out.c_str());
+  list("missing (run the sweep or its shard again to add them)", r.missing);
+  list("duplicated (identical rows, kept once)", r.duplicated);
+  list("conflicting (different results for one id; the first source's row kept)", r.conflicting);
+  list("not in any manifest", r.unexpected);
+  return r.missing.empty() && r.conflicting.empty() ? 0 : 1;
+}
+
+}  // namespace
+
+CommandRunner setupMergeCommand(CLI::App& sub) {
+  struct Options {
+    std::vector<std::string> sources;
+    std::string out;
+  };
+  auto opt = std::make_shared<Options>();
+  sub.add_option("sources", opt->sources,
+                 "sweep output directories; one directory with shards/ merges its shards")
+      ->required();
+  sub.add_option("--out", opt->out, "where to write the merged table (default: the one source)");
+  return [opt] { return runMerge(opt->sources, opt->out); };
+}
+
+}  // namespace parksim::app

@@ -1,0 +1,32 @@
+#pragma once
+// `--start x,y,deg`, `--goal x,y,deg` and `--set path.to.field=value` on the commands that read
+// a world (plan, run, render): the world file with some fields replaced, validated exactly like
+// the file (parksim/scenario/ScenarioOverrides.h).
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "parksim/core/Scenario.h"
+#include "parksim/scenario/ScenarioOverrides.h"
+
+namespace parksim::app {
+
+struct WorldOverrideOptions {
+  std::string start;              ///< "x,y,deg" or empty
+  std::string goal;               ///< "x,y,deg" or empty
+  std::vector<std::string> sets;  ///< "path.to.field=value", applied in order after start, goal
+
+  /// Registers --start, --goal and --set on `sub`.
+  void addTo(CLI::App& sub);
+  /// The overrides these options ask for. Throws Error on a --set without '='.
+  std::vector<ScenarioOverride> overrides() const;
+  /// One label per override ("--set robot.height=0.05"), for result files.
+  std::vector<std::string> labels() const;
+};
+
+/// loadScenario(path) with the options' overrides applied.
+Scenario loadWorld(const std::string& path, const WorldOverrideOptions& options);
+
+}  // namespace parksim::app

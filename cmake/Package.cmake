@@ -1,0 +1,49 @@
+# The installed package: libraries, headers under include/parksim/, the parksim executable (app/)
+# and parksimConfig.cmake, so that a consumer writes
+#   find_package(parksim 0.2 REQUIRED)
+#   target_link_libraries(app PRIVATE parksim::parksim)   # or parksim::sim, parksim::planner...
+# and gets the include directory, C++20 and the dependencies through the targets.
+
+include(CMakePackageConfigHelpers)
+
+set(PARKSIM_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/parksim)
+
+# Module targets keep their build names (parksim_sim) and are exported as parksim::sim; the
+# aliases give a project that adds parksim as a subdirectory the same names. (parksim::realism
+# is built in parksim/sim/: the world reader parses its definitions without Bullet.)
+set(parksim_modules core realism scenario collision planner sim render)
+foreach(module IN LISTS parksim_modules)
+  set_target_properties(parksim_${module} PROPERTIES EXPORT_NAME ${module})
+  add_library(parksim::${module} ALIAS parksim_${module})
+endforeach()
+
+# parksim::parksim: every module.
+add_library(parksim_library INTERFACE)
+set_target_properties(parksim_library PROPERTIES EXPORT_NAME parksim)
+foreach(module IN LISTS parksim_modules)
+  target_link_libraries(parksim_library INTERFACE parksim_${module})
+endforeach()
+add_library(parksim::parksim ALIAS parksim_library)
+
+list(TRANSFORM parksim_modules PREPEND parksim_ OUTPUT_VARIABLE parksim_module_targets)
+install(TARGETS ${parksim_module_targets} parksim_library
+  EXPORT parksimTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/parksim/
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/parksim
+  FILES_MATCHING PATTERN "*.h")
+install(EXPORT parksimTargets NAMESPACE parksim:: DESTINATION ${PARKSIM_CMAKE_DIR})
+
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/parksimConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/parksimConfig.cmake
+  INSTALL_DESTINATION ${PARKSIM_CMAKE_DIR})
+# 0.x releases break their API between minor versions: 0.2 accepts 0.2.*, not 0.1 or 0.3.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/parksimConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES
+  ${PROJECT_BINARY_DIR}/parksimConfig.cmake
+  ${PROJECT_BINARY_DIR}/parksimConfigVersion.cmake
+  ${PROJECT_SOURCE_DIR}/cmake/parksimImportedTargets.cmake
+  DESTINATION ${PARKSIM_CMAKE_DIR})

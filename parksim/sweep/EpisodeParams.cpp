@@ -1,0 +1,70 @@
+#include "parksim/sweep/EpisodeParams.h"
+
+#include <cstdio>
+
+namespace parksim {
+namespace {
+
+std::string number(double v) { return nlohmann::json(v).dump(); }
+
+std::string offset(const PoseOffset& o) {
+  return number(o.dx_m) + "," + number(o.dy_m) + "," + number(o.dyaw_deg);
+}
+
+}  // namespace
+
+std::string canonicalString(const EpisodeParams& p) {
+  const EpisodeParams d;
+  std::string s = "world=" + p.world + ";planner=" + p.planner;
+  if (p.steering != d.steering) s += ";steering=" + p.steering;
+  if (p.smooth != d.smooth) s += ";smooth=1";
+  s += ";seed=" + std::to_string(p.seed);
+  if (p.max_iterations != d.max_iterations) {
+    s += ";max_iterations=" + std::to_string(p.max_iterations);
+  }
+  if (p.tracking != d.tracking) s += ";tracking=" + p.tracking;
+  if (p.timing != d.timing) s += ";timing=" + p.timing;
+  if (p.realism != d.realism) s += ";realism=" + p.realism;
+  if (p.noise_seed != d.noise_seed) s += ";noise_seed=" + std::to_string(p.noise_seed);
+  if (!p.start_offset.isZero()) s += ";start_offset=" + offset(p.start_offset);
+  if (!p.goal_offset.isZero()) s += ";goal_offset=" + offset(p.goal_offset);
+  return s;
+}
+
+std::uint64_t fnv1a64(std::string_view text) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (const char c : text) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 0x100000001b3ULL;
+  }
+  return h;
+}
+
+std::string episodeId(const EpisodeParams& params) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx",
+                static_cast<unsigned long long>(fnv1a64(canonicalString(params))));
+  return buf;
+}
+
+void appendParamColumns(const EpisodeParams& p, nlohmann::ordered_json& row) {
+  row["world"] = p.world;
+  row["world_file"] = p.world_file;
+  row["planner"] = p.planner;
+  row["steering"] = p.steering;
+  row["smooth"] = p.smooth;
+  row["seed"] = p.seed;
+  row["max_iterations"] = p.max_iterations;
+  row["tracking"] = p.tracking;
+  row["timing"] = p.timing;
+  row["realism"] = p.realism;
+  row["noise_seed"] = p.noise_seed;
+  row["start_dx_m"] = p.start_offset.dx_m;
+  row["start_dy_m"] = p.start_offset.dy_m;
+  row["start_dyaw_deg"] = p.start_offset.dyaw_deg;
+  row["goal_dx_m"] = p.goal_offset.dx_m;
+  row["goal_dy_m"] = p.goal_offset.dy_m;
+  row["goal_dyaw_deg"] = p.goal_offset.dyaw_deg;
+}
+
+}  // namespace parksim

@@ -1,0 +1,58 @@
+#include "parksim/sweep/SlurmScript.h"
+
+#include "parksim/core/Error.h"
+
+namespace parksim {
+namespace {
+
+// Single quotes for the shell: paths may hold spaces.
+std::string quoted(const std::string& s) {
+  std::string out = "'";
+  for (const char c : s) {
+    if (c == '\'') {
+      out += "'\\''";
+    } else {
+      out += c;
+    }
+  }
+  out += '\'';
+  return out;
+}
+
+}  // namespace
+
+std::string sbatchScript(const SlurmDef& d) {
+  if (d.shards < 1) throw Error("--slurm-shards must be at least 1");
+  if (d.cpus_per_task < 1) throw Error("--slurm-cpus must be at least 1");
+  const std::string n = std::to_string(d.shards);
+  std::string s = "#!/bin/bash\n";
+  s += "# Written by `parksim sweep --slurm`. Submit: sbatch --wait " + d.out_dir +
+       "/sweep.sbatch\n";
+  s += "# then merge: " + d.parksim_exe + " merge " + d.out_dir + "\n";
+  s += "# Resubmitting is safe: every shard resumes and runs only its missing episodes;\n";
+  s += "# `sbatch --array=3,7 sweep.sbatch` reruns shards 3 and 7 alone.\n";
+  s += "#SBATCH --job-name=" + d.job_name + "\n";
+  s += "#SBATCH --array=0-" + std::to_string(d.shards - 1) + d.max_parallel + "\n";
+  s += "#SBATCH --ntasks=1\n";
+  s += "#SBATCH --cpus-per-task=" + std::to_string(d.cpus_per_task) + "\n";
+  s += "#SBATCH --mem=" + d.mem + "\n";
+  s += "#SBATCH --time=" + d.time + "\n";
+  if (!d.partition.empty()) s += "#SBATCH --partition=" + d.partition + "\n";
+  if (!d.account.empty()) s += "#SBATCH --account=" + d.account + "\n";
+  s += "#SBATCH --output=" + d.out_dir + "/logs/shard-%a.out\n";
+  s += "set -u\n";
+  s += "export OMP_NUM_THREADS=1\n";
+  s += "shard=\"${SLURM_ARRAY_TASK_ID:?run this script with sbatch}\"\n";
+  // N is fixed here, not SLURM_ARRAY_TASK_COUNT: a resubmission of some shards (--array=3,7)
+  // must still cut the sweep into the same N shards.
+  s += quoted(d.parksim_exe) + " sweep " + quoted(d.spec_path) + " --shard \"$shard/" + n +
+       "\" --workers \"${SLURM_CPUS_PER_TASK:-" + std::to_string(d.cpus_per_task) + "}\" --out " +
+       quoted(d.out_dir) + "/shards/\"$shard\" --progress\n";
+  s += "rc=$?\n";
+  s += "# 1 = some episodes missed their tolerance: results, not a failed task.\n";
+  s += "if [ \"$rc\" -le 1 ]; then exit 0; fi\n";
+  s += "exit \"$rc\"\n";
+  return s;
+}
+
+}  // namespace parksim

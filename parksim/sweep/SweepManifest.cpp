@@ -1,0 +1,42 @@
+#include "parksim/sweep/SweepManifest.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "parksim/core/AtomicFile.h"
+#include "parksim/core/Error.h"
+
+namespace parksim {
+
+void writeSweepManifest(const std::string& dir, const SweepManifest& m) {
+  nlohmann::ordered_json j;
+  j["format"] = "parksim-sweep-manifest/1";
+  j["spec"] = m.spec_path;
+  j["name"] = m.name;
+  j["shard"] = std::to_string(m.shard.index) + "/" + std::to_string(m.shard.count);
+  j["episode_ids"] = m.episode_ids;
+  ensureDirectory(dir);
+  writeFileAtomically(dir + "/sweep.json", j.dump(1) + "\n");
+}
+
+bool readSweepManifest(const std::string& dir, SweepManifest& m) {
+  const std::string path = dir + "/sweep.json";
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return false;
+  std::ifstream in(path);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (!j.is_object() || j.value("format", "") != "parksim-sweep-manifest/1" ||
+      !j.contains("episode_ids") || !j["episode_ids"].is_array()) {
+    throw Error(path + ": not a sweep manifest (format parksim-sweep-manifest/1)");
+  }
+  m.spec_path = j.value("spec", "");
+  m.name = j.value("name", "");
+  const std::string shard = j.value("shard", "0/1");
+  m.shard = parseShard(shard);
+  m.episode_ids = j["episode_ids"].get<std::vector<std::string>>();
+  return true;
+}
+
+}  // namespace parksim

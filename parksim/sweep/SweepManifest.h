@@ -1,0 +1,25 @@
+#pragma once
+// DIR/sweep.json: what a sweep directory was asked to hold (the spec, the shard, every episode
+// id of the whole sweep), so that `parksim merge` can list the episodes that are missing.
+
+#include <string>
+#include <vector>
+
+#include "parksim/sweep/Shard.h"
+
+namespace parksim {
+
+struct SweepManifest {
+  std::string spec_path;  ///< as given on the command line
+  std::string name;       ///< SweepSpec::name
+  Shard shard;
+  std::vector<std::string> episode_ids;  ///< every id of the whole sweep, canonical order
+};
+
+/// Writes DIR/sweep.json atomically.
+void writeSweepManifest(const std::string& dir, const SweepManifest& manifest);
+
+/// Reads DIR/sweep.json; false when there is none. Throws Error when it exists but is not one.
+bool readSweepManifest(const std::string& dir, SweepManifest& manifest);
+
+}  // namespace parksim

@@ -1,0 +1,44 @@
+#pragma once
+// Runs a sweep's episodes on N worker threads and appends each finished episode to the results
+// table at once, from one writer (the calling thread), in order of completion. Each row's
+// content depends only on its episode (timing keys aside), never on the worker count or the
+// order in which episodes finish.
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "parksim/sweep/EpisodeExpansion.h"
+#include "parksim/sweep/EpisodeRun.h"
+#include "parksim/sweep/ResultsTable.h"
+
+namespace parksim {
+
+struct SweepProgress {
+  std::size_t done = 0;    ///< episodes in the table (earlier runs included)
+  std::size_t total = 0;   ///< episodes of this run's share of the sweep
+  std::size_t failed = 0;  ///< of done, those that did not meet their tolerance
+  std::size_t ran = 0;     ///< finished by this run
+  double elapsed_s = 0.0;  ///< wall time of this run so far
+};
+
+using SweepProgressFn = std::function<void(const SweepProgress&)>;
+
+/// The provenance columns of every row: this binary's (core/Provenance.h: parksim_version,
+/// git_commit, git_dirty, build_type, compiler, bullet_precision) and this machine's `host`.
+nlohmann::ordered_json provenanceColumns();
+
+struct SweepRunnerDef {
+  int workers = 1;  ///< threads, >= 1
+  EpisodeRunDef episode;
+  nlohmann::ordered_json provenance = provenanceColumns();  ///< added to every row
+};
+
+/// Runs the episodes of `episodes` not yet in `table` and appends their rows (with provenance).
+/// Calls `progress` (if set) from the calling thread once at the start and after every row.
+/// A worker's exception (a file that cannot be written) stops the others after their current
+/// episode and is rethrown; rows written until then stay. Returns the final progress.
+SweepProgress runSweep(const std::vector<SweepEpisode>& episodes, const SweepRunnerDef& def,
+                       ResultsTable& table, const SweepProgressFn& progress = {});
+
+}  // namespace parksim

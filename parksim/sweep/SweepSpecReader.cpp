@@ -1,0 +1,332 @@
+#include "parksim/sweep/SweepSpecReader.h"
+
+#include <glob.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include "parksim/core/Error.h"
+#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/TreePlanner.h"
+#include "parksim/scenario/YamlField.h"
+#include "parksim/sim/ExecutionDef.h"
+#include "parksim/sweep/EpisodeSetup.h"
+
+namespace parksim {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::string_view kFormat = "parksim-sweep/1";
+// A sweep is meant to finish; a typo such as `to: 1e9` should not start a billion episodes.
+constexpr std::size_t kMaxEpisodes = 10'000'000;
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string s;
+  for (const std::string& n : names) {
+    if (!s.empty()) s += ", ";
+    s += n;
+  }
+  return s;
+}
+
+// A scalar is an axis of one value; a list gives several (at least one).
+std::vector<YamlField> axisItems(const YamlField& field) {
+  if (field.node().IsScalar()) return {field};
+  if (!field.node().IsSequence()) field.fail("must be a value or a list of values");
+  std::vector<YamlField> items = field.items();
+  if (items.empty()) field.fail("must list at least one value");
+  return items;
+}
+
+// Each value once: a repeated value would run the same episodes twice under one id.
+template <typename T>
+void rejectDuplicates(const std::vector<YamlField>& items, const std::vector<T>& values) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (values[i] == values[j]) items[i].fail("repeats " + items[j].path());
+    }
+  }
+}
+
+std::vector<std::string> namesAxis(const YamlField& field, const std::vector<std::string>& known,
+                                   const std::string& what, const std::string& later = "") {
+  const std::vector<YamlField> items = axisItems(field);
+  std::vector<std::string> values;
+  for (const YamlField& item : items) {
+    const std::string v = item.text();
+    if (std::find(known.begin(), known.end(), v) == known.end()) {
+      item.fail("unknown " + what + " '" + v + "' (this build has: " + joined(known) + ")" + later);
+    }
+    values.push_back(v);
+  }
+  rejectDuplicates(items, values);
+  return values;
+}
+
+std::uint64_t seedValue(const YamlField& field) {
+  const double v = field.number();
+  if (v < 0.0 || v != std::floor(v) || v > 9007199254740992.0) {
+    field.fail("must be a whole number >= 0, got " + field.node().Scalar());
+  }
+  return static_cast<std::uint64_t>(v);
+}
+
+// A list of seeds, one seed, or {from: A, to: B} (both included).
+std::vector<std::uint64_t> seedsAxis(const YamlField& field) {
+  if (field.node().IsMap()) {
+    const YamlMap m = field.map({"from", "to"});
+    const std::uint64_t from = seedValue(m.required("from"));
+    const YamlField to_field = m.required("to");
+    const std::uint64_t to = seedValue(to_field);
+    if (to < from) to_field.fail("must be at least from (" + std::to_string(from) + ")");
+    if (to - from >= kMaxEpisodes) to_field.fail("range too large");
+    std::vector<std::uint64_t> seeds;
+    for (std::uint64_t s = from; s <= to; ++s) seeds.push_back(s);
+    return seeds;
+  }
+  const std::vector<YamlField> items = axisItems(field);
+  std::vector<std::uint64_t> values;
+  for (const YamlField& item : items) values.push_back(seedValue(item));
+  rejectDuplicates(items, values);
+  return values;
+}
+
+std::vector<PoseOffset> offsetsAxis(const YamlField& field) {
+  if (!field.node().IsSequence()) {
+    field.fail("must be a list of [dx_m, dy_m, dyaw_deg] offsets, e.g. [[0, 0, 0], [0.01, 0, 0]]");
+  }
+  const std::vector<YamlField> items = field.items();
+  if (items.empty()) field.fail("must list at least one offset");
+  std::vector<PoseOffset> values;
+  for (const YamlField& item : items) {
+    const std::vector<double> v = item.numbers(3, "[dx_m, dy_m, dyaw_deg]");
+    values.push_back({v[0], v[1], v[2]});
+  }
+  rejectDuplicates(items, values);
+  return values;
+}
+
+bool hasGlobChars(const std::string& s) { return s.find_first_of("*?[") != std::string::npos; }
+
+void readWorlds(const YamlField& field, const std::string& base_dir, SweepSpec& spec) {
+  spec.worlds_line = field.line();
+  for (const YamlField& item : axisItems(field)) {
+    const std::string pattern = item.text();
+    const fs::path base = base_dir.empty() ? fs::path() : fs::path(base_dir);
+    const fs::path resolved = fs::path(pattern).is_absolute() ? fs::path(pattern) : base / pattern;
+    std::vector<std::string> matches;
+    if (hasGlobChars(pattern)) {
+      glob_t g{};
+      const int rc = glob(resolved.string().c_str(), 0, nullptr, &g);
+      if (rc == 0) {
+        for (std::size_t i = 0; i < g.gl_pathc; ++i) matches.emplace_back(g.gl_pathv[i]);
+      }
+      globfree(&g);
+      if (matches.empty()) item.fail("matches no file (" + resolved.string() + ")");
+      std::sort(matches.begin(), matches.end());
+    } else {
+      std::error_code ec;
+      if (!fs::is_regular_file(resolved, ec)) item.fail("no such file: " + resolved.string());
+      matches.push_back(resolved.string());
+    }
+    for (const std::string& path : matches) {
+      const std::string normal = fs::path(path).lexically_normal().string();
+      // Written relative to the spec's folder, so the column reads the same wherever the
+      // sweep runs (locally, on a cluster node, from another working directory).
+      const std::string shown = fs::path(pattern).is_absolute()
+                                    ? normal
+                                    : fs::path(path).lexically_relative(base).string();
+      if (std::find(spec.world_paths.begin(), spec.world_paths.end(), normal) !=
+          spec.world_paths.end()) {
+        item.fail("lists " + shown + " a second time");
+      }
+      spec.world_paths.push_back(normal);
+      spec.world_files.push_back(base_dir.empty() ? normal : fs::path(shown).string());
+    }
+  }
+}
+
+void readRecord(const YamlField& field, RecordDef& r) {
+  const YamlMap m = field.map({"executed_csv", "executed_rate_hz", "film_failures", "film"});
+  if (const std::optional<YamlField> f = m.optional("executed_csv")) {
+    const std::string v = f->text();
+    if (v == "none") {
+      r.executed_csv = ExecutedCsvPolicy::kNone;
+    } else if (v == "failures") {
+      r.executed_csv = ExecutedCsvPolicy::kFailures;
+    } else if (v == "all") {
+      r.executed_csv = ExecutedCsvPolicy::kAll;
+    } else {
+      f->fail("must be none, failures or all, got '" + v + "'");
+    }
+  }
+  if (const std::optional<YamlField> f = m.optional("executed_rate_hz")) {
+    r.executed_rate_hz = f->positive();
+  }
+  if (const std::optional<YamlField> f = m.optional("film_failures")) {
+    r.film_failures = f->boolean();
+  }
+  if (const std::optional<YamlField> f = m.optional("film")) {
+    const YamlMap film = f->map({"fps", "size", "view", "video"});
+    if (const std::optional<YamlField> g = film.optional("fps")) r.film_fps = g->positive();
+    if (const std::optional<YamlField> g = film.optional("size")) {
+      const std::string text = g->text();
+      int w = 0;
+      int h = 0;
+      char x = 0;
+      char extra = 0;
+      std::istringstream in(text);
+      if (!(in >> w >> x >> h) || x != 'x' || (in >> extra) || w < 16 || h < 16 || w > 8192 ||
+          h > 8192) {
+        g->fail("must be WxH, each 16..8192, e.g. 640x480; got '" + text + "'");
+      }
+      r.film_width_px = w;
+      r.film_height_px = h;
+    }
+    if (const std::optional<YamlField> g = film.optional("view")) {
+      const std::string v = g->text();
+      if (v != "top" && v != "3d" && v != "both") {
+        g->fail("must be top, 3d or both, got '" + v + "'");
+      }
+      r.film_view = v;
+    }
+    if (const std::optional<YamlField> g = film.optional("video")) r.film_video = g->boolean();
+  }
+}
+
+void readTolerance(const YamlField& field, ToleranceOverrides& t) {
+  const YamlMap m = field.map({"max_pos_err_m", "goal_pos_err_m", "goal_heading_err_deg",
+                               "max_contacts", "max_parked_displacement_m"});
+  if (const std::optional<YamlField> f = m.optional("max_pos_err_m"))
+    t.max_pos_err_m = f->positive();
+  if (const std::optional<YamlField> f = m.optional("goal_pos_err_m")) {
+    t.goal_pos_err_m = f->positive();
+  }
+  if (const std::optional<YamlField> f = m.optional("goal_heading_err_deg")) {
+    t.goal_heading_err_deg = f->positive();
+  }
+  if (const std::optional<YamlField> f = m.optional("max_contacts")) {
+    t.max_contacts = static_cast<int>(seedValue(*f));
+  }
+  if (const std::optional<YamlField> f = m.optional("max_parked_displacement_m")) {
+    t.max_parked_displacement_m = f->nonNegative();
+  }
+}
+
+std::string readWholeFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path + ": cannot open");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw Error(path + ": cannot read");
+  return ss.str();
+}
+
+}  // namespace
+
+const char* toString(ExecutedCsvPolicy policy) {
+  switch (policy) {
+    case ExecutedCsvPolicy::kNone: return "none";
+    case ExecutedCsvPolicy::kFailures: return "failures";
+    case ExecutedCsvPolicy::kAll: return "all";
+  }
+  return "?";
+}
+
+SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_name,
+                         const std::string& base_dir) {
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(std::string(yaml_text));
+  } catch (const YAML::Exception& e) {
+    throw Error(source_name + ":" + std::to_string(lineOf(e.mark)) + ": (syntax): " + e.msg);
+  }
+  if (documents.size() != 1) {
+    YamlField(YAML::Node(), "", 1, source_name)
+        .fail("a sweep spec is one YAML map that starts with format: " + std::string(kFormat));
+  }
+  const YamlField root(documents.front(), "", 1, source_name);
+  const YamlMap top(root);
+  const YamlField format = top.required("format");
+  if (format.text() != kFormat) {
+    format.fail("expected \"" + std::string(kFormat) + "\", got \"" + format.text() + "\"");
+  }
+  top.rejectUnknownKeys({"format", "name", "worlds", "planners", "steering", "smoothing", "seeds",
+                         "max_iterations", "tracking", "timing", "realism", "noise_seeds",
+                         "start_offsets", "goal_offsets", "record", "tolerance"});
+
+  SweepSpec spec;
+  spec.source_path = source_name;
+  spec.name = top.required("name").text();
+  readWorlds(top.required("worlds"), base_dir, spec);
+
+  std::vector<std::string> planner_names;
+  for (PlannerKind k : allPlannerKinds()) planner_names.emplace_back(toString(k));
+  std::vector<std::string> steering_names;
+  for (SteeringKind k : allSteeringKinds()) steering_names.emplace_back(toString(k));
+  if (const auto f = top.optional("planners")) {
+    spec.planners = namesAxis(*f, planner_names, "planner");
+  }
+  if (const auto f = top.optional("steering")) {
+    spec.steerings = namesAxis(*f, steering_names, "steering");
+  }
+  if (const auto f = top.optional("smoothing")) {
+    const std::vector<YamlField> items = axisItems(*f);
+    spec.smoothing.clear();
+    for (const YamlField& item : items) spec.smoothing.push_back(item.boolean());
+    rejectDuplicates(items, spec.smoothing);
+  }
+  if (const auto f = top.optional("seeds")) spec.seeds = seedsAxis(*f);
+  if (const auto f = top.optional("max_iterations")) {
+    const std::vector<YamlField> items = axisItems(*f);
+    spec.max_iterations.clear();
+    for (const YamlField& item : items) spec.max_iterations.push_back(item.positiveInt());
+    rejectDuplicates(items, spec.max_iterations);
+  }
+  if (const auto f = top.optional("tracking")) {
+    spec.tracking = namesAxis(*f, {"closed", "open"}, "tracking mode");
+  }
+  if (const auto f = top.optional("timing")) {
+    spec.timing = namesAxis(*f, supportedTimings(), "timing");
+  }
+  if (const auto f = top.optional("realism")) {
+    spec.realism = namesAxis(*f, supportedRealismPresets(), "realism");
+  }
+  if (const auto f = top.optional("noise_seeds")) {
+    spec.noise_seeds = seedsAxis(*f);
+    const bool all_ideal = std::all_of(spec.realism.begin(), spec.realism.end(),
+                                       [](const std::string& r) { return r == "ideal"; });
+    if (all_ideal && spec.noise_seeds.size() > 1) {
+      f->fail(
+          "the ideal realism has no random draws, so several noise seeds would repeat "
+          "identical episodes; give one seed or add a realism preset (lab, odometry)");
+    }
+  }
+  if (const auto f = top.optional("start_offsets")) spec.start_offsets = offsetsAxis(*f);
+  if (const auto f = top.optional("goal_offsets")) spec.goal_offsets = offsetsAxis(*f);
+  if (const auto f = top.optional("record")) readRecord(*f, spec.record);
+  if (const auto f = top.optional("tolerance")) readTolerance(*f, spec.tolerance);
+
+  const double count = static_cast<double>(spec.world_files.size()) * spec.planners.size() *
+                       spec.steerings.size() * spec.smoothing.size() * spec.seeds.size() *
+                       spec.max_iterations.size() * spec.tracking.size() * spec.timing.size() *
+                       spec.realism.size() * spec.noise_seeds.size() * spec.start_offsets.size() *
+                       spec.goal_offsets.size();
+  if (count > static_cast<double>(kMaxEpisodes)) {
+    root.fail("expands to " + std::to_string(static_cast<long long>(count)) +
+              " episodes, more than the limit of " + std::to_string(kMaxEpisodes));
+  }
+  return spec;
+}
+
+SweepSpec loadSweepSpec(const std::string& path) {
+  return parseSweepSpec(readWholeFile(path), path, fs::path(path).parent_path().string());
+}
+
+}  // namespace parksim

@@ -1,0 +1,109 @@
+"""parksim from Python: load a world, plan, run episodes, step your own controller, render.
+
+    import parksim
+    world = parksim.load_world("worlds/head_in.yaml")
+    plan = parksim.plan(world, planner="rrt-goal-connect", seed=1)
+    run = parksim.run(world, plan=plan, tracking="closed")
+    run.executed["pos_err"].max(), run.metrics["goal_reached"]
+
+Arrays are NumPy structured arrays with the columns of the command line's CSV files, metrics
+are metrics.json's keys, and results are bit-identical to `parksim run` for the same options.
+See docs/python.md.
+"""
+
+import json as _json
+import os as _os
+
+from ._parksim import (  # noqa: F401  (re-exported)
+    CollisionChecker,
+    DynamicsWorld,
+    Episode,
+    Error,
+    ExecutionDef,
+    FrameDef,
+    FrameRecorder,
+    HybridAStarDef,
+    MotionValidatorDef,
+    MoveToPoseDef,
+    PlannerDef,
+    PlanResult,
+    PlanSetup,
+    ReedsSheppDef,
+    RobotDef,
+    RotateTranslateRotateDef,
+    RunResult,
+    SimModelDef,
+    TrackingGains,
+    World,
+    cspace_slice,
+    encode_png,
+    plan,
+    read_png,
+    read_trajectory,
+    render_figure,
+    run,
+    write_png,
+)
+from . import _parksim
+
+__version__ = "0.2.0"
+
+
+def _plain(value):
+    """NumPy scalars and arrays in a world dict, as JSON numbers and lists."""
+    if hasattr(value, "tolist"):
+        return value.tolist()
+    raise TypeError(f"a world dict holds numbers, strings, lists and dicts, not {type(value)}")
+
+
+def load_world(source, name="<dict>"):
+    """A World from a world file (path) or from a dict with the file's structure.
+
+    Errors are parksim.Error (a ValueError) with the world reader's one-line message,
+    "<file>:<line>: <field>: <what is wrong>". A dict is read as the YAML text json.dumps
+    makes of it (one key per line), named `name` in messages.
+    """
+    if isinstance(source, dict):
+        text = _json.dumps(source, indent=1, default=_plain)
+        return _parksim._parse_world(text, name)
+    return _parksim._load_world(_os.fspath(source))
+
+
+def render_frame(world, pose=None, plan=None, reference=None, episode=None,
+                 obstacle_poses=None, contacts=(), executed=None, overlay=None,
+                 width=640, height=480, view="top", msaa=4):
+    """An H x W x 3 uint8 image of the lot, as the film's frames are drawn.
+
+    pose: robot (x, y, theta) to draw; plan: PlanResult, structured array or trajectory.csv
+    path, drawn as the planned path; reference: planned pose drawn as an outline;
+    episode: an Episode, whose current instant supplies pose, reference, obstacle poses,
+    contacts, the path driven so far and the plan (explicit arguments win);
+    executed: driven path (structured array with x, y, theta or (x, y, theta) rows);
+    overlay: dict with title, t, pos_err, heading_err for the corner text;
+    view: "top" or "3d" (follows the robot).
+    """
+    if episode is not None:
+        obs = episode.observation()
+        pose = obs["pose"] if pose is None else pose
+        reference = obs["reference"] if reference is None else reference
+        obstacle_poses = episode.obstacle_poses if obstacle_poses is None else obstacle_poses
+        contacts = obs["contacts"] if not contacts else contacts
+        executed = episode.executed if executed is None else executed
+        plan = episode.plan if plan is None else plan
+        if overlay is None:
+            overlay = {"title": world.name, "t": obs["t"], "pos_err": obs["pos_err"],
+                       "heading_err": obs["heading_err"]}
+    return _parksim._render_frame(world, pose, plan, reference, obstacle_poses, list(contacts),
+                                  executed, overlay, width, height, view, msaa)
+
+
+from .env import ParkingEnv  # noqa: E402
+from . import spaces  # noqa: E402
+
+__all__ = [
+    "CollisionChecker", "DynamicsWorld", "Episode", "Error", "ExecutionDef", "FrameDef",
+    "FrameRecorder", "HybridAStarDef", "MotionValidatorDef", "MoveToPoseDef", "ParkingEnv", "PlannerDef",
+    "PlanResult", "PlanSetup", "ReedsSheppDef", "RobotDef", "RotateTranslateRotateDef", "RunResult",
+    "SimModelDef", "TrackingGains", "World", "cspace_slice", "encode_png", "load_world", "plan",
+    "read_png", "read_trajectory", "render_figure", "render_frame", "run", "spaces", "write_png",
+]

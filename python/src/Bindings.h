@@ -1,0 +1,94 @@
+#pragma once
+// Shared by the binding files of the Python module parksim._parksim: one bind function per
+// concept (Module.cpp calls them in order), and the conversions they all use.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <nlohmann/json.hpp>
+
+#include "parksim/core/Pose2.h"
+#include "parksim/core/Scenario.h"
+#include "parksim/core/Trajectory.h"
+#include "parksim/scenario/RealismReader.h"
+#include "parksim/sim/Episode.h"
+
+namespace parksim::python {
+
+namespace py = pybind11;
+
+void bindDefs(py::module_& m);     // DefBindings.cpp: the ...Def structs, options as kwargs
+void bindWorld(py::module_& m);    // WorldBindings.cpp: World, load_world, collision, C-space
+void bindPlan(py::module_& m);     // PlanBindings.cpp: plan(), PlanResult, trajectories
+void bindEpisode(py::module_& m);  // EpisodeBindings.cpp: run(), Episode, DynamicsWorld
+void bindRender(py::module_& m);   // RenderBindings.cpp: images, figures, FrameRecorder
+
+/// A loaded world: immutable, shared by every plan and episode made from it.
+struct World {
+  std::shared_ptr<const Scenario> scenario;
+  /// The file's realism: and tolerance: sections.
+  std::shared_ptr<const WorldRealism> realism;
+};
+
+/// How run() and Episode() execute: as `parksim run` by default (the world's realism section,
+/// noise seed 1), with the ExecutionDef fields in `options` taken from it.
+ExecutionDef executionFrom(const World& world, py::dict& options);
+
+/// Copies the keys of `options` that name a field of `def`'s Python class onto it, removing
+/// them from `options`. Fields are the class's properties (DefBindings.cpp), so a field added to
+/// a Def's binding is an option everywhere that Def is taken.
+template <class Def>
+Def takeOptions(const Def& def, py::dict& options) {
+  py::object obj = py::cast(def);
+  py::object type = py::type::of(obj);
+  const py::object property = py::module_::import("builtins").attr("property");
+  for (const py::handle key : py::list(options.attr("keys")())) {
+    const std::string name = py::str(key);
+    if (name.empty() || name[0] == '_' || !py::hasattr(type, name.c_str())) continue;
+    if (!py::isinstance(type.attr(name.c_str()), property)) continue;
+    obj.attr(name.c_str()) = options[key];
+    PyDict_DelItem(options.ptr(), key.ptr());
+  }
+  return obj.cast<Def>();
+}
+
+/// Throws TypeError naming the keys left in `options`.
+void rejectUnknownOptions(const py::dict& options, const std::string& function);
+
+/// A Def from a Def object or a dict of its fields (errors in them raised as they are).
+template <class Def>
+Def defFrom(const py::handle& value, const std::string& what) {
+  if (py::isinstance<Def>(value)) return value.cast<Def>();
+  if (!py::isinstance<py::dict>(value)) {
+    const std::string name = py::str(py::type::of<Def>().attr("__name__"));
+    throw py::type_error(what + " must be a dict or a " + name);
+  }
+  py::dict options(value.cast<py::dict>());
+  Def def = takeOptions(Def{}, options);
+  rejectUnknownOptions(options, what);
+  return def;
+}
+
+/// A copy of `kwargs` as a dict we may consume.
+py::dict optionsDict(const py::kwargs& kwargs);
+
+/// (x, y, theta) from any sequence of three numbers.
+Pose2 poseFrom(const py::handle& sequence);
+py::tuple poseTuple(const Pose2& pose);
+
+/// JSON values as Python objects (dict, list, str, float, int, bool, None).
+py::object toPython(const nlohmann::json& json);
+
+/// The plan as a structured array: t, x, y, theta, omega_left, omega_right, v, omega.
+py::array trajectoryArray(const Trajectory& trajectory, const RobotDef& robot);
+/// A trajectory from a PlanResult, a structured array with fields t, x, y, theta, omega_left,
+/// omega_right (others ignored), or a trajectory.csv path.
+Trajectory trajectoryFrom(const py::handle& plan);
+/// Executed rows as a structured array with executed.csv's columns (its realism columns too
+/// when `realism_columns`, as executedCsv writes them under an active realism).
+py::array executedArray(const std::vector<ExecutedRow>& rows, bool realism_columns);
+
+}  // namespace parksim::python

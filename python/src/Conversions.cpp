@@ -1,0 +1,191 @@
+// Conversions between core types and Python objects: poses, JSON, structured arrays.
+
+#include <cstddef>
+#include <string>
+
+#include <pybind11/stl.h>
+
+#include "parksim/core/DiffDrive.h"
+#include "parksim/core/Error.h"
+#include "python/src/Bindings.h"
+#include "python/src/Conversions.h"
+
+namespace parksim::python {
+
+namespace {
+
+// One row of each structured array; field names are the CSV files' column names.
+struct TrajectoryRecord {
+  double t, x, y, theta, omega_left, omega_right, v, omega;
+};
+struct ExecutedRecord {
+  double t, x, y, theta, x_ref, y_ref, theta_ref, omega_left_cmd, omega_right_cmd, omega_left,
+      omega_right, pos_err, heading_err;
+};
+
+// Under a realism, executed.csv's extra columns too.
+struct ExecutedRealismRecord {
+  double t, x, y, theta, x_ref, y_ref, theta_ref, omega_left_cmd, omega_right_cmd, omega_left,
+      omega_right, pos_err, heading_err, x_est, y_est, theta_est, est_pos_err, est_heading_err,
+      effort_left, effort_right, torque_left, torque_right, slip_left, slip_right, encoder_left,
+      encoder_right;
+};
+
+void registerDtypes() {
+  static const bool done = [] {
+    PYBIND11_NUMPY_DTYPE(TrajectoryRecord, t, x, y, theta, omega_left, omega_right, v, omega);
+    PYBIND11_NUMPY_DTYPE(ExecutedRecord, t, x, y, theta, x_ref, y_ref, theta_ref, omega_left_cmd,
+                         omega_right_cmd, omega_left, omega_right, pos_err, heading_err);
+    PYBIND11_NUMPY_DTYPE(ExecutedRealismRecord, t, x, y, theta, x_ref, y_ref, theta_ref,
+                         omega_left_cmd, omega_right_cmd, omega_left, omega_right, pos_err,
+                         heading_err, x_est, y_est, theta_est, est_pos_err, est_heading_err,
+                         effort_left, effort_right, torque_left, torque_right, slip_left,
+                         slip_right, encoder_left, encoder_right);
+    return true;
+  }();
+  (void)done;
+}
+
+}  // namespace
+
+void rejectUnknownOptions(const py::dict& options, const std::string& function) {
+  if (options.empty()) return;
+  std::string names;
+  for (const auto& item : options) {
+    names += (names.empty() ? "" : ", ") + py::str(item.first).cast<std::string>();
+  }
+  throw py::type_error(function + ": unknown option" + (options.size() == 1 ? " " : "s ") + names);
+}
+
+py::dict optionsDict(const py::kwargs& kwargs) { return py::dict(kwargs); }
+
+Pose2 poseFrom(const py::handle& sequence) {
+  const auto values = py::cast<std::vector<double>>(sequence);
+  if (values.size() != 3) throw py::value_error("a pose is (x, y, theta): three numbers");
+  return {values[0], values[1], values[2]};
+}
+
+py::tuple poseTuple(const Pose2& pose) { return py::make_tuple(pose.x, pose.y, pose.theta); }
+
+py::object toPython(const nlohmann::json& json) {
+  switch (json.type()) {
+    case nlohmann::json::value_t::object: {
+      py::dict d;
+      for (const auto& [key, value] : json.items()) d[py::str(key)] = toPython(value);
+      return d;
+    }
+    case nlohmann::json::value_t::array: {
+      py::list l;
+      for (const auto& value : json) l.append(toPython(value));
+      return l;
+    }
+    case nlohmann::json::value_t::string: return py::str(json.get<std::string>());
+    case nlohmann::json::value_t::boolean: return py::bool_(json.get<bool>());
+    case nlohmann::json::value_t::number_integer: return py::int_(json.get<long long>());
+    case nlohmann::json::value_t::number_unsigned: return py::int_(json.get<unsigned long long>());
+    case nlohmann::json::value_t::number_float: return py::float_(json.get<double>());
+    default: return py::none();
+  }
+}
+
+py::array trajectoryArray(const Trajectory& trajectory, const RobotDef& robot) {
+  registerDtypes();
+  py::array_t<TrajectoryRecord> out(static_cast<py::ssize_t>(trajectory.points.size()));
+  TrajectoryRecord* r = out.mutable_data();
+  for (const TrajectoryPoint& p : trajectory.points) {
+    // The same twist trajectory.csv's v and omega columns hold.
+    const Twist tw = toTwist(p.wheels, robot);
+    *r++ = {
+        p.t_s,    p.pose.x,      p.pose.y, p.pose.theta, p.wheels.left_radps, p.wheels.right_radps,
+        tw.v_mps, tw.omega_radps};
+  }
+  return out;
+}
+
+Trajectory trajectoryFrom(const py::handle& plan) {
+  if (py::isinstance<PlanOutcome>(plan)) {
+    const PlanOutcome& outcome = plan.cast<const PlanOutcome&>();
+    if (!outcome.result.solved()) throw Error("the plan is not solved: " + outcome.result.message);
+    return outcome.result.trajectory;
+  }
+  if (py::isinstance<py::str>(plan) || py::hasattr(plan, "__fspath__")) {
+    return readTrajectoryCsv(py::str(py::module_::import("os").attr("fspath")(plan)));
+  }
+  const py::array array = py::array::ensure(plan);
+  if (!array || array.dtype().attr("names").is_none() || array.ndim() != 1) {
+    throw py::type_error(
+        "a plan is a PlanResult, a trajectory.csv path or a structured array with fields t, x, "
+        "y, theta, omega_left, omega_right");
+  }
+  auto column = [&](const char* name) {
+    return py::array_t<double, py::array::forcecast>(plan[py::str(name)]);
+  };
+  const auto t = column("t"), x = column("x"), y = column("y"), theta = column("theta"),
+             left = column("omega_left"), right = column("omega_right");
+  Trajectory traj;
+  const auto n = static_cast<std::size_t>(array.shape(0));
+  traj.points.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto k = static_cast<py::ssize_t>(i);
+    traj.points[i] = {t.at(k), {x.at(k), y.at(k), theta.at(k)}, {left.at(k), right.at(k)}};
+  }
+  return traj;
+}
+
+py::array executedArray(const std::vector<ExecutedRow>& rows, bool realism_columns) {
+  registerDtypes();
+  if (realism_columns) {
+    py::array_t<ExecutedRealismRecord> out(static_cast<py::ssize_t>(rows.size()));
+    ExecutedRealismRecord* r = out.mutable_data();
+    for (const ExecutedRow& row : rows) {
+      *r++ = {row.t_s,
+              row.pose.x,
+              row.pose.y,
+              row.pose.theta,
+              row.reference.x,
+              row.reference.y,
+              row.reference.theta,
+              row.wheels_cmd.left_radps,
+              row.wheels_cmd.right_radps,
+              row.wheels.left_radps,
+              row.wheels.right_radps,
+              row.pos_err_m,
+              row.heading_err_rad,
+              row.estimate.x,
+              row.estimate.y,
+              row.estimate.theta,
+              row.est_pos_err_m,
+              row.est_heading_err_rad,
+              row.effort.left_radps,
+              row.effort.right_radps,
+              row.torque_nm.left_radps,
+              row.torque_nm.right_radps,
+              row.slip_mps.left_radps,
+              row.slip_mps.right_radps,
+              row.encoder_rad.left_radps,
+              row.encoder_rad.right_radps};
+    }
+    return out;
+  }
+  py::array_t<ExecutedRecord> out(static_cast<py::ssize_t>(rows.size()));
+  ExecutedRecord* r = out.mutable_data();
+  // Columns and values as executedCsv writes them (sim/EpisodeFiles.h).
+  for (const ExecutedRow& row : rows) {
+    *r++ = {row.t_s,
+            row.pose.x,
+            row.pose.y,
+            row.pose.theta,
+            row.reference.x,
+            row.reference.y,
+            row.reference.theta,
+            row.wheels_cmd.left_radps,
+            row.wheels_cmd.right_radps,
+            row.wheels.left_radps,
+            row.wheels.right_radps,
+            row.pos_err_m,
+            row.heading_err_rad};
+  }
+  return out;
+}
+
+}  // namespace parksim::python

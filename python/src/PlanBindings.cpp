@@ -1,0 +1,105 @@
+// parksim.plan() and its result. Options map onto PlanSetup and PlannerDef (DefBindings.cpp);
+// the statistics are plan.json's (app/PlanOutput.h), so the two never drift apart.
+
+#include <pybind11/stl.h>
+
+#include "app/PlanOutput.h"
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "python/src/Bindings.h"
+#include "python/src/Conversions.h"
+
+namespace parksim::python {
+
+PlanSetup planSetupFrom(py::dict& options) {
+  PlanSetup setup;
+  // `planner` names the kind, as --planner does; a PlannerDef is accepted too.
+  if (options.contains("planner")) {
+    const py::object value = options.attr("pop")("planner");
+    if (py::isinstance<py::str>(value)) {
+      setup.planner.kind = plannerKindFromString(value.cast<std::string>());
+    } else {
+      setup.planner = defFrom<PlannerDef>(value, "planner");
+    }
+  }
+  setup = takeOptions(setup, options);
+  setup.planner = takeOptions(setup.planner, options);
+  return setup;
+}
+
+PlanOutcome planWorld(const World& world, const PlanSetup& setup) {
+  PlanOutcome out{world.scenario, setup, {}};
+  py::gil_scoped_release release;
+  const BulletCollisionWorld collision(*world.scenario);
+  out.result = planScenario(*world.scenario, collision, setup);
+  return out;
+}
+
+void bindPlan(py::module_& m) {
+  py::class_<PlanOutcome>(m, "PlanResult", "A plan: status, trajectory and statistics.")
+      .def_property_readonly("solved", [](const PlanOutcome& p) { return p.result.solved(); })
+      .def_property_readonly("status",
+                             [](const PlanOutcome& p) { return toString(p.result.status); })
+      .def_property_readonly("message", [](const PlanOutcome& p) { return p.result.message; })
+      .def_property_readonly(
+          "trajectory",
+          [](const PlanOutcome& p) {
+            return trajectoryArray(p.result.trajectory, p.scenario->robot);
+          },
+          "Structured array with trajectory.csv's columns t, x, y, theta, omega_left, "
+          "omega_right, v, omega (s, m, rad, rad/s, m/s); empty unless solved.")
+      .def_property_readonly(
+          "stats",
+          [](const PlanOutcome& p) {
+            return toPython(app::planSummary(*p.scenario, p.setup, p.result));
+          },
+          "plan.json's content as a dict.")
+      .def_property_readonly("cost", [](const PlanOutcome& p) { return p.result.cost; })
+      .def_property_readonly("waypoints",
+                             [](const PlanOutcome& p) {
+                               py::list l;
+                               for (const Pose2& w : p.result.waypoints) l.append(poseTuple(w));
+                               return l;
+                             })
+      .def_property_readonly(
+          "tree_edges",
+          [](const PlanOutcome& p) {
+            py::list l;
+            for (const Trajectory& e : p.result.tree_edges) {
+              l.append(trajectoryArray(e, p.scenario->robot));
+            }
+            return l;
+          },
+          "Every tree edge as a structured array (when record_tree).")
+      .def_property_readonly("setup", [](const PlanOutcome& p) { return p.setup; })
+      .def("__repr__", [](const PlanOutcome& p) {
+        return "<parksim.PlanResult " + std::string(toString(p.result.status)) + ": " +
+               p.result.message + ">";
+      });
+
+  m.def(
+      "plan",
+      [](const World& world, const py::kwargs& kwargs) {
+        py::dict options = optionsDict(kwargs);
+        const PlanSetup setup = planSetupFrom(options);
+        rejectUnknownOptions(options, "plan");
+        return planWorld(world, setup);
+      },
+      py::arg("world"),
+      R"(Plans the world's parking manoeuvre, as `parksim plan` does.
+
+Options (keywords, defaults as on the command line):
+  planner="rrt-goal-connect" (rrt, rrt-goal-connect, rrt-star, rrt-connect) or a PlannerDef,
+  steering="move-to-pose" (or "rotate-translate-rotate"), any PlannerDef field (seed=1,
+  max_iterations=2000, smooth=False, smoothing_attempts=100, goal_bias, ...), and any PlanSetup
+  field (goal_tolerance_fraction, move_to_pose={...}, rotate_translate_rotate={...},
+  validation={...}). Releases the GIL while planning.)");
+
+  m.def(
+      "read_trajectory",
+      [](const World& world, const std::string& path) {
+        return trajectoryArray(readTrajectoryCsv(path), world.scenario->robot);
+      },
+      py::arg("world"), py::arg("path"), "A trajectory.csv as a structured array.");
+}
+
+}  // namespace parksim::python

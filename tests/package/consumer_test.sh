@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs the build tree into a temporary prefix, builds examples/consumer against it with
+# find_package(parksim), and runs it on head_in: the installed package is complete and usable.
+# Usage: consumer_test.sh SOURCE_DIR BUILD_DIR
+set -euo pipefail
+src=$1
+build=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+cmake --install "$build" --prefix "$tmp/prefix" >/dev/null
+test -f "$tmp/prefix/include/parksim/sim/Episode.h"
+test -x "$tmp/prefix/bin/parksim"
+ls "$tmp"/prefix/lib*/cmake/parksim/parksimConfigVersion.cmake >/dev/null
+
+generator=()
+command -v ninja >/dev/null && generator=(-G Ninja)
+launcher=()
+[ -n "${CMAKE_CXX_COMPILER_LAUNCHER:-}" ] &&
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER="$CMAKE_CXX_COMPILER_LAUNCHER")
+cmake -S "$src/examples/consumer" -B "$tmp/consumer" "${generator[@]}" "${launcher[@]}" \
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$tmp/prefix" >/dev/null
+cmake --build "$tmp/consumer" >/dev/null
+"$tmp/consumer/park" "$src/worlds/head_in.yaml" 1
+
+# The version file refuses another minor version.
+cat >"$tmp/version.cmake" <<'CMAKE'
+find_package(parksim 0.3 QUIET)
+if(parksim_FOUND)
+  message(FATAL_ERROR "find_package(parksim 0.3) accepted version ${parksim_VERSION}")
+endif()
+CMAKE
+cmake -DCMAKE_PREFIX_PATH="$tmp/prefix" -P "$tmp/version.cmake"
+echo "consumer built and ran against the installed package"

@@ -1,0 +1,73 @@
+"""Images as NumPy arrays: frames of the lot, an episode instant, the study's figures, PNG."""
+
+import numpy as np
+import pytest
+
+import parksim
+
+
+def test_a_frame_of_the_lot_is_an_rgb_array(head_in):
+    image = parksim.render_frame(head_in, width=320, height=240)
+    assert image.shape == (240, 320, 3) and image.dtype == np.uint8
+    assert len(np.unique(image.reshape(-1, 3), axis=0)) > 3  # ground, obstacles, markers
+
+
+def test_the_robot_and_the_plan_change_the_frame(head_in, head_in_plan):
+    lot = parksim.render_frame(head_in, width=320, height=240, msaa=1)
+    with_robot = parksim.render_frame(head_in, pose=(0.9, 0.4, 0.0), width=320, height=240,
+                                      msaa=1)
+    with_plan = parksim.render_frame(head_in, plan=head_in_plan, width=320, height=240, msaa=1)
+    assert not np.array_equal(lot, with_robot)
+    assert not np.array_equal(lot, with_plan)
+    # Top view: the lot spans 1.8 m across ~314 pixels. The robot at x 0.9 lies near the
+    # image's middle column; the rest of the image is unchanged.
+    changed = np.any(lot != with_robot, axis=2)
+    cols = np.nonzero(changed.any(axis=0))[0]
+    assert 130 < cols.mean() < 190
+    # Same inputs, same pixels.
+    again = parksim.render_frame(head_in, pose=(0.9, 0.4, 0.0), width=320, height=240, msaa=1)
+    assert np.array_equal(with_robot, again)
+
+
+def test_an_episode_instant_and_the_3d_view(head_in, head_in_plan):
+    ep = parksim.Episode(head_in, head_in_plan)
+    ep.step(240)
+    top = parksim.render_frame(head_in, episode=ep, width=320, height=240)
+    view3d = parksim.render_frame(head_in, episode=ep, width=320, height=240, view="3d")
+    assert top.shape == view3d.shape == (240, 320, 3)
+    assert not np.array_equal(top, view3d)
+    with pytest.raises(ValueError, match="view"):
+        parksim.render_frame(head_in, view="side")
+
+
+@pytest.mark.parametrize("name", ["lot_map", "cspace_slice", "plan", "tracking_error"])
+def test_figures(head_in, head_in_plan, name):
+    run = parksim.run(head_in, plan=head_in_plan) if name == "tracking_error" else None
+    image = parksim.render_figure(head_in, name, plan=head_in_plan,
+                                  executed=None if run is None else run.executed,
+                                  width=300, height=200, msaa=1)
+    assert image.shape == (200, 300, 3) and image.dtype == np.uint8
+    assert image.std() > 0
+
+
+def test_png_round_trip(tmp_path, head_in):
+    image = parksim.render_frame(head_in, width=64, height=48, msaa=1)
+    data = parksim.encode_png(image)
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    path = tmp_path / "frame.png"
+    parksim.write_png(str(path), image)
+    assert path.read_bytes()[:8] == data[:8]
+    assert np.array_equal(parksim.read_png(str(path)), image)
+
+
+def test_frame_recorder_writes_frames(tmp_path, head_in, head_in_plan):
+    rec = parksim.FrameRecorder(head_in, out_dir=str(tmp_path), fps=10, width_px=64, height_px=48)
+    rec.set_plan(head_in_plan)
+    ep = parksim.Episode(head_in, head_in_plan)
+    for _ in range(5):
+        obs = ep.observation()
+        rec.add_frame(obs["t"], obs["pose"], reference=obs["reference"])
+        ep.step(24)  # 0.1 s
+    result = rec.finish()
+    assert result["frames"] == 5
+    assert sorted(p.name for p in (tmp_path / "frames").iterdir())[0] == "000000.png"

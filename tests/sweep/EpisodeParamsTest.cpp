@@ -1,0 +1,122 @@
+#include "parksim/sweep/EpisodeParams.h"
+
+#include <cmath>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "parksim/core/Error.h"
+#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/sweep/EpisodeExpansion.h"
+#include "parksim/sweep/EpisodeSetup.h"
+#include "parksim/sweep/SweepSpecReader.h"
+#include "tests/sweep/SweepTestSupport.h"
+
+namespace parksim {
+namespace {
+
+TEST(EpisodeParams, Fnv1aMatchesTheReferenceVectors) {
+  // From the FNV reference (Fowler, Noll, Vo): the offset basis and FNV-1a of "a" and "foobar".
+  EXPECT_EQ(fnv1a64(""), 0xcbf29ce484222325ULL);
+  EXPECT_EQ(fnv1a64("a"), 0xaf63dc4c8601ec8cULL);
+  EXPECT_EQ(fnv1a64("foobar"), 0x85944171f73967e8ULL);
+}
+
+TEST(EpisodeParams, CanonicalTextOmitsDefaultsSoNewAxesKeepIds) {
+  EpisodeParams p;
+  p.world = "head_in";
+  p.seed = 7;
+  EXPECT_EQ(canonicalString(p), "world=head_in;planner=rrt-goal-connect;seed=7");
+  EXPECT_EQ(episodeId(p), episodeId(p));
+  p.noise_seed = 1;  // the default, as `parksim run`
+  p.timing = "time-optimal";
+  p.realism = "world";
+  EXPECT_EQ(canonicalString(p), "world=head_in;planner=rrt-goal-connect;seed=7");
+  EXPECT_EQ(episodeId(p).size(), 16u);
+  p.world_file = "elsewhere/head_in.yaml";  // provenance, not identity
+  EXPECT_EQ(canonicalString(p), "world=head_in;planner=rrt-goal-connect;seed=7");
+  p.smooth = true;
+  p.start_offset = {0.01, 0.0, -2.5};
+  EXPECT_EQ(canonicalString(p),
+            "world=head_in;planner=rrt-goal-connect;smooth=1;seed=7;start_offset=0.01,0.0,-2.5");
+}
+
+TEST(EpisodeParams, EveryParameterChangesTheId) {
+  const EpisodeParams base;
+  std::set<std::string> ids = {episodeId(base)};
+  auto differs = [&](auto change) {
+    EpisodeParams p = base;
+    change(p);
+    return ids.insert(episodeId(p)).second;
+  };
+  EXPECT_TRUE(differs([](EpisodeParams& p) { p.world = "parallel"; }));
+  EXPECT_TRUE(differs([](EpisodeParams& p) { p.planner = "rrt"; }));
+  EXPECT_TRUE(differs([](EpisodeParams& p) { p.steering = "rotate-translate-rotate"; }));
+  EXPECT_TRUE(differs([](EpisodeParams& p) { p.smooth = true; }));
+  EXPECT_TRUE(differs([](EpisodeParams& p) { p.seed = 2; }));
+  EXPECT_TRUE(differs([](EpisodeParams& p) { p.max_iterations = 10; }));
+  EXPECT_TRUE(differs([](EpisodeParams& p) { p.tracking = "open"; }));
+  EXPECT_TRUE(differs([](EpisodeParams& p) { p.timing = "other"; }));
+  EXPECT_TRUE(differs([](EpisodeParams& p) { p.realism = "lab"; }));
+  EXPECT_TRUE(differs([](EpisodeParams& p) { p.noise_seed = 3; }));
+  EXPECT_TRUE(differs([](EpisodeParams& p) { p.start_offset.dx_m = 0.001; }));
+  EXPECT_TRUE(differs([](EpisodeParams& p) { p.goal_offset.dyaw_deg = 1.0; }));
+}
+
+std::vector<std::string> idsOf(const std::string& axes) {
+  const SweepSpec spec = parseSweepSpec(testing::studySpec(axes), "spec.yaml", "");
+  const std::vector<SweepWorld> worlds = loadSweepWorlds(spec);
+  std::vector<std::string> ids;
+  for (const SweepEpisode& e : expandEpisodes(spec, worlds)) ids.push_back(e.id);
+  return ids;
+}
+
+TEST(EpisodeExpansion, IdsDependOnParametersNotOnTheirPositionInTheSpec) {
+  const std::vector<std::string> a = idsOf("planners: [rrt, rrt-connect]\nseeds: [1, 2, 3]\n");
+  const std::vector<std::string> b = idsOf("planners: [rrt-connect, rrt]\nseeds: [3, 1, 2]\n");
+  EXPECT_EQ(a.size(), 6u);
+  EXPECT_EQ(a, b);  // canonical order: ascending id
+  EXPECT_TRUE(std::is_sorted(a.begin(), a.end()));
+  // A larger sweep holds the same episodes under the same ids.
+  const std::vector<std::string> c =
+      idsOf("planners: [rrt, rrt-connect, rrt-star]\nseeds: {from: 1, to: 4}\n");
+  for (const std::string& id : a) {
+    EXPECT_NE(std::find(c.begin(), c.end(), id), c.end()) << id;
+  }
+}
+
+TEST(EpisodeSetup, AppliesOffsetsAndRejectsOnesThatLeaveTheLot) {
+  const SweepWorld sweep_world{loadScenario(PARKSIM_SOURCE_DIR "/worlds/head_in.yaml"), {}};
+  const Scenario& world = sweep_world.scenario;
+  EpisodeParams p;
+  p.world = world.name;
+  p.start_offset = {0.01, -0.02, 0.0};
+  p.goal_offset = {0.0, 0.0, 90.0};
+  p.tracking = "open";
+  p.seed = 9;
+  p.realism = "lab";
+  p.noise_seed = 4;
+  p.timing = "study";
+  ToleranceOverrides overrides;
+  overrides.goal_pos_err_m = 0.01;
+  const EpisodeSetup s = setupEpisode(p, sweep_world, overrides);
+  EXPECT_DOUBLE_EQ(s.scenario.start.x, world.start.x + 0.01);
+  EXPECT_DOUBLE_EQ(s.scenario.start.y, world.start.y - 0.02);
+  EXPECT_NEAR(std::remainder(s.scenario.goal.pose.theta - world.goal.pose.theta - kPi / 2, 2 * kPi),
+              0.0, 1e-12);
+  EXPECT_EQ(s.plan.planner.seed, 9u);
+  EXPECT_EQ(s.execution.tracking, TrackingMode::kOpen);
+  EXPECT_EQ(s.execution.realism.name, "lab");
+  EXPECT_EQ(s.execution.noise_seed, 4u);
+  EXPECT_EQ(s.plan.timing, TimingKind::kStudy);
+  EXPECT_EQ(s.tolerance.goal_pos_err_m, 0.01);
+  EXPECT_EQ(s.tolerance.max_pos_err_m, TrackingTolerance{}.max_pos_err_m);
+  // "world" keeps the world's realism (none here: the ideal robot).
+  p.realism = "world";
+  EXPECT_EQ(setupEpisode(p, sweep_world, {}).execution.realism.name, "ideal");
+  p.start_offset = {5.0, 0.0, 0.0};
+  EXPECT_THROW((void)setupEpisode(p, sweep_world, {}), Error);
+}
+
+}  // namespace
+}  // namespace parksim

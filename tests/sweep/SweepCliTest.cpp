@@ -1,0 +1,144 @@
+// `parksim sweep`, `merge` and `report` end to end, including a real kill in the middle.
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <map>
+#include <thread>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/RunParksim.h"
+#include "tests/sweep/SweepTestSupport.h"
+
+namespace parksim {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::runParksim;
+using testing::scratchDir;
+using testing::slurp;
+using testing::studySpec;
+using testing::writeText;
+
+std::size_t lines(const std::string& path) {
+  const std::string t = slurp(path);
+  return static_cast<std::size_t>(std::count(t.begin(), t.end(), '\n'));
+}
+
+std::map<std::string, int> idCounts(const std::string& jsonl) {
+  std::map<std::string, int> counts;
+  std::size_t start = 0;
+  const std::string text = slurp(jsonl);
+  while (start < text.size()) {
+    const std::size_t nl = text.find('\n', start);
+    const auto row = nlohmann::json::parse(text.substr(start, nl - start));
+    ++counts[row["episode_id"].get<std::string>()];
+    start = nl + 1;
+  }
+  return counts;
+}
+
+TEST(SweepCli, BadSpecExitsTwoWithALocatedErrorAndWritesNothing) {
+  const std::string dir = scratchDir();
+  writeText(dir + "/bad.yaml", studySpec("planners: [rrt, nope]\n"));
+  const auto r = runParksim("sweep " + dir + "/bad.yaml --out " + dir + "/out");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("bad.yaml:4: planners[1]: unknown planner 'nope'"), std::string::npos)
+      << r.out;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
+TEST(SweepCli, SurvivesAKillAndCompletesEachEpisodeOnceThenReports) {
+  const std::string dir = scratchDir();
+  writeText(dir + "/spec.yaml", studySpec("seeds: {from: 1, to: 6}\n"));
+  const std::string out = dir + "/out";
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    const int devnull = ::open("/dev/null", O_WRONLY);
+    dup2(devnull, 1);
+    dup2(devnull, 2);
+    execl(PARKSIM_EXE, PARKSIM_EXE, "sweep", (dir + "/spec.yaml").c_str(), "--out", out.c_str(),
+          "--workers", "1", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Kill it once it has written a row (or whenever it gets there: the assertions hold either way).
+  for (int i = 0; i < 4000 && lines(out + "/results.jsonl") < 2; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  kill(child, SIGKILL);
+  int status = 0;
+  waitpid(child, &status, 0);
+
+  const auto again = runParksim("sweep " + dir + "/spec.yaml --out " + out + " --workers 2");
+  EXPECT_EQ(again.exit_code, 0) << again.out;
+  const std::map<std::string, int> counts = idCounts(out + "/results.jsonl");
+  EXPECT_EQ(counts.size(), 6u);
+  for (const auto& [id, n] : counts) EXPECT_EQ(n, 1) << id;
+  EXPECT_EQ(lines(out + "/results.csv"), 7u);
+
+  const auto report = runParksim("report " + out);
+  EXPECT_EQ(report.exit_code, 0) << report.out;
+  for (const char* f : {"summary.md", "summary.csv", "success_matrix.png", "tracking_error.png",
+                        "plan_time.png", "path_length.png", "duration.png"}) {
+    EXPECT_TRUE(fs::exists(out + "/report/" + f)) << f;
+  }
+  EXPECT_NE(
+      slurp(out + "/report/summary.md").find("| head_in | rrt-goal-connect | world | 6 | 6/6"),
+      std::string::npos);
+#ifdef PARKSIM_HAVE_BENCH
+  // Planner Arena's reader: one run line and one progress line (cost over time) per episode.
+  const std::string log = slurp(out + "/report/ompl_head_in.log");
+  EXPECT_NE(log.find("6 runs per planner"), std::string::npos) << log;
+  EXPECT_NE(log.find("2 progress properties for each run\nbest cost REAL\ntime REAL\n6 runs\n"),
+            std::string::npos)
+      << log;
+#endif
+}
+
+TEST(SweepCli, ExitsOneWhenAnEpisodeMissesItsToleranceAndShardsMerge) {
+  const std::string dir = scratchDir();
+  // A 0.1 um bound on the tracking error: every episode runs and misses it.
+  writeText(dir + "/spec.yaml",
+            studySpec("seeds: [1, 2, 3, 4]\ntolerance: {max_pos_err_m: 1.0e-7}\n"));
+  const std::string out = dir + "/out";
+  for (int i = 0; i < 2; ++i) {
+    const auto r = runParksim("sweep " + dir + "/spec.yaml --out " + out + "/shards/" +
+                              std::to_string(i) + " --shard " + std::to_string(i) + "/2");
+    EXPECT_EQ(r.exit_code, 1) << r.out;
+    EXPECT_NE(r.out.find("tracking tolerance not met: max_pos_err_m"), std::string::npos) << r.out;
+  }
+  const auto merged = runParksim("merge " + out);
+  EXPECT_EQ(merged.exit_code, 0) << merged.out;
+  EXPECT_NE(merged.out.find("4 episodes of 4 expected, 0 missing"), std::string::npos)
+      << merged.out;
+  EXPECT_EQ(lines(out + "/results.csv"), 5u);
+  fs::remove_all(out + "/shards/1");
+  const auto partial = runParksim("merge " + out);
+  EXPECT_EQ(partial.exit_code, 1);
+  EXPECT_NE(partial.out.find("2 missing"), std::string::npos) << partial.out;
+}
+
+TEST(SweepCli, SlurmWritesAResubmittableArrayScript) {
+  const std::string dir = scratchDir();
+  writeText(dir + "/spec.yaml", studySpec("seeds: {from: 1, to: 5}\n"));
+  const auto r = runParksim("sweep " + dir + "/spec.yaml --out " + dir +
+                            "/out --slurm --slurm-shards 3 --slurm-time 00:10:00 "
+                            "--slurm-partition debug");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string script = slurp(dir + "/out/sweep.sbatch");
+  EXPECT_NE(script.find("#SBATCH --array=0-2\n"), std::string::npos) << script;
+  EXPECT_NE(script.find("#SBATCH --time=00:10:00\n"), std::string::npos);
+  EXPECT_NE(script.find("#SBATCH --partition=debug\n"), std::string::npos);
+  EXPECT_NE(script.find("--shard \"$shard/3\""), std::string::npos);
+  EXPECT_TRUE(fs::is_directory(dir + "/out/logs"));
+  EXPECT_FALSE(fs::exists(dir + "/out/results.jsonl"));  // nothing ran
+}
+
+}  // namespace
+}  // namespace parksim
