@@ -61,7 +61,7 @@ TEST_F(Cli, PlanWritesAConsistentTrajectoryAndSummary) {
     const auto plan = nlohmann::json::parse(slurp(out / "plan.json"));
     EXPECT_EQ(plan["status"], "solved");
     EXPECT_EQ(plan["seed"], 3);
-    EXPECT_EQ(plan["planner"], "rrt-goal-connect");
+    EXPECT_EQ(plan["planner"], "hybrid-a-star");  // the default since issue 9
     EXPECT_LE(plan["final_pos_err_m"].get<double>(), 0.001);
     EXPECT_LE(plan["final_heading_err_deg"].get<double>(), 0.5);
     EXPECT_NEAR(plan["path_length_m"].get<double>(), t.pathLength(s.robot), 1e-9);
@@ -134,8 +134,8 @@ TEST_F(Cli, BenchWritesTheCsvWithItsRequiredColumns) {
                              "length_m", "cusps", "min_clearance_m"}) {
     EXPECT_NE(header.find(column), std::string::npos) << column;
   }
-  // 2 seeds x (2 parksim planners x 2 steering functions + 1 OMPL planner) rows.
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * (2 * 2 + 1)) << csv;
+  // 2 seeds x (2 parksim planners x 3 steering functions + 1 OMPL planner) rows.
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * (2 * 3 + 1)) << csv;
   EXPECT_NE(csv.find("\nompl,"), std::string::npos);
   EXPECT_NE(csv.find("\nparksim,"), std::string::npos);
   const std::string summary = slurp(out / "summary.md");
@@ -166,7 +166,7 @@ TEST_F(Cli, RunWithFramesFilmsTheEpisodeAndDrawsTheFigures) {
   }
   EXPECT_GE(figures, 4);
   EXPECT_TRUE(fs::exists(out / "figures" / "tracking_error.png"));
-  EXPECT_TRUE(fs::exists(out / "figures" / "plan_rrt-goal-connect.png"));
+  EXPECT_TRUE(fs::exists(out / "figures" / "plan_hybrid-a-star.png"));  // the default planner
 }
 
 TEST_F(Cli, BadInputToRunLeavesAnEarlierRunsOutputsAlone) {

@@ -48,7 +48,9 @@ TEST_P(DefaultPlanning, SolvesWithAValidPlanWithinTheHeadroom) {
   if (name == "head_in" || name == "parallel") {
     EXPECT_LE(r.trajectory.duration(), 1.5 * r.duration_lower_bound_s);
   }
-  if (name == "tight_parallel") EXPECT_GE(r.trajectory.cusps(s.robot), 2);
+  if (name == "tight_parallel") {
+    EXPECT_GE(r.trajectory.cusps(s.robot), 2);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Worlds, DefaultPlanning,

@@ -371,13 +371,16 @@ TEST(TreePlanner, NamesRoundTripAndUnknownNamesThrow) {
 TEST(TreePlanner, RejectsBadDefinitions) {
   const Scenario s = testing::studyLot();
   const SatChecker checker(s);
+  // The tree planner's definition (PlanSetup's default planner is hybrid-a-star).
   PlanSetup setup;
+  setup.planner.kind = PlannerKind::kRrtGoalConnect;
   setup.planner.extend_distance_m = 0.0;
   EXPECT_THROW(planScenario(s, checker, setup), Error);
   setup = {};
   setup.planner.cusp_penalty_m = -1.0;
   EXPECT_THROW(planScenario(s, checker, setup), Error);
   setup = {};
+  setup.planner.kind = PlannerKind::kRrtGoalConnect;
   setup.planner.smoothing_attempts = -1;
   EXPECT_THROW(planScenario(s, checker, setup), Error);
 }

@@ -1,5 +1,6 @@
-// The users' CI contract: plans for the study's two worlds (and issue 9's tight slot), driven closed loop, meet the
-// tracking tolerance; driven open loop, their errors stay within a documented bound.
+// The users' CI contract: plans for the study's two worlds (and issue 9's tight slot), driven
+// closed loop, meet the tracking tolerance; driven open loop, their errors stay within a documented
+// bound.
 
 #include <cstdio>
 #include <map>
@@ -134,8 +135,7 @@ INSTANTIATE_TEST_SUITE_P(Sim, StudyWorlds,
 
 // Issue 9: the tight parallel slot (35 mm longer than the robot), planned with the defaults
 // (a multi-reversal Hybrid A* manoeuvre), parks without contact and within the tolerance.
-INSTANTIATE_TEST_SUITE_P(Hard, StudyWorlds, ::testing::Values(Case{"tight_parallel", 1}),
-                         caseName);
+INSTANTIATE_TEST_SUITE_P(Hard, StudyWorlds, ::testing::Values(Case{"tight_parallel", 1}), caseName);
 
 }  // namespace
 }  // namespace parksim
