@@ -36,6 +36,13 @@ void appendShortest(std::string& out, double value) {
   out.append(buf, ec == std::errc() ? end : buf);
 }
 
+void appendRoundTrip(std::string& out, double value) {
+  char buf[64];
+  const auto [end, ec] =
+      std::to_chars(buf, buf + sizeof buf, value, std::chars_format::general, 17);
+  out.append(buf, ec == std::errc() ? end : buf);
+}
+
 std::string formatFixed(double value, int decimals) {
   if (decimals < 0) decimals = 0;
   if (decimals > 30) decimals = 30;

@@ -16,6 +16,11 @@ std::string formatShortest(double value);
 /// Appends formatShortest(value) to `out` without a temporary (for large files).
 void appendShortest(std::string& out, double value);
 
+/// Appends `value` with 17 significant digits, as printf("%.17g") in the C locale: enough to
+/// read back exactly, and the digits parksim's CSV files have always had, so a plan executed
+/// again writes the same bytes as before the files became locale-independent.
+void appendRoundTrip(std::string& out, double value);
+
 /// Fixed notation with `decimals` digits after the point, as printf("%.*f").
 std::string formatFixed(double value, int decimals);
 

@@ -58,7 +58,7 @@ void writeTrajectoryCsv(const std::string& path, const Trajectory& traj, const R
         tw.v_mps, tw.omega_radps};
     for (std::size_t i = 0; i < std::size(values); ++i) {
       if (i > 0) out += ',';
-      appendShortest(out, values[i]);
+      appendRoundTrip(out, values[i]);
     }
     out += '\n';
   }

@@ -36,7 +36,7 @@ std::string executedCsv(const std::vector<ExecutedRow>& rows, bool realism_colum
                              r.heading_err_rad};
     for (std::size_t i = 0; i < std::size(values); ++i) {
       if (i > 0) out += ',';
-      appendShortest(out, values[i]);
+      appendRoundTrip(out, values[i]);
     }
     if (realism_columns) {
       const double extra[] = {r.estimate.x,
@@ -54,7 +54,7 @@ std::string executedCsv(const std::vector<ExecutedRow>& rows, bool realism_colum
                               r.encoder_rad.right_radps};
       for (const double v : extra) {
         out += ',';
-        appendShortest(out, v);
+        appendRoundTrip(out, v);
       }
     }
     out += '\n';
@@ -75,7 +75,7 @@ std::string sensorsCsv(const std::vector<PoseMeasurement>& samples, double time_
                              m.pose.theta};
     for (std::size_t i = 0; i < std::size(values); ++i) {
       if (i > 0) out += ',';
-      appendShortest(out, values[i]);
+      appendRoundTrip(out, values[i]);
     }
     out += '\n';
   }

@@ -3,6 +3,7 @@
 #include "parksim/core/NumberFormat.h"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <random>
 
@@ -100,3 +101,17 @@ TEST(Csv, ErrorsNameFileLineAndColumn) {
 
 }  // namespace
 }  // namespace parksim
+
+// The CSV files' digits: printf's %.17g in the C locale, whatever the process locale is.
+TEST(NumberFormat, RoundTripWritesSeventeenSignificantDigitsLikePrintf) {
+  for (const double v : {0.1, -3.0, 1e-300, 123456.789, 2.0 / 3.0, 1e21, -0.0}) {
+    std::string out;
+    appendRoundTrip(out, v);
+    char expected[64];
+    std::snprintf(expected, sizeof expected, "%.17g", v);
+    EXPECT_EQ(out, expected);
+    double back = 0.0;
+    ASSERT_TRUE(parseDouble(out, back));
+    EXPECT_EQ(back, v);
+  }
+}
