@@ -8,6 +8,7 @@
 
 #include "app/PlanOutput.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/Provenance.h"
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/EpisodeFiles.h"
@@ -22,7 +23,7 @@ namespace {
 // as plan_<key>.<sub>, arrays left out.
 void addPlanKeys(nlohmann::json& metrics, const nlohmann::json& summary) {
   for (const auto& [key, value] : summary.items()) {
-    if (value.is_array()) continue;
+    if (value.is_array() || key == "provenance") continue;
     if (value.is_object()) {
       for (const auto& [sub, inner] : value.items()) metrics["plan_" + key + "." + sub] = inner;
     } else {
@@ -108,6 +109,9 @@ RunOutcome runWorld(const World& world, const py::object& plan, const py::object
   out.metrics["world"] = scenario.source_path;
   out.metrics["scenario"] = scenario.name;
   addPlanKeys(out.metrics, plan_summary);
+  for (const auto& [key, value] : provenanceToJson(buildProvenance()).items()) {
+    out.metrics["provenance." + key] = value;
+  }
   out.ran = true;
   return out;
 }

@@ -62,8 +62,8 @@ def test_run_is_bit_identical_to_parksim_run(tmp_path, head_in, head_in_path, tr
     # Wall-clock measurements differ from run to run; everything else must match.
     timing = {k for k in cli if k in ("wall_time_s", "real_time_factor", "plan_planning_time_s",
                                        "plan_first_solution_s") or k.startswith("plan_phase")}
-    # metrics.json also summarises --realisations (realisation.*, realisations.*) and the
-    # tolerance it checked; every key run() reports is one of its keys, with the same value.
+    # metrics.json also has the tolerance it checked (tolerance.*); every key run() reports is
+    # one of its keys, with the same value.
     assert set(result.metrics) <= set(cli)
     assert {"max_pos_err_m", "goal_reached", "steps", "plan_path_length_m"} <= set(result.metrics)
     for key in set(result.metrics) - timing:
