@@ -1,9 +1,12 @@
 #include "parksim/planner/PlanScenario.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include "parksim/core/Error.h"
+#include "parksim/planner/SpeedProfile.h"
 
 namespace parksim {
 
@@ -28,8 +31,58 @@ SteeringKind steeringKindFromString(const std::string& name) {
   throw Error("unknown steering '" + name + "' (expected one of " + known + ")");
 }
 
+void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup) {
+  const RobotDef& robot = scenario.robot;
+  auto refuse = [](const std::string& what, double periods) {
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "%s needs %.3g control periods, more than the limit of %.0f per trajectory "
+                  "(docs/limits.md)",
+                  what.c_str(), periods, kMaxProfilePeriods);
+    throw Error(text);
+  };
+  if (setup.steering_kind == SteeringKind::kMoveToPose) {
+    const MoveToPoseDef& d = setup.steering;
+    const double periods = d.max_duration_s / d.period_s;
+    if (!(periods <= kMaxProfilePeriods)) refuse("move-to-pose steering (max_duration_s)", periods);
+    return;
+  }
+  const RotateTranslateRotateDef& d = setup.rotate_translate_rotate;
+  const double wheel_max = d.speed_fraction * robot.max_wheel_speed_radps;
+  const double wheel_step = d.accel_fraction * robot.max_wheel_accel_radps2 * d.period_s;
+  if (!(wheel_max > 0.0) || !(wheel_step > 0.0) || !(d.period_s > 0.0)) {
+    throw Error(
+        "rotate-translate-rotate steering: wheel speed, acceleration and period must be "
+        "positive");
+  }
+  const double r = robot.wheel_radius_m;
+  const double half_base = 0.5 * robot.wheel_base_m;
+  const double diagonal = std::hypot(scenario.lot.x_max_m - scenario.lot.x_min_m,
+                                     scenario.lot.y_max_m - scenario.lot.y_min_m);
+  char what[300];
+  const double brake = wheel_max / wheel_step;
+  std::snprintf(what, sizeof what,
+                "rotate-translate-rotate steering: braking from %g rad/s at %g rad/s^2", wheel_max,
+                wheel_step / d.period_s);
+  if (!(brake <= kMaxProfilePeriods)) refuse(what, brake);
+  const double turn =
+      restToRestPeriods(kPi, wheel_max * r / half_base, wheel_step * r / half_base, d.period_s);
+  std::snprintf(
+      what, sizeof what,
+      "rotate-translate-rotate steering: a half turn (wheel radius %g m, wheel base %g m)", r,
+      robot.wheel_base_m);
+  if (!(turn <= kMaxProfilePeriods)) refuse(what, turn);
+  const double cross = restToRestPeriods(diagonal, wheel_max * r, wheel_step * r, d.period_s);
+  std::snprintf(what, sizeof what,
+                "rotate-translate-rotate steering: a straight move across the lot (%g m, wheel "
+                "radius %g m)",
+                diagonal, r);
+  if (!(cross <= kMaxProfilePeriods)) refuse(what, cross);
+}
+
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
                         const PlanSetup& setup) {
+  checkPlanningLimits(scenario, setup);
   std::unique_ptr<SteeringFunction> steering;
   switch (setup.steering_kind) {
     case SteeringKind::kMoveToPose: {

@@ -40,6 +40,13 @@ struct PlanSetup {
   MotionValidatorDef validation;
 };
 
+/// Refuses, before any work, a setup whose steering would build unbounded trajectories in this
+/// scenario: rotate-translate-rotate profiles (a straight move across the lot's diagonal, a
+/// half turn, braking from full speed) or a move-to-pose trajectory longer than
+/// kMaxProfilePeriods control periods. Throws Error with one line naming the values and the
+/// limit (docs/limits.md). planScenario calls it first.
+void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup);
+
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
                         const PlanSetup& setup);
 

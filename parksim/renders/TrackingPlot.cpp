@@ -9,6 +9,7 @@
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/InputFile.h"
 
 namespace parksim {
 
@@ -182,10 +183,13 @@ Scene buildTrackingPlot(const TrackingSeries& series, const std::string& title, 
 }
 
 TrackingSeries readTrackingCsv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(path + ": cannot open");
+  // Regular files only, at most 512 MiB (an executed.csv of the longest episode, docs/limits.md).
+  std::istringstream in(readInputFile(path, 512u << 20, "executed file"));
   std::string line;
   if (!std::getline(in, line)) throw Error(path + ": empty file, expected a header row");
+  // Lines are split into cells: a line of a million commas must not become a million strings.
+  constexpr std::size_t kMaxLine = 4096;
+  if (line.size() > kMaxLine) throw Error(path + ":1: line longer than 4096 bytes");
   auto split = [](const std::string& s) {
     std::vector<std::string> cells;
     std::stringstream ss(s);
@@ -219,6 +223,7 @@ TrackingSeries readTrackingCsv(const std::string& path) {
   TrackingSeries series;
   int line_no = 1;
   while (std::getline(in, line)) {
+    if (line.size() > kMaxLine) throw Error(path + ": line longer than 4096 bytes");
     ++line_no;
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     const std::vector<std::string> cells = split(line);

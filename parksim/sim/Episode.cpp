@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
@@ -25,7 +26,8 @@ double goalHeadingError(const GoalRegion& goal, double theta) {
   return err;
 }
 
-const ExecutionDef& validated(const ExecutionDef& def) {
+const ExecutionDef& validated(const Scenario& scenario, const Trajectory& plan,
+                              const ExecutionDef& def) {
   auto fail = [](const char* what) { throw Error(std::string("execution: ") + what); };
   if (!(def.rest_speed_mps > 0.0)) fail("rest_speed_mps must be positive");
   if (!(def.rest_yaw_rate_radps > 0.0)) fail("rest_yaw_rate_radps must be positive");
@@ -33,15 +35,39 @@ const ExecutionDef& validated(const ExecutionDef& def) {
   if (!(def.max_stop_time_s >= 0.0)) fail("max_stop_time_s must not be negative");
   if (!(def.contact_merge_s >= 0.0)) fail("contact_merge_s must not be negative");
   if (def.csv_stride_steps < 1) fail("csv_stride_steps must be at least 1");
+  checkEpisodeLimits(scenario, plan, def);
   return def;
 }
 
 }  // namespace
 
+double checkEpisodeLimits(const Scenario& scenario, const Trajectory& plan,
+                          const ExecutionDef& def) {
+  if (plan.empty()) throw Error("execution: the plan is empty");
+  const double dt = scenario.physics.time_step_s;
+  const double duration = plan.duration();
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw Error("execution: physics.time_step_s must be positive");
+  if (!std::isfinite(plan.points.front().t_s) || !std::isfinite(duration) || duration < 0.0) {
+    throw Error("execution: the plan's times must be finite and increasing");
+  }
+  // In double, so no duration or step reaches an out-of-range conversion to an integer.
+  const double steps = std::ceil((duration + def.max_stop_time_s) / dt - 1e-9);
+  if (!(steps <= def.max_steps)) {
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "execution: the episode needs %.4g physics steps (plan %.6g s + stop %.6g s at "
+                  "physics.time_step_s %.6g s), more than the limit of %.4g (docs/limits.md)",
+                  steps, duration, def.max_stop_time_s, dt, def.max_steps);
+    throw Error(text);
+  }
+  return steps;
+}
+
 struct Episode::Impl {
   Impl(const Scenario& s, const Trajectory& plan, const ExecutionDef& d, const SimModelDef& m)
       : scenario(s),
-        def(validated(d)),
+        def(validated(s, plan, d)),
         reference(plan, s.robot),
         world(s, plan.points.front().pose, m),
         dt(world.timeStep()),
