@@ -22,6 +22,10 @@
 
 #include <vector>
 
+#include "app/OptionChecks.h"
+#include "app/OutputDir.h"
+#include "app/PlanOutput.h"
+#include "app/TerminalText.h"
 #include "bench/ompl/OmplLog.h"
 #include "bench/ompl/OmplPlanners.h"
 #include "bench/planning/BenchCsv.h"
@@ -144,7 +148,14 @@ int runBench(const BenchOptions& o) {
   }
   std::vector<Scenario> scenarios;
   for (const std::string& path : o.worlds) scenarios.push_back(loadScenario(path));
-  ensureDirectory(o.out);
+  for (const Scenario& scenario : scenarios) {
+    for (SteeringKind steering : steerings) {
+      PlanSetup setup;
+      setup.steering_kind = steering;
+      checkPlanningLimits(scenario, setup);
+    }
+  }
+  OutputDir out(o.out);
 
   const double load_before = loadAverage();
   std::printf("parksim bench: %zu world(s), seeds 1..%d, load average %.2f at start\n",
@@ -193,8 +204,8 @@ int runBench(const BenchOptions& o) {
         }
       }
       if (seed % 10 == 0 || seed == o.seeds) {
-        std::fprintf(stderr, "  %s: seed %d/%d done, %.1f s\n", scenario.name.c_str(), seed,
-                     o.seeds, std::chrono::duration<double>(Clock::now() - t0).count());
+        std::fprintf(stderr, "  %s: seed %d/%d done, %.1f s\n", printable(scenario.name).c_str(),
+                     seed, o.seeds, std::chrono::duration<double>(Clock::now() - t0).count());
       }
     }
     world_seconds.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
@@ -202,7 +213,7 @@ int runBench(const BenchOptions& o) {
   const double load_after = loadAverage();
 
   const std::string csv_path = o.out + "/bench.csv";
-  bench::writeBenchCsv(csv_path, all);
+  bench::writeBenchCsv(out.path() + "/bench.csv", all);
 
   const std::vector<bench::GroupSummary> groups = bench::summarize(all);
   std::string summary = "## Runs\n\n" + bench::formatSummaryTable(groups);
@@ -224,9 +235,10 @@ int runBench(const BenchOptions& o) {
   std::snprintf(load_line, sizeof load_line, "\nLoad average %.2f at start, %.2f at end.\n",
                 load_before, load_after);
   summary += load_line;
-  writeFileAtomically(o.out + "/summary.md", summary);
-  std::printf("\n%s\nwrote %s and %s/summary.md\n", summary.c_str(), csv_path.c_str(),
-              o.out.c_str());
+  writeFileAtomically(out.path() + "/summary.md", summary);
+  out.commit();
+  std::printf("\n%s\nwrote %s and %s/summary.md\n", printableLines(summary).c_str(),
+              printable(csv_path).c_str(), printable(o.out).c_str());
 
   if (!o.ompl_log.empty()) {
     for (std::size_t w = 0; w < scenarios.size(); ++w) {
@@ -251,19 +263,6 @@ int runBench(const BenchOptions& o) {
   return 0;
 }
 
-// CLI11's PositiveNumber prints its whole range (up to DBL_MAX) when it rejects a value.
-CLI::Validator positive() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        try {
-          if (std::stod(text) > 0.0) return "";
-        } catch (const std::exception&) {
-        }
-        return "must be a positive number, got " + text;
-      },
-      "POSITIVE");
-}
-
 }  // namespace
 
 CommandRunner setupBenchCommand(CLI::App& sub) {
@@ -271,7 +270,7 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("worlds", opt->worlds, "world files (YAML, see docs/world-format.md)")->required();
   sub.add_option("--seeds", opt->seeds, "runs per planner and world, with seeds 1..N")
       ->capture_default_str()
-      ->check(positive());
+      ->check(integerIn(1, 100'000));
   sub.add_option("--planners", opt->planners,
                  "parksim planners, comma-separated (default: every planner kind; none: OMPL only)")
       ->delimiter(',');
@@ -283,11 +282,11 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("--max-iterations", opt->max_iterations,
                  "iteration budget of parksim's first-solution runs")
       ->capture_default_str()
-      ->check(positive());
+      ->check(integerIn(1, kMaxPlannerIterations));
   sub.add_option("--anytime-s", opt->anytime_s,
                  "wall-time budget of the extra run of parksim's anytime planners (RRT*), s")
       ->capture_default_str()
-      ->check(positive());
+      ->check(realIn(0.0, 3600.0, true));
   sub.add_flag("--ompl", opt->ompl, "also run OMPL's planners on the same footprint checker");
   sub.add_option("--ompl-planners", opt->ompl_planners, "OMPL planners, comma-separated")
       ->delimiter(',')
@@ -299,15 +298,15 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("--budget-s", opt->budget_s,
                  "OMPL's wall-time limit per run, s (RRT* improves its path until then)")
       ->capture_default_str()
-      ->check(positive());
+      ->check(realIn(0.0, 3600.0, true));
   sub.add_option("--turning-radius", opt->turning_radius_m,
                  "Reeds-Shepp minimum turning radius for OMPL, m")
       ->capture_default_str()
-      ->check(positive());
+      ->check(realIn(0.0, 1000.0, true));
   sub.add_option("--segment", opt->segment_m,
                  "longest motion OMPL's motion validator leaves unchecked (state-space distance)")
       ->capture_default_str()
-      ->check(positive());
+      ->check(realIn(1e-6, 1.0));
   sub.add_option("--out", opt->out, "output directory for bench.csv and summary.md")
       ->capture_default_str();
   sub.add_option("--ompl-log", opt->ompl_log,

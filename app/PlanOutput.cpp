@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "app/OptionChecks.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 
@@ -26,17 +27,17 @@ void PlanCliOptions::addTo(CLI::App& sub) {
   sub.add_option("--steering", steering,
                  "steering function, one of: " + namesOf(allSteeringKinds()))
       ->capture_default_str();
-  // CLI11 would wrap "-3" into a 64-bit unsigned seed; refuse it instead.
+  // CLI11 would wrap "-3" and clamp 2^64 into a 64-bit unsigned seed; refuse both instead.
   sub.add_option("--seed", seed, "seed of the planner's random number generator")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(unsigned64());
   sub.add_option("--max-iterations", max_iterations, "iteration budget of the tree search")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(integerIn(0, kMaxPlannerIterations));
   sub.add_flag("--smooth", smooth, "shortcut-smooth the plan (study 3(c)(3))");
   sub.add_option("--smoothing-attempts", smoothing_attempts, "random shortcuts tried by --smooth")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(integerIn(0, kMaxSmoothingAttempts));
 }
 
 PlanSetup PlanCliOptions::toSetup(const Scenario&) const {
@@ -106,6 +107,10 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
   return j;
 }
 
+std::string jsonText(const nlohmann::json& j) {
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
 void writePlanFiles(const std::string& dir, const Scenario& scenario, const PlanSetup& setup,
                     const PlanResult& result) {
   ensureDirectory(dir);
@@ -117,7 +122,7 @@ void writePlanFiles(const std::string& dir, const Scenario& scenario, const Plan
     std::error_code ec;
     std::filesystem::remove(traj_path, ec);
   }
-  writeFileAtomically(dir + "/plan.json", planSummary(scenario, setup, result).dump(2) + "\n");
+  writeFileAtomically(dir + "/plan.json", jsonText(planSummary(scenario, setup, result)));
 }
 
 }  // namespace parksim::app

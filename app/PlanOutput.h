@@ -12,6 +12,10 @@
 
 namespace parksim::app {
 
+/// Bounds of the planning options (docs/limits.md): the tree and its edges stay in memory.
+inline constexpr int kMaxPlannerIterations = 1'000'000;
+inline constexpr int kMaxSmoothingAttempts = 100'000;
+
 /// Options every planning command takes: --planner, --steering, --seed, --max-iterations,
 /// --smooth, --smoothing-attempts.
 struct PlanCliOptions {
@@ -33,6 +37,10 @@ struct PlanCliOptions {
 /// pose error.
 nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
                            const PlanResult& result);
+
+/// `j` as indented text with a final newline. Strings that are not UTF-8 (names and paths
+/// from input files) are written with U+FFFD in place of their bad bytes instead of failing.
+std::string jsonText(const nlohmann::json& j);
 
 /// Writes DIR/trajectory.csv (only if solved) and DIR/plan.json, creating DIR.
 void writePlanFiles(const std::string& dir, const Scenario& scenario, const PlanSetup& setup,
