@@ -34,6 +34,8 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
+#include "parksim/core/Provenance.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/planner/TreePlanner.h"
 #include "parksim/scenario/ScenarioReader.h"
@@ -108,14 +110,12 @@ std::string logPathFor(const std::string& path, const std::string& scenario, boo
 }
 
 std::string settingsText(const BenchOptions& o) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "seeds 1..%d; parksim: max_iterations %d, anytime budget %g s; OMPL: %s, time "
-                "limit %g s, Reeds-Shepp turning radius %g m, motion-check segment %g m, "
-                "validity margin 0; exact path check at 0.2 mm, margin 0",
-                o.seeds, o.max_iterations, o.anytime_s, o.ompl ? "on" : "off", o.budget_s,
-                o.turning_radius_m, o.segment_m);
-  return buf;
+  return "seeds 1.." + std::to_string(o.seeds) + "; parksim: max_iterations " +
+         std::to_string(o.max_iterations) + ", anytime budget " + formatGeneral(o.anytime_s) +
+         " s; OMPL: " + (o.ompl ? "on" : "off") + ", time limit " + formatGeneral(o.budget_s) +
+         " s, Reeds-Shepp turning radius " + formatGeneral(o.turning_radius_m) +
+         " m, motion-check segment " + formatGeneral(o.segment_m) +
+         " m, validity margin 0; exact path check at 0.2 mm, margin 0";
 }
 
 int runBench(const BenchOptions& o) {
@@ -216,7 +216,8 @@ int runBench(const BenchOptions& o) {
   bench::writeBenchCsv(out.path() + "/bench.csv", all);
 
   const std::vector<bench::GroupSummary> groups = bench::summarize(all);
-  std::string summary = "## Runs\n\n" + bench::formatSummaryTable(groups);
+  std::string summary = "Built by " + versionLine(buildProvenance()) + ".\n\n## Runs\n\n" +
+                        bench::formatSummaryTable(groups);
   summary += "\n## Where parksim's planners spend their time (mean per run)\n\n" +
              bench::formatPhaseTable(groups);
   const std::string comparison = bench::formatComparison(groups);
@@ -231,10 +232,8 @@ int runBench(const BenchOptions& o) {
   summary += invalid.empty()
                  ? "\nEvery solved path passed parksim's exact path check (0.2 mm, margin 0).\n"
                  : "\n## Paths that failed parksim's exact path check\n\n" + invalid;
-  char load_line[160];
-  std::snprintf(load_line, sizeof load_line, "\nLoad average %.2f at start, %.2f at end.\n",
-                load_before, load_after);
-  summary += load_line;
+  summary += "\nLoad average " + formatFixed(load_before, 2) + " at start, " +
+             formatFixed(load_after, 2) + " at end.\n";
   writeFileAtomically(out.path() + "/summary.md", summary);
   out.commit();
   std::printf("\n%s\nwrote %s and %s/summary.md\n", printableLines(summary).c_str(),
@@ -250,7 +249,8 @@ int runBench(const BenchOptions& o) {
       info.experiment = "parksim_" + scenarios[w].name;
       info.host = hostName();
       info.start_time = start_time;
-      info.setup = "world " + scenarios[w].source_path + "\n" + settingsText(o) + "\n";
+      info.setup = "world " + scenarios[w].source_path + "\n" + settingsText(o) + "\n" +
+                   versionLine(buildProvenance()) + "\n";
       info.cpu_info = cpuInfo();
       info.time_limit_s = o.ompl ? std::max(o.budget_s, o.anytime_s) : o.anytime_s;
       info.runs_per_planner = o.seeds;

@@ -1,27 +1,22 @@
 #include "app/FigureInputs.h"
 
-#include <cstdio>
-
+#include "parksim/core/NumberFormat.h"
 #include "parksim/planner/MoveToPoseSteering.h"
 
 namespace parksim::app {
 
 std::string planCaption(const Scenario& scenario, const PlanSetup& setup,
                         const PlanResult& result) {
-  char buf[256];
+  const std::string head = scenario.name + ", " + toString(setup.planner.kind) + " (seed " +
+                           std::to_string(setup.planner.seed) + "): ";
   if (result.solved()) {
     const int cusps = result.trajectory.cusps(scenario.robot);
-    std::snprintf(buf, sizeof buf, "%s, %s (seed %llu): %d tree nodes, path %.2f m, %d cusp%s",
-                  scenario.name.c_str(), toString(setup.planner.kind),
-                  static_cast<unsigned long long>(setup.planner.seed), result.stats.tree_size,
-                  result.trajectory.pathLength(scenario.robot), cusps, cusps == 1 ? "" : "s");
-  } else {
-    std::snprintf(buf, sizeof buf, "%s, %s (seed %llu): %s after %d iterations",
-                  scenario.name.c_str(), toString(setup.planner.kind),
-                  static_cast<unsigned long long>(setup.planner.seed), toString(result.status),
-                  result.stats.iterations);
+    return head + std::to_string(result.stats.tree_size) + " tree nodes, path " +
+           formatFixed(result.trajectory.pathLength(scenario.robot), 2) + " m, " +
+           std::to_string(cusps) + (cusps == 1 ? " cusp" : " cusps");
   }
-  return buf;
+  return head + toString(result.status) + " after " + std::to_string(result.stats.iterations) +
+         " iterations";
 }
 
 PlanFigure planFigure(const Scenario& scenario, const PlanSetup& setup, const PlanResult& result) {

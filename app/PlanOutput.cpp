@@ -7,6 +7,8 @@
 #include "app/OptionChecks.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/Provenance.h"
+#include "parksim/sim/EpisodeFiles.h"
 
 namespace parksim::app {
 
@@ -34,10 +36,28 @@ void PlanCliOptions::addTo(CLI::App& sub) {
   sub.add_option("--max-iterations", max_iterations, "iteration budget of the tree search")
       ->capture_default_str()
       ->check(integerIn(0, kMaxPlannerIterations));
+  sub.add_option("--time-limit", time_limit_s,
+                 "wall-time budget of the search, s (0: none); the plan then depends on the "
+                 "machine's speed, so reproducible runs use --max-iterations alone")
+      ->capture_default_str()
+      ->check(realIn(0.0, 3600.0));
   sub.add_flag("--smooth", smooth, "shortcut-smooth the plan (study 3(c)(3))");
   sub.add_option("--smoothing-attempts", smoothing_attempts, "random shortcuts tried by --smooth")
       ->capture_default_str()
       ->check(integerIn(0, kMaxSmoothingAttempts));
+  sub.add_option("--timing", timing,
+                 "time-optimal: re-time the plan to the fastest wheel speeds within the limits "
+                 "(less the feedback headroom); study: keep the steering controller's timing")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"time-optimal", "study"}));
+  sub.add_option("--feedback-headroom", feedback_headroom,
+                 "share of the wheel-speed limit time-optimal plans leave to feedback, in [0, 1)")
+      ->capture_default_str()
+      ->check(realIn(0.0, 0.99));
+  sub.add_option("--turning-radius", turning_radius_m,
+                 "arc radius of reeds-shepp steering and of hybrid-a-star's primitives, m")
+      ->capture_default_str()
+      ->check(realIn(0.0, 100.0, true));
 }
 
 PlanSetup PlanCliOptions::toSetup(const Scenario&) const {
@@ -45,6 +65,10 @@ PlanSetup PlanCliOptions::toSetup(const Scenario&) const {
   setup.planner.kind = plannerKindFromString(planner);
   setup.planner.seed = seed;
   setup.planner.max_iterations = max_iterations;
+  setup.planner.max_time_s = time_limit_s;
+  setup.timing = timingKindFromString(timing);
+  setup.feedback_headroom = feedback_headroom;
+  setup.reeds_shepp.turning_radius_m = turning_radius_m;
   setup.planner.smooth = smooth;
   setup.planner.smoothing_attempts = smoothing_attempts;
   setup.steering_kind = steeringKindFromString(steering);
@@ -55,6 +79,7 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
                            const PlanResult& result) {
   const PhaseTimes& t = result.stats.times;
   nlohmann::json j = {
+      {"provenance", provenanceToJson(buildProvenance())},
       {"world", scenario.source_path},
       {"scenario", scenario.name},
       {"status", toString(result.status)},
@@ -65,6 +90,7 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
       {"smooth", setup.planner.smooth},
       {"seed", setup.planner.seed},
       {"max_iterations", setup.planner.max_iterations},
+      {"time_limit_s", setup.planner.max_time_s},
       {"iterations", result.stats.iterations},
       {"tree_size", result.stats.tree_size},
       {"goal_tree_size", result.stats.goal_tree_size},
@@ -83,7 +109,11 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
         {"goal_checks", t.goal_check_s},
         {"rewiring", t.rewiring_s},
         {"connection", t.connection_s},
-        {"smoothing", t.smoothing_s}}},
+        {"smoothing", t.smoothing_s},
+        {"heuristic", t.heuristic_s},
+        {"timing", t.timing_s}}},
+      {"timing", toString(setup.timing)},
+      {"feedback_headroom", setup.feedback_headroom},
   };
   if (result.stats.first_solution_iteration >= 0) {
     j["first_solution_s"] = result.stats.first_solution_s;
@@ -99,6 +129,11 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
     j["cost_m"] = result.cost;
     j["path_length_m"] = result.trajectory.pathLength(scenario.robot);
     j["duration_s"] = result.trajectory.duration();
+    j["duration_lower_bound_s"] = result.duration_lower_bound_s;
+    j["duration_over_lower_bound"] =
+        result.duration_lower_bound_s > 0.0
+            ? result.trajectory.duration() / result.duration_lower_bound_s
+            : 0.0;
     j["cusps"] = result.trajectory.cusps(scenario.robot);
     j["waypoints"] = result.waypoints.size();
     j["final_pos_err_m"] = positionDistance(end, scenario.goal.pose);

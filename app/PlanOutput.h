@@ -17,14 +17,19 @@ inline constexpr int kMaxPlannerIterations = 1'000'000;
 inline constexpr int kMaxSmoothingAttempts = 100'000;
 
 /// Options every planning command takes: --planner, --steering, --seed, --max-iterations,
-/// --smooth, --smoothing-attempts.
+/// --time-limit, --smooth, --smoothing-attempts, --timing, --feedback-headroom,
+/// --turning-radius.
 struct PlanCliOptions {
   std::string planner = "rrt-goal-connect";
   std::string steering = "move-to-pose";
   std::uint64_t seed = 1;
   int max_iterations = 2000;
+  double time_limit_s = 0.0;
   bool smooth = false;
   int smoothing_attempts = 100;
+  std::string timing = "time-optimal";
+  double feedback_headroom = 0.2;
+  double turning_radius_m = 0.05;
 
   /// Registers the options on `sub`.
   void addTo(CLI::App& sub);

@@ -6,6 +6,7 @@
 // tracking error <= 5 mm, ...); 1 otherwise, or when planning fails, with a one-line reason on
 // stderr; 2 on bad input.
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -20,9 +21,13 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
+#include "parksim/core/Provenance.h"
 #include "parksim/renders/Figures.h"
 #include "parksim/renders/FrameRecorder.h"
+#include "parksim/scenario/RealismReader.h"
 #include "parksim/scenario/ScenarioReader.h"
+#include "parksim/sim/Distribution.h"
 #include "parksim/sim/Episode.h"
 #include "parksim/sim/EpisodeFiles.h"
 #include "parksim/sim/TrackingTolerance.h"
@@ -35,7 +40,7 @@ namespace {
 // Arrays (the RRT* cost history) stay in plan.json: metrics.json is flat.
 void addPlanKeys(nlohmann::json& metrics, const nlohmann::json& summary) {
   for (const auto& [key, value] : summary.items()) {
-    if (value.is_array()) continue;
+    if (value.is_array() || key == "provenance") continue;
     if (value.is_object()) {
       for (const auto& [sub, inner] : value.items()) metrics["plan_" + key + "." + sub] = inner;
     } else {
@@ -65,38 +70,88 @@ Trajectory loadPlanFile(const std::string& path, const Scenario& scenario) {
   const Pose2& first = plan.points.front().pose;
   if (positionDistance(first, scenario.start) > 0.001 ||
       headingDistance(first, scenario.start) > degToRad(0.5)) {
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "%s: the plan starts at (%.4f, %.4f, %.2f deg), not at the world's start "
-                  "(%.4f, %.4f, %.2f deg)",
-                  path.c_str(), first.x, first.y, radToDeg(first.theta), scenario.start.x,
-                  scenario.start.y, radToDeg(scenario.start.theta));
-    throw Error(text);
+    auto pose = [](const Pose2& p) {
+      return "(" + formatFixed(p.x, 4) + ", " + formatFixed(p.y, 4) + ", " +
+             formatFixed(radToDeg(p.theta), 2) + " deg)";
+    };
+    throw Error(path + ": the plan starts at " + pose(first) + ", not at the world's start " +
+                pose(scenario.start));
   }
   return plan;
 }
 
 // Empty when the episode succeeded; otherwise the one line that says why.
-std::string failureReason(const Scenario& scenario, const EpisodeMetrics& m) {
-  char text[320];
+std::string failureReason(const Scenario& scenario, const EpisodeMetrics& m,
+                          const TrackingTolerance& tolerance) {
   if (m.contacts > 0) {
-    std::snprintf(text, sizeof text, "touched %s at %.3f s (%d contact event%s)",
-                  m.first_contact_body.c_str(), m.first_contact_t_s, m.contacts,
-                  m.contacts == 1 ? "" : "s");
-    return text;
+    return "touched " + m.first_contact_body + " at " + formatFixed(m.first_contact_t_s, 3) +
+           " s (" + std::to_string(m.contacts) + " contact event" + (m.contacts == 1 ? ")" : "s)");
   }
   if (!m.goal_reached) {
-    std::snprintf(text, sizeof text,
-                  "goal not reached: ended %.3f mm / %.3f deg from the goal (tolerance %.3f mm / "
-                  "%.3f deg)",
-                  m.goal_pos_err_m * 1e3, m.goal_heading_err_deg,
-                  scenario.goal.position_tolerance_m * 1e3,
-                  radToDeg(scenario.goal.heading_tolerance_rad));
-    return text;
+    return "goal not reached: ended " + formatFixed(m.goal_pos_err_m * 1e3, 3) + " mm / " +
+           formatFixed(m.goal_heading_err_deg, 3) + " deg from the goal (tolerance " +
+           formatFixed(scenario.goal.position_tolerance_m * 1e3, 3) + " mm / " +
+           formatFixed(radToDeg(scenario.goal.heading_tolerance_rad), 3) + " deg)";
   }
-  const std::vector<std::string> violations = checkTracking(TrackingTolerance{}, m);
+  const std::vector<std::string> violations = checkTracking(tolerance, m);
   if (!violations.empty()) return "tracking tolerance not met: " + joinViolations(violations);
   return {};
+}
+
+// One realisation's keys in metrics.json (realisation.<i>.<key>) and the distributions.
+struct RealisationRow {
+  std::uint64_t noise_seed = 0;
+  EpisodeMetrics metrics;
+  bool success = false;
+};
+
+void addRealisations(nlohmann::json& j, const std::vector<RealisationRow>& rows) {
+  std::vector<double> max_err;
+  std::vector<double> goal_err;
+  std::vector<double> goal_heading;
+  std::vector<double> est_err;
+  std::vector<double> contacts;
+  std::vector<double> slip;
+  int successes = 0;
+  int reached = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const EpisodeMetrics& m = rows[i].metrics;
+    const std::string p = "realisation." + std::to_string(i) + ".";
+    j[p + "noise_seed"] = rows[i].noise_seed;
+    j[p + "max_pos_err_m"] = m.max_pos_err_m;
+    j[p + "rms_pos_err_m"] = m.rms_pos_err_m;
+    j[p + "goal_pos_err_m"] = m.goal_pos_err_m;
+    j[p + "goal_heading_err_deg"] = m.goal_heading_err_deg;
+    j[p + "max_est_pos_err_m"] = m.max_est_pos_err_m;
+    j[p + "max_slip_mps"] = m.max_slip_mps;
+    j[p + "contacts"] = m.contacts;
+    j[p + "goal_reached"] = m.goal_reached;
+    j[p + "success"] = rows[i].success;
+    max_err.push_back(m.max_pos_err_m);
+    goal_err.push_back(m.goal_pos_err_m);
+    goal_heading.push_back(m.goal_heading_err_deg);
+    est_err.push_back(m.max_est_pos_err_m);
+    contacts.push_back(m.contacts);
+    slip.push_back(m.max_slip_mps);
+    successes += rows[i].success ? 1 : 0;
+    reached += m.goal_reached ? 1 : 0;
+  }
+  const auto add = [&j](const std::string& key, const std::vector<double>& values) {
+    const Distribution d = summarize(values);
+    j["realisations." + key + ".median"] = d.median;
+    j["realisations." + key + ".p95"] = d.p95;
+    j["realisations." + key + ".max"] = d.max;
+  };
+  const auto n = static_cast<double>(rows.size());
+  j["realisations.count"] = rows.size();
+  add("max_pos_err_m", max_err);
+  add("goal_pos_err_m", goal_err);
+  add("goal_heading_err_deg", goal_heading);
+  add("max_est_pos_err_m", est_err);
+  add("contacts", contacts);
+  add("max_slip_mps", slip);
+  j["realisations.goal_reached_fraction"] = reached / n;
+  j["realisations.success_fraction"] = successes / n;
 }
 
 FrameInput frameInput(const EpisodeSample& sample) {
@@ -126,6 +181,13 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     double fps = 30.0;
     std::string size = "640x480";
     std::string view = "top";
+    std::string realism;
+    std::uint64_t noise_seed = 1;
+    int realisations = 1;
+    double min_success_fraction = 1.0;
+    double max_tracking_error_mm = -1.0;
+    double max_goal_error_mm = -1.0;
+    double max_goal_heading_error_deg = -1.0;
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
@@ -149,11 +211,55 @@ CommandRunner setupRunCommand(CLI::App& sub) {
   sub.add_option("--view", opt->view, "top, 3d or both (side by side)")
       ->capture_default_str()
       ->check(CLI::IsMember({"top", "3d", "both"}));
+  sub.add_option("--realism", opt->realism,
+                 "robot model: ideal (default; idealised motors, true pose at 240 Hz), lab "
+                 "(motors, mocap at 100 Hz with 60 ms latency, fused estimate), odometry "
+                 "(encoders only); replaces the world's realism: section (docs/realism.md)")
+      ->check(CLI::IsMember({"ideal", "lab", "odometry"}));
+  sub.add_option("--noise-seed", opt->noise_seed,
+                 "seed of the realism's random draws (calibration, motor gains, sensor noise), "
+                 "independent of --seed")
+      ->capture_default_str()
+      ->check(unsigned64());
+  sub.add_option("--realisations", opt->realisations,
+                 "drive the plan N times under noise seeds S, S+1, ... and report the "
+                 "distribution (files of the first)")
+      ->capture_default_str()
+      ->check(integerIn(1, 10000));
+  sub.add_option("--min-success-fraction", opt->min_success_fraction,
+                 "with --realisations: share of realisations that must succeed for exit 0")
+      ->capture_default_str()
+      ->check(realIn(0.0, 1.0));
+  sub.add_option("--max-tracking-error-mm", opt->max_tracking_error_mm,
+                 "tracking tolerance: largest error against the plan (default 5, or the world's "
+                 "tolerance: section)")
+      ->check(realIn(0.0, 1e6, true));
+  sub.add_option("--max-goal-error-mm", opt->max_goal_error_mm,
+                 "tracking tolerance: final distance from the goal (default 3)")
+      ->check(realIn(0.0, 1e6, true));
+  sub.add_option("--max-goal-heading-error-deg", opt->max_goal_heading_error_deg,
+                 "tracking tolerance: final heading error against the goal (default 1.5)")
+      ->check(realIn(0.0, 360.0, true));
 
   return [opt] {
     const Scenario scenario = loadScenario(opt->world);
+    const WorldRealism world_realism = loadWorldRealism(opt->world);
     ExecutionDef exec;
     exec.tracking = trackingModeFromString(opt->tracking);
+    // --realism replaces the world's section; without either the robot is ideal.
+    if (!opt->realism.empty()) {
+      exec.realism = presetRealism(opt->realism);
+    } else if (world_realism.has_realism) {
+      exec.realism = world_realism.realism;
+    }
+    exec.noise_seed = opt->noise_seed;
+    TrackingTolerance tolerance = world_realism.tolerance;
+    if (opt->max_tracking_error_mm > 0.0)
+      tolerance.max_pos_err_m = 1e-3 * opt->max_tracking_error_mm;
+    if (opt->max_goal_error_mm > 0.0) tolerance.goal_pos_err_m = 1e-3 * opt->max_goal_error_mm;
+    if (opt->max_goal_heading_error_deg > 0.0) {
+      tolerance.goal_heading_err_deg = opt->max_goal_heading_error_deg;
+    }
     const bool film = opt->frames || opt->video || opt->gif;
     FrameDef frame_def;
     if (film) {  // bad film options fail before anything is planned or written
@@ -219,11 +325,33 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     }
     const EpisodeResult episode = runEpisode(scenario, plan, exec, observer, 1.0 / opt->fps);
     const EpisodeMetrics& m = episode.metrics;
-    writeExecutedCsv(dir + "/executed.csv", episode.rows);
+    // The same plan under the next noise seeds (no frames; their files are not kept).
+    std::vector<RealisationRow> realisations;
+    realisations.push_back({exec.noise_seed, m, failureReason(scenario, m, tolerance).empty()});
+    for (int i = 1; i < opt->realisations; ++i) {
+      ExecutionDef again = exec;
+      again.noise_seed = exec.noise_seed + static_cast<std::uint64_t>(i);
+      const EpisodeMetrics mi = runEpisode(scenario, plan, again).metrics;
+      realisations.push_back(
+          {again.noise_seed, mi, failureReason(scenario, mi, tolerance).empty()});
+    }
+    const bool realism_columns = exec.realism.active();
+    writeExecutedCsv(dir + "/executed.csv", episode.rows, realism_columns);
+    if (exec.realism.pose_sensor.enabled) {
+      writeFileAtomically(dir + "/sensors.csv", sensorsCsv(episode.pose_samples, m.time_step_s));
+    }
     nlohmann::json metrics = metricsToJson(m);
+    const nlohmann::json provenance = provenanceToJson(buildProvenance());
+    for (const auto& [key, value] : provenance.items()) {
+      metrics["provenance." + key] = value;
+    }
     metrics["world"] = scenario.source_path;
     metrics["scenario"] = scenario.name;
+    metrics["tolerance.max_pos_err_m"] = tolerance.max_pos_err_m;
+    metrics["tolerance.goal_pos_err_m"] = tolerance.goal_pos_err_m;
+    metrics["tolerance.goal_heading_err_deg"] = tolerance.goal_heading_err_deg;
     addPlanKeys(metrics, plan_summary);
+    if (opt->realisations > 1) addRealisations(metrics, realisations);
     writeJsonFile(dir + "/metrics.json", metrics);
 
     std::printf(
@@ -249,7 +377,51 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       std::printf("%zu figures: %s/figures/\n", written.size(), shown_dir.c_str());
     }
     out.commit();
-    const std::string failure = failureReason(scenario, m);
+    if (opt->realisations > 1) {
+      std::vector<double> max_err;
+      std::vector<double> goal_err;
+      std::vector<double> est_err;
+      std::vector<double> contacts;
+      int reached = 0;
+      int succeeded = 0;
+      for (const RealisationRow& r : realisations) {
+        max_err.push_back(r.metrics.max_pos_err_m * 1e3);
+        goal_err.push_back(r.metrics.goal_pos_err_m * 1e3);
+        est_err.push_back(r.metrics.max_est_pos_err_m * 1e3);
+        contacts.push_back(r.metrics.contacts);
+        reached += r.metrics.goal_reached ? 1 : 0;
+        succeeded += r.success ? 1 : 0;
+      }
+      const auto line = [](const char* what, const std::vector<double>& v, const char* unit) {
+        const Distribution d = summarize(v);
+        std::printf("  %-26s median %8.3f  p95 %8.3f  max %8.3f %s\n", what, d.median, d.p95, d.max,
+                    unit);
+      };
+      const int n = opt->realisations;
+      std::printf("%d realisations (%s realism, noise seeds %llu..%llu):\n", n,
+                  exec.realism.name.c_str(), static_cast<unsigned long long>(exec.noise_seed),
+                  static_cast<unsigned long long>(exec.noise_seed + static_cast<unsigned>(n - 1)));
+      line("max tracking error", max_err, "mm");
+      line("final goal error", goal_err, "mm");
+      line("max estimation error", est_err, "mm");
+      line("contact events", contacts, "");
+      std::printf(
+          "  goal reached in %d of %d (%.0f %%); within the tracking tolerance in %d of %d\n",
+          reached, n, 100.0 * reached / n, succeeded, n);
+      if (static_cast<double>(succeeded) < opt->min_success_fraction * n - 1e-9) {
+        for (const RealisationRow& r : realisations) {
+          if (r.success) continue;
+          std::fprintf(stderr,
+                       "parksim run: %d of %d realisations failed; first (noise seed %llu): %s\n",
+                       n - succeeded, n, static_cast<unsigned long long>(r.noise_seed),
+                       printable(failureReason(scenario, r.metrics, tolerance)).c_str());
+          break;
+        }
+        return 1;
+      }
+      return 0;
+    }
+    const std::string failure = failureReason(scenario, m, tolerance);
     if (!failure.empty()) {
       std::fprintf(stderr, "parksim run: %s\n", printable(failure).c_str());
       return 1;

@@ -11,6 +11,7 @@
 #include "app/Command.h"
 #include "app/TerminalText.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/Provenance.h"
 
 int main(int argc, char** argv) {
   using namespace parksim::app;
@@ -19,9 +20,12 @@ int main(int argc, char** argv) {
   std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"parksim: plan, simulate, render and benchmark parking manoeuvres"};
   app.require_subcommand(1);
+  const std::string version = parksim::versionLine(parksim::buildProvenance());
+  app.set_version_flag("--version", version, "print parksim's version and build, then exit");
   std::vector<std::pair<CLI::App*, CommandRunner>> commands;
   auto add = [&](const char* name, const char* help, CommandRunner (*setup)(CLI::App&)) {
     CLI::App* sub = app.add_subcommand(name, help);
+    sub->set_version_flag("--version", version);
     commands.emplace_back(sub, setup(*sub));
   };
   add("plan", "plan a parking manoeuvre and write trajectory.csv and plan.json", setupPlanCommand);

@@ -6,8 +6,19 @@ packages=(
   build-essential cmake pkg-config ninja-build
   libbullet-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libnanoflann-dev libosmesa6-dev libstb-dev zlib1g-dev fonts-dejavu-core
-  libgtest-dev libgmock-dev libbenchmark-dev libompl-dev ffmpeg
+  libgtest-dev libgmock-dev libbenchmark-dev libompl-dev ffmpeg locales
 )
+
+# The locale tests run parksim inside a decimal-comma locale (tests/app/LocaleRoundTripTest.cpp).
+ensure_test_locale() {
+  if locale -a 2>/dev/null | grep -qix 'de_DE.utf8'; then return 0; fi
+  if [ "$(id -u)" -ne 0 ]; then
+    echo "install-deps: locale de_DE.UTF-8 missing (its tests will be skipped); as root: localedef -i de_DE -f UTF-8 de_DE.UTF-8" >&2
+    return 0
+  fi
+  echo "install-deps: generating locale de_DE.UTF-8"
+  localedef -i de_DE -f UTF-8 de_DE.UTF-8
+}
 
 missing=()
 for p in "${packages[@]}"; do
@@ -16,6 +27,7 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"
+  ensure_test_locale
   exit 0
 fi
 
@@ -28,3 +40,4 @@ echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
 apt-get install -y -qq --no-install-recommends "${missing[@]}"
+ensure_test_locale

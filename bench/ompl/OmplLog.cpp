@@ -7,6 +7,8 @@
 
 #include <ompl/base/PlannerStatus.h>
 
+#include "parksim/core/NumberFormat.h"
+
 namespace parksim::bench {
 namespace {
 
@@ -14,9 +16,7 @@ namespace ob = ompl::base;
 
 std::string number(double v) {
   if (std::isnan(v)) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
+  return formatGeneral(v, 9);
 }
 
 std::string count(long v) { return v < 0 ? "" : std::to_string(v); }

@@ -29,6 +29,7 @@
 #include "bench/planning/ParksimRuns.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
+#include "parksim/core/NumberFormat.h"
 
 namespace parksim::bench {
 
@@ -73,9 +74,7 @@ OmplSpace omplSpaceFromString(const std::string& name) {
 }
 
 std::string budgetName(const OmplRunDef& def) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "time=%gs", def.time_limit_s);
-  return buf;
+  return "time=" + formatGeneral(def.time_limit_s) + "s";
 }
 
 namespace {

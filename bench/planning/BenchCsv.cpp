@@ -5,6 +5,8 @@
 #include <cstdio>
 
 #include "parksim/core/AtomicFile.h"
+#include "parksim/core/Csv.h"
+#include "parksim/core/NumberFormat.h"
 
 namespace parksim::bench {
 namespace {
@@ -43,38 +45,34 @@ std::vector<std::string> phaseNames(const std::vector<BenchRecord>& records) {
 
 std::string number(double v) {
   if (std::isnan(v)) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
+  return formatGeneral(v, 9);
 }
 
 std::string count(long v) { return v < 0 ? "" : std::to_string(v); }
 
 // Text fields are names chosen by parksim and OMPL; quote them anyway if they ever hold a comma.
-std::string text(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string quoted = "\"";
-  for (char c : s) {
-    if (c == '"') quoted += '"';
-    quoted += c;
-  }
-  return quoted + "\"";
-}
+std::string text(const std::string& s) { return csvField(s); }
 
 }  // namespace
 
 std::vector<std::string> benchCsvColumns(const std::vector<BenchRecord>& records) {
   std::vector<std::string> columns(std::begin(kFixedColumns), std::end(kFixedColumns));
+  for (const auto& [key, value] : provenanceFields(Provenance{})) columns.push_back(key);
   for (const std::string& name : phaseNames(records)) columns.push_back("phase_" + name + "_s");
   return columns;
 }
 
-std::string benchCsv(const std::vector<BenchRecord>& records) {
+std::string benchCsv(const std::vector<BenchRecord>& records, const Provenance& provenance) {
   std::string out;
   const std::vector<std::string> columns = benchCsvColumns(records);
   for (std::size_t i = 0; i < columns.size(); ++i) out += (i ? "," : "") + columns[i];
   out += '\n';
   const std::vector<std::string> phases = phaseNames(records);
+  std::string stamp;
+  for (const auto& [key, value] : provenanceFields(provenance)) {
+    stamp += ',';  // appended alone: `"," + std::string` trips GCC 12's false -Wrestrict
+    stamp += text(value);
+  }
   for (const BenchRecord& r : records) {
     const std::vector<std::string> fields = {text(r.library),
                                              text(r.planner),
@@ -97,6 +95,7 @@ std::string benchCsv(const std::vector<BenchRecord>& records) {
                                              count(r.tree_size),
                                              count(r.collision_queries)};
     for (std::size_t i = 0; i < fields.size(); ++i) out += (i ? "," : "") + fields[i];
+    out += stamp;
     for (const std::string& name : phases) {
       out += ',';
       for (const auto& [phase, seconds] : r.phases_s) {

@@ -1,4 +1,5 @@
 #include "bench/planning/BenchSummary.h"
+#include "parksim/core/NumberFormat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,25 +12,21 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-std::string format(const char* fmt, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, v);
-  return buf;
-}
+std::string fixed(double v, int decimals) { return formatFixed(v, decimals); }
 
 std::string timeText(double s) {
   if (std::isnan(s)) return "-";
   if (std::isinf(s)) return "unsolved";
   const double ms = 1e3 * s;
-  if (ms < 10.0) return format("%.3f ms", ms);
-  if (ms < 1000.0) return format("%.1f ms", ms);
-  return format("%.2f s", s);
+  if (ms < 10.0) return fixed(ms, 3) + " ms";
+  if (ms < 1000.0) return fixed(ms, 1) + " ms";
+  return fixed(s, 2) + " s";
 }
 
-std::string lengthText(double m) { return std::isnan(m) ? "-" : format("%.3f m", m); }
-std::string mmText(double m) { return std::isnan(m) ? "-" : format("%.1f mm", 1e3 * m); }
-std::string plainText(double v) { return std::isnan(v) ? "-" : format("%g", v); }
-std::string percentText(double share) { return format("%.0f%%", 100.0 * share); }
+std::string lengthText(double m) { return std::isnan(m) ? "-" : fixed(m, 3) + " m"; }
+std::string mmText(double m) { return std::isnan(m) ? "-" : fixed(1e3 * m, 1) + " mm"; }
+std::string plainText(double v) { return std::isnan(v) ? "-" : formatGeneral(v); }
+std::string percentText(double share) { return fixed(100.0 * share, 0) + "%"; }
 
 // A GitHub-flavoured Markdown table with padded columns.
 std::string markdownTable(const std::vector<std::string>& header,
@@ -185,15 +182,15 @@ std::string formatSummaryTable(const std::vector<GroupSummary>& groups) {
     std::string study = "";
     if (g.library == "parksim") {
       if (const auto s = studyPlanningTime(g.scenario, g.planner)) {
-        study = format("%.1f s", *s);
+        study = fixed(*s, 1) + " s";
         if (std::isfinite(g.time_first_median_s) && g.time_first_median_s > 0.0) {
-          study += format(" = %.0fx parksim's median", *s / g.time_first_median_s);
+          study += " = " + fixed(*s / g.time_first_median_s, 0) + "x parksim's median";
         }
       }
     }
     rows.push_back({g.scenario, g.library, g.planner, g.space, g.budget, std::to_string(g.runs),
                     percentText(g.successRate()),
-                    g.solved > 0 ? format("%.0f%%", 100.0 * g.valid / g.solved) : "-",
+                    g.solved > 0 ? fixed(100.0 * g.valid / g.solved, 0) + "%" : "-",
                     timeText(g.time_first_median_s), timeText(g.time_first_p90_s),
                     timeText(g.cpu_total_median_s), lengthText(g.length_median_m),
                     plainText(g.cusps_median), mmText(g.clearance_median_m), study});
@@ -293,7 +290,7 @@ std::string formatComparison(const std::vector<GroupSummary>& groups) {
                           percentText(p->successRate()) + " solved",
                       label(*o) + ": " + timeText(o->time_first_median_s) + ", " +
                           percentText(o->successRate()) + " solved",
-                      std::isfinite(ratio) ? format("%.3g", ratio) : "-", met ? "yes" : "NO"});
+                      std::isfinite(ratio) ? formatGeneral(ratio, 3) : "-", met ? "yes" : "NO"});
     }
     for (const GroupSummary* a : parksim_anytime) {
       for (const GroupSummary* s : ompl_star) {
@@ -304,7 +301,7 @@ std::string formatComparison(const std::vector<GroupSummary>& groups) {
                             percentText(a->successRate()) + " solved",
                         label(*s) + ": " + lengthText(s->length_median_m) + ", " +
                             percentText(s->successRate()) + " solved",
-                        std::isfinite(ratio) ? format("%.3g", ratio) : "-", met ? "yes" : "NO"});
+                        std::isfinite(ratio) ? formatGeneral(ratio, 3) : "-", met ? "yes" : "NO"});
       }
     }
   }

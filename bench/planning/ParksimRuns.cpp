@@ -1,4 +1,5 @@
 #include "bench/planning/ParksimRuns.h"
+#include "parksim/core/NumberFormat.h"
 
 #include <time.h>
 
@@ -20,10 +21,8 @@ std::string budgetName(const PlannerDef& planner) {
     name = "iterations=" + std::to_string(planner.max_iterations);
   }
   if (planner.max_time_s > 0.0) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "time=%gs", planner.max_time_s);
     if (!name.empty()) name += '+';
-    name += buf;
+    name += "time=" + formatGeneral(planner.max_time_s) + "s";
   }
   return name;
 }

@@ -7,6 +7,8 @@
 #include <utility>
 
 #include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
+#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletCollision/CollisionShapes/btCylinderShape.h>
 #include <btBulletCollisionCommon.h>
 
 #include "parksim/core/Error.h"
@@ -63,30 +65,6 @@ struct CandidateCollector final : btBroadphaseAabbCallback {
   std::vector<int>& out_;
 };
 
-double pointSegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
-                            const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-  return (p - (a + t * ab)).norm();
-}
-
-// Exact planar distance between two boxes: 0 when they touch or overlap; otherwise the
-// closest pair of two disjoint convex polygons always includes a vertex of one of them.
-double boxDistance(const OrientedBox& a, const OrientedBox& b) {
-  if (separationAlongAxes(a, b) <= 0.0) return 0.0;
-  const auto ca = a.corners();
-  const auto cb = b.corners();
-  double best = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 4; ++i) {
-    const int j = (i + 1) % 4;
-    for (int k = 0; k < 4; ++k) {
-      best = std::min(best, pointSegmentDistance(ca[k], cb[i], cb[j]));
-      best = std::min(best, pointSegmentDistance(cb[k], ca[i], ca[j]));
-    }
-  }
-  return best;
-}
-
 // Messages start with the scenario's file when it has one, as Error messages do elsewhere.
 std::string where(const Scenario& scenario) {
   return (scenario.source_path.empty() ? std::string("collision world") : scenario.source_path) +
@@ -104,6 +82,7 @@ void requirePositive(const Scenario& scenario, double v, const std::string& what
 struct BulletCollisionWorld::Impl {
   // One obstacle as the queries need it, in double.
   struct Box {
+    Obstacle obstacle;  // its shape decides the narrow phase
     OrientedBox box;
     double cos_yaw = 1.0;
     double sin_yaw = 0.0;
@@ -127,7 +106,7 @@ struct BulletCollisionWorld::Impl {
   btDefaultCollisionConfiguration configuration;
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
-  std::vector<std::unique_ptr<btBoxShape>> shapes;
+  std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<btCollisionObject>> objects;
   // Mutable because Bullet's box query is non-const although it changes nothing we rely on.
   mutable btCollisionWorld world{&dispatcher, &broadphase, &configuration};
@@ -160,31 +139,74 @@ struct BulletCollisionWorld::Impl {
       if (!obstacle.box.center.allFinite() || !finite(obstacle.box.yaw)) {
         throw Error(where(scenario) + what + " pose must be finite");
       }
+      if (obstacle.shape == ObstacleShape::kCircle) {
+        requirePositive(scenario, obstacle.radius_m, what + " radius");
+      }
+      if (obstacle.shape == ObstacleShape::kPolygon && !isStrictlyConvexCcw(obstacle.vertices)) {
+        throw Error(where(scenario) + what +
+                    " must be a convex polygon with counter-clockwise vertices");
+      }
+      // Low obstacles pass under the chassis; the planner never meets them (blocksRobot).
+      if (!blocksRobot(obstacle, robot)) continue;
 
       Box box;
+      box.obstacle = obstacle;
       box.box = obstacle.box;
       box.cos_yaw = std::cos(obstacle.box.yaw);
       box.sin_yaw = std::sin(obstacle.box.yaw);
       box.height_m = obstacle.height_m;
 
-      const btVector3 half(static_cast<btScalar>(obstacle.box.half_extents.x()),
-                           static_cast<btScalar>(obstacle.box.half_extents.y()),
-                           static_cast<btScalar>(0.5 * obstacle.height_m));
-      auto shape = std::make_unique<btBoxShape>(half);
-      setExactHalfExtents(*shape, half);
+      const auto hz = static_cast<btScalar>(0.5 * obstacle.height_m);
+      std::unique_ptr<btCollisionShape> shape;
+      btTransform transform;
+      transform.setIdentity();
+      switch (obstacle.shape) {
+        case ObstacleShape::kBox: {
+          const btVector3 half(static_cast<btScalar>(obstacle.box.half_extents.x()),
+                               static_cast<btScalar>(obstacle.box.half_extents.y()), hz);
+          auto b = std::make_unique<btBoxShape>(half);
+          setExactHalfExtents(*b, half);
+          shape = std::move(b);
+          transform.setBasis(yawBasis(box.cos_yaw, box.sin_yaw));
+          break;
+        }
+        // Circles and polygons: Bullet holds their true shape (and its broadphase bounds);
+        // penetrates() decides them exactly in double (core's separation), since Bullet's
+        // GJK for curved and hull shapes is only accurate to its float tolerances.
+        case ObstacleShape::kCircle: {
+          const auto r = static_cast<btScalar>(obstacle.radius_m);
+          auto c = std::make_unique<btCylinderShapeZ>(btVector3(r, r, hz));
+          c->setMargin(0);
+          shape = std::move(c);
+          break;
+        }
+        case ObstacleShape::kPolygon: {
+          auto hull = std::make_unique<btConvexHullShape>();
+          for (const Eigen::Vector2d& v : obstacle.vertices) {
+            const Eigen::Vector2d d = v - obstacle.box.center;
+            for (const btScalar z : {-hz, hz}) {
+              hull->addPoint(btVector3(static_cast<btScalar>(d.x()),
+                                       static_cast<btScalar>(d.y()), z),
+                             false);
+            }
+          }
+          hull->recalcLocalAabb();
+          hull->setMargin(0);
+          shape = std::move(hull);
+          break;
+        }
+      }
+      transform.setOrigin(btVector3(static_cast<btScalar>(obstacle.box.center.x()),
+                                    static_cast<btScalar>(obstacle.box.center.y()), hz));
 
       auto object = std::make_unique<btCollisionObject>();
-      btTransform transform(yawBasis(box.cos_yaw, box.sin_yaw),
-                            btVector3(static_cast<btScalar>(obstacle.box.center.x()),
-                                      static_cast<btScalar>(obstacle.box.center.y()),
-                                      static_cast<btScalar>(0.5 * obstacle.height_m)));
       object->setWorldTransform(transform);
       object->setCollisionShape(shape.get());
       object->setCollisionFlags(object->getCollisionFlags() | btCollisionObject::CF_STATIC_OBJECT);
       object->setUserIndex(static_cast<int>(boxes.size()));
 
       names.push_back(obstacle.name);
-      boxes.push_back(box);
+      boxes.push_back(std::move(box));
       shapes.push_back(std::move(shape));
       objects.push_back(std::move(object));
       // Last, so that an exception above never leaves the world holding an unowned object.
@@ -248,8 +270,12 @@ struct BulletCollisionWorld::Impl {
   // right down to 1e-7 m from touching (first errors at 3e-8 m), where world coordinates
   // misclassify 0.14% of near-contact poses at 1e-7 m.
   bool penetrates(int i, const Footprint& footprint) const {
-    ++stats.box_box_tests;
     const Box& obstacle = boxes[static_cast<std::size_t>(i)];
+    if (obstacle.obstacle.shape != ObstacleShape::kBox) {
+      ++stats.shape_tests;
+      return separation(footprint, obstacle.obstacle) < 0.0;
+    }
+    ++stats.box_box_tests;
     const Eigen::Vector2d d = footprint.center - obstacle.box.center;
     const double rel_x = obstacle.cos_yaw * d.x() + obstacle.sin_yaw * d.y();
     const double rel_y = -obstacle.sin_yaw * d.x() + obstacle.cos_yaw * d.y();
@@ -265,7 +291,8 @@ struct BulletCollisionWorld::Impl {
     input.m_transformB.setOrigin(
         btVector3(static_cast<btScalar>(rel_x), static_cast<btScalar>(rel_y),
                   static_cast<btScalar>(0.5 * (robot.height_m - obstacle.height_m))));
-    btBoxBoxDetector detector(shapes[static_cast<std::size_t>(i)].get(), &footprint_shape);
+    btBoxBoxDetector detector(static_cast<btBoxShape*>(shapes[static_cast<std::size_t>(i)].get()),
+                              &footprint_shape);
     PenetrationResult result;
     detector.getClosestPoints(input, result, nullptr);
     return result.penetrating;
@@ -322,7 +349,7 @@ double BulletCollisionWorld::clearance(const Pose2& pose) const {
     m.collectCandidates(footprint, radius);
     double best = std::numeric_limits<double>::infinity();
     for (int i : m.candidates) {
-      best = std::min(best, boxDistance(footprint, m.boxes[static_cast<std::size_t>(i)].box));
+      best = std::min(best, distance(footprint, m.boxes[static_cast<std::size_t>(i)].obstacle));
       if (best == 0.0) return 0.0;
     }
     if (best <= radius) return best;

@@ -1,7 +1,9 @@
 #pragma once
 // Footprint queries against a scenario's static obstacles, answered by Bullet: a broadphase
 // (btDbvtBroadphase) picks the obstacles whose bounding boxes meet the footprint's, and the
-// box-box detector decides each one exactly. Bullet stays behind this header so that the
+// box-box detector decides each box exactly; circles and convex polygons are decided exactly
+// in double by core's separation (Geometry.h). Obstacles no higher than the robot's ground
+// clearance are left out (blocksRobot). Bullet stays behind this header so that the
 // planner and the app never include it.
 
 #include <cstdint>
@@ -29,6 +31,7 @@ class BulletCollisionWorld final : public FootprintChecker {
     std::uint64_t overlapping_queries = 0;  ///< overlapping calls
     std::uint64_t clearance_queries = 0;    ///< clearance calls
     std::uint64_t box_box_tests = 0;        ///< narrowphase box-box tests run by all queries
+    std::uint64_t shape_tests = 0;          ///< exact circle and polygon tests run by all queries
   };
 
   /// Copies the obstacles and the robot; keeps no reference to `scenario`. Throws Error when
@@ -59,6 +62,7 @@ class BulletCollisionWorld final : public FootprintChecker {
   /// on the broadphase's candidates within a growing search radius. Allocates nothing.
   double clearance(const Pose2& pose) const;
 
+  /// Obstacles the robot can hit (those that block it), not all of the scenario's.
   std::size_t obstacleCount() const;
 
   Stats stats() const;

@@ -3,6 +3,7 @@
 // reference for the Bullet collision adapter, and by rendering and C-space figures.
 
 #include <array>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -21,6 +22,12 @@ struct OrientedBox {
   std::array<Eigen::Vector2d, 4> corners() const;
 };
 
+/// A disc in the plane: round bollards and pillars.
+struct Circle {
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();  ///< m
+  double radius = 0.0;                               ///< m
+};
+
 /// Exact overlap test by separating axes. Boxes that only touch (zero-area intersection)
 /// do not overlap.
 bool boxesOverlap(const OrientedBox& a, const OrientedBox& b);
@@ -29,6 +36,29 @@ bool boxesOverlap(const OrientedBox& a, const OrientedBox& b);
 /// separated (a lower bound of the true gap), negative when overlapping (minus the
 /// penetration depth along the axis of least overlap).
 double separationAlongAxes(const OrientedBox& a, const OrientedBox& b);
+
+/// Signed separation of a box and a disc, exact: the distance from the box to the disc's
+/// centre minus the radius (positive when apart, negative when overlapping, 0 when touching).
+double separation(const OrientedBox& a, const Circle& c);
+
+/// Signed separation of a box and a convex polygon (counter-clockwise vertices) along the best
+/// separating axis among both shapes' edge normals, m: positive when separated (a lower bound
+/// of the true gap), negative when overlapping (minus the penetration along the axis of least
+/// overlap), 0 when touching.
+double separationAlongAxes(const OrientedBox& a, const std::vector<Eigen::Vector2d>& polygon);
+
+/// Exact planar distance between a box and a convex polygon, m (0 when touching or overlapping).
+double distance(const OrientedBox& a, const std::vector<Eigen::Vector2d>& polygon);
+
+/// Exact planar distance between two boxes, m (0 when touching or overlapping).
+double distance(const OrientedBox& a, const OrientedBox& b);
+
+/// Twice the signed area of a polygon: positive for counter-clockwise vertices.
+double signedDoubleArea(const std::vector<Eigen::Vector2d>& polygon);
+
+/// True when the polygon has at least 3 vertices, winds counter-clockwise, and every turn is
+/// strictly left (convex, no repeated or collinear vertices).
+bool isStrictlyConvexCcw(const std::vector<Eigen::Vector2d>& polygon);
 
 /// The robot's footprint rectangle at `pose`, grown by `margin_m` on every side.
 OrientedBox footprintAt(const RobotDef& robot, const Pose2& pose, double margin_m = 0.0);

@@ -21,6 +21,9 @@ struct RobotDef {
   double max_wheel_accel_radps2 = 40.0;
   /// Body height, used by physics and rendering, m.
   double height_m = 0.050;
+  /// Height of the chassis' underside above the ground, m. Obstacles no higher than this pass
+  /// under the robot (the planner ignores them; the simulated chassis clears them).
+  double ground_clearance_m = 0.002;
 
   /// Offset of the footprint's centre from the reference point along the heading, m
   /// (negative: the centre lies behind the axle).

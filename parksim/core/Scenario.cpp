@@ -1,6 +1,42 @@
 #include "parksim/core/Scenario.h"
 
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+
 namespace parksim {
+
+namespace {
+
+OrientedBox boundingRectangle(const std::vector<Eigen::Vector2d>& points) {
+  Eigen::Vector2d lo = points.front();
+  Eigen::Vector2d hi = points.front();
+  for (const Eigen::Vector2d& p : points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  OrientedBox box;
+  box.center = 0.5 * (lo + hi);
+  box.half_extents = 0.5 * (hi - lo);
+  return box;
+}
+
+// Shortest text that reads back as the same double, for messages.
+std::string shortest(double v) {
+  char buf[64];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return ec == std::errc() ? std::string(buf, end) : std::string("?");
+}
+
+// Up to 4 significant digits, for distances in messages.
+std::string brief(double v) {
+  char buf[64];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 4);
+  return ec == std::errc() ? std::string(buf, end) : std::string("?");
+}
+
+}  // namespace
 
 const char* toString(ObstacleKind kind) {
   switch (kind) {
@@ -8,9 +44,129 @@ const char* toString(ObstacleKind kind) {
     case ObstacleKind::kCurb: return "curb";
     case ObstacleKind::kIsland: return "island";
     case ObstacleKind::kBox: return "box";
+    case ObstacleKind::kBollard: return "bollard";
+    case ObstacleKind::kPillar: return "pillar";
     case ObstacleKind::kParkedRobot: return "parked_robot";
   }
   return "box";
+}
+
+Obstacle Obstacle::makeBox(std::string name, ObstacleKind kind, const OrientedBox& box,
+                           double height_m) {
+  Obstacle o;
+  o.name = std::move(name);
+  o.kind = kind;
+  o.box = box;
+  o.height_m = height_m;
+  return o;
+}
+
+Obstacle Obstacle::makeCircle(std::string name, ObstacleKind kind, const Circle& circle,
+                              double height_m) {
+  Obstacle o;
+  o.name = std::move(name);
+  o.kind = kind;
+  o.shape = ObstacleShape::kCircle;
+  o.box.center = circle.center;
+  o.box.half_extents = {circle.radius, circle.radius};
+  o.radius_m = circle.radius;
+  o.height_m = height_m;
+  return o;
+}
+
+Obstacle Obstacle::makePolygon(std::string name, ObstacleKind kind,
+                               std::vector<Eigen::Vector2d> vertices, double height_m) {
+  Obstacle o;
+  o.name = std::move(name);
+  o.kind = kind;
+  o.shape = ObstacleShape::kPolygon;
+  if (!vertices.empty()) o.box = boundingRectangle(vertices);
+  o.vertices = std::move(vertices);
+  o.height_m = height_m;
+  return o;
+}
+
+double separation(const OrientedBox& footprint, const Obstacle& obstacle) {
+  switch (obstacle.shape) {
+    case ObstacleShape::kBox: return separationAlongAxes(footprint, obstacle.box);
+    case ObstacleShape::kCircle: return separation(footprint, obstacle.circle());
+    case ObstacleShape::kPolygon: return separationAlongAxes(footprint, obstacle.vertices);
+  }
+  return separationAlongAxes(footprint, obstacle.box);
+}
+
+double distance(const OrientedBox& footprint, const Obstacle& obstacle) {
+  switch (obstacle.shape) {
+    case ObstacleShape::kBox: return distance(footprint, obstacle.box);
+    case ObstacleShape::kCircle: return std::max(0.0, separation(footprint, obstacle.circle()));
+    case ObstacleShape::kPolygon: return distance(footprint, obstacle.vertices);
+  }
+  return distance(footprint, obstacle.box);
+}
+
+std::vector<Eigen::Vector2d> outline(const Obstacle& obstacle, int circle_segments) {
+  switch (obstacle.shape) {
+    case ObstacleShape::kBox: {
+      const auto c = obstacle.box.corners();
+      return {c.begin(), c.end()};
+    }
+    case ObstacleShape::kCircle: {
+      const int n = std::max(3, circle_segments);
+      std::vector<Eigen::Vector2d> out;
+      out.reserve(static_cast<std::size_t>(n));
+      for (int i = 0; i < n; ++i) {
+        const double a = 2.0 * kPi * i / n;
+        out.push_back(obstacle.box.center +
+                      obstacle.radius_m * Eigen::Vector2d(std::cos(a), std::sin(a)));
+      }
+      return out;
+    }
+    case ObstacleShape::kPolygon: return obstacle.vertices;
+  }
+  return {};
+}
+
+bool blocksRobot(const Obstacle& obstacle, const RobotDef& robot) {
+  return obstacle.height_m > robot.ground_clearance_m;
+}
+
+std::optional<std::string> placementProblem(const Scenario& s, const Pose2& pose,
+                                            double margin_m) {
+  const std::string margin = shortest(margin_m * 1000.0) + " mm";
+  const double inset = margin_m - kPlacementTolerance_m;
+  const LotBounds& lot = s.lot;
+  if (!(pose.x >= lot.x_min_m + inset && pose.x <= lot.x_max_m - inset &&
+        pose.y >= lot.y_min_m + inset && pose.y <= lot.y_max_m - inset)) {
+    const bool outside = !lot.contains(pose.x, pose.y);
+    return "reference point (" + shortest(pose.x) + ", " + shortest(pose.y) + ") is " +
+           (outside ? "outside the lot" : "closer than the " + margin + " margin to the lot edge") +
+           " [" + shortest(lot.x_min_m) + ", " + shortest(lot.x_max_m) + "] x [" +
+           shortest(lot.y_min_m) + ", " + shortest(lot.y_max_m) + "]";
+  }
+  const OrientedBox grown = footprintAt(s.robot, pose, margin_m);
+  const OrientedBox footprint = footprintAt(s.robot, pose);
+  for (const Obstacle& obstacle : s.obstacles) {
+    if (!blocksRobot(obstacle, s.robot)) continue;
+    if (separation(grown, obstacle) >= -kPlacementTolerance_m) continue;
+    const std::string name = "obstacle \"" + obstacle.name + "\"";
+    if (separation(footprint, obstacle) < -kPlacementTolerance_m) {
+      return "robot footprint overlaps " + name;
+    }
+    return "robot footprint is " + brief(distance(footprint, obstacle) * 1000.0) + " mm from " +
+           name + "; start and goal keep at least the " + margin +
+           " margin of the planner's motion checks";
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> goalPlacementProblem(const Scenario& s, double margin_m) {
+  std::optional<std::string> problem = placementProblem(s, s.goal.pose, margin_m);
+  if (problem && s.goal.either_heading) {
+    const Pose2 turned{s.goal.pose.x, s.goal.pose.y, wrapAngle(s.goal.pose.theta + kPi)};
+    if (!placementProblem(s, turned, margin_m)) return std::nullopt;
+    *problem += " (in both accepted headings)";
+  }
+  return problem;
 }
 
 }  // namespace parksim

@@ -3,8 +3,11 @@
 // and the physical parameters the simulation uses. Loaded once from a world file
 // (scenario/ScenarioReader.h); everything that changes during an episode lives elsewhere.
 
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Geometry.h"
@@ -27,15 +30,61 @@ struct LotBounds {
   }
 };
 
-enum class ObstacleKind { kWall, kCurb, kIsland, kBox, kParkedRobot };
+/// What an obstacle is. Only kParkedRobot changes behaviour (it has mass and can be pushed);
+/// the others differ only in colour and name.
+enum class ObstacleKind { kWall, kCurb, kIsland, kBox, kBollard, kPillar, kParkedRobot };
 
-/// A box standing on the ground. Parked robots are boxes with the parked robot's footprint.
-struct Obstacle {
-  std::string name;                        ///< unique within the scenario, e.g. "wall_1"
-  ObstacleKind kind = ObstacleKind::kBox;  ///< what it is; parked robots have mass
-  OrientedBox box;                         ///< footprint in the lot frame
-  double height_m = 0.1;                   ///< m
+/// The obstacle's ground footprint, extruded vertically from the ground to its height.
+enum class ObstacleShape {
+  kBox,      ///< `box` is the rectangle
+  kCircle,   ///< a disc of `radius_m` around `box.center` (bollards, pillars)
+  kPolygon,  ///< `vertices`, convex, counter-clockwise (islands, kerb corners)
 };
+
+/// An obstacle standing on the ground. Parked robots are boxes with the parked vehicle's
+/// footprint.
+struct Obstacle {
+  std::string name;                          ///< unique within the scenario, e.g. "wall_1"
+  ObstacleKind kind = ObstacleKind::kBox;    ///< what it is; parked robots have mass
+  ObstacleShape shape = ObstacleShape::kBox; ///< which of the fields below is the footprint
+  /// kBox: the footprint in the lot frame. kCircle and kPolygon: the axis-aligned bounding
+  /// rectangle (centre = the disc's centre for circles), for code that only needs extents.
+  OrientedBox box;
+  double radius_m = 0.0;                  ///< kCircle: radius, m
+  std::vector<Eigen::Vector2d> vertices;  ///< kPolygon: lot frame, m, counter-clockwise
+  double height_m = 0.1;                  ///< m
+  /// Parked robots: mass, kg; unset means PhysicsDef::parked_robot_mass_kg.
+  std::optional<double> mass_kg;
+
+  /// A box obstacle.
+  static Obstacle makeBox(std::string name, ObstacleKind kind, const OrientedBox& box,
+                          double height_m);
+  /// A round obstacle.
+  static Obstacle makeCircle(std::string name, ObstacleKind kind, const Circle& circle,
+                             double height_m);
+  /// A convex polygon obstacle; `vertices` counter-clockwise (isStrictlyConvexCcw).
+  static Obstacle makePolygon(std::string name, ObstacleKind kind,
+                              std::vector<Eigen::Vector2d> vertices, double height_m);
+
+  Circle circle() const { return {box.center, radius_m}; }
+};
+
+/// Signed separation of a footprint box from an obstacle, exact in double for boxes and
+/// polygons along the best separating axis and exact for circles: positive when apart (for
+/// boxes and polygons a lower bound of the gap), negative when overlapping, 0 when touching.
+double separation(const OrientedBox& footprint, const Obstacle& obstacle);
+
+/// Exact planar distance from a footprint box to an obstacle, m (0 when touching or
+/// overlapping).
+double distance(const OrientedBox& footprint, const Obstacle& obstacle);
+
+/// The obstacle's outline, counter-clockwise, m: the corners of a box or a polygon, and for a
+/// circle a regular polygon of `circle_segments` vertices on it (for drawing only).
+std::vector<Eigen::Vector2d> outline(const Obstacle& obstacle, int circle_segments = 48);
+
+/// Obstacles no higher than the robot's ground clearance pass under its chassis: the planner
+/// ignores them and the simulated chassis does not touch them (the wheels touch the ground only).
+bool blocksRobot(const Obstacle& obstacle, const RobotDef& robot);
 
 /// Where the robot must end.
 struct GoalRegion {
@@ -63,6 +112,30 @@ struct PhysicsDef {
   double parked_robot_mass_kg = 0.25;  ///< each parked robot, kg (dynamic, can be pushed)
   double obstacle_friction = 0.5;      ///< walls, islands and parked robots
 };
+
+/// Start and goal must keep this clearance from every obstacle and from the lot edge: half the
+/// planner's motion-check resolution (MotionValidatorDef::resolution_m, 1 mm), the margin by
+/// which it grows the footprint at every checked pose. A pose closer than that could never be
+/// left or reached by a checked motion.
+constexpr double kPlacementMargin_m = 0.0005;
+
+/// Rounding the placement check forgives: a bumper computed 1e-17 m inside the margin passes.
+constexpr double kPlacementTolerance_m = 1e-9;
+
+struct Scenario;
+
+/// The one rule for start and goal poses, applied by the world reader and by the planner
+/// alike: the reference point lies at least `margin_m` inside the lot bounds, and the footprint
+/// grown by `margin_m` overlaps no obstacle that blocks the robot (see blocksRobot), both up to
+/// kPlacementTolerance_m. Returns what is wrong (naming the margin and the obstacle), or
+/// nothing when the pose is fine.
+std::optional<std::string> placementProblem(const Scenario& scenario, const Pose2& pose,
+                                            double margin_m = kPlacementMargin_m);
+
+/// placementProblem for the goal: with `either_heading` the goal is fine when either heading
+/// is; the message is that of the goal pose as written.
+std::optional<std::string> goalPlacementProblem(const Scenario& scenario,
+                                                double margin_m = kPlacementMargin_m);
 
 struct Scenario {
   std::string name;         ///< from the file, e.g. "head_in"

@@ -4,11 +4,13 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <map>
 
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/InputFile.h"
+#include "parksim/core/NumberFormat.h"
 
 namespace parksim {
 
@@ -52,13 +54,17 @@ void Trajectory::append(const Trajectory& tail) {
 
 void writeTrajectoryCsv(const std::string& path, const Trajectory& traj, const RobotDef& robot) {
   std::string out = "t,x,y,theta,omega_left,omega_right,v,omega\n";
-  char line[320];
+  out.reserve(out.size() + traj.points.size() * 160);
   for (const TrajectoryPoint& p : traj.points) {
     const Twist tw = toTwist(p.wheels, robot);
-    std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", p.t_s,
-                  p.pose.x, p.pose.y, p.pose.theta, p.wheels.left_radps, p.wheels.right_radps,
-                  tw.v_mps, tw.omega_radps);
-    out += line;
+    const double values[] = {
+        p.t_s,    p.pose.x,      p.pose.y, p.pose.theta, p.wheels.left_radps, p.wheels.right_radps,
+        tw.v_mps, tw.omega_radps};
+    for (std::size_t i = 0; i < std::size(values); ++i) {
+      if (i > 0) out += ',';
+      appendShortest(out, values[i]);
+    }
+    out += '\n';
   }
   writeFileAtomically(path, out);
 }
@@ -85,11 +91,7 @@ void splitCells(std::string_view line, std::vector<std::string_view>& cells) {
   }
 }
 
-std::string limitText(double value) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", value);
-  return buf;
-}
+std::string limitText(double value) { return formatGeneral(value); }
 
 }  // namespace
 

@@ -1,11 +1,14 @@
 #include "parksim/planner/PlanScenario.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 #include "parksim/planner/SpeedProfile.h"
 
 namespace parksim {
@@ -14,12 +17,14 @@ const char* toString(SteeringKind kind) {
   switch (kind) {
     case SteeringKind::kMoveToPose: return "move-to-pose";
     case SteeringKind::kRotateTranslateRotate: return "rotate-translate-rotate";
+    case SteeringKind::kReedsShepp: return "reeds-shepp";
   }
   return "?";
 }
 
 std::vector<SteeringKind> allSteeringKinds() {
-  return {SteeringKind::kMoveToPose, SteeringKind::kRotateTranslateRotate};
+  return {SteeringKind::kMoveToPose, SteeringKind::kRotateTranslateRotate,
+          SteeringKind::kReedsShepp};
 }
 
 SteeringKind steeringKindFromString(const std::string& name) {
@@ -34,50 +39,83 @@ SteeringKind steeringKindFromString(const std::string& name) {
 void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup) {
   const RobotDef& robot = scenario.robot;
   auto refuse = [](const std::string& what, double periods) {
-    char text[400];
-    std::snprintf(text, sizeof text,
-                  "%s needs %.3g control periods, more than the limit of %.0f per trajectory "
-                  "(docs/limits.md)",
-                  what.c_str(), periods, kMaxProfilePeriods);
-    throw Error(text);
+    throw Error(what + " needs " + formatGeneral(periods, 3) +
+                " control periods, more than the limit of " + formatGeneral(kMaxProfilePeriods, 6) +
+                " per trajectory (docs/limits.md)");
   };
-  if (setup.steering_kind == SteeringKind::kMoveToPose) {
-    const MoveToPoseDef& d = setup.steering;
-    const double periods = d.max_duration_s / d.period_s;
-    if (!(periods <= kMaxProfilePeriods)) refuse("move-to-pose steering (max_duration_s)", periods);
-    return;
+  double speed_fraction = 1.0;
+  double accel_fraction = 1.0;
+  double period_s = 0.1;
+  const char* name = "";
+  switch (setup.steering_kind) {
+    case SteeringKind::kMoveToPose: {
+      const MoveToPoseDef& d = setup.steering;
+      const double periods = d.max_duration_s / d.period_s;
+      if (!(periods <= kMaxProfilePeriods)) {
+        refuse("move-to-pose steering (max_duration_s)", periods);
+      }
+      return;
+    }
+    case SteeringKind::kRotateTranslateRotate:
+      speed_fraction = setup.rotate_translate_rotate.speed_fraction;
+      accel_fraction = setup.rotate_translate_rotate.accel_fraction;
+      period_s = setup.rotate_translate_rotate.period_s;
+      name = "rotate-translate-rotate steering";
+      break;
+    case SteeringKind::kReedsShepp:
+      speed_fraction = setup.reeds_shepp.speed_fraction;
+      period_s = setup.reeds_shepp.period_s;
+      name = "reeds-shepp steering";
+      break;
   }
-  const RotateTranslateRotateDef& d = setup.rotate_translate_rotate;
-  const double wheel_max = d.speed_fraction * robot.max_wheel_speed_radps;
-  const double wheel_step = d.accel_fraction * robot.max_wheel_accel_radps2 * d.period_s;
-  if (!(wheel_max > 0.0) || !(wheel_step > 0.0) || !(d.period_s > 0.0)) {
-    throw Error(
-        "rotate-translate-rotate steering: wheel speed, acceleration and period must be "
-        "positive");
+  // Both build rest-to-rest speed profiles at the wheel limits: braking from full speed, then
+  // moves as long as the lot (the diagonal; Reeds-Shepp curves are a few times longer at most)
+  // and, for rotate-translate-rotate, half turns in place.
+  const double wheel_max = speed_fraction * robot.max_wheel_speed_radps;
+  const double wheel_step = accel_fraction * robot.max_wheel_accel_radps2 * period_s;
+  if (!(wheel_max > 0.0) || !(wheel_step > 0.0) || !(period_s > 0.0)) {
+    throw Error(std::string(name) + ": wheel speed, acceleration and period must be positive");
   }
   const double r = robot.wheel_radius_m;
   const double half_base = 0.5 * robot.wheel_base_m;
   const double diagonal = std::hypot(scenario.lot.x_max_m - scenario.lot.x_min_m,
                                      scenario.lot.y_max_m - scenario.lot.y_min_m);
-  char what[300];
   const double brake = wheel_max / wheel_step;
-  std::snprintf(what, sizeof what,
-                "rotate-translate-rotate steering: braking from %g rad/s at %g rad/s^2", wheel_max,
-                wheel_step / d.period_s);
-  if (!(brake <= kMaxProfilePeriods)) refuse(what, brake);
-  const double turn =
-      restToRestPeriods(kPi, wheel_max * r / half_base, wheel_step * r / half_base, d.period_s);
-  std::snprintf(
-      what, sizeof what,
-      "rotate-translate-rotate steering: a half turn (wheel radius %g m, wheel base %g m)", r,
-      robot.wheel_base_m);
-  if (!(turn <= kMaxProfilePeriods)) refuse(what, turn);
-  const double cross = restToRestPeriods(diagonal, wheel_max * r, wheel_step * r, d.period_s);
-  std::snprintf(what, sizeof what,
-                "rotate-translate-rotate steering: a straight move across the lot (%g m, wheel "
-                "radius %g m)",
-                diagonal, r);
-  if (!(cross <= kMaxProfilePeriods)) refuse(what, cross);
+  if (!(brake <= kMaxProfilePeriods)) {
+    refuse(std::string(name) + ": braking from " + formatGeneral(wheel_max) + " rad/s at " +
+               formatGeneral(wheel_step / period_s) + " rad/s^2",
+           brake);
+  }
+  if (setup.steering_kind == SteeringKind::kRotateTranslateRotate) {
+    const double turn =
+        restToRestPeriods(kPi, wheel_max * r / half_base, wheel_step * r / half_base, period_s);
+    if (!(turn <= kMaxProfilePeriods)) {
+      refuse(std::string(name) + ": a half turn (wheel radius " + formatGeneral(r) +
+                 " m, wheel base " + formatGeneral(robot.wheel_base_m) + " m)",
+             turn);
+    }
+  }
+  const double cross = restToRestPeriods(diagonal, wheel_max * r, wheel_step * r, period_s);
+  if (!(cross <= kMaxProfilePeriods)) {
+    refuse(std::string(name) + ": a straight move across the lot (" + formatGeneral(diagonal) +
+               " m, wheel radius " + formatGeneral(r) + " m)",
+           cross);
+  }
+}
+
+const char* toString(TimingKind kind) {
+  switch (kind) {
+    case TimingKind::kTimeOptimal: return "time-optimal";
+    case TimingKind::kStudy: return "study";
+  }
+  return "?";
+}
+
+TimingKind timingKindFromString(const std::string& name) {
+  for (TimingKind k : {TimingKind::kTimeOptimal, TimingKind::kStudy}) {
+    if (name == toString(k)) return k;
+  }
+  throw Error("unknown timing '" + name + "' (expected one of time-optimal, study)");
 }
 
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
@@ -102,11 +140,61 @@ PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checke
       steering = std::make_unique<RotateTranslateRotateSteering>(scenario.robot,
                                                                  setup.rotate_translate_rotate);
       break;
+    case SteeringKind::kReedsShepp:
+      steering = std::make_unique<ReedsSheppSteering>(scenario.robot, setup.reeds_shepp);
+      break;
+  }
+  if (!(setup.feedback_headroom >= 0.0 && setup.feedback_headroom < 1.0)) {
+    throw Error("planScenario: feedback_headroom must be in [0, 1)");
   }
   if (!steering) throw Error("planScenario: unknown steering kind");
+  // The same rule as the world reader's, so a world the reader accepts never fails here for
+  // its start or goal (the tree planner's own checks then agree up to Bullet's rounding).
+  const double margin = 0.5 * setup.validation.resolution_m;
+  if (const std::optional<std::string> problem =
+          placementProblem(scenario, scenario.start, margin)) {
+    PlanResult r;
+    r.status = PlanStatus::kInvalidStart;
+    r.message = "start: " + *problem;
+    return r;
+  }
+  if (const std::optional<std::string> problem = goalPlacementProblem(scenario, margin)) {
+    PlanResult r;
+    r.status = PlanStatus::kInvalidGoal;
+    r.message = "goal: " + *problem;
+    return r;
+  }
   const MotionValidator validator(checker, scenario.robot, scenario.lot, setup.validation);
-  const TreePlanner planner(scenario.robot, scenario.lot, *steering, validator, setup.planner);
-  return planner.solve(scenario.start, scenario.goal);
+  const TimingLimits limits = timingLimits(scenario.robot, setup.feedback_headroom);
+  PlanResult result;
+  if (setup.planner.kind == PlannerKind::kHybridAStar) {
+    const ReedsSheppSteering curves(scenario.robot, setup.reeds_shepp);
+    const HybridAStar planner(scenario.robot, scenario.lot, curves, validator, setup.planner,
+                              setup.hybrid_a_star);
+    result = planner.solve(scenario.start, scenario.goal);
+  } else {
+    const TreePlanner planner(scenario.robot, scenario.lot, *steering, validator, setup.planner);
+    result = planner.solve(scenario.start, scenario.goal);
+  }
+  if (!result.solved()) return result;
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<PathPiece> pieces = pathPieces(result.trajectory);
+  if (setup.timing == TimingKind::kTimeOptimal) {
+    const long before = validator.queries();
+    Trajectory timed =
+        timePieces(result.trajectory.points.front().pose, pieces, scenario.robot, limits);
+    if (validator.isValid(timed)) {
+      result.trajectory = std::move(timed);
+      const CostWeights w{setup.planner.reverse_penalty, setup.planner.cusp_penalty_m};
+      result.cost = trajectoryCost(result.trajectory, scenario.robot, w);
+    }
+    result.stats.collision_queries += validator.queries() - before;
+  }
+  result.duration_lower_bound_s = durationLowerBound(pieces, limits);
+  result.stats.times.timing_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  result.stats.times.total_s += result.stats.times.timing_s;
+  return result;
 }
 
 }  // namespace parksim

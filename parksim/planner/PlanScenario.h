@@ -7,8 +7,10 @@
 
 #include "parksim/core/FootprintChecker.h"
 #include "parksim/core/Scenario.h"
+#include "parksim/planner/HybridAStar.h"
 #include "parksim/planner/MotionValidator.h"
 #include "parksim/planner/MoveToPoseSteering.h"
+#include "parksim/planner/ReedsSheppSteering.h"
 #include "parksim/planner/RotateTranslateRotateSteering.h"
 #include "parksim/planner/TreePlanner.h"
 
@@ -17,13 +19,27 @@ namespace parksim {
 enum class SteeringKind {
   kMoveToPose,             ///< the study's polar controller ("move-to-pose")
   kRotateTranslateRotate,  ///< turn, drive straight, turn; exact ("rotate-translate-rotate")
+  kReedsShepp,             ///< forward and reverse arcs and straights; exact ("reeds-shepp")
 };
 
 const char* toString(SteeringKind kind);
 /// Every steering kind, in a fixed order (for benchmarks and help texts).
 std::vector<SteeringKind> allSteeringKinds();
-/// Parses "move-to-pose" or "rotate-translate-rotate"; throws Error otherwise.
+/// Parses "move-to-pose", "rotate-translate-rotate" or "reeds-shepp"; throws Error otherwise.
 SteeringKind steeringKindFromString(const std::string& name);
+
+/// How the returned plan is timed along its geometry.
+enum class TimingKind {
+  /// Re-timed to the fastest profile within the speed limit less the feedback headroom and the
+  /// acceleration limit, stopping at every cusp (TimeOptimalTiming.h): "time-optimal".
+  kTimeOptimal,
+  /// As the steering function drove it (the study's controller for move-to-pose): "study".
+  kStudy,
+};
+
+const char* toString(TimingKind kind);
+/// Parses "time-optimal" or "study"; throws Error otherwise.
+TimingKind timingKindFromString(const std::string& name);
 
 struct PlanSetup {
   PlannerDef planner;
@@ -37,7 +53,16 @@ struct PlanSetup {
   double goal_tolerance_fraction = 0.5;
   /// Rotate-translate-rotate parameters.
   RotateTranslateRotateDef rotate_translate_rotate;
+  /// Reeds-Shepp parameters (also the curves of Hybrid A*'s analytic expansion).
+  ReedsSheppDef reeds_shepp;
+  /// Hybrid A* parameters (planner.kind == kHybridAStar; it ignores steering_kind).
+  HybridAStarDef hybrid_a_star;
   MotionValidatorDef validation;
+  TimingKind timing = TimingKind::kTimeOptimal;
+  /// Share of the wheel-speed limit left to feedback: time-optimal plans drive the wheels at
+  /// most (1 - feedback_headroom) times the limit, so a tracking controller can add corrections
+  /// without saturating. In [0, 1).
+  double feedback_headroom = 0.2;
 };
 
 /// Refuses, before any work, a setup whose steering would build unbounded trajectories in this
@@ -47,6 +72,9 @@ struct PlanSetup {
 /// limit (docs/limits.md). planScenario calls it first.
 void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup);
 
+/// Plans with the selected planner and steering, then times the plan as `timing` says (the
+/// re-timed trajectory is validated again; if rounding ever made it fail, the planner's own
+/// timing is kept) and sets its duration lower bound.
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
                         const PlanSetup& setup);
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 
 namespace parksim {
 
@@ -35,12 +36,9 @@ std::vector<double> restToRestProfile(double distance, double max_speed, double 
   if (target == 0.0) return {};
   const double estimate = restToRestPeriods(distance, max_speed, max_step, period_s);
   if (!(estimate <= kMaxProfilePeriods)) {
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "speed profile: %.3g periods needed, more than the limit of %.0f "
-                  "(docs/limits.md)",
-                  estimate, kMaxProfilePeriods);
-    throw Error(text);
+    throw Error("speed profile: " + formatGeneral(estimate, 3) +
+                " periods needed, more than the limit of " + formatGeneral(kMaxProfilePeriods) +
+                " (docs/limits.md)");
   }
   // Area of the n-period trapezoid grows with n; find the first n that covers the distance,
   // starting from the estimate, which is within a few periods of it (O(n) work in all).

@@ -20,13 +20,14 @@ const char* toString(PlannerKind kind) {
     case PlannerKind::kRrtGoalConnect: return "rrt-goal-connect";
     case PlannerKind::kRrtStar: return "rrt-star";
     case PlannerKind::kRrtConnect: return "rrt-connect";
+    case PlannerKind::kHybridAStar: return "hybrid-a-star";
   }
   return "?";
 }
 
 std::vector<PlannerKind> allPlannerKinds() {
   return {PlannerKind::kRrt, PlannerKind::kRrtGoalConnect, PlannerKind::kRrtStar,
-          PlannerKind::kRrtConnect};
+          PlannerKind::kRrtConnect, PlannerKind::kHybridAStar};
 }
 
 PlannerKind plannerKindFromString(const std::string& name) {
@@ -718,6 +719,9 @@ TreePlanner::TreePlanner(const RobotDef& robot, const LotBounds& lot,
                          const SteeringFunction& steering, const MotionValidator& validator,
                          const PlannerDef& def)
     : robot_(robot), lot_(lot), steering_(steering), validator_(validator), def_(def) {
+  if (def.kind == PlannerKind::kHybridAStar) {
+    throw Error("planner: hybrid-a-star is not a tree planner (use HybridAStar)");
+  }
   if (def.max_iterations < 0) throw Error("planner: max_iterations must be >= 0");
   if (!(def.goal_bias >= 0.0 && def.goal_bias <= 1.0)) {
     throw Error("planner: goal_bias must be in [0, 1]");

@@ -44,12 +44,15 @@
 
 namespace parksim {
 
-enum class PlannerKind { kRrt, kRrtGoalConnect, kRrtStar, kRrtConnect };
+/// The planner list: every planner `plan`, `run` and `bench` accept (the tree planner's
+/// variants and Hybrid A*, HybridAStar.h).
+enum class PlannerKind { kRrt, kRrtGoalConnect, kRrtStar, kRrtConnect, kHybridAStar };
 
 const char* toString(PlannerKind kind);
 /// Every planner kind, in a fixed order (for benchmarks and help texts).
 std::vector<PlannerKind> allPlannerKinds();
-/// Parses "rrt", "rrt-goal-connect", "rrt-star" or "rrt-connect"; throws Error otherwise.
+/// Parses "rrt", "rrt-goal-connect", "rrt-star", "rrt-connect" or "hybrid-a-star"; throws
+/// Error otherwise.
 PlannerKind plannerKindFromString(const std::string& name);
 
 struct PlannerDef {
@@ -112,6 +115,8 @@ struct PhaseTimes {
   double rewiring_s = 0.0;    ///< kRrtStar: choosing parents and rewiring (steering + validation)
   double connection_s = 0.0;  ///< kRrtConnect: steering and validating tree-to-tree connections
   double smoothing_s = 0.0;   ///< shortcut smoothing
+  double heuristic_s = 0.0;   ///< hybrid A*: building the obstacle heuristic's grid
+  double timing_s = 0.0;      ///< re-timing the plan and its duration bound (planScenario)
   double total_s = 0.0;
 };
 
@@ -144,6 +149,9 @@ struct PlanResult {
   std::vector<Trajectory> tree_edges;  ///< the trees' edges at the end, if recorded
   /// Cost of `trajectory` (PlannerDef's weights), m; 0 unless solved.
   double cost = 0.0;
+  /// Set by planScenario: no timing of the trajectory's geometry within the timing limits is
+  /// faster than this (durationLowerBound in TimeOptimalTiming.h), s; 0 unless solved.
+  double duration_lower_bound_s = 0.0;
   /// Every improvement of the best solution, in order; costs never increase and the last equals
   /// `cost`. Non-optimising planners record their one solution (and smoothing's result).
   std::vector<CostSample> cost_history;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parksim/core/Angle.h"
+
 namespace parksim {
 
 namespace {
@@ -54,6 +56,43 @@ std::vector<Eigen::Vector2d> cspaceSlice(const OrientedBox& obstacle, const Robo
     for (const Eigen::Vector2d& o : obstacle.corners()) sums.push_back(o + reflected);
   }
   return convexHull(std::move(sums));
+}
+
+std::vector<Eigen::Vector2d> cspaceSlice(const Obstacle& obstacle, const RobotDef& robot,
+                                         double theta_rad, int arc_segments) {
+  if (obstacle.shape == ObstacleShape::kBox) return cspaceSlice(obstacle.box, robot, theta_rad);
+  const double c = std::cos(theta_rad);
+  const double s = std::sin(theta_rad);
+  std::vector<Eigen::Vector2d> reflected;
+  for (const Eigen::Vector2d& f : footprintCornersInRobotFrame(robot)) {
+    reflected.emplace_back(-(c * f.x() - s * f.y()), -(s * f.x() + c * f.y()));
+  }
+  std::vector<Eigen::Vector2d> points;
+  if (obstacle.shape == ObstacleShape::kPolygon) {
+    for (const Eigen::Vector2d& f : reflected) {
+      for (const Eigen::Vector2d& v : obstacle.vertices) points.push_back(v + f);
+    }
+    return convexHull(std::move(points));
+  }
+  // Circle: around each corner of the reflected footprint (a rectangle, so each exterior
+  // angle is a quarter turn), an arc of the radius between the two edges' outward normals.
+  const int n = std::max(1, arc_segments);
+  const double r = obstacle.radius_m;
+  const Eigen::Vector2d center = obstacle.box.center;
+  const std::vector<Eigen::Vector2d> rect = convexHull(reflected);
+  const std::size_t m = rect.size();
+  for (std::size_t k = 0; k < m; ++k) {
+    const Eigen::Vector2d in = rect[k] - rect[(k + m - 1) % m];
+    const double a0 = std::atan2(-in.x(), in.y());  // outward normal of the incoming edge
+    const Eigen::Vector2d out = rect[(k + 1) % m] - rect[k];
+    double a1 = std::atan2(-out.x(), out.y());
+    while (a1 < a0) a1 += 2.0 * kPi;
+    for (int j = 0; j <= n; ++j) {
+      const double a = a0 + (a1 - a0) * j / n;
+      points.push_back(center + rect[k] + r * Eigen::Vector2d(std::cos(a), std::sin(a)));
+    }
+  }
+  return convexHull(std::move(points));
 }
 
 bool insideConvex(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& p,

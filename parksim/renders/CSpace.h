@@ -15,6 +15,7 @@
 
 #include "parksim/core/Geometry.h"
 #include "parksim/core/RobotDef.h"
+#include "parksim/core/Scenario.h"
 
 namespace parksim {
 
@@ -22,6 +23,14 @@ namespace parksim {
 /// polygon without repeated or collinear vertices (4 to 8 of them), m.
 std::vector<Eigen::Vector2d> cspaceSlice(const OrientedBox& obstacle, const RobotDef& robot,
                                          double theta_rad);
+
+/// The C-space obstacle slice of any obstacle at heading `theta_rad`, counter-clockwise convex
+/// polygon, m. Boxes and polygons: exact (the hull of the pairwise vertex sums). Circles: the
+/// exact slice is the reflected footprint with its corners rounded by the radius; each quarter
+/// arc is drawn with `arc_segments` chords, whose vertices lie on the exact boundary (the
+/// chords cut inside it by at most r (1 - cos(pi / (4 arc_segments)))).
+std::vector<Eigen::Vector2d> cspaceSlice(const Obstacle& obstacle, const RobotDef& robot,
+                                         double theta_rad, int arc_segments = 8);
 
 /// Corners of the footprint relative to the reference point, in the robot's frame (x forward),
 /// counter-clockwise, m.

@@ -7,6 +7,7 @@
 
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 #include "parksim/renders/CSpace.h"
 #include "parksim/renders/PngEncoder.h"
 #include "parksim/renders/Renderer.h"
@@ -15,12 +16,6 @@
 namespace parksim {
 
 namespace {
-
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
 
 // Room for axis labels and the title, as fractions of the data extent: label sizes are in
 // pixels, the extent in metres, and figures are about 1.5:1, so fractions fit well enough.
@@ -185,10 +180,10 @@ Scene buildSteeringFigure(const Scenario& scenario, const SteeringExample& ex,
   scene.arrows.push_back({ex.target, a, 0.3 * a, Layers::kArrow, style.goal, style.arrow_px});
 
   const double span = std::max(data.width(), data.height());
-  addLabel(scene, "solid: fixed horizon (" + fmt("%.1f", ex.fixed_horizon.duration()) + " s)",
+  addLabel(scene, "solid: fixed horizon (" + formatFixed(ex.fixed_horizon.duration(), 1) + " s)",
            {data.x_min + 0.03 * span, data.y_max - 0.03 * span}, style.planned, style,
            HAlign::kLeft, VAlign::kTop);
-  addLabel(scene, "dashed: to goal (" + fmt("%.1f", ex.to_goal.duration()) + " s)",
+  addLabel(scene, "dashed: to goal (" + formatFixed(ex.to_goal.duration(), 1) + " s)",
            {data.x_min + 0.03 * span, data.y_max - 0.09 * span}, style.executed, style,
            HAlign::kLeft, VAlign::kTop);
   addAxesAndTitle(scene, data, "Move-to-pose steering in both modes (Fig. 2)", style);
@@ -200,7 +195,9 @@ Scene buildCSpaceSliceFigure(const Scenario& scenario, double theta_rad, const S
   const Rgba8 fill = withAlpha(style.cspace, 80);
   const Rgba8 edge = darker(style.cspace, 0.2);
   for (const Obstacle& obstacle : scenario.obstacles) {
-    const std::vector<Eigen::Vector2d> slice = cspaceSlice(obstacle.box, scenario.robot, theta_rad);
+    // Obstacles that pass under the chassis are no C-space obstacles (blocksRobot).
+    if (!blocksRobot(obstacle, scenario.robot)) continue;
+    const std::vector<Eigen::Vector2d> slice = cspaceSlice(obstacle, scenario.robot, theta_rad);
     scene.polygons.push_back({slice, Layers::kCSpace, fill});
     ScenePolyline outline{{}, edge, style.outline_px * 1.3f, true};
     for (const Eigen::Vector2d& p : slice)
@@ -224,7 +221,7 @@ Scene buildCSpaceSliceFigure(const Scenario& scenario, double theta_rad, const S
        style.outline_px,
        false});
   addAxesAndTitle(scene, lotExtent(scenario),
-                  "C-space obstacles at heading " + fmt("%.0f", radToDeg(theta_rad)) +
+                  "C-space obstacles at heading " + formatFixed(radToDeg(theta_rad), 0) +
                       "\u00b0 (Fig. 5): exact Minkowski slices",
                   style);
   return scene;
@@ -247,8 +244,8 @@ Scene buildCSpaceStackFigure(const Scenario& scenario, int slices, const SceneSt
                             Layers::kGround,
                             style.lot});
   for (const Obstacle& o : scenario.obstacles) {
-    const auto c = o.box.corners();
-    scene.polygons.push_back({{c.begin(), c.end()}, Layers::kGrid, style.colorFor(o.kind)});
+    scene.polygons.push_back(
+        {outline(o, style.circle_segments), Layers::kGrid, style.colorFor(o.kind)});
   }
   const Rgba8 cool = rgb(60, 110, 200);
   for (int k = 0; k < slices; ++k) {
@@ -257,7 +254,8 @@ Scene buildCSpaceStackFigure(const Scenario& scenario, int slices, const SceneSt
     // Cyclic colours: -180 and +180 degrees are the same heading and get the same colour.
     const Rgba8 color = mix(cool, style.cspace, 0.5 * (1.0 + std::cos(theta)));
     for (const Obstacle& o : scenario.obstacles) {
-      const std::vector<Eigen::Vector2d> slice = cspaceSlice(o.box, scenario.robot, theta);
+      if (!blocksRobot(o, scenario.robot)) continue;
+      const std::vector<Eigen::Vector2d> slice = cspaceSlice(o, scenario.robot, theta);
       scene.polygons.push_back({slice, z, color});
       ScenePolyline outline{{}, darker(color, 0.45), style.tree_px, true};
       for (const Eigen::Vector2d& p : slice) outline.points.emplace_back(p.x(), p.y(), z + 1e-4);

@@ -18,6 +18,7 @@
 
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 #include "parksim/renders/PngEncoder.h"
 #include "parksim/renders/Process.h"
 #include "parksim/renders/Renderer.h"
@@ -61,12 +62,10 @@ ImageSize parseImageSize(const std::string& text) {
 double checkFrameLimits(const FrameDef& def, double duration_s) {
   const double frames = std::floor(duration_s * def.fps) + 2.0;
   if (!(frames <= def.max_frames)) {
-    char text[240];
-    std::snprintf(text, sizeof text,
-                  "frames: %.4g s of simulated time at %g fps are %.4g frames, more than the "
-                  "limit of %d (docs/limits.md)",
-                  duration_s, def.fps, frames, def.max_frames);
-    throw Error(text);
+    throw Error("frames: " + formatGeneral(duration_s, 4) + " s of simulated time at " +
+                formatGeneral(def.fps) + " fps are " + formatGeneral(frames, 4) +
+                " frames, more than the limit of " + std::to_string(def.max_frames) +
+                " (docs/limits.md)");
   }
   return frames;
 }
@@ -223,11 +222,8 @@ class EncodeQueue {
   std::string error_;
 };
 
-std::string formatFps(double fps) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", fps);
-  return buf;
-}
+// ffmpeg reads its arguments in the C locale: never "29,97".
+std::string formatFps(double fps) { return formatGeneral(fps, 6); }
 
 VideoOutcome runFfmpeg(const std::string& ffmpeg_name, const std::string& out_dir,
                        const std::string& frames_dir, double fps, int frames, bool gif) {

@@ -238,6 +238,7 @@ struct Renderer::Impl {
   void addTriangle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                    const Eigen::Vector3d& n, const Rgba8& color);
   void addBox(const SceneBox& box);
+  void addPrism(const ScenePrism& prism);
   void addPolygon(const std::vector<Eigen::Vector2d>& pts, double z, const Rgba8& color);
   void addSegment(Eigen::Vector4d c0, Eigen::Vector4d c1, float width_px, const Rgba8& color,
                   bool edge_smoothing = false);
@@ -404,6 +405,26 @@ void Renderer::Impl::addBox(const SceneBox& box) {
   }
 }
 
+void Renderer::Impl::addPrism(const ScenePrism& prism) {
+  const std::vector<Eigen::Vector2d>& p = prism.footprint;
+  const std::size_t n = p.size();
+  if (n < 3) return;
+  const double z0 = prism.z_min_m;
+  const double z1 = prism.z_min_m + prism.height_m;
+  addPolygon(p, z1, prism.color);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;
+    const Eigen::Vector2d edge = p[j] - p[i];
+    const Eigen::Vector3d normal = Eigen::Vector3d(edge.y(), -edge.x(), 0.0).normalized();
+    const Eigen::Vector3d a(p[i].x(), p[i].y(), z0);
+    const Eigen::Vector3d b(p[j].x(), p[j].y(), z0);
+    const Eigen::Vector3d c(p[j].x(), p[j].y(), z1);
+    const Eigen::Vector3d d(p[i].x(), p[i].y(), z1);
+    addTriangle(a, b, c, normal, prism.color);
+    addTriangle(a, c, d, normal, prism.color);
+  }
+}
+
 void Renderer::Impl::addPolygon(const std::vector<Eigen::Vector2d>& pts, double z,
                                 const Rgba8& color) {
   for (std::size_t i = 1; i + 1 < pts.size(); ++i) {
@@ -560,6 +581,7 @@ void Renderer::Impl::draw(const Scene& scene, const Camera& cam) {
     addPolygon(p.points, p.z_m, p.color);
   }
   for (const SceneBox& b : scene.boxes) addBox(b);
+  for (const ScenePrism& p : scene.prisms) addPrism(p);
   const Eigen::Matrix4d vp = cam.viewProjection();
   if (samples == 1 && !cam.perspective) {
     // Without multisampling, a top view smooths the edges of what it sees, the polygons and
@@ -577,6 +599,15 @@ void Renderer::Impl::draw(const Scene& scene, const Camera& cam) {
     for (const SceneBox& b : scene.boxes) {
       if (b.color.a != 255) continue;
       edge = boxOutline(b.footprint, b.z_min_m + b.height_m, b.color, 1.0f);
+      addPolyline(edge, vp, true);
+    }
+    for (const ScenePrism& p : scene.prisms) {
+      if (p.color.a != 255) continue;
+      edge.color = p.color;
+      edge.points.clear();
+      for (const Eigen::Vector2d& q : p.footprint) {
+        edge.points.emplace_back(q.x(), q.y(), p.z_min_m + p.height_m);
+      }
       addPolyline(edge, vp, true);
     }
   }

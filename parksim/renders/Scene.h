@@ -3,7 +3,7 @@
 // renderer turns into pixels. Building a Scene needs no OpenGL, so its content is unit-tested
 // on its own (MuJoCo's mjvScene / mjr_render split).
 //
-// Draw order: polygons, then boxes, then lines, then arrows, then text. Within each kind the
+// Draw order: polygons, then boxes and prisms, then lines, then arrows, then text. Within each kind the
 // list order is kept, so a later item wins over an earlier one at the same height. The depth
 // test still hides lines and polygons below the top of a box.
 
@@ -36,6 +36,15 @@ struct SceneBox {
   OrientedBox footprint;  ///< in the ground plane, m
   double z_min_m = 0.0;   ///< bottom face height, m
   double height_m = 0.1;  ///< m
+  Rgba8 color;
+};
+
+/// A convex polygon extruded vertically: round and polygonal obstacles (a circle is drawn as a
+/// many-sided polygon on it).
+struct ScenePrism {
+  std::vector<Eigen::Vector2d> footprint;  ///< convex, counter-clockwise, m
+  double z_min_m = 0.0;                    ///< bottom face height, m
+  double height_m = 0.1;                   ///< m
   Rgba8 color;
 };
 
@@ -99,6 +108,7 @@ struct Scene {
   std::optional<Eigen::Vector3d> focus;
   std::vector<ScenePolygon> polygons;
   std::vector<SceneBox> boxes;
+  std::vector<ScenePrism> prisms;
   std::vector<ScenePolyline> lines;
   std::vector<SceneArrow> arrows;
   std::vector<SceneText> texts;

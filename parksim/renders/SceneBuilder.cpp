@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "parksim/core/DiffDrive.h"
+#include "parksim/core/NumberFormat.h"
 
 namespace parksim {
 
@@ -14,6 +15,8 @@ Rgba8 SceneStyle::colorFor(ObstacleKind kind) const {
     case ObstacleKind::kCurb: return curb;
     case ObstacleKind::kIsland: return island;
     case ObstacleKind::kBox: return box;
+    case ObstacleKind::kBollard: return bollard;
+    case ObstacleKind::kPillar: return pillar;
     case ObstacleKind::kParkedRobot: return parked_robot;
   }
   return box;
@@ -65,10 +68,8 @@ void addGrid(Scene& scene, const LotBounds& lot, const SceneStyle& style) {
 // Tracking errors are sub-millimetre when all goes well: two decimals, and no "-0.00".
 std::string formatOverlayLine2(const Overlay& o) {
   auto tidy = [](double v) { return std::abs(v) < 0.005 ? 0.0 : v; };
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "tracking error %6.2f mm %6.2f\u00b0",
-                tidy(o.position_error_m * 1000.0), tidy(radToDeg(o.heading_error_rad)));
-  return buf;
+  return "tracking error " + padLeft(formatFixed(tidy(o.position_error_m * 1000.0), 2), 6) +
+         " mm " + padLeft(formatFixed(tidy(radToDeg(o.heading_error_rad)), 2), 6) + "\u00b0";
 }
 
 }  // namespace
@@ -93,16 +94,34 @@ Scene buildLotScene(const Scenario& scenario, const SceneStyle& style,
 
   for (std::size_t i = 0; i < scenario.obstacles.size(); ++i) {
     const Obstacle& obstacle = scenario.obstacles[i];
-    SceneBox box{obstacle.box, 0.0, obstacle.height_m, style.colorFor(obstacle.kind)};
+    const bool touching =
+        std::find(contacts.begin(), contacts.end(), static_cast<int>(i)) != contacts.end();
+    const Rgba8 color = touching ? style.contact : style.colorFor(obstacle.kind);
+    if (obstacle.shape == ObstacleShape::kBox) {
+      SceneBox box{obstacle.box, 0.0, obstacle.height_m, color};
+      if (i < obstacle_poses.size()) {
+        box.footprint.center = {obstacle_poses[i].x, obstacle_poses[i].y};
+        box.footprint.yaw = obstacle_poses[i].theta;
+      }
+      for (const Eigen::Vector2d& c : box.footprint.corners()) growExtent(extent, c);
+      scene.boxes.push_back(box);
+      continue;
+    }
+    // Round and polygonal obstacles: their outline, moved as the body moved from where the
+    // scenario put it (the body's frame is the bounding rectangle's centre and yaw).
+    ScenePrism prism{outline(obstacle, style.circle_segments), 0.0, obstacle.height_m, color};
     if (i < obstacle_poses.size()) {
-      box.footprint.center = {obstacle_poses[i].x, obstacle_poses[i].y};
-      box.footprint.yaw = obstacle_poses[i].theta;
+      const Pose2 now = obstacle_poses[i];
+      const double turn = now.theta - obstacle.box.yaw;
+      const double c = std::cos(turn);
+      const double s = std::sin(turn);
+      for (Eigen::Vector2d& p : prism.footprint) {
+        const Eigen::Vector2d d = p - obstacle.box.center;
+        p = Eigen::Vector2d(now.x + c * d.x() - s * d.y(), now.y + s * d.x() + c * d.y());
+      }
     }
-    if (std::find(contacts.begin(), contacts.end(), static_cast<int>(i)) != contacts.end()) {
-      box.color = style.contact;
-    }
-    for (const Eigen::Vector2d& c : box.footprint.corners()) growExtent(extent, c);
-    scene.boxes.push_back(box);
+    for (const Eigen::Vector2d& p : prism.footprint) growExtent(extent, p);
+    scene.prisms.push_back(std::move(prism));
   }
 
   // The goal footprint, where the robot must end, dashed so the robot parked on it shows.
@@ -184,9 +203,8 @@ Scene buildScene(const Scenario& scenario, const ViewState& view, const SceneSty
   }
   if (view.overlay) {
     const Overlay& o = *view.overlay;
-    char line1[160];
-    std::snprintf(line1, sizeof line1, "%s%st = %6.2f s", o.title.c_str(),
-                  o.title.empty() ? "" : "   ", o.time_s);
+    const std::string line1 = o.title + (o.title.empty() ? "" : "   ") +
+                              "t = " + padLeft(formatFixed(o.time_s, 2), 6) + " s";
     const float size = style.text_px;
     const double pad = 0.5 * size;
     scene.texts.push_back({line1,

@@ -17,6 +17,8 @@ struct SceneStyle {
   Rgba8 curb = rgb(150, 140, 120);          ///< ObstacleKind::kCurb
   Rgba8 island = rgb(96, 140, 88);          ///< ObstacleKind::kIsland
   Rgba8 box = rgb(140, 110, 80);            ///< ObstacleKind::kBox
+  Rgba8 bollard = rgb(214, 170, 40);        ///< ObstacleKind::kBollard
+  Rgba8 pillar = rgb(140, 140, 150);        ///< ObstacleKind::kPillar
   Rgba8 parked_robot = rgb(70, 110, 170);   ///< ObstacleKind::kParkedRobot
   Rgba8 contact = rgb(230, 50, 40);         ///< an obstacle the robot is touching
   Rgba8 robot = rgb(242, 140, 30);          ///< the ego robot's body
@@ -46,6 +48,7 @@ struct SceneStyle {
   double grid_spacing_m = 0.1;  ///< ground grid period, m; 0 draws no grid
   double arrow_length_m = 0.1;  ///< start and goal arrows, m
   double margin_m = 0.04;       ///< ground shown around the lot bounds, m
+  int circle_segments = 64;     ///< sides of the polygon that draws a round obstacle
 
   Rgba8 colorFor(ObstacleKind kind) const;
   /// Every width and text size multiplied by `factor` (> 0).

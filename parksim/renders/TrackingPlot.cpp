@@ -8,8 +8,9 @@
 #include <sstream>
 
 #include "parksim/core/Angle.h"
+#include "parksim/core/Csv.h"
 #include "parksim/core/Error.h"
-#include "parksim/core/InputFile.h"
+#include "parksim/core/NumberFormat.h"
 
 namespace parksim {
 
@@ -37,9 +38,7 @@ std::string formatTick(double value, double step) {
   // A value that rounds to zero prints as "0", never "-0.0".
   const double unit = std::pow(10.0, -decimals);
   if (std::abs(value) < 0.5 * unit) value = 0.0;
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
-  return buf;
+  return formatFixed(value, decimals);
 }
 
 namespace {
@@ -183,67 +182,26 @@ Scene buildTrackingPlot(const TrackingSeries& series, const std::string& title, 
 }
 
 TrackingSeries readTrackingCsv(const std::string& path) {
-  // Regular files only, at most 512 MiB (an executed.csv of the longest episode, docs/limits.md).
-  std::istringstream in(readInputFile(path, 512u << 20, "executed file"));
-  std::string line;
-  if (!std::getline(in, line)) throw Error(path + ": empty file, expected a header row");
-  // Lines are split into cells: a line of a million commas must not become a million strings.
-  constexpr std::size_t kMaxLine = 4096;
-  if (line.size() > kMaxLine) throw Error(path + ":1: line longer than 4096 bytes");
-  auto split = [](const std::string& s) {
-    std::vector<std::string> cells;
-    std::stringstream ss(s);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) {
-      const auto b = cell.find_first_not_of(" \t\r");
-      const auto e = cell.find_last_not_of(" \t\r");
-      cells.push_back(b == std::string::npos ? std::string() : cell.substr(b, e - b + 1));
-    }
-    return cells;
-  };
-  const std::vector<std::string> header = split(line);
-  auto find = [&](std::initializer_list<const char*> names) -> std::optional<std::size_t> {
-    for (const char* name : names) {
-      const auto it = std::find(header.begin(), header.end(), name);
-      if (it != header.end()) return static_cast<std::size_t>(it - header.begin());
-    }
-    return std::nullopt;
-  };
-  const auto t_col = find({"t", "t_s", "time"});
-  const auto p_col = find({"pos_err", "pos_err_m", "position_error", "position_error_m"});
-  const auto h_rad = find({"heading_err", "heading_err_rad", "heading_error", "heading_error_rad"});
-  const auto h_deg = find({"heading_err_deg", "heading_error_deg"});
+  const CsvTable csv = readCsvFile(path);
+  const auto t_col = csv.findColumn({"t", "t_s", "time"});
+  const auto p_col = csv.findColumn({"pos_err", "pos_err_m", "position_error", "position_error_m"});
+  const auto h_rad =
+      csv.findColumn({"heading_err", "heading_err_rad", "heading_error", "heading_error_rad"});
+  const auto h_deg = csv.findColumn({"heading_err_deg", "heading_error_deg"});
   if (!t_col || !p_col || (!h_rad && !h_deg)) {
+    std::string header;
+    for (const std::string& name : csv.header()) header += (header.empty() ? "" : ",") + name;
     throw Error(path +
                 ":1: needs columns t, pos_err and heading_err (or their longer names), got '" +
-                line + "'");
+                header + "'");
   }
   const std::size_t h_col = h_rad ? *h_rad : *h_deg;
   const double h_scale = h_rad ? 1.0 : kPi / 180.0;
   TrackingSeries series;
-  int line_no = 1;
-  while (std::getline(in, line)) {
-    if (line.size() > kMaxLine) throw Error(path + ": line longer than 4096 bytes");
-    ++line_no;
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const std::vector<std::string> cells = split(line);
-    auto number = [&](std::size_t col) {
-      if (col >= cells.size()) {
-        throw Error(path + ":" + std::to_string(line_no) + ": missing column " + header[col]);
-      }
-      try {
-        std::size_t used = 0;
-        const double v = std::stod(cells[col], &used);
-        if (used != cells[col].size() || !std::isfinite(v)) throw std::invalid_argument("");
-        return v;
-      } catch (const std::exception&) {
-        throw Error(path + ":" + std::to_string(line_no) + ": " + header[col] +
-                    ": not a number: '" + cells[col] + "'");
-      }
-    };
-    series.t_s.push_back(number(*t_col));
-    series.position_error_m.push_back(number(*p_col));
-    series.heading_error_rad.push_back(number(h_col) * h_scale);
+  for (const CsvTable::Row& row : csv.rows()) {
+    series.t_s.push_back(csv.number(row, *t_col));
+    series.position_error_m.push_back(csv.number(row, *p_col));
+    series.heading_error_rad.push_back(csv.number(row, h_col) * h_scale);
   }
   return series;
 }

@@ -1,6 +1,8 @@
 #include "parksim/scenario/ScenarioReader.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -9,9 +11,13 @@
 #include <system_error>
 #include <vector>
 
+#include <yaml-cpp/eventhandler.h>
+
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
+#include "parksim/core/Text.h"
+#include "parksim/scenario/RealismSections.h"
 #include "parksim/scenario/YamlField.h"
 
 namespace parksim {
@@ -28,9 +34,60 @@ std::string inQuotes(std::string_view s) {
   return out;
 }
 
+// Angles a pose may carry, degrees: ten turns either way. Larger values are typos or
+// overflow, and trigonometry of huge angles loses all precision.
+constexpr double kMaxYawDeg = 3600.0;
+// Coordinates and lengths, m: far beyond any lot, small enough that squares stay finite and
+// millimetres stay resolvable in double.
+constexpr double kMaxCoordinate_m = 10000.0;
+constexpr double kMaxLength_m = 10000.0;
+constexpr std::size_t kMaxPolygonVertices = 256;
+
+double coordinate(const YamlField& f) { return f.inRange(-kMaxCoordinate_m, kMaxCoordinate_m); }
+
+double length(const YamlField& f) {
+  const double v = f.positive();
+  if (v > kMaxLength_m) f.inRange(0.0, kMaxLength_m);
+  return v;
+}
+
+// A list-form yaw is in degrees, but [x, y, 1.5708] is what radians out of ROS habit look
+// like. Small fractional values are refused: below one turn in radians (|yaw| < 2 pi), a yaw
+// must be a whole number of degrees in the list form; the map form says its unit.
+double listYawDeg(const YamlField& f) {
+  const double v = f.inRange(-kMaxYawDeg, kMaxYawDeg, " degrees");
+  if (std::abs(v) < 2.0 * kPi && v != std::round(v)) {
+    f.fail("the list form's angle is in degrees, and " + f.node().Scalar() +
+           " looks like radians; write whole degrees (" + formatNumber(std::round(radToDeg(v))) +
+           " if that was radians), or the map form {x: .., y: .., yaw_deg: ..} or "
+           "{x: .., y: .., yaw_rad: ..}");
+  }
+  return v;
+}
+
 Pose2 readPose(const YamlField& field) {
-  const std::vector<double> v = field.numbers(3, "[x, y, yaw_deg]");
-  return {v[0], v[1], degToRad(v[2])};
+  if (field.node().IsMap()) {
+    const YamlMap m = field.map({"x", "y", "yaw_deg", "yaw_rad"});
+    Pose2 pose;
+    pose.x = coordinate(m.required("x"));
+    pose.y = coordinate(m.required("y"));
+    const std::optional<YamlField> deg = m.optional("yaw_deg");
+    const std::optional<YamlField> rad = m.optional("yaw_rad");
+    if (deg && rad) rad->fail("give the heading once: yaw_deg or yaw_rad, not both");
+    if (!deg && !rad) {
+      YamlField(field.node(), field.path() + ".yaw_deg", field.line(), field.source())
+          .fail("missing required field (or yaw_rad)");
+    }
+    pose.theta = deg ? degToRad(deg->inRange(-kMaxYawDeg, kMaxYawDeg, " degrees"))
+                     : rad->inRange(-degToRad(kMaxYawDeg), degToRad(kMaxYawDeg), " rad");
+    return pose;
+  }
+  if (!field.node().IsSequence() || field.node().size() != 3) {
+    field.fail("must be a list [x, y, yaw_deg] of 3 numbers or a map {x, y, yaw_deg}, got " +
+               field.describeValue());
+  }
+  const std::vector<YamlField> items = field.items();
+  return {coordinate(items[0]), coordinate(items[1]), degToRad(listYawDeg(items[2]))};
 }
 
 void readFormat(const YamlField& field) {
@@ -43,12 +100,12 @@ void readFormat(const YamlField& field) {
 LotBounds readLot(const YamlField& field) {
   const YamlMap m = field.map({"x_min", "y_min", "x_max", "y_max"});
   LotBounds lot;
-  lot.x_min_m = m.required("x_min").number();
-  lot.y_min_m = m.required("y_min").number();
+  lot.x_min_m = coordinate(m.required("x_min"));
+  lot.y_min_m = coordinate(m.required("y_min"));
   const YamlField x_max = m.required("x_max");
   const YamlField y_max = m.required("y_max");
-  lot.x_max_m = x_max.number();
-  lot.y_max_m = y_max.number();
+  lot.x_max_m = coordinate(x_max);
+  lot.y_max_m = coordinate(y_max);
   if (!(lot.x_max_m > lot.x_min_m)) {
     x_max.fail("must be greater than lot.x_min (" + formatNumber(lot.x_min_m) + "), got " +
                x_max.node().Scalar());
@@ -61,20 +118,36 @@ LotBounds readLot(const YamlField& field) {
 }
 
 RobotDef readRobot(const YamlField& field) {
-  const YamlMap m = field.map({"length", "width", "front_overhang", "wheel_base", "wheel_radius",
-                               "max_wheel_speed_radps", "max_wheel_accel_radps2", "height"});
+  const YamlMap m =
+      field.map({"length", "width", "front_overhang", "wheel_base", "wheel_radius",
+                 "max_wheel_speed_radps", "max_wheel_accel_radps2", "height", "ground_clearance"});
   RobotDef robot;
   // Each key overrides one field; absent keys keep the study's robot.
   const auto set = [&m](std::string_view key, double& out) {
     if (const std::optional<YamlField> f = m.optional(key)) out = f->positive();
   };
-  set("length", robot.length_m);
-  set("width", robot.width_m);
-  set("wheel_base", robot.wheel_base_m);
-  set("wheel_radius", robot.wheel_radius_m);
+  const auto setLength = [&m](std::string_view key, double& out) {
+    if (const std::optional<YamlField> f = m.optional(key)) out = length(*f);
+  };
+  setLength("length", robot.length_m);
+  setLength("width", robot.width_m);
+  setLength("wheel_base", robot.wheel_base_m);
+  setLength("wheel_radius", robot.wheel_radius_m);
   set("max_wheel_speed_radps", robot.max_wheel_speed_radps);
   set("max_wheel_accel_radps2", robot.max_wheel_accel_radps2);
-  set("height", robot.height_m);
+  setLength("height", robot.height_m);
+  // The chassis' underside must stay below its top.
+  if (const std::optional<YamlField> f = m.optional("ground_clearance")) {
+    robot.ground_clearance_m = f->nonNegative();
+    if (!(robot.ground_clearance_m < robot.height_m)) {
+      f->fail("must be below robot.height (" + formatNumber(robot.height_m) + "), got " +
+              f->node().Scalar());
+    }
+  } else if (!(robot.ground_clearance_m < robot.height_m)) {
+    m.required("height").fail("must be above robot.ground_clearance (" +
+                              formatNumber(robot.ground_clearance_m) + "), got " +
+                              m.required("height").node().Scalar());
+  }
 
   // Zero is a real design (axle at the front edge); beyond the length the reference point
   // would lie outside the body it steers.
@@ -127,38 +200,113 @@ ObstacleKind readKind(const YamlField& field) {
   if (kind == "curb") return ObstacleKind::kCurb;
   if (kind == "island") return ObstacleKind::kIsland;
   if (kind == "box") return ObstacleKind::kBox;
+  if (kind == "bollard") return ObstacleKind::kBollard;
+  if (kind == "pillar") return ObstacleKind::kPillar;
   if (kind == "parked_robot") {
     field.fail("parked robots are listed under parked_robots, with a pose instead of a size");
   }
-  field.fail("unknown kind " + inQuotes(kind) + "; expected one of: wall, curb, island, box");
+  field.fail("unknown kind " + inQuotes(kind) +
+             "; expected one of: wall, curb, island, box, bollard, pillar");
+}
+
+Eigen::Vector2d readPoint(const YamlField& field) {
+  field.numbers(2, "[x, y]");
+  const std::vector<YamlField> xy = field.items();
+  return {coordinate(xy[0]), coordinate(xy[1])};
+}
+
+// Vertices in either winding; stored counter-clockwise. Convexity is required because the
+// exact queries (separating axes, C-space slices) are exact for convex shapes.
+std::vector<Eigen::Vector2d> readVertices(const YamlField& field) {
+  const std::vector<YamlField> items = field.listUpTo(kMaxPolygonVertices);
+  if (items.size() < 3) {
+    field.fail("a polygon needs at least 3 vertices [x, y], got " + std::to_string(items.size()));
+  }
+  std::vector<Eigen::Vector2d> vertices;
+  for (const YamlField& item : items) vertices.push_back(readPoint(item));
+  if (signedDoubleArea(vertices) < 0.0) std::reverse(vertices.begin(), vertices.end());
+  if (!isStrictlyConvexCcw(vertices)) {
+    field.fail(
+        "must be a convex polygon: vertices in order around it, no repeated or collinear "
+        "vertices, no self-crossing");
+  }
+  return vertices;
 }
 
 Obstacle readObstacle(const YamlField& field) {
-  const YamlMap m = field.map({"name", "kind", "center", "size", "yaw_deg", "height"});
+  const YamlMap m =
+      field.map({"name", "kind", "center", "size", "yaw_deg", "radius", "vertices", "height"});
   Obstacle obstacle;
-  obstacle.name = m.required("name").text();
+  obstacle.name = m.required("name").name();
   obstacle.kind = readKind(m.required("kind"));
-  const std::vector<double> center = m.required("center").numbers(2, "[x, y]");
-  const YamlField size = m.required("size");
-  size.numbers(2, "[sx, sy]");
-  const std::vector<YamlField> sides = size.items();
-  obstacle.box.center = {center[0], center[1]};
-  obstacle.box.half_extents = {0.5 * sides[0].positive(), 0.5 * sides[1].positive()};
-  if (const std::optional<YamlField> f = m.optional("yaw_deg")) {
-    obstacle.box.yaw = degToRad(f->number());
+  const std::optional<YamlField> size = m.optional("size");
+  const std::optional<YamlField> radius = m.optional("radius");
+  const std::optional<YamlField> vertices = m.optional("vertices");
+  const int shapes = int(size.has_value()) + int(radius.has_value()) + int(vertices.has_value());
+  if (shapes != 1) {
+    const YamlField at = shapes == 0 ? m.required("kind") : *(vertices ? vertices : radius);
+    YamlField(at.node(), field.path(), at.line(), field.source())
+        .fail(
+            "give exactly one shape: size (a box), radius (a circle) or vertices (a convex "
+            "polygon)");
   }
-  if (const std::optional<YamlField> f = m.optional("height")) obstacle.height_m = f->positive();
+  if (vertices) {
+    for (const char* key : {"center", "yaw_deg"}) {
+      if (const std::optional<YamlField> f = m.optional(key)) {
+        f->fail("a polygon is placed by its vertices alone");
+      }
+    }
+    obstacle = Obstacle::makePolygon(obstacle.name, obstacle.kind, readVertices(*vertices),
+                                     obstacle.height_m);
+  } else if (radius) {
+    if (const std::optional<YamlField> f = m.optional("yaw_deg")) {
+      f->fail("a circle has no heading");
+    }
+    const Eigen::Vector2d center = readPoint(m.required("center"));
+    obstacle = Obstacle::makeCircle(obstacle.name, obstacle.kind, {center, length(*radius)},
+                                    obstacle.height_m);
+  } else {
+    const Eigen::Vector2d center = readPoint(m.required("center"));
+    size->numbers(2, "[sx, sy]");
+    const std::vector<YamlField> sides = size->items();
+    obstacle.box.center = center;
+    obstacle.box.half_extents = {0.5 * length(sides[0]), 0.5 * length(sides[1])};
+    if (const std::optional<YamlField> f = m.optional("yaw_deg")) {
+      obstacle.box.yaw = degToRad(f->inRange(-kMaxYawDeg, kMaxYawDeg, " degrees"));
+    }
+  }
+  if (const std::optional<YamlField> f = m.optional("height")) obstacle.height_m = length(*f);
   return obstacle;
 }
 
+// A parked vehicle is the ego robot's footprint unless it gives its own size; its mass
+// defaults to physics.parked_robot_mass_kg.
 Obstacle readParkedRobot(const YamlField& field, const RobotDef& robot) {
-  const YamlMap m = field.map({"name", "pose", "height"});
+  const YamlMap m =
+      field.map({"name", "pose", "height", "length", "width", "front_overhang", "mass_kg"});
   Obstacle obstacle;
-  obstacle.name = m.required("name").text();
+  obstacle.name = m.required("name").name();
   obstacle.kind = ObstacleKind::kParkedRobot;
-  obstacle.box = footprintAt(robot, readPose(m.required("pose")));
+  RobotDef body = robot;
+  const std::optional<YamlField> len = m.optional("length");
+  const std::optional<YamlField> overhang = m.optional("front_overhang");
+  if (len) {
+    body.length_m = length(*len);
+    // Without its own overhang, a longer vehicle keeps the ego's overhang ratio.
+    if (!overhang) body.front_overhang_m = robot.front_overhang_m / robot.length_m * body.length_m;
+  }
+  if (const std::optional<YamlField> f = m.optional("width")) body.width_m = length(*f);
+  if (overhang) {
+    body.front_overhang_m = overhang->nonNegative();
+    if (body.front_overhang_m > body.length_m) {
+      overhang->fail("must not exceed the vehicle's length (" + formatNumber(body.length_m) +
+                     "), got " + overhang->node().Scalar());
+    }
+  }
+  obstacle.box = footprintAt(body, readPose(m.required("pose")));
   obstacle.height_m = robot.height_m;
-  if (const std::optional<YamlField> f = m.optional("height")) obstacle.height_m = f->positive();
+  if (const std::optional<YamlField> f = m.optional("height")) obstacle.height_m = length(*f);
+  if (const std::optional<YamlField> f = m.optional("mass_kg")) obstacle.mass_kg = f->positive();
   return obstacle;
 }
 
@@ -180,20 +328,10 @@ GoalRegion readGoal(const YamlField& field) {
 }
 
 // A start or goal the robot cannot stand on makes every episode fail for a reason that has
-// nothing to do with the planner; catch it where the file can say which entry is wrong.
-void checkPlacement(const YamlField& field, const Pose2& pose, const Scenario& s) {
-  if (!s.lot.contains(pose.x, pose.y)) {
-    field.fail("reference point (" + formatNumber(pose.x) + ", " + formatNumber(pose.y) +
-               ") is outside the lot [" + formatNumber(s.lot.x_min_m) + ", " +
-               formatNumber(s.lot.x_max_m) + "] x [" + formatNumber(s.lot.y_min_m) + ", " +
-               formatNumber(s.lot.y_max_m) + "]");
-  }
-  const OrientedBox footprint = footprintAt(s.robot, pose);
-  for (const Obstacle& obstacle : s.obstacles) {
-    if (boxesOverlap(footprint, obstacle.box)) {
-      field.fail("robot footprint overlaps obstacle " + inQuotes(obstacle.name));
-    }
-  }
+// nothing to do with the planner; catch it where the file can say which entry is wrong. The
+// rule is core's placementProblem, the planner's own.
+void checkPlacement(const YamlField& field, const std::optional<std::string>& problem) {
+  if (problem) field.fail(*problem);
 }
 
 // Names identify obstacles in messages, logs and figures, so they must be unique across
@@ -213,49 +351,145 @@ class NameRegistry {
 };
 
 std::string readWholeFile(const std::string& path) {
-  // An ifstream opens a directory and then fails inside the read; say so up front.
+  // Type and size first: a FIFO, a device (/dev/zero, /dev/urandom) or a huge file would
+  // otherwise be read until memory runs out.
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Error(path + ": cannot open: is a directory");
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (ec) throw Error(escapeText(path + ": cannot open: " + ec.message()));
+  if (std::filesystem::is_directory(status)) {
+    throw Error(escapeText(path + ": cannot open: is a directory"));
+  }
+  if (!std::filesystem::is_regular_file(status)) {
+    throw Error(escapeText(path + ": cannot open: not a regular file"));
+  }
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec && size > kMaxWorldFileBytes) {
+    throw Error(escapeText(path + ": file size: " + std::to_string(size) +
+                           " bytes; a world file may hold at most " +
+                           std::to_string(kMaxWorldFileBytes) + " bytes (1 MiB)"));
+  }
   errno = 0;
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     const int err = errno;
-    throw Error(path + ": cannot open: " +
-                (err != 0 ? std::generic_category().message(err) : std::string("unknown error")));
+    throw Error(escapeText(
+        path + ": cannot open: " +
+        (err != 0 ? std::generic_category().message(err) : std::string("unknown error"))));
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw Error(path + ": cannot read: input error");
-  return text.str();
+  // Read at most one byte past the limit, in case the file grew since it was measured.
+  std::string text(kMaxWorldFileBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  if (in.bad()) throw Error(escapeText(path + ": cannot read: input error"));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxWorldFileBytes) {
+    throw Error(escapeText(path + ": file size: a world file may hold at most " +
+                           std::to_string(kMaxWorldFileBytes) + " bytes (1 MiB)"));
+  }
+  return text;
+}
+
+// Counts documents without building them. yaml-cpp 0.7 reports an endless run of empty
+// documents for a stray flow indicator such as a lone `,` (upstream issue 1040): every
+// document then starts where the previous one did. That is the parser stuck, and the file a
+// syntax error there.
+struct DocumentCounter final : YAML::EventHandler {
+  YAML::Mark start;    // where the last document started
+  YAML::Mark content;  // where its first node is
+  bool seen = false;
+  void node(const YAML::Mark& mark) {
+    if (!seen) content = mark;
+    seen = true;
+  }
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    start = mark;
+    seen = false;
+  }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t) override { node(mark); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { node(mark); }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                const std::string&) override {
+    node(mark);
+  }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {
+    node(mark);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {
+    node(mark);
+  }
+  void OnMapEnd() override {}
+};
+
+[[noreturn]] void syntaxError(const std::string& source_name, int line, const std::string& what) {
+  throw Error(escapeText(source_name + ":" + std::to_string(line) + ": (syntax): " + what));
+}
+
+// The single document of `text`, or a located error. Terminates on every input: the counting
+// pass stops when the parser makes no progress, and YAML::Load reads one document only.
+YAML::Node loadSingleDocument(const std::string& text, const std::string& source_name) {
+  int documents = 0;
+  YAML::Mark second;
+  try {
+    std::istringstream in(text);
+    YAML::Parser parser(in);
+    DocumentCounter counter;
+    int last_start = -1;
+    while (parser.HandleNextDocument(counter)) {
+      if (counter.start.pos <= last_start) {
+        const auto pos = static_cast<std::size_t>(std::max(counter.start.pos, 0));
+        const std::string what =
+            pos < text.size() ? "unexpected '" + text.substr(pos, 1) + "'" : "unexpected input";
+        syntaxError(source_name, lineOf(counter.start),
+                    what + " (outside any [ ] or { } list or map)");
+      }
+      last_start = counter.start.pos;
+      if (++documents == 2) second = counter.content;
+    }
+  } catch (const YAML::Exception& e) {
+    syntaxError(source_name, lineOf(e.mark), e.msg);
+  }
+  if (documents == 0) {
+    YamlField(YAML::Node(), "", 1, source_name)
+        .fail("empty; a world file is a map that starts with format: " + std::string(kFormat));
+  }
+  if (documents > 1) {
+    YamlField(YAML::Node(), "", lineOf(second), source_name)
+        .fail("a world file holds one YAML document, found " + std::to_string(documents));
+  }
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    syntaxError(source_name, lineOf(e.mark), e.msg);
+  }
 }
 
 }  // namespace
 
 Scenario parseScenario(std::string_view yaml_text, const std::string& source_name) {
-  std::vector<YAML::Node> documents;
-  try {
-    documents = YAML::LoadAll(std::string(yaml_text));
-  } catch (const YAML::Exception& e) {
-    throw Error(source_name + ":" + std::to_string(lineOf(e.mark)) + ": (syntax): " + e.msg);
+  if (yaml_text.size() > kMaxWorldFileBytes) {
+    throw Error(escapeText(source_name + ": file size: " + std::to_string(yaml_text.size()) +
+                           " bytes; a world file may hold at most " +
+                           std::to_string(kMaxWorldFileBytes) + " bytes (1 MiB)"));
   }
-  if (documents.empty()) {
-    YamlField(YAML::Node(), "", 1, source_name)
+  const YAML::Node document = loadSingleDocument(std::string(yaml_text), source_name);
+  if (document.IsNull()) {
+    YamlField(document, "", 1, source_name)
         .fail("empty; a world file is a map that starts with format: " + std::string(kFormat));
   }
-  if (documents.size() > 1) {
-    YamlField(documents[1], "", lineOf(documents[1].Mark()), source_name)
-        .fail("a world file holds one YAML document, found " + std::to_string(documents.size()));
-  }
 
-  const YamlField root(documents.front(), "", 1, source_name);
+  const YamlField root(document, "", 1, source_name);
   const YamlMap top(root);
   readFormat(top.required("format"));
-  top.rejectUnknownKeys(
-      {"format", "name", "lot", "robot", "obstacles", "parked_robots", "start", "goal", "physics"});
+  top.rejectUnknownKeys({"format", "name", "lot", "robot", "obstacles", "parked_robots", "start",
+                         "goal", "physics", "realism", "tolerance"});
+  readRealismSections(top);  // validated here, read by loadWorldRealism (scenario/RealismReader.h)
 
   Scenario s;
   s.source_path = source_name;
-  s.name = top.required("name").text();
+  s.name = top.required("name").name();
   s.lot = readLot(top.required("lot"));
   // The robot comes before the parked robots whatever the key order: they share its footprint.
   if (const std::optional<YamlField> f = top.optional("robot")) s.robot = readRobot(*f);
@@ -263,13 +497,13 @@ Scenario parseScenario(std::string_view yaml_text, const std::string& source_nam
 
   NameRegistry names;
   if (const std::optional<YamlField> list = top.optional("obstacles")) {
-    for (const YamlField& entry : list->items()) {
+    for (const YamlField& entry : list->listUpTo(kMaxObstacles)) {
       s.obstacles.push_back(readObstacle(entry));
       names.add(YamlMap(entry).required("name"), s.obstacles.back().name);
     }
   }
   if (const std::optional<YamlField> list = top.optional("parked_robots")) {
-    for (const YamlField& entry : list->items()) {
+    for (const YamlField& entry : list->listUpTo(kMaxParkedRobots)) {
       s.obstacles.push_back(readParkedRobot(entry, s.robot));
       names.add(YamlMap(entry).required("name"), s.obstacles.back().name);
     }
@@ -279,11 +513,26 @@ Scenario parseScenario(std::string_view yaml_text, const std::string& source_nam
   s.start = readPose(start);
   const YamlField goal = top.required("goal");
   s.goal = readGoal(goal);
-  checkPlacement(start, s.start, s);
-  checkPlacement(YamlMap(goal).required("pose"), s.goal.pose, s);
+  checkPlacement(start, placementProblem(s, s.start));
+  checkPlacement(YamlMap(goal).required("pose"), goalPlacementProblem(s));
   return s;
 }
 
 Scenario loadScenario(const std::string& path) { return parseScenario(readWholeFile(path), path); }
+
+Pose2 parsePose(std::string_view text, const std::string& what) {
+  YAML::Node node;
+  try {
+    // "x,y,deg" as a command line writes it is a list without brackets.
+    const std::string_view trimmed =
+        text.substr(std::min(text.find_first_not_of(" \t"), text.size()));
+    const bool bare = !trimmed.empty() && trimmed.front() != '[' && trimmed.front() != '{';
+    node = YAML::Load(bare ? "[" + std::string(text) + "]" : std::string(text));
+  } catch (const YAML::Exception& e) {
+    throw Error(
+        escapeText(what + ": cannot read a pose from \"" + std::string(text) + "\": " + e.msg));
+  }
+  return readPose(YamlField(node, what, 0, ""));
+}
 
 }  // namespace parksim

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "parksim/core/Error.h"
+#include "parksim/core/Text.h"
 
 namespace parksim {
 
@@ -42,6 +43,25 @@ bool parseWhole(const std::string& text, T& out) {
   return ec == std::errc() && end == last;
 }
 
+// Out of double's range: from_chars refuses; a too large magnitude is an infinity (so that
+// 1e309 and .inf say the same), a too small one rounds to zero.
+bool parseOutOfRange(const std::string& text, double& out) {
+  std::string_view body = text;
+  bool negative = false;
+  if (!body.empty() && (body.front() == '+' || body.front() == '-')) {
+    negative = body.front() == '-';
+    body.remove_prefix(1);
+  }
+  double probe = 0.0;
+  const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), probe);
+  if (ec != std::errc::result_out_of_range || end != body.data() + body.size()) return false;
+  const std::size_t e = body.find_first_of("eE");
+  const bool tiny = e != std::string_view::npos && e + 1 < body.size() && body[e + 1] == '-';
+  out = tiny ? 0.0 : HUGE_VAL;
+  if (negative) out = -out;
+  return true;
+}
+
 // YAML 1.2 spells infinities and NaN as .inf / -.inf / .nan (any case of the letters);
 // from_chars spells them inf / nan. Both parse here so that they can be reported as
 // non-finite instead of as not-a-number.
@@ -60,7 +80,7 @@ bool parseYamlDouble(const std::string& text, double& out) {
     out = std::nan("");
     return true;
   }
-  return parseWhole(text, out);
+  return parseWhole(text, out) || parseOutOfRange(text, out);
 }
 
 std::string joinKeys(std::initializer_list<std::string_view> keys) {
@@ -85,11 +105,15 @@ std::string formatNumber(double value) {
 YamlField::YamlField(YAML::Node node, std::string path, int line, std::string_view source)
     : node_(std::move(node)), path_(std::move(path)), line_(line), source_(source) {}
 
+std::string YamlField::describeValue() const { return describe(node_); }
+
 void YamlField::fail(std::string_view what) const {
   // The document itself has no key; name it so the message keeps its "where: what" shape.
   const std::string where = path_.empty() ? "(document)" : path_;
-  throw Error(std::string(source_) + ":" + std::to_string(line_) + ": " + where + ": " +
-              std::string(what));
+  // Without a source (a pose from the command line) there is no line either.
+  std::string at;
+  if (!source_.empty()) at = std::string(source_) + ":" + std::to_string(line_) + ": ";
+  throw Error(escapeText(at + where + ": " + std::string(what)));
 }
 
 YamlField YamlField::child(YAML::Node node, std::string path, const YAML::Node& line_from) const {
@@ -105,6 +129,15 @@ double YamlField::number() const {
     fail("must be a number, got " + describe(node_));
   }
   if (!std::isfinite(value)) fail("must be a finite number, got " + node_.Scalar());
+  return value;
+}
+
+double YamlField::inRange(double lo, double hi, std::string_view unit) const {
+  const double value = number();
+  if (!(value >= lo && value <= hi)) {
+    fail("must be in [" + formatNumber(lo) + ", " + formatNumber(hi) + "]" + std::string(unit) +
+         ", got " + node_.Scalar());
+  }
   return value;
 }
 
@@ -144,6 +177,14 @@ std::string YamlField::text() const {
   return node_.Scalar();
 }
 
+std::string YamlField::name() const {
+  std::string value = text();
+  if (!isPrintableUtf8(value)) {
+    fail("must be UTF-8 text without control characters, got \"" + value + "\"");
+  }
+  return value;
+}
+
 std::vector<double> YamlField::numbers(std::size_t n, std::string_view shape) const {
   if (!node_.IsSequence() || node_.size() != n) {
     fail("must be a list " + std::string(shape) + " of " + std::to_string(n) + " numbers, got " +
@@ -166,16 +207,32 @@ std::vector<YamlField> YamlField::items() const {
   return out;
 }
 
+std::vector<YamlField> YamlField::listUpTo(std::size_t max_items) const {
+  if (node_.IsNull()) return {};
+  if (node_.IsSequence() && node_.size() > max_items) {
+    fail("holds " + std::to_string(node_.size()) + " items; at most " +
+         std::to_string(max_items) + " are allowed");
+  }
+  return items();
+}
+
 YamlMap YamlField::map(std::initializer_list<std::string_view> allowed) const {
   YamlMap m(*this);
   m.rejectUnknownKeys(allowed);
   return m;
 }
 
+namespace {
+
+bool isMergeKey(const YAML::Node& key) { return isPlainScalar(key) && key.Scalar() == "<<"; }
+
+}  // namespace
+
 YamlMap::YamlMap(const YamlField& field) : field_(field) {
   const YAML::Node& node = field_.node();
   if (!node.IsMap()) field_.fail("must be a map, got " + describe(node));
   std::set<std::string> seen;
+  std::vector<YamlField> merged;
   for (const auto& entry : node) {
     const YAML::Node& key = entry.first;
     const std::string key_path =
@@ -183,11 +240,35 @@ YamlMap::YamlMap(const YamlField& field) : field_(field) {
     const YamlField at = field_.child(key, key_path, key);
     if (!key.IsScalar() || key.Scalar().empty()) at.fail("keys must be names");
     if (!seen.insert(key.Scalar()).second) at.fail("duplicate key");
+    if (isMergeKey(key)) {
+      const YamlField value = field_.child(entry.second, key_path, key);
+      if (entry.second.IsSequence()) {
+        for (const YamlField& item : value.items()) merged.push_back(item);
+      } else {
+        merged.push_back(value);
+      }
+      continue;
+    }
+    entries_.emplace_back(entry.first, entry.second);
+  }
+  // Merged maps add what the map does not have; the first merged map wins over later ones.
+  for (const YamlField& source : merged) {
+    if (!source.node().IsMap()) source.fail("a merge key takes a map or a list of maps");
+    const YamlMap inner(YamlField(source.node(), field_.path(), source.line(), field_.source_));
+    for (const auto& [key, value] : inner.entries_) {
+      if (seen.insert(key.Scalar()).second) entries_.emplace_back(key, value);
+    }
   }
 }
 
+std::vector<std::string> YamlMap::keys() const {
+  std::vector<std::string> out;
+  for (const auto& entry : entries_) out.push_back(entry.first.Scalar());
+  return out;
+}
+
 void YamlMap::rejectUnknownKeys(std::initializer_list<std::string_view> allowed) const {
-  for (const auto& entry : field_.node()) {
+  for (const auto& entry : entries_) {
     const std::string& key = entry.first.Scalar();
     bool known = false;
     for (const std::string_view a : allowed) known = known || a == key;
@@ -200,7 +281,7 @@ void YamlMap::rejectUnknownKeys(std::initializer_list<std::string_view> allowed)
 }
 
 std::optional<YamlField> YamlMap::optional(std::string_view key) const {
-  for (const auto& entry : field_.node()) {
+  for (const auto& entry : entries_) {
     if (entry.first.Scalar() == key) {
       const std::string key_path =
           field_.path().empty() ? std::string(key) : field_.path() + "." + std::string(key);

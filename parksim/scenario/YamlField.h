@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
@@ -26,8 +27,13 @@ class YamlField {
   const YAML::Node& node() const { return node_; }
   const std::string& path() const { return path_; }
   int line() const { return line_; }
+  std::string_view source() const { return source_; }
 
-  /// Throws Error at this field's line and path.
+  /// What the value is, for "got ..." in messages: "null", "a map", "a list of 2", the scalar.
+  std::string describeValue() const;
+
+  /// Throws Error at this field's line and path. Control characters and bytes that are not
+  /// UTF-8 (from the file) are escaped. Line 0 leaves out the line, an empty source the file.
   [[noreturn]] void fail(std::string_view what) const;
 
   /// A plain (unquoted) scalar that parses completely as a finite number.
@@ -36,17 +42,26 @@ class YamlField {
   double positive() const;
   /// number(), and >= 0.
   double nonNegative() const;
+  /// number(), and lo <= value <= hi ("must be in [lo, hi]" otherwise; `unit` is appended to
+  /// the bounds in the message, e.g. " degrees").
+  double inRange(double lo, double hi, std::string_view unit = "") const;
   /// A plain scalar that parses completely as an int, and > 0.
   int positiveInt() const;
   /// A plain scalar: true or false (YAML 1.2 spellings only, so `yes`/`no` are rejected).
   bool boolean() const;
   /// A non-empty scalar, quoted or not.
   std::string text() const;
+  /// text() that is valid UTF-8 without control characters: names end up in JSON files,
+  /// CSV files and on the terminal.
+  std::string name() const;
   /// A list of exactly `n` finite numbers; `shape` names its items for messages, e.g.
   /// "[x, y, yaw_deg]".
   std::vector<double> numbers(std::size_t n, std::string_view shape) const;
   /// A list of any length (possibly empty); each item carries its own line.
   std::vector<YamlField> items() const;
+  /// items(), also accepting an empty value (`key:` with nothing) as an empty list, and at
+  /// most `max_items` of them ("at most N items (the limit for ...)" otherwise).
+  std::vector<YamlField> listUpTo(std::size_t max_items) const;
   /// A map whose keys are all in `allowed`, without duplicates.
   YamlMap map(std::initializer_list<std::string_view> allowed) const;
 
@@ -61,10 +76,15 @@ class YamlField {
 };
 
 /// A map node. Construction rejects anything that is not a map and maps with repeated keys
-/// (yaml-cpp would otherwise keep the first and silently ignore the rest).
+/// (yaml-cpp would otherwise keep the first and silently ignore the rest). YAML merge keys
+/// (`<<: *anchor` or `<<: [*a, *b]`) are resolved here, as YAML 1.1 defines them: the merged
+/// maps' entries are added unless the map has the key itself (earlier merged maps win).
 class YamlMap {
  public:
   explicit YamlMap(const YamlField& field);
+
+  /// The map's own and merged keys, in order (own keys first).
+  std::vector<std::string> keys() const;
 
   /// Throws on the first key not in `allowed`, listing the allowed ones.
   void rejectUnknownKeys(std::initializer_list<std::string_view> allowed) const;
@@ -75,6 +95,7 @@ class YamlMap {
 
  private:
   YamlField field_;
+  std::vector<std::pair<YAML::Node, YAML::Node>> entries_;  // key, value; merges resolved
 };
 
 /// Shortest text that reads back as the same double ("0.1", "1e-05").

@@ -34,6 +34,34 @@ enum class SolverKernel {
   kFast,
 };
 
+/// How the wheel joints are driven.
+enum class WheelDrive {
+  /// Bullet velocity motors that reach their target as fast as PhysicsDef::max_wheel_torque_nm
+  /// and friction allow: the idealised robot (setWheelTargets).
+  kVelocityMotor,
+  /// Joint torques set by the caller every step (setWheelTorques, e.g. a DC-motor model), plus
+  /// a Coulomb joint friction (TrueRobotDef::joint_friction_nm) solved as a constraint so a
+  /// wheel sticks while the torque stays below it.
+  kTorque,
+};
+
+/// The robot as built, against the nominal RobotDef that the planner and controller use.
+/// Defaults build exactly the nominal robot.
+struct TrueRobotDef {
+  WheelDrive drive = WheelDrive::kVelocityMotor;
+  /// True wheel radius = nominal x scale, per wheel (calibration error).
+  double left_radius_scale = 1.0;
+  double right_radius_scale = 1.0;
+  /// True distance between the wheels' contact points = nominal wheel_base_m x scale.
+  double track_scale = 1.0;
+  /// Moment of inertia of each wheel about its axle including everything geared to it (the
+  /// motor's rotor reflected through the gearbox), kg m^2; 0: the wheel sphere's own.
+  double wheel_axle_inertia_kgm2 = 0.0;
+  /// Coulomb friction torque of each wheel's drive train (gearbox, bearings, rolling
+  /// resistance), N m; kTorque only.
+  double joint_friction_nm = 0.0;
+};
+
 /// Parts of the model that the world file does not describe. Defaults are the model parksim
 /// was measured with (docs/simulation.md).
 struct SimModelDef {
@@ -43,11 +71,9 @@ struct SimModelDef {
   double support_inset_m = 0.010;
   /// Mass of the slider, kg (a link needs mass; it adds to PhysicsDef::chassis_mass_kg).
   double support_mass_kg = 0.002;
-  /// Height of the chassis box's bottom above the ground, m. The chassis never touches the
-  /// ground (it does not collide with it); this only decides which low obstacles it can hit.
-  double chassis_clearance_m = 0.002;
   /// Parked robots are fixed boxes until the robot's footprint comes closer than this to one,
-  /// m; from the next step on it is a body with mass (PhysicsDef::parked_robot_mass_kg) that
+  /// m; from the next step on it is a body with mass (Obstacle::mass_kg, by default
+  /// PhysicsDef::parked_robot_mass_kg) that
   /// can be pushed. 10 mm is 12 steps ahead at the top speed (0.2 m/s). Resting bodies with
   /// mass cost more than the robot itself (8 of them: 4-5x the step time), and Bullet's own
   /// sleeping does not help: it wakes a body whenever the robot's bounding box, grown by 2 cm,
@@ -71,6 +97,20 @@ struct SimModelDef {
   /// value with which the step-response and rest tests keep their bounds (1e-6 drifts
   /// 0.1 mm at rest); it saves about 10 % of a step. 0 always runs every iteration.
   double solver_residual_threshold = 3e-7;
+  /// The robot as built (calibration errors, drive train); defaults: the nominal robot.
+  TrueRobotDef body;
+  /// Where the robot is expected to drive (e.g. the plan's bounding box, lot frame). The ground
+  /// slab under it spans this region plus ground_margin_m, clipped to the lot plus 1 m: sized
+  /// for float precision (a slab as large as a 200 m lot rounds contact points by ~1e-5 m),
+  /// not to the lot. Unset: the whole lot plus 1 m.
+  bool has_reach = false;
+  LotBounds reach;
+  double ground_margin_m = 3.0;
+  /// Bullet runs in a local frame whose origin is the start position rounded down to a
+  /// multiple of this, m (a power of two, so that lot coordinates minus the origin are exact
+  /// and a lot shifted by a multiple of it simulates bit-identically). Bullet's floats then
+  /// keep ~1e-6 m wherever the lot lies.
+  double local_frame_grid_m = 16.0;
 };
 
 /// The ego robot's measured state.
@@ -85,6 +125,11 @@ struct RobotState {
   Twist twist;
   /// Wheel joint speeds; positive drives forward.
   WheelSpeeds wheels;
+  /// Wheel joint angles, rad (positive forward, from 0 at the start).
+  WheelSpeeds wheel_angles;
+  /// Slip of each wheel: its rim speed (joint speed x true radius) minus the ground speed of
+  /// its contact point along the heading, m/s.
+  WheelSpeeds slip_mps;
   /// False if Bullet put the robot to sleep (it must never happen: sleeping is disabled).
   bool awake = true;
 };
@@ -104,6 +149,15 @@ class DynamicsWorld {
   /// fast as the torque limit (PhysicsDef::max_wheel_torque_nm) and ground friction allow.
   void setWheelTargets(const WheelSpeeds& targets);
   const WheelSpeeds& wheelTargets() const;
+
+  /// WheelDrive::kTorque: the torque of each wheel's motor for the next step, N m (positive
+  /// drives forward). Ignored with kVelocityMotor.
+  void setWheelTorques(const WheelSpeeds& torques_nm);
+
+  /// The true wheel radii and track (TrueRobotDef applied to the nominal robot), m.
+  double leftWheelRadius() const;
+  double rightWheelRadius() const;
+  double track() const;
 
   /// Advances by one fixed step (PhysicsDef::time_step_s).
   void step();
@@ -127,6 +181,10 @@ class DynamicsWorld {
   /// last step: contact points at negative distance, so touching within Bullet's contact
   /// threshold without overlap does not count.
   const std::vector<int>& chassisContacts() const;
+
+  /// Indices (scenario order) of the parked robots that have become bodies with mass, in the
+  /// order they did; every other obstacle has not moved since the start.
+  const std::vector<int>& movableObstacles() const;
 
  private:
   struct Impl;

@@ -7,6 +7,7 @@
 // time plan.points.front().t_s. Each step applies the wheel commands computed at its start,
 // then measures at its end, so row k of the record is at t = k * dt.
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -30,6 +31,14 @@ struct ExecutedRow {
   WheelSpeeds wheels;            ///< measured wheel joint speeds
   double pos_err_m = 0.0;        ///< |position - reference position|, m
   double heading_err_rad = 0.0;  ///< heading - reference heading, wrapped to [-pi, pi), rad
+  // Realism (written to executed.csv only when the realism is not ideal):
+  Pose2 estimate;                ///< the pose the controller believes (the true pose for truth)
+  double est_pos_err_m = 0.0;    ///< |estimate - pose| in position, m
+  double est_heading_err_rad = 0.0;  ///< estimate - pose heading, wrapped, rad
+  WheelSpeeds effort;            ///< motor effort (PWM duty), -1..1; 0 with ideal motors
+  WheelSpeeds torque_nm;         ///< motor drive torque at the wheel, N m; 0 with ideal motors
+  WheelSpeeds slip_mps;          ///< rim speed minus contact ground speed per wheel, m/s
+  WheelSpeeds encoder_rad;       ///< wheel angles as the encoders report them, rad
 };
 
 /// What an observer (a renderer, a logger) receives: the row plus the world's moving parts.
@@ -91,6 +100,32 @@ struct EpisodeMetrics {
   bool ended_at_rest = false;
   /// Wall time spent stepping and measuring (observer calls excluded), s.
   double wall_time_s = 0.0;
+
+  // Realism (sim/RealismDef.h).
+  std::string realism = "ideal";
+  std::uint64_t noise_seed = 0;
+  std::string estimator = "truth";
+  /// Error of the controller's estimate against the true pose, over every step.
+  double max_est_pos_err_m = 0.0;
+  double rms_est_pos_err_m = 0.0;
+  double max_est_heading_err_deg = 0.0;
+  double final_est_pos_err_m = 0.0;
+  /// Wheel slip (rim speed minus contact ground speed), both wheels, every step, m/s.
+  double max_slip_mps = 0.0;
+  double rms_slip_mps = 0.0;
+  /// Share of wheel-steps slipping by more than 1 mm/s.
+  double slip_fraction = 0.0;
+  double max_motor_torque_nm = 0.0;
+  double max_motor_effort = 0.0;
+  /// The robot as built this episode (drawn calibration and motor gains).
+  double true_left_radius_m = 0.0;
+  double true_right_radius_m = 0.0;
+  double true_track_m = 0.0;
+  double left_motor_gain = 1.0;
+  double right_motor_gain = 1.0;
+  long pose_samples_taken = 0;
+  long pose_samples_dropped = 0;
+  long pose_samples_received = 0;
 };
 
 /// Physics steps the episode of `plan` may take at most: (plan duration + max_stop_time_s) /
@@ -120,6 +155,8 @@ class Episode {
   EpisodeSample sample() const;
   /// Every recorded row so far (one per csv_stride_steps steps, plus the first and the last).
   const std::vector<ExecutedRow>& rows() const;
+  /// Pose measurements the controller received so far, in arrival order.
+  const std::vector<PoseMeasurement>& poseSamples() const;
   /// Summary of the steps so far; "final" means the current instant.
   EpisodeMetrics metrics() const;
 
@@ -133,6 +170,7 @@ class Episode {
 struct EpisodeResult {
   EpisodeMetrics metrics;
   std::vector<ExecutedRow> rows;
+  std::vector<PoseMeasurement> pose_samples;
 };
 
 /// Runs an episode to its end. If `observer` is set, it gets the first instant and then the

@@ -2,7 +2,10 @@
 // How an episode drives a plan: open loop (exactly the planned wheel speeds) or closed loop
 // (planned wheel speeds plus feedback on the pose error), and when the episode ends.
 
+#include <cstdint>
 #include <string>
+
+#include "parksim/sim/RealismDef.h"
 
 namespace parksim {
 
@@ -48,6 +51,13 @@ struct ExecutionDef {
   /// time steps of the scenario's physics (docs/limits.md). 10^6 steps are ~69 min of
   /// simulated time at 240 Hz, ~1 min of CPU and ~100 MB of executed rows at csv stride 1.
   double max_steps = 1e6;
+  /// Motors, calibration, sensors, estimation and control-loop timing (sim/RealismDef.h);
+  /// the default is the `ideal` robot.
+  RealismDef realism;
+  /// Seed of every random draw of the realism layers (calibration errors, motor gains, sensor
+  /// noise), independent of the planner's seed. Each layer draws from its own generator
+  /// seeded by (noise_seed, layer), so switching one layer off leaves the others' draws.
+  std::uint64_t noise_seed = 0;
 };
 
 }  // namespace parksim

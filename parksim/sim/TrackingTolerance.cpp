@@ -1,8 +1,7 @@
 #include "parksim/sim/TrackingTolerance.h"
 
-#include <cstdio>
-
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 #include "parksim/sim/EpisodeFiles.h"
 
 namespace parksim {
@@ -10,9 +9,7 @@ namespace parksim {
 namespace {
 
 std::string exceeds(const char* name, double value, double bound) {
-  char text[160];
-  std::snprintf(text, sizeof text, "%s %.6g > %.6g", name, value, bound);
-  return text;
+  return std::string(name) + " " + formatGeneral(value) + " > " + formatGeneral(bound);
 }
 
 }  // namespace

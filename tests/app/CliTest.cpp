@@ -13,6 +13,7 @@
 
 #include "parksim/core/DiffDrive.h"
 #include "parksim/core/Geometry.h"
+#include "parksim/core/Provenance.h"
 #include "parksim/core/Trajectory.h"
 #include "parksim/scenario/ScenarioReader.h"
 
@@ -195,6 +196,34 @@ TEST_F(Cli, EveryCommandHasHelp) {
     const CliRun r = parksim(std::string(cmd) + " --help");
     EXPECT_EQ(r.exit_code, 0) << cmd;
     EXPECT_NE(r.out.find("--help"), std::string::npos) << cmd;
+  }
+}
+
+TEST_F(Cli, EveryCommandPrintsTheVersionAndBuild) {
+  const Provenance build = buildProvenance();
+  for (const char* cmd : {"", "plan", "run", "render", "bench"}) {
+    const CliRun r = parksim(std::string(cmd) + " --version");
+    EXPECT_EQ(r.exit_code, 0) << cmd;
+    EXPECT_EQ(r.out, versionLine(build) + "\n") << cmd;
+  }
+  EXPECT_EQ(build.version, PARKSIM_PROJECT_VERSION);
+  EXPECT_TRUE(build.bullet_precision == "float" || build.bullet_precision == "double");
+  // Built from this repository's git tree: a full commit hash (the tests run from a checkout).
+  EXPECT_EQ(build.git_commit.find_first_not_of("0123456789abcdef"), std::string::npos);
+  EXPECT_EQ(build.git_commit.size(), 40u) << build.git_commit;
+}
+
+TEST_F(Cli, PlanAndRunFilesRecordTheBuild) {
+  const fs::path out = dir_ / "run";
+  ASSERT_EQ(parksim("run " + world("head_in.yaml") + " --out " + out.string()).exit_code, 0);
+  const Provenance build = buildProvenance();
+  const auto plan = nlohmann::json::parse(slurp(out / "plan.json"));
+  const auto metrics = nlohmann::json::parse(slurp(out / "metrics.json"));
+  for (const auto& [key, value] : provenanceFields(build)) {
+    const nlohmann::json expected =
+        key == "git_dirty" ? nlohmann::json(build.git_dirty) : nlohmann::json(value);
+    EXPECT_EQ(plan["provenance"][key], expected) << key;
+    EXPECT_EQ(metrics["provenance." + key], expected) << key;
   }
 }
 

@@ -138,6 +138,25 @@ def main():
                 left = [n for n in os.listdir(tmp) if n.endswith("staging-%d" % p.pid)]
                 check(not left, "kill %d: SIGINT left %s" % (i, left))
 
+        # Directed: SIGKILL while ffmpeg is encoding; ffmpeg must die with parksim.
+        before = snapshot(out)
+        p = subprocess.Popen(new_cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        seen = False
+        while p.poll() is None and not seen:
+            seen = bool(ffmpeg_writing_into(tmp))
+            time.sleep(0.002)
+        p.kill()
+        p.wait()
+        print("kill during ffmpeg: %s" % ("ffmpeg was running" if seen else "ffmpeg not caught"),
+              flush=True)
+        for _ in range(50):
+            if not ffmpeg_writing_into(tmp):
+                break
+            time.sleep(0.02)
+        check(not ffmpeg_writing_into(tmp), "ffmpeg outlived a SIGKILLed parksim")
+        if seen:
+            check(snapshot(out) == before, "a kill during ffmpeg changed --out")
+
         # The next run into the same --out cleans up what SIGKILL left and succeeds.
         r = subprocess.run(old_cmd, capture_output=True)
         check(r.returncode == 0, "run after the kills failed: %s" % r.stderr.decode(errors="replace"))

@@ -63,7 +63,8 @@ TEST(BenchCsv, HeaderStartsWithTheRequiredColumns) {
   EXPECT_EQ(lines[0],
             "library,planner,space,scenario,seed,budget,solved,status,valid,time_first_s,"
             "time_total_s,cpu_total_s,length_m,cusps,min_clearance_m,cost,iterations,"
-            "iterations_first,tree_size,collision_queries,phase_sampling_s,phase_total_s");
+            "iterations_first,tree_size,collision_queries,parksim_version,git_commit,git_dirty,"
+            "build_type,compiler,bullet_precision,phase_sampling_s,phase_total_s");
   // The required columns, in its order, are all there.
   std::vector<std::string> required = {"library",  "planner", "scenario",
                                        "seed",     "solved",  "time_first_s",
@@ -76,13 +77,28 @@ TEST(BenchCsv, HeaderStartsWithTheRequiredColumns) {
   }
 }
 
+Provenance someBuild() {
+  Provenance p;
+  p.version = "9.8.7";
+  p.git_commit = "0123456789abcdef0123456789abcdef01234567";
+  p.git_dirty = true;
+  p.build_type = "Release";
+  p.compiler = "GNU 12.2.0";
+  p.bullet_precision = "double";
+  return p;
+}
+
 TEST(BenchCsv, RowsCarryValuesAndLeaveMissingOnesEmpty) {
   const std::vector<std::string> lines =
-      splitLines(benchCsv({parksimRecord(), unsolvedOmplRecord()}));
+      splitLines(benchCsv({parksimRecord(), unsolvedOmplRecord()}, someBuild()));
+  const std::string build =
+      "9.8.7,0123456789abcdef0123456789abcdef01234567,true,Release,GNU 12.2.0,double";
   EXPECT_EQ(lines[1],
             "parksim,rrt-goal-connect,move-to-pose,head_in,7,iterations=2000,1,solved,1,0.25,0.25,"
-            "0.2,1.5,2,0.004,1.6,40,12,30,1000,0.01,0.25");
-  EXPECT_EQ(lines[2], "ompl,RRT,reeds-shepp,head_in,7,time=1s,0,Timeout,0,,1,,,,,,,,5000,,,");
+            "0.2,1.5,2,0.004,1.6,40,12,30,1000," +
+                build + ",0.01,0.25");
+  EXPECT_EQ(lines[2],
+            "ompl,RRT,reeds-shepp,head_in,7,time=1s,0,Timeout,0,,1,,,,,,,,5000,," + build + ",,");
 }
 
 TEST(BenchCsv, TextWithCommasIsQuoted) {

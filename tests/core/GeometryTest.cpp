@@ -1,6 +1,14 @@
 #include "parksim/core/Geometry.h"
 
+#include <cmath>
+#include <random>
+#include <vector>
+
 #include <gtest/gtest.h>
+
+#include "parksim/core/Scenario.h"
+#include "parksim/core/Text.h"
+#include "tests/support/ExactShapes.h"
 
 namespace parksim {
 namespace {
@@ -46,6 +54,84 @@ TEST(Geometry, OverlapSeparationAndTouching) {
 
 TEST(Geometry, FootprintRadiusIsTheFarthestCorner) {
   EXPECT_NEAR(footprintRadius(RobotDef{}), std::hypot(0.07, 0.0425), 1e-12);
+}
+
+}  // namespace
+}  // namespace parksim
+
+namespace parksim {
+namespace {
+
+// Core's separation for circles is exact and its polygon separation has the exact sign: both
+// against the independent reference (Minkowski differences) on random boxes and shapes.
+TEST(Geometry, CircleAndPolygonSeparationsAgreeWithTheIndependentReference) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> pos(-0.3, 0.3);
+  std::uniform_real_distribution<double> size(0.01, 0.2);
+  std::uniform_real_distribution<double> angle(-kPi, kPi);
+  int overlapping = 0;
+  for (int k = 0; k < 20000; ++k) {
+    OrientedBox box;
+    box.center = {pos(rng), pos(rng)};
+    box.half_extents = {size(rng), size(rng)};
+    box.yaw = angle(rng);
+    const Obstacle circle = Obstacle::makeCircle("c", ObstacleKind::kBollard,
+                                                 {{pos(rng), pos(rng)}, size(rng)}, 0.1);
+    EXPECT_NEAR(separation(box, circle), testing::exactSignedDistance(box, circle), 1e-12);
+    const double phase = angle(rng);
+    const Eigen::Vector2d c(pos(rng), pos(rng));
+    std::vector<Eigen::Vector2d> vertices;
+    const int n = 3 + k % 6;
+    for (int i = 0; i < n; ++i) {
+      const double a = phase + 2.0 * kPi * (i + 0.3 * (k % 3) / 3.0) / n;
+      vertices.push_back(c + size(rng) * Eigen::Vector2d(std::cos(a), std::sin(a)));
+    }
+    if (!isStrictlyConvexCcw(vertices)) continue;
+    const Obstacle polygon = Obstacle::makePolygon("p", ObstacleKind::kIsland, vertices, 0.1);
+    const double exact = testing::exactSignedDistance(box, polygon);
+    const double sat = separation(box, polygon);
+    if (std::abs(exact) > 1e-12) {
+      EXPECT_EQ(sat < 0.0, exact < 0.0) << k;
+    }
+    // Apart, separating axes give a lower bound of the gap and distance() the gap itself;
+    // overlapping, the least penetration along an axis is the penetration depth.
+    if (exact > 0.0) {
+      EXPECT_LE(sat, exact + 1e-12);
+      EXPECT_NEAR(distance(box, polygon), exact, 1e-12);
+    } else {
+      EXPECT_NEAR(sat, exact, 1e-12);
+      EXPECT_EQ(distance(box, polygon), 0.0);
+      ++overlapping;
+    }
+  }
+  EXPECT_GT(overlapping, 1000);
+}
+
+TEST(Geometry, ConvexityNeedsCounterClockwiseStrictTurnsAndOneRevolution) {
+  const std::vector<Eigen::Vector2d> tri{{0, 0}, {1, 0}, {0, 1}};
+  EXPECT_TRUE(isStrictlyConvexCcw(tri));
+  EXPECT_FALSE(isStrictlyConvexCcw({{0, 0}, {0, 1}, {1, 0}}));          // clockwise
+  EXPECT_FALSE(isStrictlyConvexCcw({{0, 0}, {1, 0}, {2, 0}, {0, 1}}));  // collinear
+  EXPECT_FALSE(isStrictlyConvexCcw({{0, 0}, {1, 0}, {1, 0}, {0, 1}}));  // repeated
+  // A pentagram turns left at every vertex but winds twice.
+  std::vector<Eigen::Vector2d> star;
+  for (int i = 0; i < 5; ++i) {
+    const double a = 2.0 * kPi * (2 * i) / 5;
+    star.emplace_back(std::cos(a), std::sin(a));
+  }
+  EXPECT_FALSE(isStrictlyConvexCcw(star));
+  EXPECT_GT(signedDoubleArea(tri), 0.0);
+}
+
+TEST(Text, ControlCharactersAndInvalidBytesAreEscaped) {
+  EXPECT_EQ(escapeText("plain caf\xc3\xa9"), "plain caf\xc3\xa9");
+  EXPECT_EQ(escapeText("\x1b[31mred\n"), "\\x1b[31mred\\n");
+  EXPECT_EQ(escapeText("bad \xff byte"), "bad \\xff byte");
+  EXPECT_EQ(escapeText("c1 \xc2\x9b"), "c1 \\u009b");
+  EXPECT_EQ(escapeText("overlong \xc0\xaf"), "overlong \\xc0\\xaf");
+  EXPECT_TRUE(isPrintableUtf8("caf\xc3\xa9"));
+  EXPECT_FALSE(isPrintableUtf8("a\tb"));
+  EXPECT_FALSE(isValidUtf8("\xed\xa0\x80"));  // a surrogate
 }
 
 }  // namespace

@@ -43,8 +43,10 @@ struct Case {
 
 std::string caseName(const ::testing::TestParamInfo<Case>& info) {
   std::string name = std::string(toString(info.param.kind)) + "_" +
-                     (info.param.steering == SteeringKind::kMoveToPose ? "mtp" : "rtr") + "_" +
-                     (info.param.parallel ? "parallel" : "head_in");
+                     (info.param.steering == SteeringKind::kMoveToPose              ? "mtp"
+                      : info.param.steering == SteeringKind::kRotateTranslateRotate ? "rtr"
+                                                                                    : "rs") +
+                     "_" + (info.param.parallel ? "parallel" : "head_in");
   for (char& c : name) c = c == '-' ? '_' : c;
   return name;
 }
@@ -52,6 +54,7 @@ std::string caseName(const ::testing::TestParamInfo<Case>& info) {
 std::vector<Case> allCases() {
   std::vector<Case> cases;
   for (PlannerKind kind : allPlannerKinds()) {
+    if (kind == PlannerKind::kHybridAStar) continue;  // not a tree planner: HybridAStarTest.cpp
     for (SteeringKind steering : allSteeringKinds()) {
       for (bool parallel : {false, true}) cases.push_back({kind, steering, parallel});
     }
@@ -151,6 +154,7 @@ TEST(TreePlanner, SmoothingNeverMakesAPlanWorseAndKeepsItValid) {
     const Scenario s = parallel ? testing::studyLotParallel() : testing::studyLot();
     const SatChecker checker(s);
     for (PlannerKind kind : allPlannerKinds()) {
+      if (kind == PlannerKind::kHybridAStar) continue;  // not a tree planner
       for (SteeringKind steering : allSteeringKinds()) {
         for (int seed = 1; seed <= 2; ++seed) {
           SCOPED_TRACE(std::string(toString(kind)) + " " + toString(steering) + " seed " +
@@ -185,6 +189,7 @@ TEST(TreePlanner, SameSeedSameResultForEveryPlannerAndSteering) {
   const Scenario s = testing::studyLotParallel();
   const SatChecker checker(s);
   for (PlannerKind kind : allPlannerKinds()) {
+    if (kind == PlannerKind::kHybridAStar) continue;  // not a tree planner: HybridAStarTest.cpp
     for (SteeringKind steering : allSteeringKinds()) {
       SCOPED_TRACE(std::string(toString(kind)) + " " + toString(steering));
       PlanSetup setup = setupFor(kind, steering, 11);
@@ -223,6 +228,7 @@ TEST(TreePlanner, EitherHeadingGoalAcceptsHeadInAndBackIn) {
   s.goal.either_heading = true;
   const SatChecker checker(s);
   for (PlannerKind kind : allPlannerKinds()) {
+    if (kind == PlannerKind::kHybridAStar) continue;  // not a tree planner: HybridAStarTest.cpp
     for (SteeringKind steering : allSteeringKinds()) {
       int solved = 0;
       for (int seed = 1; seed <= 4; ++seed) {
@@ -256,6 +262,7 @@ TEST(TreePlanner, EitherHeadingEndsTurnedWhenOnlyTheTurnedGoalIsFree) {
   EXPECT_EQ(planScenario(s, checker, PlanSetup{}).status, PlanStatus::kInvalidGoal);
   s.goal.either_heading = true;
   for (PlannerKind kind : allPlannerKinds()) {
+    if (kind == PlannerKind::kHybridAStar) continue;  // not a tree planner: HybridAStarTest.cpp
     for (SteeringKind steering : allSteeringKinds()) {
       SCOPED_TRACE(std::string(toString(kind)) + " " + toString(steering));
       PlanSetup setup = setupFor(kind, steering, 3);
@@ -300,7 +307,35 @@ TEST(TreePlanner, InvalidStartAndGoalAreStatuses) {
   EXPECT_EQ(planScenario(s, checker, PlanSetup{}).status, PlanStatus::kInvalidGoal);
   s.goal.either_heading = true;  // turned, it is on the parked robot too
   EXPECT_EQ(planScenario(s, checker, PlanSetup{}).status, PlanStatus::kInvalidGoal);
-  EXPECT_EQ(planScenario(s, checker, PlanSetup{}).message, "goal pose collides");
+  EXPECT_EQ(planScenario(s, checker, PlanSetup{}).message,
+            "goal: robot footprint overlaps obstacle \"robot_5\" (in both accepted headings)");
+}
+
+// The reader's rule, applied by the planner too: a start 0.3 mm from an obstacle is refused
+// naming the margin (not "collides"), a goal on the lot edge likewise, and low obstacles are
+// not obstacles.
+TEST(TreePlanner, StartAndGoalFollowThePlacementRule) {
+  Scenario s = testing::studyLot();
+  const double front = s.start.y + s.robot.front_overhang_m;  // facing +y
+  s.obstacles.push_back(Obstacle::makeBox("near", ObstacleKind::kBox,
+                                          testing::cornerBox(0.0, front + 0.0003, 0.3, 0.05),
+                                          0.1));
+  SatChecker checker(s);
+  PlanResult r = planScenario(s, checker, PlanSetup{});
+  EXPECT_EQ(r.status, PlanStatus::kInvalidStart);
+  EXPECT_EQ(r.message,
+            "start: robot footprint is 0.3 mm from obstacle \"near\"; start and goal keep at "
+            "least the 0.5 mm margin of the planner's motion checks");
+  EXPECT_EQ(r.message, "start: " + *placementProblem(s, s.start));
+  s.obstacles.back().height_m = 0.001;  // under the 2 mm ground clearance
+  EXPECT_FALSE(placementProblem(s, s.start).has_value());
+  s = testing::studyLot();
+  s.goal.pose.y = s.lot.y_min_m;
+  checker = SatChecker(s);
+  r = planScenario(s, checker, PlanSetup{});
+  EXPECT_EQ(r.status, PlanStatus::kInvalidGoal);
+  EXPECT_NE(r.message.find("closer than the 0.5 mm margin to the lot edge"), std::string::npos)
+      << r.message;
 }
 
 TEST(TreePlanner, AStartOnTheLotEdgeIsNotReportedAsACollision) {
@@ -318,14 +353,16 @@ TEST(TreePlanner, NamesRoundTripAndUnknownNamesThrow) {
   for (PlannerKind kind : allPlannerKinds()) {
     EXPECT_EQ(plannerKindFromString(toString(kind)), kind);
   }
-  EXPECT_EQ(allPlannerKinds().size(), 4u);
+  EXPECT_EQ(allPlannerKinds().size(), 5u);
+  EXPECT_STREQ(toString(PlannerKind::kHybridAStar), "hybrid-a-star");
   EXPECT_STREQ(toString(PlannerKind::kRrtStar), "rrt-star");
   EXPECT_STREQ(toString(PlannerKind::kRrtConnect), "rrt-connect");
   EXPECT_THROW(plannerKindFromString("rrt*"), Error);
   for (SteeringKind kind : allSteeringKinds()) {
     EXPECT_EQ(steeringKindFromString(toString(kind)), kind);
   }
-  EXPECT_THROW(steeringKindFromString("reeds-shepp"), Error);
+  EXPECT_STREQ(toString(SteeringKind::kReedsShepp), "reeds-shepp");
+  EXPECT_THROW(steeringKindFromString("dubins"), Error);
 }
 
 TEST(TreePlanner, RejectsBadDefinitions) {

@@ -44,7 +44,8 @@ TEST(TrackingPlotTest, ReadsColumnsByName) {
     readTrackingCsv(path);
     FAIL();
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find(":2: pos_err: not a number"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find(":2: column 'pos_err': 'abc' is not a finite number"),
+              std::string::npos)
         << e.what();
   }
 }

@@ -112,8 +112,8 @@ TEST(ScenarioReader, EveryOptionalKeyOverridesItsField) {
       "  - {name: c, kind: curb, center: [0, 3], size: [0.5, 0.02], yaw_deg: 30, height: 0.02}\n"
       "  - {name: w, kind: wall, center: [3, 0], size: [0.1, 1]}\n"
       "  - {name: i, kind: island, center: [1, 1], size: [0.2, 0.2]}\n"
-      "start: [-1, -2, -45]\n"
-      "goal: {pose: [3, 4, 45], position_tolerance: 0.01, heading_tolerance_deg: 2,\n"
+      "start: [-0.9, -1.9, -45]\n"
+      "goal: {pose: [2.9, 3.9, 45], position_tolerance: 0.01, heading_tolerance_deg: 2,\n"
       "       either_heading: true}\n",
       "all.yaml");
   EXPECT_EQ(s.robot.length_m, 0.2);
@@ -177,11 +177,11 @@ TEST(ScenarioReader, ParkedRobotFootprintPlacesTheReferencePointTenMillimetresBe
 }
 
 TEST(ScenarioReader, AcceptsWhatIsOnlyUnusual) {
-  // Touching an obstacle is not overlapping it. With this robot (binary fractions, so the
-  // contact is exact) the footprint at (0.5, 0.5, 0) spans x 0.125..0.625, and the box
-  // starts at x = 0.625.
+  // A bumper exactly the 0.5 mm placement margin from a wall face. The footprint at
+  // (0.5, 0.5, 0) spans x 0.125..0.625; the face at 0.6255 computes to 0.5 mm less a few ulps
+  // (the rounding that the rule forgives).
   EXPECT_EQ(errorOf(valid("robot: {length: 0.5, width: 0.25, front_overhang: 0.125}\n"
-                          "obstacles: [{name: a, kind: box, center: [0.75, 0.5], "
+                          "obstacles: [{name: a, kind: box, center: [0.7505, 0.5], "
                           "size: [0.25, 0.25]}]\n")),
             "(accepted)");
   // Parked robots overlapping each other and an obstacle are allowed.
@@ -189,9 +189,11 @@ TEST(ScenarioReader, AcceptsWhatIsOnlyUnusual) {
                           "parked_robots: [{name: p, pose: [1, 1, 0]}, "
                           "{name: q, pose: [1.01, 1, 0]}]\n")),
             "(accepted)");
-  // The lot bounds the reference point only: a footprint may reach past them.
-  EXPECT_EQ(errorOf(std::string(kHead) + "start: [0, 0, 0]\ngoal: {pose: [2, 2, 0]}\n"),
-            "(accepted)");
+  // The lot bounds the reference point only (with the 0.5 mm margin): a footprint may reach
+  // past them.
+  EXPECT_EQ(
+      errorOf(std::string(kHead) + "start: [0.0005, 0.0005, 0]\ngoal: {pose: [1.9995, 1.9995, 0]}\n"),
+      "(accepted)");
   // Zero friction and zero front overhang are real designs; '+' signs and True are YAML.
   EXPECT_EQ(errorOf(valid("physics: {support_friction: 0, wheel_friction: +0.5}\n"
                           "robot: {front_overhang: 0}\n")),
@@ -199,8 +201,12 @@ TEST(ScenarioReader, AcceptsWhatIsOnlyUnusual) {
   EXPECT_EQ(errorOf(std::string(kHead) +
                     "start: [0.5, 0.5, 0]\ngoal: {pose: [1.5, 1.5, 90], either_heading: True}\n"),
             "(accepted)");
-  // Empty lists are lists.
+  // Empty lists are lists, and so is a key with nothing after it.
   EXPECT_EQ(errorOf(valid("obstacles: []\nparked_robots: []\n")), "(accepted)");
+  EXPECT_EQ(errorOf(valid("obstacles:\nparked_robots:\n")), "(accepted)");
+  // Whole degrees below one turn in radians, and any fraction above it, in the list form.
+  EXPECT_EQ(errorOf(std::string(kHead) + "start: [0.5, 0.5, 6]\ngoal: {pose: [1.5, 1.5, 6.5]}\n"),
+            "(accepted)");
 }
 
 TEST(ScenarioReader, HeadingsAreStoredAsWrittenInRadians) {
@@ -208,6 +214,166 @@ TEST(ScenarioReader, HeadingsAreStoredAsWrittenInRadians) {
       std::string(kHead) + "start: [0.5, 0.5, 270]\ngoal: {pose: [1.5, 1.5, -180]}\n", "t.yaml");
   EXPECT_EQ(s.start.theta, degToRad(270.0));
   EXPECT_EQ(s.goal.pose.theta, degToRad(-180.0));
+}
+
+
+TEST(ScenarioReader, ReadsCirclesAndConvexPolygonsInEitherWinding) {
+  const Scenario s = parseScenario(
+      valid("obstacles:\n"
+            "  - {name: b, kind: bollard, center: [1.8, 0.2], radius: 0.03, height: 0.12}\n"
+            "  - {name: cw, kind: curb, vertices: [[1.8, 1.0], [1.9, 0.9], [1.8, 0.8]]}\n"
+            "  - {name: p, kind: pillar, center: [0.2, 1.8], radius: 0.1}\n"),
+      "t.yaml");
+  ASSERT_EQ(s.obstacles.size(), 3u);
+  const Obstacle& b = s.obstacles[0];
+  EXPECT_EQ(b.kind, ObstacleKind::kBollard);
+  EXPECT_EQ(b.shape, ObstacleShape::kCircle);
+  EXPECT_EQ(b.box.center, Eigen::Vector2d(1.8, 0.2));
+  EXPECT_EQ(b.radius_m, 0.03);
+  EXPECT_EQ(b.height_m, 0.12);
+  const Obstacle& cw = s.obstacles[1];
+  EXPECT_EQ(cw.shape, ObstacleShape::kPolygon);
+  ASSERT_EQ(cw.vertices.size(), 3u);
+  EXPECT_TRUE(isStrictlyConvexCcw(cw.vertices));  // written clockwise, stored counter-clockwise
+  EXPECT_EQ(cw.vertices.front(), Eigen::Vector2d(1.8, 0.8));
+  EXPECT_NEAR(cw.box.center.x(), 1.85, 1e-12);  // the bounding rectangle
+  EXPECT_NEAR(cw.box.half_extents.y(), 0.1, 1e-12);
+  EXPECT_EQ(s.obstacles[2].kind, ObstacleKind::kPillar);
+}
+
+TEST(ScenarioReader, ParkedVehiclesHaveTheirOwnSizeAndMass) {
+  const Scenario s = parseScenario(
+      valid("parked_robots:\n"
+            "  - {name: van, pose: [1.5, 0.3, 90], length: 0.16, width: 0.1, mass_kg: 0.6}\n"
+            "  - {name: car, pose: [0.3, 1.5, 0], length: 0.12, front_overhang: 0.03}\n"
+            "  - {name: twin, pose: [1.5, 0.8, 0]}\n"),
+      "t.yaml");
+  ASSERT_EQ(s.obstacles.size(), 3u);
+  RobotDef van;
+  van.length_m = 0.16;
+  van.width_m = 0.1;
+  van.front_overhang_m = 0.02;  // the ego's 10 mm of 80 mm, scaled to 160 mm
+  const OrientedBox expected = footprintAt(van, {1.5, 0.3, degToRad(90.0)});
+  EXPECT_NEAR(s.obstacles[0].box.center.y(), expected.center.y(), 1e-15);
+  EXPECT_EQ(s.obstacles[0].box.half_extents, Eigen::Vector2d(0.08, 0.05));
+  EXPECT_EQ(s.obstacles[0].mass_kg, 0.6);
+  EXPECT_NEAR(s.obstacles[1].box.center.x(), 0.3 + 0.03 - 0.06, 1e-15);
+  EXPECT_EQ(s.obstacles[1].box.half_extents, Eigen::Vector2d(0.06, 0.0425));
+  EXPECT_FALSE(s.obstacles[1].mass_kg.has_value());  // physics.parked_robot_mass_kg
+  EXPECT_EQ(s.obstacles[2].box.half_extents, Eigen::Vector2d(0.04, 0.0425));
+}
+
+TEST(ScenarioReader, MapFormPosesSayTheirUnit) {
+  const Scenario list = parseScenario(valid(), "t.yaml");
+  const Scenario map = parseScenario(
+      std::string(kHead) +
+          "start: {x: 0.5, y: 0.5, yaw_deg: 0}\ngoal: {pose: {yaw_rad: 1.5, x: 1.5, y: 1.5}}\n",
+      "t.yaml");
+  EXPECT_EQ(map.start, list.start);
+  EXPECT_EQ(map.goal.pose.x, 1.5);
+  EXPECT_EQ(map.goal.pose.theta, 1.5);  // radians as written
+  // Fractional degrees are fine in the map form.
+  EXPECT_EQ(parseScenario(std::string(kHead) + "start: {x: 0.5, y: 0.5, yaw_deg: 1.5}\n"
+                                               "goal: {pose: [1.5, 1.5, 90]}\n",
+                          "t.yaml")
+                .start.theta,
+            degToRad(1.5));
+}
+
+TEST(ScenarioReader, MergeKeysCopyWhatTheMapDoesNotSay) {
+  const Scenario s = parseScenario(
+      valid("obstacles:\n"
+            "  - &post {name: a, kind: bollard, center: [1.8, 0.2], radius: 0.03, height: 0.2}\n"
+            "  - {<<: *post, name: b, center: [1.8, 0.4]}\n"
+            "parked_robots:\n"
+            "  - &p1 {name: p1, pose: [0.2, 1.8, 0], height: 0.3}\n"
+            "  - &p2 {name: p2, pose: [0.2, 1.6, 0], length: 0.1, height: 0.7}\n"
+            "  - {<<: [*p1, *p2], name: p3, pose: [0.2, 1.4, 0]}\n"),
+      "t.yaml");
+  ASSERT_EQ(s.obstacles.size(), 5u);
+  EXPECT_EQ(s.obstacles[1].name, "b");
+  EXPECT_EQ(s.obstacles[1].shape, ObstacleShape::kCircle);
+  EXPECT_EQ(s.obstacles[1].box.center, Eigen::Vector2d(1.8, 0.4));
+  EXPECT_EQ(s.obstacles[1].radius_m, 0.03);
+  EXPECT_EQ(s.obstacles[1].height_m, 0.2);
+  // Merging a list: the earlier map wins (height from p1), later ones fill in (length from p2).
+  const Obstacle& p3 = s.obstacles[4];
+  EXPECT_EQ(p3.name, "p3");
+  EXPECT_EQ(p3.height_m, 0.3);
+  EXPECT_EQ(p3.box.half_extents.x(), 0.05);
+  // Keys are checked after merging: a merged typo is still an unknown field.
+  EXPECT_EQ(errorOf(valid("obstacles:\n"
+                          "  - &a {name: a, kind: box, center: [1.8, 0.2], size: [0.1, 0.1]}\n"
+                          "  - {<<: *a, name: b, colour: red}\n")),
+            "t.yaml:8: obstacles[1].colour: unknown field; expected one of: name, kind, center, "
+            "size, yaw_deg, radius, vertices, height");
+}
+
+TEST(ScenarioReader, LowObstaclesDoNotBlockTheStart) {
+  // A 1 mm painted line under the start: below the 2 mm ground clearance.
+  EXPECT_EQ(errorOf(valid("obstacles: [{name: line, kind: curb, center: [0.5, 0.5], "
+                          "size: [0.02, 0.5], height: 0.001}]\n")),
+            "(accepted)");
+  EXPECT_EQ(errorOf(valid("robot: {ground_clearance: 0.0005}\n"
+                          "obstacles: [{name: line, kind: curb, center: [0.5, 0.5], "
+                          "size: [0.02, 0.5], height: 0.001}]\n")),
+            "t.yaml:4: start: robot footprint overlaps obstacle \"line\"");
+}
+
+TEST(ScenarioReader, EitherHeadingGoalIsPlacedWhenOneHeadingFits) {
+  // A post 45 mm behind the goal: only the turned goal pose is clear of it.
+  const std::string obstacles =
+      "obstacles: [{name: post, kind: box, center: [1.435, 1.5], size: [0.04, 0.04]}]\n";
+  EXPECT_EQ(errorOf(std::string(kHead) + "start: [0.5, 0.5, 0]\ngoal: {pose: [1.5, 1.5, 0]}\n" +
+                    obstacles),
+            "t.yaml:5: goal.pose: robot footprint overlaps obstacle \"post\"");
+  EXPECT_EQ(errorOf(std::string(kHead) +
+                    "start: [0.5, 0.5, 0]\ngoal: {pose: [1.5, 1.5, 0], either_heading: true}\n" +
+                    obstacles),
+            "(accepted)");
+}
+
+TEST(ScenarioReader, ParsePoseReadsTheCommandLineForms) {
+  EXPECT_EQ(parsePose("0.1,0.2,90", "--start"), (Pose2{0.1, 0.2, degToRad(90.0)}));
+  EXPECT_EQ(parsePose("[0.1, 0.2, -45]", "--goal"), (Pose2{0.1, 0.2, degToRad(-45.0)}));
+  EXPECT_EQ(parsePose("{x: 0.1, y: 0.2, yaw_rad: 1}", "--goal"), (Pose2{0.1, 0.2, 1.0}));
+  const auto error = [](std::string_view text) {
+    try {
+      parsePose(text, "--start");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(error("0.1,abc,90"), "--start[1]: must be a number, got abc");
+  EXPECT_EQ(error("0.1,0.2"),
+            "--start: must be a list [x, y, yaw_deg] of 3 numbers or a map {x, y, yaw_deg}, got "
+            "a list of 2");
+  EXPECT_EQ(error("0.1,0.2,1.5708"),
+            "--start[2]: the list form's angle is in degrees, and 1.5708 looks like radians; "
+            "write whole degrees (90 if that was radians), or the map form "
+            "{x: .., y: .., yaw_deg: ..} or {x: .., y: .., yaw_rad: ..}");
+  EXPECT_EQ(error("0.1,0.2,.inf"), "--start[2]: must be a finite number, got .inf");
+}
+
+TEST(ScenarioReader, ListsLongerThanTheLimitAreRefusedBeforeTheyAreRead) {
+  std::string many = "obstacles: [";
+  for (std::size_t i = 0; i <= kMaxObstacles; ++i) many += "{},";
+  many += "]\n";
+  EXPECT_EQ(errorOf(valid(many)), "t.yaml:6: obstacles: holds 10001 items; at most 10000 are allowed");
+  std::string parked = "parked_robots: [";
+  for (std::size_t i = 0; i <= kMaxParkedRobots; ++i) parked += "{},";
+  parked += "]\n";
+  EXPECT_EQ(errorOf(valid(parked)),
+            "t.yaml:6: parked_robots: holds 10001 items; at most 10000 are allowed");
+}
+
+TEST(ScenarioReader, NonUtf8NamesAreRefusedAndEscaped) {
+  // yaml-cpp may refuse the byte itself; either way the message holds no raw byte.
+  const std::string message =
+      errorOf("format: parksim-world/1\nname: \"caf\xe9\"\n" + std::string(kStartGoal));
+  EXPECT_EQ(message.find('\xe9'), std::string::npos) << message;
+  EXPECT_NE(message, "(accepted)");
 }
 
 // ---- Files ---------------------------------------------------------------------------------
@@ -268,6 +434,47 @@ TEST_F(ScenarioFile, DirectoryIsReported) {
   }
 }
 
+TEST_F(ScenarioFile, OversizedFileIsRefusedBeforeReading) {
+  const std::string path = write("big.yaml", valid() + std::string(kMaxWorldFileBytes, '#'));
+  try {
+    loadScenario(path);
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              path + ": file size: " + std::to_string(valid().size() + kMaxWorldFileBytes) +
+                  " bytes; a world file may hold at most 1048576 bytes (1 MiB)");
+  }
+}
+
+TEST_F(ScenarioFile, DevicesAreNotWorldFiles) {
+  try {
+    loadScenario("/dev/zero");
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "/dev/zero: cannot open: not a regular file");
+  }
+}
+
+TEST_F(ScenarioFile, ShowcaseWorldHasEveryShape) {
+  const Scenario s = loadScenario(std::string(PARKSIM_SOURCE_DIR) + "/worlds/bollards.yaml");
+  int circles = 0;
+  int polygons = 0;
+  int low = 0;
+  for (const Obstacle& o : s.obstacles) {
+    circles += o.shape == ObstacleShape::kCircle;
+    polygons += o.shape == ObstacleShape::kPolygon;
+    low += !blocksRobot(o, s.robot);
+  }
+  EXPECT_EQ(circles, 3);
+  EXPECT_EQ(polygons, 1);
+  EXPECT_EQ(low, 1);
+  const Obstacle& van = s.obstacles.back();
+  EXPECT_EQ(van.kind, ObstacleKind::kParkedRobot);
+  EXPECT_GT(van.box.half_extents.x(), s.robot.length_m / 2);
+  EXPECT_GT(van.box.half_extents.y(), s.robot.width_m / 2);
+  EXPECT_EQ(s.obstacles[2].radius_m, s.obstacles[1].radius_m);  // merged from the first
+}
+
 TEST_F(ScenarioFile, DocumentationExampleIsAValidWorld) {
   // Keeps docs/world-format.md honest: its complete example must load as documented.
   std::ifstream in(std::string(PARKSIM_SOURCE_DIR) + "/docs/world-format.md");
@@ -282,9 +489,11 @@ TEST_F(ScenarioFile, DocumentationExampleIsAValidWorld) {
   const Scenario s = parseScenario(doc.substr(begin + 8, end - begin - 8), "example.yaml");
   EXPECT_EQ(s.name, "one_space");
   EXPECT_EQ(s.robot.max_wheel_speed_radps, 8.0);
-  ASSERT_EQ(s.obstacles.size(), 3u);
+  ASSERT_EQ(s.obstacles.size(), 5u);
   EXPECT_EQ(s.obstacles[1].box.yaw, degToRad(10.0));
-  EXPECT_EQ(s.obstacles[2].kind, ObstacleKind::kParkedRobot);
+  EXPECT_EQ(s.obstacles[2].shape, ObstacleShape::kCircle);
+  EXPECT_EQ(s.obstacles[3].shape, ObstacleShape::kPolygon);
+  EXPECT_EQ(s.obstacles[4].kind, ObstacleKind::kParkedRobot);
   EXPECT_TRUE(s.goal.either_heading);
   EXPECT_EQ(s.physics.solver_iterations, 80);
 }
@@ -339,7 +548,8 @@ const BadCase kBadCases[] = {
     {"MissingLotBound", "format: parksim-world/1\nname: t\nlot: {x_min: 0, y_min: 0, x_max: 2}\n",
      "t.yaml:3: lot.y_max: missing required field"},
     {"MissingObstacleSize", valid("obstacles:\n  - {name: a, kind: box, center: [1, 1]}\n"),
-     "t.yaml:7: obstacles[0].size: missing required field"},
+     "t.yaml:7: obstacles[0]: give exactly one shape: size (a box), radius (a circle) or "
+     "vertices (a convex polygon)"},
     {"MissingObstacleName", valid("obstacles:\n  - kind: box\n"),
      "t.yaml:7: obstacles[0].name: missing required field"},
     {"MissingParkedRobotPose", valid("parked_robots:\n  - name: p\n"),
@@ -353,7 +563,8 @@ const BadCase kBadCases[] = {
      "t.yaml:3: lot.z_max: unknown field; expected one of: x_min, y_min, x_max, y_max"},
     {"UnknownRobotField", valid("robot:\n  length: 0.08\n  lenght: 0.09\n"),
      "t.yaml:8: robot.lenght: unknown field; expected one of: length, width, front_overhang, "
-     "wheel_base, wheel_radius, max_wheel_speed_radps, max_wheel_accel_radps2, height"},
+     "wheel_base, wheel_radius, max_wheel_speed_radps, max_wheel_accel_radps2, height, "
+     "ground_clearance"},
     {"UnknownPhysicsFieldWithoutUnitSuffix", valid("physics: {time_step: 0.01}\n"),
      "t.yaml:6: physics.time_step: unknown field; expected one of: time_step_s, "
      "solver_iterations, gravity_mps2, chassis_mass_kg, wheel_mass_kg, wheel_friction, "
@@ -364,10 +575,11 @@ const BadCase kBadCases[] = {
      "heading_tolerance_deg, either_heading"},
     {"UnknownObstacleField", valid("obstacles:\n  - name: a\n    kind: box\n    colour: red\n"),
      "t.yaml:9: obstacles[0].colour: unknown field; expected one of: name, kind, center, size, "
-     "yaw_deg, height"},
+     "yaw_deg, radius, vertices, height"},
     {"UnknownParkedRobotField",
      valid("parked_robots:\n  - {name: p, pose: [1, 1, 0]}\n  - {name: q, yaw_deg: 3}\n"),
-     "t.yaml:8: parked_robots[1].yaw_deg: unknown field; expected one of: name, pose, height"},
+     "t.yaml:8: parked_robots[1].yaw_deg: unknown field; expected one of: name, pose, height, "
+     "length, width, front_overhang, mass_kg"},
     {"DuplicateKey", valid("lot: {x_min: 0, y_min: 0, x_max: 3, y_max: 3}\n"),
      "t.yaml:6: lot: duplicate key"},
     {"DuplicateNestedKey",
@@ -382,11 +594,28 @@ const BadCase kBadCases[] = {
     {"NumberWithTrailingText", head("start: [0.5m, 0.5, 0]\ngoal: {pose: [1.5, 1.5, 90]}\n"),
      "t.yaml:4: start[0]: must be a number, got 0.5m"},
     {"PoseTooShort", head("start: [0.5, 0.5]\ngoal: {pose: [1.5, 1.5, 90]}\n"),
-     "t.yaml:4: start: must be a list [x, y, yaw_deg] of 3 numbers, got a list of 2"},
-    {"PoseAsMap", head("start: {x: 0.5, y: 0.5, yaw_deg: 0}\ngoal: {pose: [1.5, 1.5, 90]}\n"),
-     "t.yaml:4: start: must be a list [x, y, yaw_deg] of 3 numbers, got a map"},
+     "t.yaml:4: start: must be a list [x, y, yaw_deg] of 3 numbers or a map {x, y, yaw_deg}, "
+     "got a list of 2"},
+    {"PoseMapWithoutHeading", head("start: {x: 0.5, y: 0.5}\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start.yaw_deg: missing required field (or yaw_rad)"},
+    {"PoseMapWithBothHeadings",
+     head("start: {x: 0.5, y: 0.5, yaw_deg: 0, yaw_rad: 0}\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start.yaw_rad: give the heading once: yaw_deg or yaw_rad, not both"},
+    {"PoseMapUnknownKey",
+     head("start: {x: 0.5, y: 0.5, theta: 0}\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start.theta: unknown field; expected one of: x, y, yaw_deg, yaw_rad"},
     {"PoseEmpty", head("start:\ngoal: {pose: [1.5, 1.5, 90]}\n"),
-     "t.yaml:4: start: must be a list [x, y, yaw_deg] of 3 numbers, got null"},
+     "t.yaml:4: start: must be a list [x, y, yaw_deg] of 3 numbers or a map {x, y, yaw_deg}, "
+     "got null"},
+    {"RadiansOutOfHabit", head("start: [0.15, 0.6, 1.5708]\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start[2]: the list form's angle is in degrees, and 1.5708 looks like radians; "
+     "write whole degrees (90 if that was radians), or the map form {x: .., y: .., yaw_deg: ..} "
+     "or {x: .., y: .., yaw_rad: ..}"},
+    {"NegativeRadiansOutOfHabit",
+     head("start: [0.5, 0.5, 0]\ngoal: {pose: [1.5, 1.5, -3.14159]}\n"),
+     "t.yaml:5: goal.pose[2]: the list form's angle is in degrees, and -3.14159 looks like "
+     "radians; write whole degrees (-180 if that was radians), or the map form "
+     "{x: .., y: .., yaw_deg: ..} or {x: .., y: .., yaw_rad: ..}"},
     {"SizeTooLong", valid("obstacles: [{name: a, kind: box, center: [1, 1], size: [1, 2, 3]}]\n"),
      "t.yaml:6: obstacles[0].size: must be a list [sx, sy] of 2 numbers, got a list of 3"},
     {"LotAsList", "format: parksim-world/1\nname: t\nlot: [0, 0, 2, 2]\n",
@@ -528,11 +757,104 @@ const BadCase kBadCases[] = {
      "t.yaml:8: obstacles[1].name: duplicate name \"a\" (already used at line 7)"},
     {"UnknownKind", valid("obstacles: [{name: a, kind: wal, center: [1, 1], size: [1, 1]}]\n"),
      "t.yaml:6: obstacles[0].kind: unknown kind \"wal\"; expected one of: wall, curb, island, "
-     "box"},
+     "box, bollard, pillar"},
     {"ParkedRobotKindInObstacles",
      valid("obstacles: [{name: a, kind: parked_robot, center: [1, 1], size: [1, 1]}]\n"),
      "t.yaml:6: obstacles[0].kind: parked robots are listed under parked_robots, with a pose "
      "instead of a size"},
+
+    // Hardening: inputs that once hung, overflowed or echoed raw bytes.
+    {"StrayComma", ",", "t.yaml:1: (syntax): unexpected ',' (outside any [ ] or { } list or map)"},
+    {"StrayCommaAfterTheWorld", valid(",\n"), "t.yaml:6: (syntax): end of map not found"},
+    {"StrayCommaAfterAFlowMap", "{format: parksim-world/1, name: t},\n",
+     "t.yaml:1: (syntax): unexpected ',' (outside any [ ] or { } list or map)"},
+    {"OverflowIsNotFinite", head("start: [1e309, 0.5, 0]\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start[0]: must be a finite number, got 1e309"},
+    {"NegativeOverflowIsNotFinite", head("start: [0.5, -1e400, 0]\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start[1]: must be a finite number, got -1e400"},
+    {"HugeYawIsOutOfRange", head("start: [0.5, 0.5, 1e308]\ngoal: {pose: [1.5, 1.5, 90]}\n"),
+     "t.yaml:4: start[2]: must be in [-3600, 3600] degrees, got 1e308"},
+    {"HugeObstacleYawIsBlamedOnItsField",
+     valid("obstacles: [{name: a, kind: box, center: [1.9, 0.1], size: [0.1, 0.1], "
+           "yaw_deg: 1e308}]\n"),
+     "t.yaml:6: obstacles[0].yaw_deg: must be in [-3600, 3600] degrees, got 1e308"},
+    {"HugeCoordinate", "format: parksim-world/1\nname: t\nlot: {x_min: 0, y_min: 0, x_max: 1e300, "
+     "y_max: 2}\n",
+     "t.yaml:3: lot.x_max: must be in [-10000, 10000], got 1e300"},
+    {"HugeSize", valid("obstacles: [{name: a, kind: box, center: [1, 1], size: [1e6, 1]}]\n"),
+     "t.yaml:6: obstacles[0].size[0]: must be in [0, 10000], got 1e6"},
+    {"TerminalEscapeInNameIsEscaped", "format: parksim-world/1\nname: \"\\e[31mred\"\n",
+     "t.yaml:2: name: must be UTF-8 text without control characters, got \"\\x1b[31mred\""},
+    {"TerminalEscapeInKeyIsEscaped", valid("\"\\e[2J\": 1\n"),
+     "t.yaml:6: \\x1b[2J: unknown field; expected one of: format, name, lot, robot, obstacles, "
+     "parked_robots, start, goal, physics"},
+    {"ControlCharacterInObstacleName",
+     valid("obstacles: [{name: \"a\\tb\", kind: box, center: [1.9, 0.1], size: [0.1, 0.1]}]\n"),
+     "t.yaml:6: obstacles[0].name: must be UTF-8 text without control characters, got \"a\\tb\""},
+
+    // Shapes.
+    {"TwoShapes",
+     valid("obstacles: [{name: a, kind: box, center: [1, 1], size: [1, 1], radius: 0.1}]\n"),
+     "t.yaml:6: obstacles[0]: give exactly one shape: size (a box), radius (a circle) or "
+     "vertices (a convex polygon)"},
+    {"CircleWithYaw",
+     valid("obstacles: [{name: a, kind: bollard, center: [1.9, 0.1], radius: 0.05, "
+           "yaw_deg: 10}]\n"),
+     "t.yaml:6: obstacles[0].yaw_deg: a circle has no heading"},
+    {"ZeroRadius", valid("obstacles: [{name: a, kind: bollard, center: [1, 1], radius: 0}]\n"),
+     "t.yaml:6: obstacles[0].radius: must be positive, got 0"},
+    {"PolygonWithCenter",
+     valid("obstacles: [{name: a, kind: island, center: [1, 1], "
+           "vertices: [[1.8, 0], [1.9, 0], [1.9, 0.1]]}]\n"),
+     "t.yaml:6: obstacles[0].center: a polygon is placed by its vertices alone"},
+    {"PolygonOfTwoVertices",
+     valid("obstacles: [{name: a, kind: island, vertices: [[1.8, 0], [1.9, 0]]}]\n"),
+     "t.yaml:6: obstacles[0].vertices: a polygon needs at least 3 vertices [x, y], got 2"},
+    {"NonConvexPolygon",
+     valid("obstacles:\n  - name: a\n    kind: island\n"
+           "    vertices: [[1.6, 0], [1.9, 0], [1.9, 0.3], [1.8, 0.1], [1.6, 0.3]]\n"),
+     "t.yaml:9: obstacles[0].vertices: must be a convex polygon: vertices in order around it, no "
+     "repeated or collinear vertices, no self-crossing"},
+    {"CollinearPolygon",
+     valid("obstacles: [{name: a, kind: island, vertices: [[1.6, 0], [1.7, 0], [1.8, 0], "
+           "[1.8, 0.1]]}]\n"),
+     "t.yaml:6: obstacles[0].vertices: must be a convex polygon: vertices in order around it, no "
+     "repeated or collinear vertices, no self-crossing"},
+    {"VertexNotAPair",
+     valid("obstacles: [{name: a, kind: island, vertices: [[1.6, 0], [1.7], [1.8, 0.1]]}]\n"),
+     "t.yaml:6: obstacles[0].vertices[1]: must be a list [x, y] of 2 numbers, got a list of 1"},
+    {"ParkedVanOverhangBeyondItsLength",
+     valid("parked_robots: [{name: van, pose: [1.8, 0.2, 0], length: 0.1, front_overhang: 0.2}]\n"),
+     "t.yaml:6: parked_robots[0].front_overhang: must not exceed the vehicle's length (0.1), got "
+     "0.2"},
+    {"ZeroParkedMass", valid("parked_robots: [{name: van, pose: [1.8, 0.2, 0], mass_kg: 0}]\n"),
+     "t.yaml:6: parked_robots[0].mass_kg: must be positive, got 0"},
+    {"GroundClearanceAboveHeight", valid("robot: {height: 0.05, ground_clearance: 0.05}\n"),
+     "t.yaml:6: robot.ground_clearance: must be below robot.height (0.05), got 0.05"},
+    {"MergeOfAScalar", valid("robot: {<<: 3}\n"),
+     "t.yaml:6: robot.<<: a merge key takes a map or a list of maps"},
+
+    // The one placement rule (0.5 mm from obstacles and the lot edge).
+    {"StartWithinTheMargin",
+     // The footprint's front edge is at x = 0.51; the box starts 0.3 mm further.
+     valid("obstacles: [{name: near, kind: box, center: [0.6103, 0.5], size: [0.2, 0.2]}]\n"),
+     "t.yaml:4: start: robot footprint is 0.3 mm from obstacle \"near\"; start and goal keep at "
+     "least the 0.5 mm margin of the planner's motion checks"},
+    {"BumperOnTheWallFace",
+     valid("robot: {length: 0.5, width: 0.25, front_overhang: 0.125}\n"
+           "obstacles: [{name: wall, kind: wall, center: [0.75, 0.5], size: [0.25, 0.25]}]\n"),
+     "t.yaml:4: start: robot footprint is 0 mm from obstacle \"wall\"; start and goal keep at "
+     "least the 0.5 mm margin of the planner's motion checks"},
+    {"GoalOnTheLotEdge", head("start: [0.5, 0.5, 0]\ngoal: {pose: [2, 1.5, 90]}\n"),
+     "t.yaml:5: goal.pose: reference point (2, 1.5) is closer than the 0.5 mm margin to the lot "
+     "edge [0, 2] x [0, 2]"},
+    {"StartOverlapsABollard",
+     valid("obstacles: [{name: post, kind: bollard, center: [0.52, 0.5], radius: 0.02}]\n"),
+     "t.yaml:4: start: robot footprint overlaps obstacle \"post\""},
+    {"GoalOverlapsAnIsland",
+     valid("obstacles: [{name: isle, kind: island, vertices: [[1.5, 1.45], [1.6, 1.6], "
+           "[1.4, 1.6]]}]\n"),
+     "t.yaml:5: goal.pose: robot footprint overlaps obstacle \"isle\""},
 };
 
 INSTANTIATE_TEST_SUITE_P(ScenarioReader, RejectsBadInput, ::testing::ValuesIn(kBadCases),

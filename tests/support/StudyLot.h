@@ -10,6 +10,7 @@
 #include "parksim/core/FootprintChecker.h"
 #include "parksim/core/Geometry.h"
 #include "parksim/core/Scenario.h"
+#include "tests/support/ExactShapes.h"
 
 namespace parksim::testing {
 
@@ -67,19 +68,33 @@ inline Scenario studyLotParallel() {
   return s;
 }
 
-/// Exact footprint checker: separating axes against every obstacle, with the same answers as
+/// Exact footprint checker: separating axes against every box, with the same answers as
 /// core's boxesOverlap (touching is free) but each obstacle's axes and extent computed once, so
-/// tests can afford many queries.
+/// tests can afford many queries; circles and polygons by exactSignedDistance (Minkowski
+/// difference, independent of core). Obstacles that pass under the robot are skipped.
 class SatChecker final : public FootprintChecker {
  public:
   explicit SatChecker(const Scenario& s) : robot_(s.robot) {
-    for (const Obstacle& o : s.obstacles) obstacles_.push_back(Prepared(o.box));
+    for (const Obstacle& o : s.obstacles) {
+      if (!blocksRobot(o, s.robot)) continue;
+      if (o.shape == ObstacleShape::kBox) {
+        obstacles_.push_back(Prepared(o.box));
+      } else {
+        shapes_.push_back(o);
+      }
+    }
   }
 
   bool isFree(const Pose2& pose, double margin_m = 0.0) const override {
-    const Prepared fp(footprintAt(robot_, pose, margin_m));
+    const OrientedBox box = footprintAt(robot_, pose, margin_m);
+    const Prepared fp(box);
     for (const Prepared& o : obstacles_) {
       if (overlap(fp, o)) return false;
+    }
+    for (const Obstacle& o : shapes_) {
+      // Circumscribed circles apart: free, without the hull.
+      if ((o.box.center - box.center).norm() >= fp.radius + o.box.half_extents.norm()) continue;
+      if (exactSignedDistance(box, o) < 0.0) return false;
     }
     return true;
   }
@@ -113,6 +128,7 @@ class SatChecker final : public FootprintChecker {
 
   RobotDef robot_;
   std::vector<Prepared> obstacles_;
+  std::vector<Obstacle> shapes_;
 };
 
 }  // namespace parksim::testing

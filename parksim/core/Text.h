@@ -1,0 +1,22 @@
+#pragma once
+// Text from input files on its way to a terminal or a JSON file: control characters and bytes
+// that are not UTF-8 are escaped, so a world file can neither drive the terminal (escape
+// sequences) nor make a JSON writer throw.
+
+#include <string>
+#include <string_view>
+
+namespace parksim {
+
+/// True when `text` is well-formed UTF-8 (no overlong forms, surrogates or code points past
+/// U+10FFFF).
+bool isValidUtf8(std::string_view text);
+
+/// True when `text` is valid UTF-8 without control characters (C0, DEL, C1).
+bool isPrintableUtf8(std::string_view text);
+
+/// `text` with every control character and every byte that is not part of valid UTF-8
+/// replaced by an escape (`\n`, `\t`, `\\x1b`, ...); printable UTF-8 passes unchanged.
+std::string escapeText(std::string_view text);
+
+}  // namespace parksim

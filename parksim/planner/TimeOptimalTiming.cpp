@@ -1,0 +1,203 @@
+#include "parksim/planner/TimeOptimalTiming.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "parksim/core/Error.h"
+
+namespace parksim {
+
+namespace {
+
+// Wheel-speed directions closer than this (per component) are one piece.
+constexpr double kSameDirection = 1e-9;
+// Junction speeds are lowered by this factor while a piece cannot go between them.
+constexpr double kLowering = 0.85;
+// A bounded number of lowering passes; each lowers at least one junction speed, and a junction
+// speed below kZeroSpeed of a step is set to 0, where every piece fits.
+constexpr int kMaxPasses = 100000;
+constexpr double kZeroSpeed = 1e-3;
+
+double maxAbs(const WheelSpeeds& w) {
+  return std::max(std::abs(w.left_radps), std::abs(w.right_radps));
+}
+
+WheelSpeeds scaled(const WheelSpeeds& w, double s) { return {w.left_radps * s, w.right_radps * s}; }
+
+// Speed profile of one piece: `n` periods, first at e_in, last at e_out, steps of at most
+// `step`, speeds in [0, v_max], summing to `area` (travel / period). The bounds L_i <= u_i <=
+// U_i are the slowest and fastest such sequences; their blend hits the area exactly and keeps
+// every bound (both have steps within `step`). False when no such profile has n periods.
+bool profile(double e_in, double e_out, double area, double v_max, double step, int n,
+             std::vector<double>* out) {
+  if (n == 1) {
+    if (std::abs(e_in - e_out) > 1e-12 * std::max(1.0, e_in) ||
+        std::abs(e_in - area) > 1e-12 * std::max(1.0, area)) {
+      return false;
+    }
+    if (out) *out = {area};
+    return true;
+  }
+  if (std::abs(e_in - e_out) > (n - 1) * step * (1.0 + 1e-12)) return false;
+  double lo = 0.0;
+  double hi = 0.0;
+  for (int i = 0; i < n; ++i) {
+    hi += std::min({e_in + i * step, e_out + (n - 1 - i) * step, v_max});
+    lo += std::max({e_in - i * step, e_out - (n - 1 - i) * step, 0.0});
+  }
+  // Endpoint speeds are part of both bounds (clamped above, so they must be within v_max).
+  const double tol = 1e-12 * std::max(1.0, area);
+  if (area < lo - tol || area > hi + tol) return false;
+  if (!out) return true;
+  const double f = hi - lo > 0.0 ? std::clamp((area - lo) / (hi - lo), 0.0, 1.0) : 0.0;
+  out->resize(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    const double u_hi = std::min({e_in + i * step, e_out + (n - 1 - i) * step, v_max});
+    const double u_lo = std::max({e_in - i * step, e_out - (n - 1 - i) * step, 0.0});
+    (*out)[i] = u_lo + f * (u_hi - u_lo);
+  }
+  return true;
+}
+
+// Smallest period count with a profile, 0 when none exists.
+int periodsFor(double e_in, double e_out, double area, double v_max, double step) {
+  // n * v_max >= area is necessary; past ramps of 2 v_max / step and the endpoints' own ramps
+  // no new count becomes possible.
+  const int first = std::max(1, static_cast<int>(std::floor(area / v_max)));
+  const int last =
+      static_cast<int>(std::ceil(area / v_max)) + 4 * static_cast<int>(std::ceil(v_max / step)) + 8;
+  for (int n = first; n <= last; ++n) {
+    if (profile(e_in, e_out, area, v_max, step, n, nullptr)) return n;
+  }
+  return 0;
+}
+
+// Continuous-time minimum to move `travel` from rest to rest, less one period (see header).
+double restToRestBound(double travel, const TimingLimits& l) {
+  if (travel <= 0.0) return 0.0;
+  const double v = l.max_wheel_speed_radps;
+  const double a = l.max_wheel_accel_radps2;
+  const double t = travel >= v * v / a ? travel / v + v / a : 2.0 * std::sqrt(travel / a);
+  return std::max(l.period_s, t - l.period_s);
+}
+
+}  // namespace
+
+TimingLimits timingLimits(const RobotDef& robot, double headroom, double period_s) {
+  if (!(headroom >= 0.0 && headroom < 1.0)) throw Error("timing: headroom must be in [0, 1)");
+  if (!(period_s > 0.0)) throw Error("timing: period must be positive");
+  return {(1.0 - headroom) * robot.max_wheel_speed_radps, robot.max_wheel_accel_radps2, period_s};
+}
+
+PathPiece pieceOf(const WheelSpeeds& wheels, double duration_s) {
+  const double m = maxAbs(wheels);
+  if (!(m > 0.0) || !(duration_s > 0.0)) return {};
+  return {scaled(wheels, 1.0 / m), m * duration_s};
+}
+
+void appendPiece(std::vector<PathPiece>& pieces, const PathPiece& p) {
+  if (!(p.travel_rad > 0.0)) return;
+  if (!pieces.empty() &&
+      std::abs(pieces.back().direction.left_radps - p.direction.left_radps) <= kSameDirection &&
+      std::abs(pieces.back().direction.right_radps - p.direction.right_radps) <= kSameDirection) {
+    pieces.back().travel_rad += p.travel_rad;
+  } else {
+    pieces.push_back(p);
+  }
+}
+
+std::vector<PathPiece> pathPieces(const Trajectory& traj) {
+  std::vector<PathPiece> pieces;
+  for (std::size_t i = 0; i + 1 < traj.points.size(); ++i) {
+    appendPiece(pieces,
+                pieceOf(traj.points[i].wheels, traj.points[i + 1].t_s - traj.points[i].t_s));
+  }
+  return pieces;
+}
+
+Trajectory timePieces(const Pose2& start, const std::vector<PathPiece>& pieces,
+                      const RobotDef& robot, const TimingLimits& limits) {
+  const double v_max = limits.max_wheel_speed_radps;
+  const double step = limits.max_wheel_accel_radps2 * limits.period_s;
+  const double dt = limits.period_s;
+  if (!(v_max > 0.0) || !(step > 0.0) || !(dt > 0.0)) {
+    throw Error("timing: speed, acceleration and period must be positive");
+  }
+  const std::size_t k = pieces.size();
+  // Junction j joins piece j - 1 and piece j; rest before the first and after the last.
+  std::vector<double> e(k + 1);
+  for (std::size_t j = 0; j <= k; ++j) {
+    const WheelSpeeds before = j > 0 ? pieces[j - 1].direction : WheelSpeeds{};
+    const WheelSpeeds after = j < k ? pieces[j].direction : WheelSpeeds{};
+    const double jump =
+        maxAbs({before.left_radps - after.left_radps, before.right_radps - after.right_radps});
+    e[j] = jump > 0.0 ? std::min(v_max, step / jump) : v_max;
+  }
+  std::vector<double> area(k);
+  for (std::size_t i = 0; i < k; ++i) area[i] = pieces[i].travel_rad / dt;
+  // Only pieces next to a lowered junction need checking again.
+  std::vector<char> check(k, 1);
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    bool lowered = false;
+    for (std::size_t i = 0; i < k; ++i) {
+      if (!check[i]) continue;
+      check[i] = 0;
+      if (periodsFor(e[i], e[i + 1], area[i], v_max, step) > 0) continue;
+      const std::size_t j = e[i] >= e[i + 1] ? i : i + 1;
+      e[j] = e[j] > kZeroSpeed * step ? kLowering * e[j] : 0.0;
+      check[i] = 1;
+      if (j > 0) check[j - 1] = 1;
+      if (j < k) check[j] = 1;
+      lowered = true;
+    }
+    if (!lowered) break;
+  }
+  Trajectory traj;
+  Pose2 pose = start;
+  std::vector<double> speeds;
+  for (std::size_t i = 0; i < k; ++i) {
+    const int n = periodsFor(e[i], e[i + 1], area[i], v_max, step);
+    if (n == 0 || !profile(e[i], e[i + 1], area[i], v_max, step, n, &speeds)) {
+      throw Error("timing: no profile for a piece (internal)");
+    }
+    for (double u : speeds) {
+      const WheelSpeeds w = scaled(pieces[i].direction, u);
+      traj.points.push_back({static_cast<double>(traj.points.size()) * dt, pose, w});
+      pose = integrateExact(pose, toTwist(w, robot), dt);
+    }
+  }
+  traj.points.push_back({static_cast<double>(traj.points.size()) * dt, pose, {}});
+  return traj;
+}
+
+Trajectory retime(const Trajectory& traj, const RobotDef& robot, const TimingLimits& limits) {
+  if (traj.points.empty()) return traj;
+  return timePieces(traj.points.front().pose, pathPieces(traj), robot, limits);
+}
+
+double durationLowerBound(const std::vector<PathPiece>& pieces, const TimingLimits& limits) {
+  double total = 0.0;
+  for (const PathPiece& p : pieces) total += p.travel_rad;
+  double bound = restToRestBound(total, limits);
+  for (int wheel = 0; wheel < 2; ++wheel) {
+    double sum = 0.0;
+    double run = 0.0;
+    int sign = 0;
+    for (const PathPiece& p : pieces) {
+      const double c = wheel == 0 ? p.direction.left_radps : p.direction.right_radps;
+      const int s = c > 0.0 ? 1 : (c < 0.0 ? -1 : 0);
+      if (s == 0) continue;
+      if (sign != 0 && s != sign) {
+        sum += restToRestBound(run, limits);
+        run = 0.0;
+      }
+      sign = s;
+      run += std::abs(c) * p.travel_rad;
+    }
+    sum += restToRestBound(run, limits);
+    bound = std::max(bound, sum);
+  }
+  return bound;
+}
+
+}  // namespace parksim

@@ -1,0 +1,83 @@
+#include "parksim/scenario/RealismReader.h"
+
+#include <string>
+#include <string_view>
+
+#include <gtest/gtest.h>
+
+#include "parksim/core/Angle.h"
+#include "parksim/core/Error.h"
+#include "parksim/scenario/ScenarioReader.h"
+
+namespace parksim {
+namespace {
+
+// Lines 1-5 of every test document.
+constexpr std::string_view kWorld =
+    "format: parksim-world/1\n"
+    "name: t\n"
+    "lot: {x_min: 0, y_min: 0, x_max: 2, y_max: 2}\n"
+    "start: [0.5, 0.5, 0]\n"
+    "goal: {pose: [1.5, 1.5, 90]}\n";
+
+std::string errorOf(std::string_view extra) {
+  const std::string text = std::string(kWorld) + std::string(extra);
+  try {
+    parseScenario(text, "t.yaml");
+    parseWorldRealism(text, "t.yaml");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(RealismReader, AbsentSectionsLeaveTheDefaults) {
+  const WorldRealism w = parseWorldRealism(kWorld, "t.yaml");
+  EXPECT_FALSE(w.has_realism);
+  EXPECT_FALSE(w.has_tolerance);
+  EXPECT_FALSE(w.realism.active());
+}
+
+TEST(RealismReader, APresetWithOverridesAndATolerance) {
+  const std::string text = std::string(kWorld) +
+                           "realism:\n"
+                           "  preset: lab\n"
+                           "  pose_sensor: {latency_s: 0.075, heading_noise_deg: 0.5}\n"
+                           "  calibration: {track_error_pct: -1.5}\n"
+                           "  control: {rate_hz: 30}\n"
+                           "tolerance: {max_pos_err_m: 0.01, require_goal_reached: true}\n";
+  EXPECT_NO_THROW(parseScenario(text, "t.yaml"));
+  const WorldRealism w = parseWorldRealism(text, "t.yaml");
+  ASSERT_TRUE(w.has_realism);
+  EXPECT_EQ(w.realism.name, "lab+world");
+  EXPECT_DOUBLE_EQ(w.realism.pose_sensor.latency_s, 0.075);
+  EXPECT_DOUBLE_EQ(w.realism.pose_sensor.heading_noise_rad, degToRad(0.5));
+  EXPECT_DOUBLE_EQ(w.realism.pose_sensor.rate_hz, presetRealism("lab").pose_sensor.rate_hz);
+  EXPECT_DOUBLE_EQ(w.realism.calibration.track_error_pct, -1.5);
+  EXPECT_DOUBLE_EQ(w.realism.control.rate_hz, 30.0);
+  EXPECT_TRUE(w.realism.motor.enabled);
+  ASSERT_TRUE(w.has_tolerance);
+  EXPECT_DOUBLE_EQ(w.tolerance.max_pos_err_m, 0.01);
+  EXPECT_TRUE(w.tolerance.require_goal_reached);
+  EXPECT_DOUBLE_EQ(w.tolerance.goal_pos_err_m, TrackingTolerance{}.goal_pos_err_m);
+}
+
+TEST(RealismReader, BadEntriesAreLocated) {
+  EXPECT_EQ(errorOf("realism: {preset: lub}\n"),
+            "t.yaml:6: realism.preset: unknown preset \"lub\"; expected one of: ideal, lab, "
+            "odometry");
+  EXPECT_EQ(errorOf("realism:\n  motor: {time_constant_s: 0}\n"),
+            "t.yaml:7: realism.motor.time_constant_s: must be positive, got 0");
+  EXPECT_EQ(errorOf("realism:\n  estimator: {kind: kalman}\n"),
+            "t.yaml:7: realism.estimator.kind: unknown estimator \"kalman\"; expected one of: "
+            "truth, odometry, fused");
+  EXPECT_NE(errorOf("realism: {estimator: {kind: fused}}\n").find("needs the pose sensor"),
+            std::string::npos);
+  EXPECT_NE(errorOf("tolerance: {max_pos_err: 1}\n").find("t.yaml:6: tolerance"),
+            std::string::npos);
+  EXPECT_EQ(errorOf("realism: {pose_sensor: {dropout_probability: 2}}\n"),
+            "t.yaml:6: realism.pose_sensor.dropout_probability: must lie in [0, 1], got 2");
+}
+
+}  // namespace
+}  // namespace parksim
