@@ -19,7 +19,11 @@ mkdir -p "$out"
 cxx=${FUZZ_CXX:-clang++}
 flags=(-std=c++20 -O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer,address,undefined
        -fno-sanitize-recover=undefined -I. -isystem /usr/include/eigen3)
-core=(parksim/core/*.cpp)
+# The readers need the core library but not its build-provenance file (a configured header).
+core=()
+for f in parksim/core/*.cpp; do
+  [ "$f" = parksim/core/Provenance.cpp ] || core+=("$f")
+done
 
 build() {  # build NAME SOURCES... LIBS...
   local name=$1
