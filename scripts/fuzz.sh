@@ -37,7 +37,9 @@ build() {  # build NAME SOURCES... LIBS...
   "$cxx" "${flags[@]}" "$@" -o "$target"
 }
 
-build world tests/fuzz/WorldReaderFuzz.cpp parksim/scenario/*.cpp "${core[@]}" -lyaml-cpp
+# The reader's realism: section is checked by the sim library's RealismDef.
+build world tests/fuzz/WorldReaderFuzz.cpp parksim/scenario/*.cpp parksim/sim/RealismDef.cpp \
+  "${core[@]}" -lyaml-cpp
 build plan tests/fuzz/PlanReaderFuzz.cpp "${core[@]}"
 
 timeout_s=${FUZZ_TIMEOUT:-10}
