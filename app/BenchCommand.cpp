@@ -24,7 +24,10 @@
 
 #include <vector>
 
+#include "app/OptionChecks.h"
+#include "app/OutputDir.h"
 #include "app/PlanOutput.h"
+#include "app/TerminalText.h"
 #include "bench/ompl/OmplLog.h"
 #include "bench/ompl/OmplPlanners.h"
 #include "bench/planning/BenchCsv.h"
@@ -151,8 +154,13 @@ int runBench(const BenchOptions& o, const OutputOptions& output) {
   // Bad budgets fail before anything runs.
   for (const Scenario& s : scenarios) {
     for (PlannerKind kind : kinds) app::parseIterationBudget(o.max_iterations, kind, s.lot);
+    for (SteeringKind steering : steerings) {
+      PlanSetup setup;
+      setup.steering_kind = steering;
+      checkPlanningLimits(s, setup);
+    }
   }
-  ensureDirectory(o.out);
+  OutputDir out(o.out);
 
   const double load_before = loadAverage();
   std::printf("parksim bench: %zu world(s), seeds 1..%d, load average %.2f at start\n",
@@ -216,7 +224,7 @@ int runBench(const BenchOptions& o, const OutputOptions& output) {
   const double load_after = loadAverage();
 
   const std::string csv_path = o.out + "/bench.csv";
-  bench::writeBenchCsv(csv_path, all);
+  bench::writeBenchCsv(out.path() + "/bench.csv", all);
 
   const std::vector<bench::GroupSummary> groups = bench::summarize(all);
   std::string summary = "Built by " + versionLine(buildProvenance()) + ".\n\n## Runs\n\n" +
@@ -237,9 +245,10 @@ int runBench(const BenchOptions& o, const OutputOptions& output) {
                  : "\n## Paths that failed parksim's exact path check\n\n" + invalid;
   summary += "\nLoad average " + formatFixed(load_before, 2) + " at start, " +
              formatFixed(load_after, 2) + " at end.\n";
-  writeFileAtomically(o.out + "/summary.md", summary);
-  std::printf("\n%s\nwrote %s and %s/summary.md\n", summary.c_str(), csv_path.c_str(),
-              o.out.c_str());
+  writeFileAtomically(out.path() + "/summary.md", summary);
+  out.commit();
+  std::printf("\n%s\nwrote %s and %s/summary.md\n", printableLines(summary).c_str(),
+              printable(csv_path).c_str(), printable(o.out).c_str());
 
   if (!o.ompl_log.empty()) {
     for (std::size_t w = 0; w < scenarios.size(); ++w) {
@@ -272,7 +281,7 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("worlds", opt->worlds, "world files (YAML, see docs/world-format.md)")->required();
   sub.add_option("--seeds", opt->seeds, "runs per planner and world, with seeds 1..N")
       ->capture_default_str()
-      ->check(positiveNumber());
+      ->check(integerIn(1, 100'000));
   sub.add_option("--planners", opt->planners,
                  "parksim planners, comma-separated (default: every planner kind; none: OMPL only)")
       ->delimiter(',');
@@ -288,11 +297,11 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("--time-limit", opt->time_limit_s,
                  "wall-time budget of parksim's first-solution runs, s (0: none)")
       ->capture_default_str()
-      ->check(nonNegativeNumber());
+      ->check(realIn(0.0, 3600.0));
   sub.add_option("--anytime-s", opt->anytime_s,
                  "wall-time budget of the extra run of parksim's anytime planners (RRT*), s")
       ->capture_default_str()
-      ->check(positiveNumber());
+      ->check(realIn(0.0, 3600.0, true));
   sub.add_flag("--ompl", opt->ompl, "also run OMPL's planners on the same footprint checker");
   sub.add_option("--ompl-planners", opt->ompl_planners, "OMPL planners, comma-separated")
       ->delimiter(',')
@@ -304,15 +313,15 @@ CommandRunner setupBenchCommand(CLI::App& sub) {
   sub.add_option("--budget-s", opt->budget_s,
                  "OMPL's wall-time limit per run, s (RRT* improves its path until then)")
       ->capture_default_str()
-      ->check(positiveNumber());
+      ->check(realIn(0.0, 3600.0, true));
   sub.add_option("--turning-radius", opt->turning_radius_m,
                  "Reeds-Shepp minimum turning radius for OMPL, m")
       ->capture_default_str()
-      ->check(positiveNumber());
+      ->check(realIn(0.0, 1000.0, true));
   sub.add_option("--segment", opt->segment_m,
                  "longest motion OMPL's motion validator leaves unchecked (state-space distance)")
       ->capture_default_str()
-      ->check(positiveNumber());
+      ->check(realIn(1e-6, 1.0));
   sub.add_option("--out", opt->out, "output directory for bench.csv and summary.md")
       ->capture_default_str();
   sub.add_option("--ompl-log", opt->ompl_log,

@@ -4,8 +4,10 @@
 #include <string>
 
 #include "app/Command.h"
+#include "app/OutputDir.h"
 #include "app/Overrides.h"
 #include "app/PlanOutput.h"
+#include "app/TerminalText.h"
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/scenario/ScenarioReader.h"
 
@@ -27,22 +29,25 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
   return [opt](const OutputOptions&) -> int {
     const Scenario scenario = loadWorld(opt->world, opt->world_overrides);
     const PlanSetup setup = opt->plan.toSetup(scenario);
+    checkPlanningLimits(scenario, setup);
+    OutputDir out(opt->out);
     const BulletCollisionWorld collision(scenario);
     const PlanResult result = planScenario(scenario, collision, setup);
-    writePlanFiles(opt->out, scenario, setup, result);
+    writePlanFiles(out.path(), scenario, setup, result);
+    out.commit();
     if (!result.solved()) {
       std::fprintf(stderr, "parksim plan: unsolved (%s): %s\n", toString(result.status),
-                   result.message.c_str());
+                   printable(result.message).c_str());
       return kExitUnsolved;
     }
     std::printf(
         "solved %s with %s (seed %llu): %d iterations, %d tree nodes, path %.3f m, %.1f s of "
         "motion, planned in %.2f ms\nwrote %s/trajectory.csv and %s/plan.json\n",
-        scenario.name.c_str(), toString(setup.planner.kind),
+        printable(scenario.name).c_str(), toString(setup.planner.kind),
         static_cast<unsigned long long>(setup.planner.seed), result.stats.iterations,
         result.stats.tree_size, result.trajectory.pathLength(scenario.robot),
-        result.trajectory.duration(), 1e3 * result.stats.times.total_s, opt->out.c_str(),
-        opt->out.c_str());
+        result.trajectory.duration(), 1e3 * result.stats.times.total_s, printable(opt->out).c_str(),
+        printable(opt->out).c_str());
     return 0;
   };
 }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "app/OptionChecks.h"
 #include "app/Validators.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
@@ -29,10 +30,10 @@ void PlanCliOptions::addTo(CLI::App& sub) {
   sub.add_option("--steering", steering,
                  "steering function, one of: " + namesOf(allSteeringKinds()))
       ->capture_default_str();
-  // CLI11 would wrap "-3" into a 64-bit unsigned seed; refuse it instead.
+  // CLI11 would wrap "-3" and clamp 2^64 into a 64-bit unsigned seed; refuse both instead.
   sub.add_option("--seed", seed, "seed of the planner's random number generator")
       ->capture_default_str()
-      ->check(nonNegativeNumber());
+      ->check(unsigned64());
   sub.add_option("--max-iterations", max_iterations,
                  "iteration budget (hybrid-a-star: node expansions); auto: 2000 for tree "
                  "planners, 20000 for hybrid-a-star, times max(1, lot area / 2.16 m^2)")
@@ -41,11 +42,11 @@ void PlanCliOptions::addTo(CLI::App& sub) {
                  "wall-time budget of the search, s (0: none); the plan then depends on the "
                  "machine's speed, so reproducible runs use --max-iterations alone")
       ->capture_default_str()
-      ->check(nonNegativeNumber());
+      ->check(realIn(0.0, 3600.0));
   sub.add_flag("--smooth", smooth, "shortcut-smooth the plan (study 3(c)(3))");
   sub.add_option("--smoothing-attempts", smoothing_attempts, "random shortcuts tried by --smooth")
       ->capture_default_str()
-      ->check(nonNegativeNumber());
+      ->check(integerIn(0, kMaxSmoothingAttempts));
   sub.add_option("--timing", timing,
                  "time-optimal: re-time the plan to the fastest wheel speeds within the limits "
                  "(less the feedback headroom); study: keep the steering controller's timing")
@@ -54,11 +55,11 @@ void PlanCliOptions::addTo(CLI::App& sub) {
   sub.add_option("--feedback-headroom", feedback_headroom,
                  "share of the wheel-speed limit time-optimal plans leave to feedback, in [0, 1)")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 0.99));
+      ->check(realIn(0.0, 0.99));
   sub.add_option("--turning-radius", turning_radius_m,
                  "arc radius of reeds-shepp steering and of hybrid-a-star's primitives, m")
       ->capture_default_str()
-      ->check(positiveNumber());
+      ->check(realIn(0.0, 100.0, true));
 }
 
 int parseIterationBudget(const std::string& text, PlannerKind kind, const LotBounds& lot,
@@ -71,7 +72,7 @@ int parseIterationBudget(const std::string& text, PlannerKind kind, const LotBou
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used == 0 || used != text.size() || value < 0 || value > 2000000000L) {
+  if (used == 0 || used != text.size() || value < 0 || value > kMaxPlannerIterations) {
     throw Error(option + ": expected auto or a non-negative integer, got '" + text + "'");
   }
   return static_cast<int>(value);
@@ -160,6 +161,10 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
   return j;
 }
 
+std::string jsonText(const nlohmann::json& j) {
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
 void writePlanFiles(const std::string& dir, const Scenario& scenario, const PlanSetup& setup,
                     const PlanResult& result) {
   ensureDirectory(dir);
@@ -171,7 +176,7 @@ void writePlanFiles(const std::string& dir, const Scenario& scenario, const Plan
     std::error_code ec;
     std::filesystem::remove(traj_path, ec);
   }
-  writeFileAtomically(dir + "/plan.json", planSummary(scenario, setup, result).dump(2) + "\n");
+  writeFileAtomically(dir + "/plan.json", jsonText(planSummary(scenario, setup, result)));
 }
 
 }  // namespace parksim::app

@@ -12,6 +12,10 @@
 
 namespace parksim::app {
 
+/// Bounds of the planning options (docs/limits.md): the tree and its edges stay in memory.
+inline constexpr int kMaxPlannerIterations = 1'000'000;
+inline constexpr int kMaxSmoothingAttempts = 100'000;
+
 /// Options every planning command takes: --planner, --steering, --seed, --max-iterations,
 /// --time-limit, --smooth, --smoothing-attempts, --timing, --feedback-headroom,
 /// --turning-radius.
@@ -43,6 +47,10 @@ int parseIterationBudget(const std::string& text, PlannerKind kind, const LotBou
 /// pose error.
 nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
                            const PlanResult& result);
+
+/// `j` as indented text with a final newline. Strings that are not UTF-8 (names and paths
+/// from input files) are written with U+FFFD in place of their bad bytes instead of failing.
+std::string jsonText(const nlohmann::json& j);
 
 /// Writes DIR/trajectory.csv (only if solved) and DIR/plan.json, creating DIR.
 void writePlanFiles(const std::string& dir, const Scenario& scenario, const PlanSetup& setup,

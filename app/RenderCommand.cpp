@@ -7,8 +7,11 @@
 
 #include "app/Command.h"
 #include "app/FigureInputs.h"
+#include "app/OptionChecks.h"
+#include "app/OutputDir.h"
 #include "app/Overrides.h"
 #include "app/PlanOutput.h"
+#include "app/TerminalText.h"
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
@@ -48,14 +51,16 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
                  "tracking-error plot");
   sub.add_option("--cspace-heading", opt->cspace_heading_deg,
                  "heading of the C-space slice figure, degrees")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(realIn(-360.0, 360.0));
   sub.add_option("--slices", opt->slices, "headings in the stacked C-space figure")
       ->capture_default_str()
-      ->check(CLI::Range(1, 720));
+      ->check(integerIn(1, 720));
   sub.add_option("--steer-target", opt->steer_target,
                  "target pose x y heading_deg of the steering figure (default: 0.3 m east and "
                  "0.3 m north of the start, heading 0)")
-      ->expected(3);
+      ->expected(3)
+      ->check(realIn(-1e4, 1e4));
   CLI::App* app = &sub;
 
   return [opt, app](const OutputOptions&) -> int {
@@ -71,30 +76,39 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     // Without --planner both of the study's planners are drawn (its Figs. 7 and 8).
     std::vector<std::string> planners = {opt->plan.planner};
     if (app->count("--planner") == 0) planners = {"rrt", "rrt-goal-connect"};
-    const BulletCollisionWorld collision(scenario);
-    ensureDirectory(opt->out);
+    // Every input is read and checked before --out is touched.
+    std::vector<PlanSetup> setups;
     for (const std::string& name : planners) {
       PlanCliOptions options = opt->plan;
       options.planner = name;
-      const PlanSetup setup = options.toSetup(scenario);
-      const PlanResult result = planScenario(scenario, collision, setup);
-      const std::string json_path = opt->out + "/plan_" + name + ".json";
-      writeFileAtomically(json_path, planSummary(scenario, setup, result).dump(2) + "\n");
-      std::printf("%s: %s (%s)\n", name.c_str(), toString(result.status), json_path.c_str());
-      inputs.plans.push_back(planFigure(scenario, setup, result));
+      setups.push_back(options.toSetup(scenario));
+      checkPlanningLimits(scenario, setups.back());
     }
-
+    if (!opt->executed.empty()) inputs.tracking = readTrackingCsv(opt->executed);
     std::optional<Pose2> target;
     if (opt->steer_target.size() == 3) {
       target = Pose2{opt->steer_target[0], opt->steer_target[1], degToRad(opt->steer_target[2])};
     }
-    inputs.steering = steeringExample(scenario, target);
 
-    if (!opt->executed.empty()) inputs.tracking = readTrackingCsv(opt->executed);
-
-    for (const std::string& path : writeFigures(scenario, inputs, def, opt->out + "/figures")) {
-      std::printf("wrote %s\n", path.c_str());
+    OutputDir out(opt->out);
+    const BulletCollisionWorld collision(scenario);
+    std::string report;
+    for (std::size_t i = 0; i < planners.size(); ++i) {
+      const PlanResult result = planScenario(scenario, collision, setups[i]);
+      const std::string json_name = "/plan_" + planners[i] + ".json";
+      writeFileAtomically(out.path() + json_name,
+                          jsonText(planSummary(scenario, setups[i], result)));
+      report += printable(planners[i] + ": " + toString(result.status) + " (" + opt->out +
+                          json_name + ")") +
+                "\n";
+      inputs.plans.push_back(planFigure(scenario, setups[i], result));
     }
+    inputs.steering = steeringExample(scenario, target);
+    for (const std::string& path : writeFigures(scenario, inputs, def, out.path() + "/figures")) {
+      report += printable("wrote " + out.shown(path)) + "\n";
+    }
+    out.commit();
+    std::fputs(report.c_str(), stdout);
     return 0;
   };
 }

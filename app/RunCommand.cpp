@@ -14,9 +14,12 @@
 
 #include "app/Command.h"
 #include "app/FigureInputs.h"
+#include "app/OptionChecks.h"
+#include "app/OutputDir.h"
 #include "app/Overrides.h"
 #include "app/PlanOutput.h"
 #include "app/Progress.h"
+#include "app/TerminalText.h"
 #include "app/Validators.h"
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/AtomicFile.h"
@@ -35,11 +38,6 @@
 namespace parksim::app {
 
 namespace {
-
-void removeIfPresent(const std::string& path) {
-  std::error_code ec;
-  std::filesystem::remove(path, ec);
-}
 
 // planSummary's keys with a plan_ prefix; nested objects flattened as plan_<key>.<sub>.
 // Arrays (the RRT* cost history) stay in plan.json: metrics.json is flat.
@@ -213,7 +211,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
   sub.add_flag("--gif", opt->gif, "also OUT/episode.gif (needs ffmpeg; implies --frames)");
   sub.add_option("--fps", opt->fps, "frames per second of simulated time")
       ->capture_default_str()
-      ->check(positiveNumber());
+      ->check(realIn(0.0, 1000.0, true));
   sub.add_option("--size", opt->size, "size of one view, WxH pixels")->capture_default_str();
   sub.add_option("--view", opt->view, "top, 3d or both (side by side)")
       ->capture_default_str()
@@ -227,26 +225,26 @@ CommandRunner setupRunCommand(CLI::App& sub) {
                  "seed of the realism's random draws (calibration, motor gains, sensor noise), "
                  "independent of --seed")
       ->capture_default_str()
-      ->check(nonNegativeNumber());
+      ->check(unsigned64());
   sub.add_option("--realisations", opt->realisations,
                  "drive the plan N times under noise seeds S, S+1, ... and report the "
                  "distribution (files of the first)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 10000));
+      ->check(integerIn(1, 10000));
   sub.add_option("--min-success-fraction", opt->min_success_fraction,
                  "with --realisations: share of realisations that must succeed for exit 0")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(realIn(0.0, 1.0));
   sub.add_option("--max-tracking-error-mm", opt->max_tracking_error_mm,
                  "tracking tolerance: largest error against the plan (default 5, or the world's "
                  "tolerance: section)")
-      ->check(positiveNumber());
+      ->check(realIn(0.0, 1e6, true));
   sub.add_option("--max-goal-error-mm", opt->max_goal_error_mm,
                  "tracking tolerance: final distance from the goal (default 3)")
-      ->check(positiveNumber());
+      ->check(realIn(0.0, 1e6, true));
   sub.add_option("--max-goal-heading-error-deg", opt->max_goal_heading_error_deg,
                  "tracking tolerance: final heading error against the goal (default 1.5)")
-      ->check(positiveNumber());
+      ->check(realIn(0.0, 360.0, true));
 
   return [opt](const OutputOptions& output) -> int {
     const Scenario scenario = loadWorld(opt->world, opt->world_overrides);
@@ -275,31 +273,33 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       frame_def.width_px = size.width_px;
       frame_def.height_px = size.height_px;
       frame_def.view = frameViewFromString(opt->view);
-      frame_def.out_dir = opt->out;
       frame_def.video = opt->video;
       frame_def.gif = opt->gif;
     }
     // Every input is read and checked before DIR is touched: bad input leaves an earlier run's
-    // outputs as they were.
+    // outputs as they were. The outputs are written into a staging directory that replaces DIR
+    // whole at the end (OutputDir), so DIR never mixes two runs.
     Trajectory plan;
-    if (!opt->plan_file.empty()) plan = loadPlanFile(opt->plan_file, scenario);
+    // Physics steps and frames are bounded by the plan's duration: checked once it is known.
+    auto checkLimits = [&] {
+      checkEpisodeLimits(scenario, plan, exec);
+      if (film) checkFrameLimits(frame_def, plan.duration() + exec.max_stop_time_s);
+    };
+    if (!opt->plan_file.empty()) {
+      plan = loadPlanFile(opt->plan_file, scenario);
+      checkLimits();
+    }
     const PlanSetup setup = opt->plan.toSetup(scenario);
+    if (opt->plan_file.empty()) checkPlanningLimits(scenario, setup);
 
-    const std::string& dir = opt->out;
-    ensureDirectory(dir);
-    // Outputs of an earlier run in DIR must never sit beside this run's.
-    removeIfPresent(dir + "/executed.csv");
-    removeIfPresent(dir + "/metrics.json");
-    removeIfPresent(dir + "/sensors.csv");
+    OutputDir out(opt->out);
+    const std::string& dir = out.path();
+    const std::string shown_dir = printable(opt->out);
 
     nlohmann::json plan_summary;
     PlanFigure plan_figure;
     if (!opt->plan_file.empty()) {
-      removeIfPresent(dir + "/plan.json");
-      const std::string copy = dir + "/trajectory.csv";
-      if (!std::filesystem::exists(copy) || !std::filesystem::equivalent(copy, opt->plan_file)) {
-        writeTrajectoryCsv(copy, plan, scenario.robot);
-      }
+      writeTrajectoryCsv(dir + "/trajectory.csv", plan, scenario.robot);
       plan_summary = planFileSummary(opt->plan_file, scenario, plan);
       plan_figure = {"file", "plan from " + opt->plan_file, plan, {}, {}};
     } else {
@@ -307,14 +307,17 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       const PlanResult result = planScenario(scenario, collision, setup);
       writePlanFiles(dir, scenario, setup, result);
       if (!result.solved()) {
+        out.commit();
         std::fprintf(stderr, "parksim run: unsolved plan (%s): %s\n", toString(result.status),
-                     result.message.c_str());
+                     printable(result.message).c_str());
         return kExitUnsolved;
       }
       plan = result.trajectory;
+      checkLimits();
       plan_summary = planSummary(scenario, setup, result);
       if (film) plan_figure = planFigure(scenario, setup, result);
     }
+    frame_def.out_dir = dir;
 
     std::unique_ptr<FrameRecorder> recorder;
     std::unique_ptr<Progress> frame_progress;
@@ -368,12 +371,13 @@ CommandRunner setupRunCommand(CLI::App& sub) {
         "deg\nfinal pose %.3f mm / %.3f deg from the goal%s; %d contact event%s; %.2f s "
         "simulated in %.3f s (%.0fx real time)\nwrote %s/trajectory.csv, %s/executed.csv and "
         "%s/metrics.json\n",
-        toString(m.tracking), scenario.name.c_str(), m.max_pos_err_m * 1e3, m.rms_pos_err_m * 1e3,
-        m.final_pos_err_m * 1e3, m.final_heading_err_deg, m.goal_pos_err_m * 1e3,
-        m.goal_heading_err_deg, m.goal_reached ? " (within tolerance)" : " (outside tolerance)",
-        m.contacts, m.contacts == 1 ? "" : "s", m.sim_time_s, m.wall_time_s,
-        m.wall_time_s > 0.0 ? m.sim_time_s / m.wall_time_s : 0.0, dir.c_str(), dir.c_str(),
-        dir.c_str());
+        toString(m.tracking), printable(scenario.name).c_str(), m.max_pos_err_m * 1e3,
+        m.rms_pos_err_m * 1e3, m.final_pos_err_m * 1e3, m.final_heading_err_deg,
+        m.goal_pos_err_m * 1e3, m.goal_heading_err_deg,
+        m.goal_reached ? " (within tolerance)" : " (outside tolerance)", m.contacts,
+        m.contacts == 1 ? "" : "s", m.sim_time_s, m.wall_time_s,
+        m.wall_time_s > 0.0 ? m.sim_time_s / m.wall_time_s : 0.0, shown_dir.c_str(),
+        shown_dir.c_str(), shown_dir.c_str());
     if (realism_columns) {
       std::printf(
           "%s realism, noise seed %llu (%s estimate): estimate error max %.3f mm, wheel "
@@ -384,15 +388,16 @@ CommandRunner setupRunCommand(CLI::App& sub) {
           exec.realism.pose_sensor.enabled ? "; pose samples in sensors.csv" : "");
     }
     if (recorder) {
-      std::printf("%s\n", recorder->finish().message.c_str());
+      std::printf("%s\n", printableLines(out.shown(recorder->finish().message)).c_str());
       FigureInputs figures;
       figures.steering = steeringExample(scenario);
       figures.plans.push_back(std::move(plan_figure));
       figures.tracking = trackingSeries(episode.rows);
       const std::vector<std::string> written =
           writeFigures(scenario, figures, FigureDef{}, dir + "/figures");
-      std::printf("%zu figures: %s/figures/\n", written.size(), dir.c_str());
+      std::printf("%zu figures: %s/figures/\n", written.size(), shown_dir.c_str());
     }
+    out.commit();
     if (opt->realisations > 1) {
       std::vector<double> max_err;
       std::vector<double> goal_err;
@@ -430,7 +435,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
           std::fprintf(stderr,
                        "parksim run: %d of %d realisations failed; first (noise seed %llu): %s\n",
                        n - succeeded, n, static_cast<unsigned long long>(r.noise_seed),
-                       failureReason(scenario, r.metrics, tolerance).c_str());
+                       printable(failureReason(scenario, r.metrics, tolerance)).c_str());
           break;
         }
         return kExitToleranceNotMet;
@@ -439,7 +444,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     }
     const std::string failure = failureReason(scenario, m, tolerance);
     if (!failure.empty()) {
-      std::fprintf(stderr, "parksim run: %s\n", failure.c_str());
+      std::fprintf(stderr, "parksim run: %s\n", printable(failure).c_str());
       return kExitToleranceNotMet;
     }
     return kExitOk;

@@ -1,5 +1,6 @@
 // parksim: plan, simulate, render and benchmark parking manoeuvres of a two-wheel robot.
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -9,11 +10,15 @@
 #include <CLI/CLI.hpp>
 
 #include "app/Command.h"
+#include "app/TerminalText.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/Provenance.h"
 
 int main(int argc, char** argv) {
   using namespace parksim::app;
+  // Past a file-size limit (ulimit -f) a write then fails with EFBIG and is reported like any
+  // other write error, instead of the process dying with a partial file.
+  std::signal(SIGXFSZ, SIG_IGN);
   // Named, so that usage lines say "parksim", not the path the binary was started from.
   CLI::App app{"parksim: plan, simulate, render and benchmark parking manoeuvres", "parksim"};
   app.require_subcommand(1);
@@ -57,8 +62,12 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    // CLI11 prints help (success) or the usage error; usage errors exit 2 like any bad input.
-    return app.exit(e) == 0 ? kExitOk : kExitBadInput;
+    // CLI11 prints help (success); usage errors exit 2 like any bad input, printed here so the
+    // option text the user gave is escaped.
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::fprintf(stderr, "parksim: error: %s\nRun with --help for more information.\n",
+                 printable(e.what()).c_str());
+    return kExitBadInput;
   }
   try {
     for (auto& [sub, run] : commands) {
@@ -77,10 +86,10 @@ int main(int argc, char** argv) {
       return run(output);
     }
   } catch (const parksim::Error& e) {
-    std::fprintf(stderr, "parksim: error: %s\n", e.what());
+    std::fprintf(stderr, "parksim: error: %s\n", printable(e.what()).c_str());
     return kExitBadInput;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "parksim: internal error: %s\n", e.what());
+    std::fprintf(stderr, "parksim: internal error: %s\n", printable(e.what()).c_str());
     return kExitInternal;
   }
   return kExitBadInput;

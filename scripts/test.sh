@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds in Release and runs the whole test suite with ctest, then
-# builds the tests again with AddressSanitizer + UndefinedBehaviorSanitizer and runs them.
+# runs the readers' libFuzzer harnesses for a bounded number of inputs (scripts/fuzz.sh --ci),
+# then builds the tests again with AddressSanitizer + UndefinedBehaviorSanitizer and runs them.
 # Usage: scripts/test.sh            (both passes)
 #        PARKSIM_SKIP_SANITIZERS=1 scripts/test.sh   (Release pass only)
 set -euo pipefail
@@ -10,6 +11,9 @@ scripts/install-deps.sh
 echo "== Release build and tests"
 scripts/build.sh build
 ctest --test-dir build --output-on-failure --parallel "$(nproc)"
+
+echo "== Fuzzing the world-file and plan-file readers (bounded; docs/limits.md)"
+scripts/fuzz.sh --ci
 
 if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   echo "== ASan + UBSan build and tests"

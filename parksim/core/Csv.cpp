@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "parksim/core/Error.h"
+#include "parksim/core/InputFile.h"
 #include "parksim/core/NumberFormat.h"
 
 namespace parksim {
@@ -129,16 +130,8 @@ double CsvTable::number(const Row& row, std::size_t column) const {
   return value;
 }
 
-CsvTable readCsvFile(const std::string& path) {
-  errno = 0;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw Error(path + ": cannot open" +
-                (errno != 0 ? std::string(": ") + std::strerror(errno) : ""));
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return CsvTable(text.str(), path);
+CsvTable readCsvFile(const std::string& path, std::uintmax_t max_bytes) {
+  return CsvTable(readInputFile(path, max_bytes, "CSV file"), path);
 }
 
 std::string csvField(std::string_view text) {

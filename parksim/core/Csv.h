@@ -7,6 +7,7 @@
 // "<file>:<line>: column '<name>': <what>".
 
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -37,7 +38,8 @@ class CsvTable {
 
   /// The cell of `row` in `column`. Throws Error when the row is too short.
   const std::string& cell(const Row& row, std::size_t column) const;
-  /// The cell as a finite number (surrounding blanks ignored). Throws Error naming file, line, column and the text.
+  /// The cell as a finite number (surrounding blanks ignored). Throws Error naming file, line,
+  /// column and the text.
   double number(const Row& row, std::size_t column) const;
 
  private:
@@ -48,9 +50,14 @@ class CsvTable {
   std::vector<Row> rows_;
 };
 
-/// Reads and parses the file at `path`. Throws Error ("<file>: cannot open") when it cannot be
-/// read.
-CsvTable readCsvFile(const std::string& path);
+/// Largest file readCsvFile reads by default (docs/limits.md). A table holds every cell as a
+/// string, up to ~32 bytes of memory per byte of input (a file of commas), so 32 MiB bounds
+/// a table to about 1 GB; an executed.csv of ~100,000 rows fits.
+inline constexpr std::uintmax_t kMaxCsvFileBytes = 32u << 20;
+
+/// Reads and parses the regular file at `path`, at most `max_bytes` long. Throws Error
+/// ("<file>: cannot open ...", "... is not a regular file ...", "... more than the limit ...").
+CsvTable readCsvFile(const std::string& path, std::uintmax_t max_bytes = kMaxCsvFileBytes);
 
 /// `text` as one CSV field: unchanged, or quoted when it holds a comma, quote or line break.
 std::string csvField(std::string_view text);

@@ -1,7 +1,10 @@
 #pragma once
 // A time-stamped sequence of poses with the wheel speeds that produce them.
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "parksim/core/DiffDrive.h"
@@ -40,8 +43,22 @@ struct Trajectory {
 /// round-trip precision. Atomic: the file appears complete or not at all. Throws Error.
 void writeTrajectoryCsv(const std::string& path, const Trajectory& traj, const RobotDef& robot);
 
-/// Reads a file written by writeTrajectoryCsv (extra columns allowed). Throws Error naming
-/// the file, line and column on bad input.
+/// Limits of a plan file (docs/limits.md), checked while reading, before anything is simulated.
+struct PlanFileLimits {
+  static constexpr std::uintmax_t kMaxBytes = 64u << 20;  ///< file size, bytes
+  static constexpr std::size_t kMaxLineBytes = 4096;      ///< one line, bytes
+  static constexpr std::size_t kMaxRows = 1'000'000;      ///< data rows
+  static constexpr double kMaxTimeS = 3600.0;             ///< every t in [0, kMaxTimeS], s
+  static constexpr double kMaxGapS = 60.0;                ///< t step between rows, s
+  static constexpr double kMaxMagnitude = 1e6;            ///< |x|, |y| (m), |theta|, wheels
+};
+
+/// Reads a file written by writeTrajectoryCsv (extra columns allowed). Only regular files up
+/// to PlanFileLimits::kMaxBytes are read. Throws Error naming the file, line and column on bad
+/// input, or the limit that was exceeded.
 Trajectory readTrajectoryCsv(const std::string& path);
+
+/// As readTrajectoryCsv, from text in memory; `source_name` prefixes messages.
+Trajectory parseTrajectoryCsv(std::string_view text, const std::string& source_name);
 
 }  // namespace parksim

@@ -8,6 +8,8 @@
 #include <string>
 
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
+#include "parksim/planner/SpeedProfile.h"
 
 namespace parksim {
 
@@ -34,6 +36,73 @@ SteeringKind steeringKindFromString(const std::string& name) {
   throw Error("unknown steering '" + name + "' (expected one of " + known + ")");
 }
 
+void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup) {
+  const RobotDef& robot = scenario.robot;
+  auto refuse = [](const std::string& what, double periods) {
+    throw Error(what + " needs " + formatGeneral(periods, 3) +
+                " control periods, more than the limit of " + formatGeneral(kMaxProfilePeriods, 6) +
+                " per trajectory (docs/limits.md)");
+  };
+  double speed_fraction = 1.0;
+  double accel_fraction = 1.0;
+  double period_s = 0.1;
+  const char* name = "";
+  switch (setup.steering_kind) {
+    case SteeringKind::kMoveToPose: {
+      const MoveToPoseDef& d = setup.steering;
+      const double periods = d.max_duration_s / d.period_s;
+      if (!(periods <= kMaxProfilePeriods)) {
+        refuse("move-to-pose steering (max_duration_s)", periods);
+      }
+      return;
+    }
+    case SteeringKind::kRotateTranslateRotate:
+      speed_fraction = setup.rotate_translate_rotate.speed_fraction;
+      accel_fraction = setup.rotate_translate_rotate.accel_fraction;
+      period_s = setup.rotate_translate_rotate.period_s;
+      name = "rotate-translate-rotate steering";
+      break;
+    case SteeringKind::kReedsShepp:
+      speed_fraction = setup.reeds_shepp.speed_fraction;
+      period_s = setup.reeds_shepp.period_s;
+      name = "reeds-shepp steering";
+      break;
+  }
+  // Both build rest-to-rest speed profiles at the wheel limits: braking from full speed, then
+  // moves as long as the lot (the diagonal; Reeds-Shepp curves are a few times longer at most)
+  // and, for rotate-translate-rotate, half turns in place.
+  const double wheel_max = speed_fraction * robot.max_wheel_speed_radps;
+  const double wheel_step = accel_fraction * robot.max_wheel_accel_radps2 * period_s;
+  if (!(wheel_max > 0.0) || !(wheel_step > 0.0) || !(period_s > 0.0)) {
+    throw Error(std::string(name) + ": wheel speed, acceleration and period must be positive");
+  }
+  const double r = robot.wheel_radius_m;
+  const double half_base = 0.5 * robot.wheel_base_m;
+  const double diagonal = std::hypot(scenario.lot.x_max_m - scenario.lot.x_min_m,
+                                     scenario.lot.y_max_m - scenario.lot.y_min_m);
+  const double brake = wheel_max / wheel_step;
+  if (!(brake <= kMaxProfilePeriods)) {
+    refuse(std::string(name) + ": braking from " + formatGeneral(wheel_max) + " rad/s at " +
+               formatGeneral(wheel_step / period_s) + " rad/s^2",
+           brake);
+  }
+  if (setup.steering_kind == SteeringKind::kRotateTranslateRotate) {
+    const double turn =
+        restToRestPeriods(kPi, wheel_max * r / half_base, wheel_step * r / half_base, period_s);
+    if (!(turn <= kMaxProfilePeriods)) {
+      refuse(std::string(name) + ": a half turn (wheel radius " + formatGeneral(r) +
+                 " m, wheel base " + formatGeneral(robot.wheel_base_m) + " m)",
+             turn);
+    }
+  }
+  const double cross = restToRestPeriods(diagonal, wheel_max * r, wheel_step * r, period_s);
+  if (!(cross <= kMaxProfilePeriods)) {
+    refuse(std::string(name) + ": a straight move across the lot (" + formatGeneral(diagonal) +
+               " m, wheel radius " + formatGeneral(r) + " m)",
+           cross);
+  }
+}
+
 const char* toString(TimingKind kind) {
   switch (kind) {
     case TimingKind::kTimeOptimal: return "time-optimal";
@@ -52,11 +121,15 @@ TimingKind timingKindFromString(const std::string& name) {
 int defaultIterationBudget(PlannerKind kind, const LotBounds& lot) {
   const double base = kind == PlannerKind::kHybridAStar ? 20000.0 : 2000.0;
   const double area = (lot.x_max_m - lot.x_min_m) * (lot.y_max_m - lot.y_min_m);
-  return static_cast<int>(std::ceil(base * std::max(1.0, area / kStudyLotAreaM2)));
+  // Capped so that a lot of kilometres still gets a bounded search (and no int overflow).
+  constexpr double kMaxDefaultBudget = 1'000'000.0;
+  return static_cast<int>(
+      std::min(kMaxDefaultBudget, std::ceil(base * std::max(1.0, area / kStudyLotAreaM2))));
 }
 
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
                         const PlanSetup& setup) {
+  checkPlanningLimits(scenario, setup);
   std::unique_ptr<SteeringFunction> steering;
   switch (setup.steering_kind) {
     case SteeringKind::kMoveToPose: {

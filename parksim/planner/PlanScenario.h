@@ -76,6 +76,13 @@ inline constexpr double kStudyLotAreaM2 = 1.8 * 1.2;
 /// area), rounded up, so budgets grow with the space to search.
 int defaultIterationBudget(PlannerKind kind, const LotBounds& lot);
 
+/// Refuses, before any work, a setup whose steering would build unbounded trajectories in this
+/// scenario: rotate-translate-rotate profiles (a straight move across the lot's diagonal, a
+/// half turn, braking from full speed) or a move-to-pose trajectory longer than
+/// kMaxProfilePeriods control periods. Throws Error with one line naming the values and the
+/// limit (docs/limits.md). planScenario calls it first.
+void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup);
+
 /// Plans with the selected planner and steering, then times the plan as `timing` says (the
 /// re-timed trajectory is validated again; if rounding ever made it fail, the planner's own
 /// timing is kept) and sets its duration lower bound.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <condition_variable>
 #include <cstdio>
@@ -42,16 +43,31 @@ FrameView frameViewFromString(const std::string& name) {
 }
 
 ImageSize parseImageSize(const std::string& text) {
+  // from_chars, not sscanf("%d"): 4294967936x480 must be refused, not wrapped to 640x480.
+  auto side = [](std::string_view s, int& value) {
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
+    return ec == std::errc() && end == s.data() + s.size() && value >= 16 && value <= 8192;
+  };
+  const std::size_t x = text.find_first_of("xX");
   ImageSize size;
-  char x = 0;
-  char extra = 0;
-  const int n = std::sscanf(text.c_str(), "%d%c%d%c", &size.width_px, &x, &size.height_px, &extra);
-  if (n != 3 || (x != 'x' && x != 'X') || size.width_px < 16 || size.height_px < 16 ||
-      size.width_px > 8192 || size.height_px > 8192) {
+  const std::string_view all(text);
+  if (x == std::string::npos || !side(all.substr(0, x), size.width_px) ||
+      !side(all.substr(x + 1), size.height_px)) {
     throw Error("size must be WxH with each side from 16 to 8192 pixels, e.g. 640x480, got '" +
-                text + "'");
+                text.substr(0, 40) + (text.size() > 40 ? "...'" : "'"));
   }
   return size;
+}
+
+double checkFrameLimits(const FrameDef& def, double duration_s) {
+  const double frames = std::floor(duration_s * def.fps) + 2.0;
+  if (!(frames <= def.max_frames)) {
+    throw Error("frames: " + formatGeneral(duration_s, 4) + " s of simulated time at " +
+                formatGeneral(def.fps) + " fps are " + formatGeneral(frames, 4) +
+                " frames, more than the limit of " + std::to_string(def.max_frames) +
+                " (docs/limits.md)");
+  }
+  return frames;
 }
 
 namespace {
@@ -384,6 +400,10 @@ int FrameRecorder::addFrame(const FrameInput& input) {
   const double slack = 1e-6 / m.def.fps;
   int rendered = 0;
   while (input.t_s + slack >= *m.t0 + m.next_frame / m.def.fps) {
+    if (m.next_frame >= m.def.max_frames) {
+      throw Error("frames: more than the limit of " + std::to_string(m.def.max_frames) +
+                  " frames (docs/limits.md)");
+    }
     m.render(input);
     m.last_rendered = true;
     ++rendered;

@@ -73,7 +73,14 @@ struct FrameDef {
   /// from contention with llvmpipe's threads).
   int encode_threads = 1;
   int queue_depth = 3;  ///< frames rendered ahead of the encoders (>= 1)
+  /// Most frames one recording may write (docs/limits.md): 50,000 frames are ~28 min of
+  /// simulated time at 30 fps and ~1.5 min of rendering at 640x480.
+  int max_frames = 50'000;
 };
+
+/// The frames an episode of `duration_s` simulated seconds takes at def.fps (one per 1/fps and
+/// the last sample). Throws Error naming fps, duration and def.max_frames when that is more.
+double checkFrameLimits(const FrameDef& def, double duration_s);
 
 /// One simulation sample, as plain data (mirrors sim's EpisodeSample).
 struct FrameInput {

@@ -1,7 +1,8 @@
 #include "parksim/renders/Process.h"
 
 #include <fcntl.h>
-#include <spawn.h>
+#include <signal.h>
+#include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -57,18 +58,32 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const std::string
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
 
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log_path.c_str(),
-                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (rc != 0) {
-    result.error = std::string("cannot start ") + argv[0] + ": " + std::strerror(rc);
+  // fork + exec instead of posix_spawn, to set what the child needs before exec: it dies with
+  // its parent (PR_SET_PDEATHSIG), so a killed parksim never leaves ffmpeg writing on; it gets
+  // the default signal mask and dispositions back (parksim blocks SIGINT/SIGTERM while it
+  // writes outputs and ignores SIGXFSZ). Only async-signal-safe calls between fork and exec.
+  const pid_t parent = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    result.error = std::string("cannot start ") + argv[0] + ": " + std::strerror(errno);
     return result;
+  }
+  if (pid == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);  // the parent died before prctl took effect
+    sigset_t none;
+    sigemptyset(&none);
+    ::sigprocmask(SIG_SETMASK, &none, nullptr);
+    ::signal(SIGXFSZ, SIG_DFL);
+    ::signal(SIGPIPE, SIG_DFL);
+    const int in = ::open("/dev/null", O_RDONLY);
+    const int out = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (in < 0 || out < 0 || ::dup2(in, STDIN_FILENO) < 0 || ::dup2(out, STDOUT_FILENO) < 0 ||
+        ::dup2(out, STDERR_FILENO) < 0) {
+      ::_exit(127);
+    }
+    ::execve(args[0], args.data(), environ);
+    ::_exit(127);
   }
   result.started = true;
   int status = 0;
@@ -80,7 +95,7 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const std::string
   }
   if (WIFEXITED(status)) {
     result.exit_code = WEXITSTATUS(status);
-    // posix_spawn reports a failed exec of the child as exit status 127.
+    // A failed exec in the child is exit status 127.
     if (result.exit_code != 0) {
       result.error = argv[0] + " exited with status " + std::to_string(result.exit_code);
     }

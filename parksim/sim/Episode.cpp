@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <deque>
 #include <optional>
 #include <random>
@@ -10,6 +11,7 @@
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 #include "parksim/sim/ReferenceTrajectory.h"
 #include "parksim/sim/TrackingController.h"
 
@@ -29,7 +31,8 @@ double goalHeadingError(const GoalRegion& goal, double theta) {
   return err;
 }
 
-const ExecutionDef& validated(const ExecutionDef& def) {
+const ExecutionDef& validated(const Scenario& scenario, const Trajectory& plan,
+                              const ExecutionDef& def) {
   auto fail = [](const char* what) { throw Error(std::string("execution: ") + what); };
   if (!(def.rest_speed_mps > 0.0)) fail("rest_speed_mps must be positive");
   if (!(def.rest_yaw_rate_radps > 0.0)) fail("rest_yaw_rate_radps must be positive");
@@ -37,6 +40,7 @@ const ExecutionDef& validated(const ExecutionDef& def) {
   if (!(def.max_stop_time_s >= 0.0)) fail("max_stop_time_s must not be negative");
   if (!(def.contact_merge_s >= 0.0)) fail("contact_merge_s must not be negative");
   if (def.csv_stride_steps < 1) fail("csv_stride_steps must be at least 1");
+  checkEpisodeLimits(scenario, plan, def);
   return def;
 }
 
@@ -191,11 +195,32 @@ struct RealismLoop {
   }
   double holdPeriod() const { return def.control.rate_hz > 0.0 ? 1.0 / def.control.rate_hz : dt; }
 };
+double checkEpisodeLimits(const Scenario& scenario, const Trajectory& plan,
+                          const ExecutionDef& def) {
+  if (plan.empty()) throw Error("execution: the plan is empty");
+  const double dt = scenario.physics.time_step_s;
+  const double duration = plan.duration();
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw Error("execution: physics.time_step_s must be positive");
+  if (!std::isfinite(plan.points.front().t_s) || !std::isfinite(duration) || duration < 0.0) {
+    throw Error("execution: the plan's times must be finite and increasing");
+  }
+  // In double, so no duration or step reaches an out-of-range conversion to an integer.
+  const double steps = std::ceil((duration + def.max_stop_time_s) / dt - 1e-9);
+  if (!(steps <= def.max_steps)) {
+    throw Error("execution: the episode needs " + formatGeneral(steps, 4) +
+                " physics steps (plan " + formatGeneral(duration) + " s + stop " +
+                formatGeneral(def.max_stop_time_s) + " s at physics.time_step_s " +
+                formatGeneral(dt) + " s), more than the limit of " +
+                formatGeneral(def.max_steps, 4) + " (docs/limits.md)");
+  }
+  return steps;
+}
 
 struct Episode::Impl {
   Impl(const Scenario& s, const Trajectory& plan, const ExecutionDef& d, const SimModelDef& m)
       : scenario(s),
-        def(validated(d)),
+        def(validated(s, plan, d)),
         build(drawBuild(d.realism, d.noise_seed)),
         origin(localOrigin(plan.points.front().pose, m.local_frame_grid_m)),
         reference(shiftedPlan(plan, origin), s.robot),

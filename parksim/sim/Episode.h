@@ -128,6 +128,13 @@ struct EpisodeMetrics {
   long pose_samples_received = 0;
 };
 
+/// Physics steps the episode of `plan` may take at most: (plan duration + max_stop_time_s) /
+/// the scenario's time step, rounded up. Throws Error, naming the values and the limit, when
+/// that exceeds def.max_steps, or when the plan or the time step is unusable; so a tiny
+/// time_step_s or a very long plan is refused before the world is built.
+double checkEpisodeLimits(const Scenario& scenario, const Trajectory& plan,
+                          const ExecutionDef& def = {});
+
 class Episode {
  public:
   /// Builds the world with the robot at the plan's first pose. Copies its inputs. Throws Error

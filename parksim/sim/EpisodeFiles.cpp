@@ -181,7 +181,9 @@ nlohmann::json provenanceToJson(const Provenance& p) {
 }
 
 void writeJsonFile(const std::string& path, const nlohmann::json& json) {
-  writeFileAtomically(path, json.dump(2) + "\n");
+  // Names and paths from input files need not be UTF-8: their bad bytes become U+FFFD.
+  writeFileAtomically(path,
+                      json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
 nlohmann::json readJsonFile(const std::string& path) {

@@ -47,6 +47,10 @@ struct ExecutionDef {
   double contact_merge_s = 0.1;
   /// executed.csv gets one row every this many simulation steps (1: every step).
   int csv_stride_steps = 1;
+  /// Most physics steps one episode may take: the plan's duration plus max_stop_time_s, in
+  /// time steps of the scenario's physics (docs/limits.md). 10^6 steps are ~69 min of
+  /// simulated time at 240 Hz, ~1 min of CPU and ~100 MB of executed rows at csv stride 1.
+  double max_steps = 1e6;
   /// Motors, calibration, sensors, estimation and control-loop timing (sim/RealismDef.h);
   /// the default is the `ideal` robot.
   RealismDef realism;

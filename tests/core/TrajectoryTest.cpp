@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/Error.h"
+#include "parksim/core/InputFile.h"
 
 namespace parksim {
 namespace {
@@ -68,6 +69,41 @@ TEST(Trajectory, AppendJoinsAtTheSharedPose) {
   EXPECT_EQ(a.points.size(), n + tail.points.size() - 1);
   EXPECT_DOUBLE_EQ(a.duration(), 2.0);
   EXPECT_NEAR(a.pathLength(robot), 2 * b.pathLength(robot), 1e-12);
+}
+
+TEST(Trajectory, ReaderRefusesWhatItsLimitsExclude) {
+  const std::string h = "t,x,y,theta,omega_left,omega_right\n";
+  auto message = [](const std::string& text) {
+    try {
+      parseTrajectoryCsv(text, "p.csv");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message(h + "0,0,0,0,0,0\n0.1,0,0,0,0,0\n"), "accepted");
+  EXPECT_NE(message(h + "1e300,0,0,0,0,0\n").find("p.csv:2: column 't': must be in [0, 3600]"),
+            std::string::npos);
+  EXPECT_NE(message(h + "-1,0,0,0,0,0\n").find("must be in [0, 3600]"), std::string::npos);
+  EXPECT_NE(message(h + "0,0,0,0,0,0\n61,0,0,0,0,0\n").find("more than the limit of 60 s"),
+            std::string::npos);
+  EXPECT_NE(message(h + "0,0,0,0,1e7,0\n").find("column 'omega_left': must be within"),
+            std::string::npos);
+  EXPECT_NE(message(h + std::string(5000, ',') + "\n").find("p.csv:2: line is 5000 bytes"),
+            std::string::npos);
+  EXPECT_NE(message(std::string(5000, ',')).find("p.csv:1: line is 5000 bytes"), std::string::npos);
+}
+
+TEST(Trajectory, OnlyRegularFilesAreRead) {
+  EXPECT_THROW(readTrajectoryCsv("/dev/zero"), Error);
+  EXPECT_THROW(readTrajectoryCsv(std::filesystem::temp_directory_path().string()), Error);
+  EXPECT_THROW(readInputFile("/dev/urandom", 100, "plan file"), Error);
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "parksim_input_file_test.csv").string();
+  std::ofstream(path) << std::string(101, 'x');
+  EXPECT_THROW(readInputFile(path, 100, "plan file"), Error);
+  EXPECT_EQ(readInputFile(path, 101, "plan file").size(), 101u);
+  std::filesystem::remove(path);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/Error.h"
+#include "parksim/planner/PlanScenario.h"
 #include "tests/support/PlanChecks.h"
 
 namespace parksim {
@@ -105,6 +106,25 @@ TEST(RotateTranslateRotateSteering, RejectsBadDefinitions) {
   def = {};
   def.period_s = 0.0;
   EXPECT_THROW(RotateTranslateRotateSteering(RobotDef{}, def), Error);
+}
+
+TEST(RotateTranslateRotateSteering, SetupsWithUnboundedProfilesAreRefusedBeforePlanning) {
+  Scenario scenario;  // the study's lot and robot
+  PlanSetup setup;
+  setup.steering_kind = SteeringKind::kRotateTranslateRotate;
+  EXPECT_NO_THROW(checkPlanningLimits(scenario, setup));
+  Scenario tiny_accel = scenario;
+  tiny_accel.robot.max_wheel_accel_radps2 = 1e-6;  // braking alone: 1e8 periods
+  EXPECT_THROW(checkPlanningLimits(tiny_accel, setup), Error);
+  Scenario tiny_wheel = scenario;
+  tiny_wheel.robot.wheel_radius_m = 1e-9;
+  EXPECT_THROW(checkPlanningLimits(tiny_wheel, setup), Error);
+  Scenario huge_lot = scenario;
+  huge_lot.lot.x_max_m = huge_lot.lot.y_max_m = 1e6;
+  EXPECT_THROW(checkPlanningLimits(huge_lot, setup), Error);
+  // Move-to-pose trajectories are bounded by max_duration_s instead, whatever the lot.
+  setup.steering_kind = SteeringKind::kMoveToPose;
+  EXPECT_NO_THROW(checkPlanningLimits(huge_lot, setup));
 }
 
 }  // namespace

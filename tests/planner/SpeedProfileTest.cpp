@@ -57,5 +57,26 @@ TEST(SpeedProfile, ZeroDistanceIsEmptyAndBadLimitsThrow) {
   EXPECT_THROW(restToRestProfile(std::nan(""), 1.0, 1.0, 0.1), Error);
 }
 
+TEST(SpeedProfile, EstimateIsWithinAFewPeriodsOfTheProfile) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> dist(1e-6, 50.0), lim(1e-3, 2.0);
+  for (int i = 0; i < 300; ++i) {
+    const double d = dist(rng), v = lim(rng), a = lim(rng);
+    const double n = static_cast<double>(restToRestProfile(d, v, a, 0.1).size());
+    EXPECT_NEAR(restToRestPeriods(d, v, a, 0.1), n, 3.0) << d << " " << v << " " << a;
+  }
+}
+
+TEST(SpeedProfile, ProfilesBeyondTheLimitAreRefusedWithoutBeingBuilt) {
+  // A tiny acceleration step used to take a quadratic search (hours); now it is refused by the
+  // O(1) estimate, and the longest allowed profile is built in linear time.
+  EXPECT_THROW(restToRestProfile(1.0, 10.0, 1e-9, 0.1), Error);
+  EXPECT_THROW(restToRestProfile(1e9, 1.0, 1.0, 0.1), Error);
+  const std::vector<double> longest =
+      restToRestProfile(0.95 * kMaxProfilePeriods * 0.1, 1.0, 1.0, 0.1);
+  EXPECT_LE(static_cast<double>(longest.size()), kMaxProfilePeriods);
+  expectProfile(longest, 0.95 * kMaxProfilePeriods * 0.1, 1.0, 1.0, 0.1);
+}
+
 }  // namespace
 }  // namespace parksim

@@ -54,6 +54,23 @@ TEST(Episode, ClosedLoopTracksAHandMadePlanWithinAMillimetre) {
   EXPECT_EQ(r.metrics.contacts, 0);
 }
 
+TEST(Episode, EpisodesBeyondTheStepLimitAreRefusedBeforeTheWorldIsBuilt) {
+  Scenario s = testing::emptyLot({0.5, 0.5, 0.0});
+  const Trajectory plan = manoeuvre(s);
+  const double steps = checkEpisodeLimits(s, plan);
+  // The prediction: (plan + stop time) / time step, rounded up.
+  EXPECT_EQ(
+      steps,
+      std::ceil((plan.duration() + ExecutionDef{}.max_stop_time_s) / s.physics.time_step_s - 1e-9));
+  s.physics.time_step_s = 1e-9;
+  EXPECT_THROW(checkEpisodeLimits(s, plan), Error);
+  EXPECT_THROW(Episode(s, plan), Error);
+  ExecutionDef def;
+  def.max_steps = steps - 1;
+  s.physics.time_step_s = 1.0 / 240.0;
+  EXPECT_THROW(checkEpisodeLimits(s, plan, def), Error);
+}
+
 TEST(Episode, OpenLoopErrorsAreBounded) {
   Scenario s = testing::emptyLot({0.5, 0.5, 0.0});
   const Trajectory plan = manoeuvre(s);

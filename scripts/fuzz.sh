@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# libFuzzer campaigns on parksim's input readers: the world-file reader and the plan-file
+# reader, built with clang (-fsanitize=fuzzer,address,undefined) into build-fuzz/. The main
+# build uses g++; this is a separate, small build of just the readers.
+#
+#   scripts/fuzz.sh --ci                     bounded run for CI: every corpus input, then
+#                                            FUZZ_RUNS (default 20000) mutations per reader
+#   scripts/fuzz.sh world [libFuzzer args]   long campaign on one reader (world or plan), e.g.
+#   scripts/fuzz.sh world -max_total_time=3600 -jobs=2 -workers=2
+#
+# Corpora live in tests/fuzz/corpus/{world,plan}/ (the crashers of issue 13 included); a long
+# campaign adds what it finds to build-fuzz/corpus-<reader>/, never to the repository's corpus.
+# Each input gets at most FUZZ_TIMEOUT seconds (default 10) and 2 GB: a hang or a memory blow-up
+# is a failure, as is any crash or sanitizer report.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=build-fuzz
+mkdir -p "$out"
+cxx=${FUZZ_CXX:-clang++}
+flags=(-std=c++20 -O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer,address,undefined
+       -fno-sanitize-recover=undefined -I. -isystem /usr/include/eigen3)
+# The readers need the core library but not its build-provenance file (a configured header).
+core=()
+for f in parksim/core/*.cpp; do
+  [ "$f" = parksim/core/Provenance.cpp ] || core+=("$f")
+done
+
+build() {  # build NAME SOURCES... LIBS...
+  local name=$1
+  shift
+  local target=$out/fuzz_$name
+  # Rebuild only when a source changed (the harness is small; no need for a build system).
+  if [ -x "$target" ] && [ -z "$(find parksim tests/fuzz -newer "$target" -name '*.[ch]*' | head -1)" ]; then
+    return
+  fi
+  echo "== building $target"
+  "$cxx" "${flags[@]}" "$@" -o "$target"
+}
+
+# The reader's realism: section is checked by the sim library's RealismDef.
+build world tests/fuzz/WorldReaderFuzz.cpp parksim/scenario/*.cpp parksim/sim/RealismDef.cpp \
+  "${core[@]}" -lyaml-cpp
+build plan tests/fuzz/PlanReaderFuzz.cpp "${core[@]}"
+
+timeout_s=${FUZZ_TIMEOUT:-10}
+common=(-timeout="$timeout_s" -rss_limit_mb=2048 -malloc_limit_mb=2048 -max_len=65536
+        -print_final_stats=1)
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
+
+if [ "${1:-}" = "--ci" ]; then
+  runs=${FUZZ_RUNS:-20000}
+  for reader in world plan; do
+    echo "== fuzz_$reader: corpus replay, then $runs mutations (seed 1)"
+    work=$(mktemp -d)
+    trap 'rm -rf "$work"' EXIT
+    # -runs counts mutations after the corpus; new inputs go to a scratch copy, and crash
+    # reproducers into the build directory.
+    cp tests/fuzz/corpus/$reader/* "$work"/
+    # The outer timeout bounds the whole run even if libFuzzer's own handler hangs.
+    timeout -k 10 600 "$out/fuzz_$reader" "${common[@]}" -seed=1 -runs="$runs" \
+      -artifact_prefix="$out/$reader-" "$work" 2>&1 | grep -v '^    #' | tail -n 12
+    rm -rf "$work"
+    trap - EXIT
+  done
+  exit 0
+fi
+
+reader=${1:?usage: scripts/fuzz.sh --ci | scripts/fuzz.sh world|plan [libFuzzer args...]}
+shift
+mkdir -p "$out/corpus-$reader"
+exec "$out/fuzz_$reader" "${common[@]}" -artifact_prefix="$out/$reader-" "$@" \
+  "$out/corpus-$reader" "tests/fuzz/corpus/$reader"

@@ -1,0 +1,264 @@
+// Hostile inputs and options, as a table: each case runs the parksim executable and expects an
+// exit code and a message, a bounded run (every case under a time and memory limit), no raw
+// control bytes on the terminal, a short message (no DBL_MAX printed in full), and an earlier
+// run's --out left exactly as it was. docs/limits.md lists the limits these cases hit.
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/RunParksim.h"
+
+namespace parksim {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::slurp;
+
+struct Outcome {
+  int exit_code;
+  std::string out;
+};
+
+// Runs `parksim ARGS` from a shell with `limits` (ulimit commands) first, bounded in time.
+Outcome run(const std::string& args, const std::string& limits = "") {
+  const std::string cmd = "ulimit -v 4000000; " + limits + " timeout 60 " +
+                          std::string(PARKSIM_EXE) + " " + args + " 2>&1";
+  FILE* pipe = popen(("/bin/bash -c '" + cmd + "'").c_str(), "r");
+  if (pipe == nullptr) return {-1, "popen failed"};
+  std::string out;
+  char buf[4096];
+  while (std::fgets(buf, sizeof buf, pipe)) out += buf;
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  if (!fs::exists(dir)) return files;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = slurp(e.path());
+  }
+  return files;
+}
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+const std::string kHeader = "t,x,y,theta,omega_left,omega_right,v,omega\n";
+// head_in's start: (0.1, 0.1, 90 deg).
+const std::string kStartRow = "0,0.1,0.1,1.5707963267948966,0,0,0,0\n";
+
+class HostileInput : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::temp_directory_path() / ("parksim_hostile_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    const std::string src = PARKSIM_SOURCE_DIR;
+    const std::string corpus = src + "/tests/fuzz/corpus/";
+    vars_ = {
+        {"{W}", src + "/worlds/head_in.yaml"},
+        {"{OUT}", (dir_ / "out").string()},
+        {"{DIR}", dir_.string()},
+        {"{C}", corpus},
+    };
+    write(dir_ / "long_plan.csv", [] {
+      std::string s = kHeader;
+      for (int t = 0; t <= 3600; t += 60) {
+        s += std::to_string(t) + ",0.1,0.1,1.5707963267948966,0,0,0,0\n";
+      }
+      return s;
+    }());
+    write(dir_ / "too_many_rows.csv", [] {
+      std::string s = kHeader;
+      for (int i = 0; i <= 1'000'000; ++i) s += std::to_string(i * 1e-3) + ",0,0,0,0,0\n";
+      return s;
+    }());
+    write(dir_ / "elsewhere.csv", kHeader + "0,1,1,0,0,0,0,0\n0.1,1,1,0,0,0,0,0\n");
+    write(dir_ / "a_file", "not a directory");
+    fs::create_directories(dir_ / "foreign");
+    write(dir_ / "foreign" / "thesis.tex", "precious");
+    // An earlier run, which no refused command may change.
+    const Outcome earlier = run("plan " + vars_["{W}"] + " --seed 5 --out " + vars_["{OUT}"]);
+    ASSERT_EQ(earlier.exit_code, 0) << earlier.out;
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+
+  static std::string expand(std::string s) {
+    for (const auto& [key, value] : vars_) {
+      for (std::size_t at = s.find(key); at != std::string::npos; at = s.find(key, at)) {
+        s.replace(at, key.size(), value);
+      }
+    }
+    return s;
+  }
+
+  static fs::path dir_;
+  static std::map<std::string, std::string> vars_;
+};
+
+fs::path HostileInput::dir_;
+std::map<std::string, std::string> HostileInput::vars_;
+
+struct Case {
+  const char* args;  // {W} head_in.yaml, {OUT} the earlier run's --out, {C} the fuzz corpus
+  int exit_code;
+  const char* message;  // expected substring of the output
+};
+
+// Every case writes to {OUT} (or names it) after an earlier run left its files there.
+const Case kCases[] = {
+    // Options: exact numbers, no clamping, readable bounds.
+    {"plan {W} --seed 18446744073709551616 --out {OUT}", 2,
+     "--seed: must be an integer in [0, 18446744073709551615]"},
+    {"plan {W} --seed -3 --out {OUT}", 2, "--seed: must be an integer in"},
+    {"plan {W} --seed abc --out {OUT}", 2, "--seed: not an integer: 'abc'"},
+    {"plan {W} --max-iterations 99999999999 --out {OUT}", 2, "[0, 1000000]"},
+    {"plan {W} --planner bogus --out {OUT}", 2, "unknown planner 'bogus'"},
+    {"run {W} --frames --fps 0 --out {OUT}", 2, "--fps: must be in (0, 1000], got '0'"},
+    {"run {W} --frames --fps nan --out {OUT}", 2, "--fps: must be a finite number in (0, 1000]"},
+    {"run {W} --frames --fps inf --out {OUT}", 2, "--fps: must be a finite number"},
+    {"run {W} --frames --fps 1e309 --out {OUT}", 2, "--fps: must be a finite number"},
+    {"run {W} --frames --fps 1e9 --out {OUT}", 2, "--fps: must be in (0, 1000], got '1e9'"},
+    {"run {W} --frames --fps abc --out {OUT}", 2, "--fps: not a number: 'abc'"},
+    {"run {W} --frames --size 4294967936x480 --out {OUT}", 2, "size must be WxH"},
+    {"run {W} --frames --size 640x --out {OUT}", 2, "size must be WxH"},
+    {"render {W} --cspace-heading nan --out {OUT}", 2, "--cspace-heading: must be a finite"},
+    {"render {W} --slices 0 --out {OUT}", 2, "--slices: must be an integer in [1, 720]"},
+    {"render {W} --planner bogus --out {OUT}", 2, "unknown planner 'bogus'"},
+    {"render {W} --executed {DIR}/missing.csv --out {OUT}", 2, "missing.csv: cannot open"},
+    {"render {W} --executed /dev/zero --out {OUT}", 2, "not a regular file"},
+    {"run {W} --tracking sideways --out {OUT}", 2, "--tracking"},
+    // Plan files: type, size and content limits, checked before anything is written.
+    {"run {W} --plan /dev/zero --out {OUT}", 2, "/dev/zero: is not a regular file"},
+    {"run {W} --plan /dev/urandom --out {OUT}", 2, "is not a regular file"},
+    {"run {W} --plan {DIR} --out {OUT}", 2, "is a directory, not a plan file"},
+    {"run {W} --plan {DIR}/missing.csv --out {OUT}", 2, "cannot open plan file"},
+    {"run {W} --plan {C}plan/time_1e300 --out {OUT}", 2, "column 't': must be in [0, 3600] s"},
+    {"run {W} --plan {C}plan/gap_100 --out {OUT}", 2, "more than the limit of 60 s"},
+    {"run {W} --plan {C}plan/long_line --out {OUT}", 2, "more than the limit of 4096"},
+    {"run {W} --plan {C}plan/nan_x --out {OUT}", 2, "column 'x': 'nan' is not a finite number"},
+    {"run {W} --plan {C}plan/huge_wheel --out {OUT}", 2, "column 'omega_left': must be within"},
+    {"run {W} --plan {C}plan/empty --out {OUT}", 2, "empty trajectory file"},
+    {"run {W} --plan {C}plan/header_only --out {OUT}", 2, "trajectory has no rows"},
+    {"run {W} --plan {C}plan/time_not_increasing --out {OUT}", 2, "time does not increase"},
+    {"run {W} --plan {C}plan/raw_bytes --out {OUT}", 2, "\\xFF\\x1B[31m"},
+    {"run {W} --plan {DIR}/too_many_rows.csv --out {OUT}", 2,
+     "more than the limit of 1000000 rows"},
+    {"run {W} --plan {DIR}/elsewhere.csv --out {OUT}", 2, "not at the world's start"},
+    // Work limits: physics steps, frames, steering profiles.
+    {"run {W} --plan {DIR}/long_plan.csv --frames --fps 30 --out {OUT}", 2,
+     "more than the limit of 50000"},
+    {"run {C}world/tiny_time_step.yaml --out {OUT}", 2, "physics steps"},
+    {"plan {C}world/tiny_accel.yaml --steering rotate-translate-rotate --out {OUT}", 2,
+     "control periods, more than the limit of 100000"},
+    {"plan {C}world/tiny_wheel.yaml --steering rotate-translate-rotate --out {OUT}", 2,
+     "a half turn (wheel radius 1e-09 m"},
+    {"plan {C}world/huge_lot.yaml --steering rotate-translate-rotate --out {OUT}", 2,
+     "a straight move across the lot"},
+    // World files (the reader's own limits, docs/world-format.md): bounded, one line, exit 2.
+    {"plan {C}world/comma --out {OUT}", 2, "unexpected ','"},
+    {"plan {C}world/two_documents --out {OUT}", 2, "(syntax)"},
+    {"plan /dev/zero --out {OUT}", 2, "not a regular file"},
+    {"plan {DIR} --out {OUT}", 2, "parksim: error:"},
+    {"plan {C}world/yaw_1e308.yaml --out {OUT}", 2, "obstacles[2].yaw_deg: must be in"},
+    {"plan {C}world/start_1e309.yaml --out {OUT}", 2, "start[2]"},
+    {"plan {C}world/start_inf.yaml --out {OUT}", 2, "start[2]: must be a finite number"},
+    {"plan {C}world/name_raw_bytes.yaml --out {OUT}", 2, "\\x1b[31mred"},
+    // Output locations.
+    {"plan {W} --out {DIR}/a_file", 2, "exists and is not a directory"},
+    {"plan {W} --out {DIR}/foreign", 2, "holds 'thesis.tex', which parksim did not write"},
+    {"plan {W} --out /", 2, "needs a directory name"},
+    // Write errors: a file-size limit ends in a message, not SIGXFSZ; nothing is left behind.
+    {"ulimit:-f 1|run {W} --out {OUT}", 2, "File too large"},
+};
+
+TEST_F(HostileInput, EachCaseIsRefusedWithItsExitCodeAndMessageAndLeavesOutAlone) {
+  const fs::path out = vars_["{OUT}"];
+  const auto earlier = snapshot(out);
+  ASSERT_FALSE(earlier.empty());
+  for (const Case& c : kCases) {
+    std::string args = c.args;
+    std::string limits;
+    if (args.rfind("ulimit:", 0) == 0) {
+      const std::size_t bar = args.find('|');
+      limits = "ulimit " + args.substr(7, bar - 7) + ";";
+      args = args.substr(bar + 1);
+    }
+    const Outcome r = run(expand(args), limits);
+    SCOPED_TRACE(c.args);
+    EXPECT_EQ(r.exit_code, c.exit_code) << r.out;
+    EXPECT_NE(r.out.find(c.message), std::string::npos) << "expected '" << c.message << "' in:\n"
+                                                        << r.out;
+    EXPECT_EQ(r.out.find('\x1b'), std::string::npos) << "raw escape in the output: " << r.out;
+    EXPECT_LT(r.out.size(), 400u) << "one short line expected: " << r.out;
+    EXPECT_EQ(snapshot(out), earlier) << "the earlier run's --out changed";
+    for (const auto& e : fs::directory_iterator(dir_)) {
+      EXPECT_EQ(e.path().filename().string().find(".parksim-staging"), std::string::npos)
+          << "staging left behind: " << e.path();
+    }
+  }
+}
+
+TEST_F(HostileInput, NamesAndPathsThatAreNotUtf8ReachJsonAndTheTerminalEscaped) {
+  // A world at a path that is not UTF-8 and holds a terminal escape: the path reaches the
+  // terminal and plan.json / metrics.json.
+  const fs::path world = dir_ / "w\xff\x1b[31m.yaml";
+  fs::copy_file(expand("{W}"), world, fs::copy_options::overwrite_existing);
+  const fs::path out = dir_ / "utf8";
+  const Outcome r = run("plan \"" + world.string() + "\" --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(r.out.find('\x1b'), std::string::npos) << r.out;
+  if (r.exit_code == 0) {
+    const auto plan = nlohmann::json::parse(slurp(out / "plan.json"));
+    EXPECT_EQ(plan["status"], "solved");
+    const Outcome run_r = run("run \"" + world.string() + "\" --out " + out.string());
+    EXPECT_TRUE(run_r.exit_code == 0 || run_r.exit_code == 1) << run_r.out;
+    EXPECT_EQ(run_r.out.find('\x1b'), std::string::npos) << run_r.out;
+    EXPECT_NO_THROW(nlohmann::json::parse(slurp(out / "metrics.json")));
+  }
+}
+
+TEST_F(HostileInput, ASecondCommandIntoALockedOutFailsAtOnce) {
+  const fs::path out = dir_ / "locked";
+  const std::string lock_path = (dir_ / ".locked.lock").string();
+  const int fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  const Outcome r = run("plan " + vars_["{W}"] + " --out " + out.string());
+  ::close(fd);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("another parksim command is writing there"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(out));
+  // Once the lock is free, the same command succeeds.
+  EXPECT_EQ(run("plan " + vars_["{W}"] + " --out " + out.string()).exit_code, 0);
+}
+
+TEST_F(HostileInput, AnUnsolvedPlanIsAResultAndReplacesTheEarlierOutputWhole) {
+  const fs::path out = dir_ / "unsolved";
+  ASSERT_EQ(run("run " + vars_["{W}"] + " --out " + out.string()).exit_code, 0);
+  ASSERT_TRUE(fs::exists(out / "executed.csv"));
+  const Outcome r = run("run " + vars_["{W}"] + " --max-iterations 0 --out " + out.string());
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  // The new outputs (plan.json of the unsolved plan) and none of the earlier run's.
+  EXPECT_TRUE(fs::exists(out / "plan.json"));
+  EXPECT_FALSE(fs::exists(out / "executed.csv"));
+  EXPECT_FALSE(fs::exists(out / "trajectory.csv"));
+  EXPECT_FALSE(fs::exists(out / "metrics.json"));
+}
+
+}  // namespace
+}  // namespace parksim
