@@ -71,7 +71,7 @@ CommandRunner setupMergeCommand(CLI::App& sub) {
                  "sweep output directories; one directory with shards/ merges its shards")
       ->required();
   sub.add_option("--out", opt->out, "where to write the merged table (default: the one source)");
-  return [opt] { return runMerge(opt->sources, opt->out); };
+  return [opt](const OutputOptions&) { return runMerge(opt->sources, opt->out); };
 }
 
 }  // namespace parksim::app

@@ -152,7 +152,7 @@ CommandRunner setupReportCommand(CLI::App& sub) {
   auto opt = std::make_shared<Options>();
   sub.add_option("dir", opt->dir, "a sweep's output directory (with results.jsonl)")->required();
   sub.add_option("--out", opt->out, "where to write the report (default: DIR/report)");
-  return [opt] { return runReport(opt->dir, opt->out); };
+  return [opt](const OutputOptions&) { return runReport(opt->dir, opt->out); };
 }
 
 }  // namespace parksim::app

@@ -213,7 +213,7 @@ CommandRunner setupSweepCommand(CLI::App& sub) {
   sub.add_option("--slurm-max-parallel", opt->slurm_max_parallel,
                  "at most this many tasks at once (the array's %K throttle)")
       ->check(CLI::Range(1, 100000));
-  return [opt] { return runSweepCommand(*opt); };
+  return [opt](const OutputOptions&) { return runSweepCommand(*opt); };
 }
 
 }  // namespace parksim::app

@@ -109,7 +109,8 @@ RunOutcome runWorld(const World& world, const py::object& plan, const py::object
   out.metrics["world"] = scenario.source_path;
   out.metrics["scenario"] = scenario.name;
   addPlanKeys(out.metrics, plan_summary);
-  for (const auto& [key, value] : provenanceToJson(buildProvenance()).items()) {
+  const nlohmann::json provenance = provenanceToJson(buildProvenance());
+  for (const auto& [key, value] : provenance.items()) {
     out.metrics["provenance." + key] = value;
   }
   out.ran = true;

@@ -106,12 +106,12 @@ TEST(Csv, ErrorsNameFileLineAndColumn) {
 TEST(NumberFormat, RoundTripWritesSeventeenSignificantDigitsLikePrintf) {
   for (const double v : {0.1, -3.0, 1e-300, 123456.789, 2.0 / 3.0, 1e21, -0.0}) {
     std::string out;
-    appendRoundTrip(out, v);
+    parksim::appendRoundTrip(out, v);
     char expected[64];
     std::snprintf(expected, sizeof expected, "%.17g", v);
     EXPECT_EQ(out, expected);
     double back = 0.0;
-    ASSERT_TRUE(parseDouble(out, back));
+    ASSERT_TRUE(parksim::parseDouble(out, back));
     EXPECT_EQ(back, v);
   }
 }
