@@ -193,8 +193,6 @@ CommandRunner setupSweepCommand(CLI::App& sub) {
                  "run only shard I of N (I from 0): the episodes at positions I, I+N, ... of the "
                  "sweep's canonical order")
       ->capture_default_str();
-  sub.add_flag("--progress", opt->progress,
-               "print progress on stderr even when it is not a terminal (then every 10 s)");
   sub.add_flag("--slurm", opt->slurm,
                "write OUT/sweep.sbatch (a Slurm job array, one task per shard) instead of "
                "running");
@@ -213,7 +211,11 @@ CommandRunner setupSweepCommand(CLI::App& sub) {
   sub.add_option("--slurm-max-parallel", opt->slurm_max_parallel,
                  "at most this many tasks at once (the array's %K throttle)")
       ->check(CLI::Range(1, 100000));
-  return [opt](const OutputOptions&) { return runSweepCommand(*opt); };
+  // --progress is every command's (main.cpp): not a terminal, the line comes every 10 s.
+  return [opt](const OutputOptions& output) {
+    opt->progress = output.progress;
+    return runSweepCommand(*opt);
+  };
 }
 
 }  // namespace parksim::app

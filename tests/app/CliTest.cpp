@@ -249,15 +249,18 @@ TEST_F(Cli, QuietPrintsNothingAndVerboseTellsTheBuild) {
 TEST_F(Cli, MessagesSayWhatIsWrongInFewWords) {
   CliRun r = parksim("foo");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.out, "parksim: unknown command 'foo'; commands: plan, run, render, bench\n");
+  EXPECT_EQ(
+      r.out,
+      "parksim: unknown command 'foo'; commands: plan, run, render, bench, sweep, merge, report\n");
   // Bounds are stated, not printed as the 309-digit largest double.
   r = parksim("plan " + world("head_in.yaml") + " --seed -1");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.out.find("--seed: must be zero or a positive number, got -1"), std::string::npos)
+  EXPECT_NE(r.out.find("--seed: must be an integer in [0, 18446744073709551615], got '-1'"),
+            std::string::npos)
       << r.out;
   r = parksim("run " + world("head_in.yaml") + " --fps 0");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.out.find("--fps: must be a positive number, got 0"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--fps: must be in (0, 1000], got '0'"), std::string::npos) << r.out;
   EXPECT_LT(r.out.size(), 200u) << r.out;
   // Usage lines name the program, not the path it was started from.
   r = parksim("plan --help");

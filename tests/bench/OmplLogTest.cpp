@@ -2,6 +2,7 @@
 // planner block per group, every run line with one value per property.
 
 #include "bench/ompl/OmplLog.h"
+#include "parksim/core/Provenance.h"
 
 #include <gtest/gtest.h>
 
@@ -53,7 +54,7 @@ TEST(OmplLog, FollowsOmplsLayout) {
   const std::vector<std::string> lines = splitLines(omplBenchmarkLog(info, records));
   ASSERT_GT(lines.size(), 20u);
   std::size_t i = 0;
-  EXPECT_EQ(lines[i++], "parksim version 0.1.0");
+  EXPECT_EQ(lines[i++], "parksim version " + parksim::buildProvenance().version);
   EXPECT_EQ(lines[i++], "Experiment parksim_head_in");
   EXPECT_EQ(lines[i++], "0 experiment properties");
   EXPECT_EQ(lines[i++], "Running on box");
