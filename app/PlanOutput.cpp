@@ -73,7 +73,8 @@ int parseIterationBudget(const std::string& text, PlannerKind kind, const LotBou
     used = 0;
   }
   if (used == 0 || used != text.size() || value < 0 || value > kMaxPlannerIterations) {
-    throw Error(option + ": expected auto or a non-negative integer, got '" + text + "'");
+    throw Error(option + ": expected auto or an integer in [0, " +
+                std::to_string(kMaxPlannerIterations) + "], got '" + text + "'");
   }
   return static_cast<int>(value);
 }
