@@ -180,4 +180,15 @@ void writePlanFiles(const std::string& dir, const Scenario& scenario, const Plan
   writeFileAtomically(dir + "/plan.json", jsonText(planSummary(scenario, setup, result)));
 }
 
+void addPlanKeys(nlohmann::json& metrics, const nlohmann::json& summary) {
+  for (const auto& [key, value] : summary.items()) {
+    if (value.is_array() || key == "provenance") continue;
+    if (value.is_object()) {
+      for (const auto& [sub, inner] : value.items()) metrics["plan_" + key + "." + sub] = inner;
+    } else {
+      metrics["plan_" + key] = value;
+    }
+  }
+}
+
 }  // namespace parksim::app

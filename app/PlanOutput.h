@@ -52,6 +52,11 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
 /// from input files) are written with U+FFFD in place of their bad bytes instead of failing.
 std::string jsonText(const nlohmann::json& j);
 
+/// Adds planSummary's keys to a flat metrics.json with a plan_ prefix: nested objects flattened
+/// as plan_<key>.<sub>; arrays (the RRT* cost history) and provenance stay in plan.json.
+/// Shared by `parksim run` and the Python module, whose metrics must match key for key.
+void addPlanKeys(nlohmann::json& metrics, const nlohmann::json& summary);
+
 /// Writes DIR/trajectory.csv (only if solved) and DIR/plan.json, creating DIR.
 void writePlanFiles(const std::string& dir, const Scenario& scenario, const PlanSetup& setup,
                     const PlanResult& result);

@@ -39,19 +39,6 @@ namespace parksim::app {
 
 namespace {
 
-// planSummary's keys with a plan_ prefix; nested objects flattened as plan_<key>.<sub>.
-// Arrays (the RRT* cost history) stay in plan.json: metrics.json is flat.
-void addPlanKeys(nlohmann::json& metrics, const nlohmann::json& summary) {
-  for (const auto& [key, value] : summary.items()) {
-    if (value.is_array() || key == "provenance") continue;
-    if (value.is_object()) {
-      for (const auto& [sub, inner] : value.items()) metrics["plan_" + key + "." + sub] = inner;
-    } else {
-      metrics["plan_" + key] = value;
-    }
-  }
-}
-
 // For --plan FILE: the statistics a trajectory carries by itself.
 nlohmann::json planFileSummary(const std::string& path, const Scenario& scenario,
                                const Trajectory& plan) {

@@ -19,19 +19,6 @@ namespace parksim::python {
 
 namespace {
 
-// metrics.json's plan keys, as `parksim run` adds them: plan_<key>, nested objects flattened
-// as plan_<key>.<sub>, arrays left out.
-void addPlanKeys(nlohmann::json& metrics, const nlohmann::json& summary) {
-  for (const auto& [key, value] : summary.items()) {
-    if (value.is_array() || key == "provenance") continue;
-    if (value.is_object()) {
-      for (const auto& [sub, inner] : value.items()) metrics["plan_" + key + "." + sub] = inner;
-    } else {
-      metrics["plan_" + key] = value;
-    }
-  }
-}
-
 // The statistics a trajectory carries by itself (a plan not made by plan()).
 nlohmann::json trajectorySummary(const Scenario& scenario, const Trajectory& plan) {
   const Pose2& end = plan.points.back().pose;
@@ -108,7 +95,7 @@ RunOutcome runWorld(const World& world, const py::object& plan, const py::object
   out.metrics = metricsToJson(out.episode.metrics);
   out.metrics["world"] = scenario.source_path;
   out.metrics["scenario"] = scenario.name;
-  addPlanKeys(out.metrics, plan_summary);
+  app::addPlanKeys(out.metrics, plan_summary);
   const nlohmann::json provenance = provenanceToJson(buildProvenance());
   for (const auto& [key, value] : provenance.items()) {
     out.metrics["provenance." + key] = value;
