@@ -8,6 +8,8 @@
 #include <map>
 #include <set>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "parksim/core/Error.h"
@@ -78,12 +80,15 @@ class SweepRunnerTest : public ::testing::Test {
   // The reference: one worker, run once per test binary.
   static void SetUpTestSuite() {
     sweep_ = new SmallSweep(std::string(kAxes) + "max_iterations: [1, 2000]\n");
-    reference_dir_ = new std::string(std::string(PARKSIM_BINARY_DIR) + "/test-out/sweep/reference");
+    // One per process: ctest runs each test of this suite as its own process, in parallel.
+    reference_dir_ = new std::string(std::string(PARKSIM_BINARY_DIR) +
+                                     "/test-out/sweep/reference-" + std::to_string(getpid()));
     std::filesystem::remove_all(*reference_dir_);
     run(sweep_->episodes, *reference_dir_, 1);
   }
   static void TearDownTestSuite() {
     delete sweep_;
+    std::filesystem::remove_all(*reference_dir_);
     delete reference_dir_;
   }
   static SmallSweep* sweep_;
