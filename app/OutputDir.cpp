@@ -125,6 +125,7 @@ OutputDir::OutputDir(const std::string& out) : impl_(std::make_unique<Impl>()) {
                             " is locked); wait for it or choose another --out"
                       : "cannot lock " + lock_path + ": " + why));
   }
+  bool masked = false;
   try {
     if (fs::exists(fs::symlink_status(p, ec))) {
       if (!fs::is_directory(p, ec)) throw Error("--out " + out + ": exists and is not a directory");
@@ -148,21 +149,25 @@ OutputDir::OutputDir(const std::string& out) : impl_(std::make_unique<Impl>()) {
     sigemptyset(&set);
     for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set, s);
     pthread_sigmask(SIG_BLOCK, &set, &m.old_mask);
+    masked = true;
     m.staging = parent / (prefix + "staging-" + std::to_string(::getpid()));
     m.staging_text = m.staging.string();
-    m.watcher = std::thread([&m] { m.watch(); });
     if (!fs::create_directory(m.staging, ec) || ec) {
       throw Error("--out " + out + ": cannot create " + m.staging.string() +
                   (ec ? ": " + ec.message() : std::string()));
     }
     std::ofstream(m.staging / kMarker) << "written by parksim; the whole directory is replaced by "
                                           "the next parksim command writing here\n";
+    // Only now: a signal that arrived while the staging directory was being made is pending
+    // (blocked above) and the watcher removes a directory that exists, instead of racing
+    // create_directory and leaving it behind.
+    m.watcher = std::thread([&m] { m.watch(); });
   } catch (...) {
     if (m.watcher.joinable()) {
       m.stop = true;
       m.watcher.join();
-      pthread_sigmask(SIG_SETMASK, &m.old_mask, nullptr);
     }
+    if (masked) pthread_sigmask(SIG_SETMASK, &m.old_mask, nullptr);
     if (!m.staging.empty()) fs::remove_all(m.staging, ec);
     ::close(m.lock_fd);
     throw;
