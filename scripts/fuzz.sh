@@ -37,8 +37,12 @@ build() {  # build NAME SOURCES... LIBS...
   "$cxx" "${flags[@]}" "$@" -o "$target"
 }
 
-# The reader's realism: section is checked by the sim library's RealismDef.
-build world tests/fuzz/WorldReaderFuzz.cpp parksim/scenario/*.cpp parksim/sim/RealismDef.cpp \
+# The reader's realism: section is checked by the Bullet-free parksim_realism library
+# (parksim/sim/CMakeLists.txt lists its sources; keep the two lists alike).
+realism=(parksim/sim/Distribution.cpp parksim/sim/Encoder.cpp parksim/sim/Estimator.cpp
+  parksim/sim/MotorModel.cpp parksim/sim/PoseSensor.cpp parksim/sim/RealismDef.cpp
+  parksim/sim/WheelSpeedLoop.cpp)
+build world tests/fuzz/WorldReaderFuzz.cpp parksim/scenario/*.cpp "${realism[@]}" \
   "${core[@]}" -lyaml-cpp
 build plan tests/fuzz/PlanReaderFuzz.cpp "${core[@]}"
 
