@@ -17,6 +17,7 @@
 #include "parksim/core/Provenance.h"
 #include "parksim/core/Trajectory.h"
 #include "parksim/scenario/ScenarioReader.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
@@ -39,7 +40,7 @@ class Cli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
   std::string world(const std::string& name) {
-    return std::string(PARKSIM_SOURCE_DIR) + "/worlds/" + name;
+    return parksim::testing::sourceDir() + "/worlds/" + name;
   }
   fs::path dir_;
 };
