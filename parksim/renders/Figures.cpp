@@ -91,6 +91,23 @@ void addLabel(Scene& scene, const std::string& text, const Eigen::Vector2d& at, 
                          0.85f * style.text_px, color, style.text_background, h, v});
 }
 
+// A label at `offset` from a marker, moved to the marker's other side along x or y where it
+// would leave the lot (clipping would drop it: a goal by the lot's top edge keeps its label).
+void addMarkerLabel(Scene& scene, const std::string& text, const Pose2& marker,
+                    const Eigen::Vector2d& offset, const Extent2& lot, Rgba8 color,
+                    const SceneStyle& style, HAlign h, VAlign v) {
+  Eigen::Vector2d at(marker.x + offset.x(), marker.y + offset.y());
+  if (at.x() < lot.x_min || at.x() > lot.x_max) {
+    at.x() = marker.x - offset.x();
+    h = h == HAlign::kLeft ? HAlign::kRight : h == HAlign::kRight ? HAlign::kLeft : h;
+  }
+  if (at.y() < lot.y_min || at.y() > lot.y_max) {
+    at.y() = marker.y - offset.y();
+    v = v == VAlign::kTop ? VAlign::kBottom : v == VAlign::kBottom ? VAlign::kTop : v;
+  }
+  addLabel(scene, text, at, color, style, h, v);
+}
+
 // Outlines along a path: at the start, whenever the robot has moved or turned enough since the
 // last one, and at the end.
 void addFootprints(Scene& scene, const RobotDef& robot, const std::vector<Pose2>& path,
@@ -117,10 +134,10 @@ Rgba8 darker(Rgba8 c, double t) { return mix(c, rgb(0, 0, 0), t); }
 Scene buildLotMapFigure(const Scenario& scenario, const SceneStyle& style) {
   Scene scene = buildLotScene(scenario, style);
   const double a = style.arrow_length_m;
-  addLabel(scene, "start", {scenario.start.x + 0.3 * a, scenario.start.y - 0.3 * a}, style.start,
-           style, HAlign::kLeft, VAlign::kTop);
-  addLabel(scene, "goal", {scenario.goal.pose.x + 0.5 * a, scenario.goal.pose.y + 0.6 * a},
-           style.goal, style);
+  addMarkerLabel(scene, "start", scenario.start, {0.3 * a, -0.3 * a}, lotExtent(scenario),
+                 style.start, style, HAlign::kLeft, VAlign::kTop);
+  addMarkerLabel(scene, "goal", scenario.goal.pose, {0.5 * a, 0.6 * a}, lotExtent(scenario),
+                 style.goal, style, HAlign::kLeft, VAlign::kBottom);
   clipToLot(scene, scenario, style);
   addAxesAndTitle(scene, lotExtent(scenario),
                   "Lot map: " + scenario.name + " (Fig. 3): start red, goal green", style);

@@ -206,6 +206,32 @@ TEST(FiguresTest, ClippingAWorldWithNothingOutsideChangesNothing) {
   }
 }
 
+TEST(FiguresTest, StartAndGoalLabelsByTheLotsEdgeMoveInsideInsteadOfVanishing) {
+  Scenario s = testLot();
+  s.goal.pose = {1.79, 1.17, degToRad(180.0)};  // by the top-right corner
+  s.start = {0.1, 0.005, degToRad(90.0)};       // on the bottom edge
+  const Scene scene = buildLotMapFigure(s, SceneStyle{});
+  int found = 0;
+  for (const SceneText& t : scene.texts) {
+    if (t.text != "start" && t.text != "goal") continue;
+    ++found;
+    ASSERT_TRUE(t.world.has_value());
+    const Pose2& marker = t.text == "goal" ? s.goal.pose : s.start;
+    EXPECT_TRUE(s.lot.contains(t.world->x(), t.world->y())) << t.text;
+    // Moved to the marker's other side, aligned to grow away from the edge.
+    if (t.text == "goal") {
+      EXPECT_LT(t.world->x(), marker.x);
+      EXPECT_EQ(t.h_align, HAlign::kRight);
+      EXPECT_LT(t.world->y(), marker.y);
+      EXPECT_EQ(t.v_align, VAlign::kTop);
+    } else {
+      EXPECT_GT(t.world->y(), marker.y);
+      EXPECT_EQ(t.v_align, VAlign::kBottom);
+    }
+  }
+  EXPECT_EQ(found, 2);
+}
+
 // Rendered: the margin around the plot area, where the axes are, holds only the background, the
 // axes and the grey labels; the obstacles outside the lot are saturated colours.
 TEST(FiguresTest, RenderedMarginsShowOnlyAxesAndLabels) {
