@@ -27,8 +27,8 @@
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
 #include "parksim/core/Provenance.h"
+#include "parksim/renders/EpisodeFrames.h"
 #include "parksim/renders/Figures.h"
-#include "parksim/renders/FrameRecorder.h"
 #include "parksim/scenario/RealismReader.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/Distribution.h"
@@ -39,20 +39,6 @@
 namespace parksim::app {
 
 namespace {
-
-// For --plan FILE: the statistics a trajectory carries by itself.
-nlohmann::json planFileSummary(const std::string& path, const Scenario& scenario,
-                               const Trajectory& plan) {
-  const Pose2& end = plan.points.back().pose;
-  return {
-      {"source", path},
-      {"path_length_m", plan.pathLength(scenario.robot)},
-      {"duration_s", plan.duration()},
-      {"cusps", plan.cusps(scenario.robot)},
-      {"final_pos_err_m", positionDistance(end, scenario.goal.pose)},
-      {"final_heading_err_deg", radToDeg(headingDistance(end, scenario.goal.pose))},
-  };
-}
 
 // A plan file must start where the world starts (within 1 mm and 0.5 deg, the planner's own
 // goal tolerance); anything else is a plan for another world.
@@ -143,18 +129,6 @@ void addRealisations(nlohmann::json& j, const std::vector<RealisationRow>& rows)
   add("max_slip_mps", slip);
   j["realisations.goal_reached_fraction"] = reached / n;
   j["realisations.success_fraction"] = successes / n;
-}
-
-FrameInput frameInput(const EpisodeSample& sample) {
-  FrameInput in;
-  in.t_s = sample.tracking.t_s;
-  in.pose = sample.tracking.pose;
-  in.reference = sample.tracking.reference;
-  in.position_error_m = sample.tracking.pos_err_m;
-  in.heading_error_rad = sample.tracking.heading_err_rad;
-  in.obstacle_poses = sample.obstacles;
-  in.contacts = sample.contacts;
-  return in;
 }
 
 }  // namespace
@@ -295,7 +269,8 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     PlanFigure plan_figure;
     if (!opt->plan_file.empty()) {
       writeTrajectoryCsv(dir + "/trajectory.csv", plan, scenario.robot);
-      plan_summary = planFileSummary(opt->plan_file, scenario, plan);
+      plan_summary = trajectorySummary(scenario, plan);
+      plan_summary["source"] = opt->plan_file;
       plan_figure = {"file", "plan from " + opt->plan_file, plan, {}, {}};
     } else {
       const BulletCollisionWorld collision(scenario);
