@@ -114,6 +114,7 @@ std::vector<Eigen::Vector2d> clipPolygon(const std::vector<Eigen::Vector2d>& pol
 std::vector<ScenePolyline> clipPolyline(const ScenePolyline& line, const Extent2& area) {
   const std::vector<Eigen::Vector3d>& pts = line.points;
   if (allInside(withSlack(area), pts)) return {line};
+  if (pts.size() < 2) return {};  // a lone point outside
   std::vector<ScenePolyline> pieces;
   const std::size_t n = pts.size();
   const std::size_t segments = line.closed && n > 2 ? n : n - 1;

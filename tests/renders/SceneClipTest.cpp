@@ -63,6 +63,8 @@ TEST(SceneClipTest, PolylineIsSplitWherePartsLieOutside) {
   ASSERT_EQ(pieces[1].points.size(), 3u);  // in at the top, down to (0.4, 0.3), out at x = 1
   EXPECT_NEAR(pieces[1].points[0].y(), 0.6, 1e-15);
   EXPECT_TRUE(pieces[1].points[2].isApprox(Eigen::Vector3d(1.0, 0.3, 0.005)));
+  EXPECT_TRUE(clipPolyline({{{2.0, 0.3, 0.0}}, {}, 1.0f, false}, kArea).empty());
+  EXPECT_EQ(clipPolyline({{}, {}, 1.0f, false}, kArea).size(), 1u);  // nothing to cut
   for (const ScenePolyline& piece : pieces) {
     EXPECT_FALSE(piece.closed);
     EXPECT_EQ(piece.color, line.color);
