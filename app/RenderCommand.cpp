@@ -31,6 +31,7 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     double cspace_heading_deg = -60.0;
     int slices = 36;
     std::vector<double> steer_target;
+    std::string figures = "all";
     PlanCliOptions plan;
     WorldOverrideOptions world_overrides;
   };
@@ -61,6 +62,7 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
                  "0.3 m north of the start, heading 0)")
       ->expected(3)
       ->check(realIn(-1e4, 1e4));
+  addFiguresOption(sub, opt->figures, "default: all")->capture_default_str();
   CLI::App* app = &sub;
 
   return [opt, app](const OutputOptions&) -> int {
@@ -71,6 +73,7 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     def.height_px = size.height_px;
     def.cspace_heading_rad = degToRad(opt->cspace_heading_deg);
     def.cspace_slices = opt->slices;
+    def.figures = FigureSelection::parse(opt->figures);
 
     FigureInputs inputs;
     // Without --planner both of the study's planners are drawn (its Figs. 7 and 8).

@@ -1,7 +1,8 @@
 // parksim run WORLD: plan (or load a plan), drive it in the Bullet simulation, measure, and
 // optionally film it. Writes DIR/trajectory.csv and DIR/plan.json (as `parksim plan`),
 // DIR/executed.csv, DIR/metrics.json, and with --frames DIR/frames/*.png and the figures in
-// DIR/figures/ (--video, --gif: DIR/episode.mp4, DIR/episode.gif). Exit status: 0 when the robot
+// DIR/figures/ (--figures chooses them, also without --frames; --video, --gif:
+// DIR/episode.mp4, DIR/episode.gif). Exit status: 0 when the robot
 // ends within the world's goal tolerance and the default TrackingTolerance holds (no contact,
 // tracking error <= 5 mm, ...); 4 when it does not and 1 when planning fails, each with a
 // one-line reason on stderr; 2 on bad input (app/Command.h lists the exit codes).
@@ -141,6 +142,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     PlanCliOptions plan;
     WorldOverrideOptions world_overrides;
     bool frames = false;
+    std::string figures;  // empty: all with --frames, else none
     bool video = false;
     bool gif = false;
     double fps = 30.0;
@@ -168,6 +170,9 @@ CommandRunner setupRunCommand(CLI::App& sub) {
   sub.add_option("--out", opt->out, "output directory")->capture_default_str();
   sub.add_flag("--frames", opt->frames,
                "film the episode (OUT/frames/000000.png, ...) and draw the figures (OUT/figures/)");
+  addFiguresOption(sub, opt->figures,
+                   "default: all with --frames, --video or --gif, else none; a list alone "
+                   "draws those figures without filming");
   sub.add_flag("--video", opt->video, "also OUT/episode.mp4 (needs ffmpeg; implies --frames)");
   sub.add_flag("--gif", opt->gif, "also OUT/episode.gif (needs ffmpeg; implies --frames)");
   sub.add_option("--fps", opt->fps, "frames per second of simulated time")
@@ -227,6 +232,9 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       tolerance.goal_heading_err_deg = opt->max_goal_heading_error_deg;
     }
     const bool film = opt->frames || opt->video || opt->gif;
+    FigureDef figure_def;
+    figure_def.figures = opt->figures.empty() ? (film ? FigureSelection::all() : FigureSelection{})
+                                              : FigureSelection::parse(opt->figures);
     FrameDef frame_def;
     if (film) {  // bad film options fail before anything is planned or written
       const ImageSize size = parseImageSize(opt->size);
@@ -277,7 +285,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       plan = result.trajectory;
       checkLimits();
       plan_summary = planSummary(scenario, setup, result);
-      if (film) plan_figure = planFigure(scenario, setup, result);
+      if (!figure_def.figures.empty()) plan_figure = planFigure(scenario, setup, result);
     }
     frame_def.out_dir = dir;
 
@@ -351,12 +359,14 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     }
     if (recorder) {
       std::printf("%s\n", printableLines(out.shown(recorder->finish().message)).c_str());
+    }
+    if (!figure_def.figures.empty()) {
       FigureInputs figures;
       figures.steering = steeringExample(scenario);
       figures.plans.push_back(std::move(plan_figure));
       figures.tracking = trackingSeries(episode.rows);
       const std::vector<std::string> written =
-          writeFigures(scenario, figures, FigureDef{}, dir + "/figures");
+          writeFigures(scenario, figures, figure_def, dir + "/figures");
       std::printf("%zu figures: %s/figures/\n", written.size(), shown_dir.c_str());
     }
     out.commit();
