@@ -96,7 +96,7 @@ TEST(FiguresTest, WritesTheStudysFiguresAsNonBlankImages) {
 
 // Obstacles beyond the lot, across its edges, a goal arrow pointing out of it.
 Scenario outsideLot() {
-  return loadScenario(std::string(PARKSIM_SOURCE_DIR) + "/tests/renders/outside_lot.yaml");
+  return loadScenario(parksim::testing::sourceDir() + "/tests/renders/outside_lot.yaml");
 }
 
 Extent2 lotOf(const Scenario& s) {
