@@ -1,9 +1,11 @@
 #include "parksim/scenario/YamlField.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <set>
 #include <system_error>
+#include <unordered_map>
 #include <utility>
 
 #include "parksim/core/Error.h"
@@ -231,33 +233,58 @@ bool isMergeKey(const YAML::Node& key) { return isPlainScalar(key) && key.Scalar
 YamlMap::YamlMap(const YamlField& field) : field_(field) {
   const YAML::Node& node = field_.node();
   if (!node.IsMap()) field_.fail("must be a map, got " + describe(node));
+  // Merged maps add what the map does not have; the first merged map wins over later ones,
+  // and a merged map's own merges come right after its own keys. That order is a depth-first
+  // walk, done with an explicit stack and each map visited once: a map merged a second time
+  // (by a fan-out of aliases, or by a cycle back to itself) adds nothing, so skipping it keeps
+  // the meaning while work and stack depth stay bounded (a "billion laughs" of merge keys).
   std::set<std::string> seen;
-  std::vector<YamlField> merged;
-  for (const auto& entry : node) {
-    const YAML::Node& key = entry.first;
-    const std::string key_path =
-        field_.path().empty() ? key.Scalar() : field_.path() + "." + key.Scalar();
-    const YamlField at = field_.child(key, key_path, key);
-    if (!key.IsScalar() || key.Scalar().empty()) at.fail("keys must be names");
-    if (!seen.insert(key.Scalar()).second) at.fail("duplicate key");
-    if (isMergeKey(key)) {
-      const YamlField value = field_.child(entry.second, key_path, key);
-      if (entry.second.IsSequence()) {
-        for (const YamlField& item : value.items()) merged.push_back(item);
-      } else {
-        merged.push_back(value);
-      }
-      continue;
+  std::vector<YamlField> pending{field_};
+  // Identity of a node: its position in the text, then YAML::Node::is among the few that
+  // share a position (nodes of override values parsed from other text).
+  std::unordered_map<std::size_t, std::vector<YAML::Node>> visited;
+  std::size_t work = 0;
+  const auto count = [&work](const YamlField& at, std::size_t items) {
+    work += items;
+    if (work > kMaxMergedItems) {
+      at.fail("merge keys bring in more than " + std::to_string(kMaxMergedItems) +
+              " maps and keys (the limit for one map)");
     }
-    entries_.emplace_back(entry.first, entry.second);
-  }
-  // Merged maps add what the map does not have; the first merged map wins over later ones.
-  for (const YamlField& source : merged) {
+  };
+  while (!pending.empty()) {
+    const YamlField source = pending.back();
+    pending.pop_back();
     if (!source.node().IsMap()) source.fail("a merge key takes a map or a list of maps");
-    const YamlMap inner(YamlField(source.node(), field_.path(), source.line(), field_.source_));
-    for (const auto& [key, value] : inner.entries_) {
-      if (seen.insert(key.Scalar()).second) entries_.emplace_back(key, value);
+    std::vector<YAML::Node>& same_place =
+        visited[static_cast<std::size_t>(source.node().Mark().pos)];
+    const bool again = std::any_of(same_place.begin(), same_place.end(),
+                                   [&source](const YAML::Node& v) { return v.is(source.node()); });
+    if (again) continue;
+    same_place.push_back(source.node());
+    std::set<std::string> keys_here;
+    std::vector<YamlField> merges_here;
+    for (const auto& entry : source.node()) {
+      count(source, 1);
+      const YAML::Node& key = entry.first;
+      const std::string key_path =
+          field_.path().empty() ? key.Scalar() : field_.path() + "." + key.Scalar();
+      const YamlField at = source.child(key, key_path, key);
+      if (!key.IsScalar() || key.Scalar().empty()) at.fail("keys must be names");
+      if (!keys_here.insert(key.Scalar()).second) at.fail("duplicate key");
+      if (isMergeKey(key)) {
+        const YamlField value = source.child(entry.second, key_path, key);
+        // Counted before a long list of aliases is built.
+        count(value, entry.second.IsSequence() ? entry.second.size() : 1);
+        if (entry.second.IsSequence()) {
+          for (const YamlField& item : value.items()) merges_here.push_back(item);
+        } else {
+          merges_here.push_back(value);
+        }
+        continue;
+      }
+      if (seen.insert(key.Scalar()).second) entries_.emplace_back(key, entry.second);
     }
+    pending.insert(pending.end(), merges_here.rbegin(), merges_here.rend());
   }
 }
 

@@ -75,10 +75,16 @@ class YamlField {
   std::string_view source_;
 };
 
+/// Most maps and keys one map may bring in through merge keys, its own keys included (each
+/// merged map counts once, however often it is merged). A real map has a dozen keys; the
+/// limit bounds the work of a file built to explode (docs/world-format.md).
+inline constexpr std::size_t kMaxMergedItems = 256;
+
 /// A map node. Construction rejects anything that is not a map and maps with repeated keys
 /// (yaml-cpp would otherwise keep the first and silently ignore the rest). YAML merge keys
 /// (`<<: *anchor` or `<<: [*a, *b]`) are resolved here, as YAML 1.1 defines them: the merged
-/// maps' entries are added unless the map has the key itself (earlier merged maps win).
+/// maps' entries are added unless the map has the key itself (earlier merged maps win). A map
+/// merged twice (or merging itself through a cycle) adds nothing the second time.
 class YamlMap {
  public:
   explicit YamlMap(const YamlField& field);

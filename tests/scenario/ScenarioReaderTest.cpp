@@ -309,6 +309,46 @@ TEST(ScenarioReader, MergeKeysCopyWhatTheMapDoesNotSay) {
             "size, yaw_deg, radius, vertices, height");
 }
 
+// Merge keys are resolved with each merged map visited once: a map that merges itself
+// (directly or round a cycle) adds nothing the second time, a fan-out of aliases ("billion
+// laughs", 4^30 paths here) costs its distinct maps, and a map that brings in more than
+// kMaxMergedItems maps and keys is refused. They used to overflow the stack and run for hours.
+TEST(ScenarioReader, MergeKeysAreBoundedAndCyclesEnd) {
+  const Scenario cycle = parseScenario(
+      valid("obstacles:\n"
+            "  - &r {name: r, kind: bollard, center: [1.8, 0.2], radius: 0.03, <<: *r}\n"),
+      "t.yaml");
+  ASSERT_EQ(cycle.obstacles.size(), 1u);
+  EXPECT_EQ(cycle.obstacles[0].radius_m, 0.03);
+
+  std::string bomb =
+      "obstacles:\n  - &m0 {name: m0, kind: bollard, center: [1.8, 0.2], "
+      "radius: 0.03}\n";
+  for (int i = 1; i < 30; ++i) {
+    const std::string prev = "*m" + std::to_string(i - 1);
+    bomb += "  - &m" + std::to_string(i) + " {<<: [" + prev + ", " + prev + ", " + prev + ", " +
+            prev + "], name: m" + std::to_string(i) + "}\n";
+  }
+  const Scenario fanned = parseScenario(valid(bomb), "t.yaml");
+  ASSERT_EQ(fanned.obstacles.size(), 30u);
+  EXPECT_EQ(fanned.obstacles[29].radius_m, 0.03);
+
+  // Two chains that merge each other: every distinct map counts once, and the limit stops it.
+  std::string chains =
+      "obstacles:\n  - &a0 {name: a0, kind: bollard, center: [1.8, 0.2], "
+      "radius: 0.03}\n  - &b0 {name: b0, kind: bollard, center: [1.8, 0.2], "
+      "radius: 0.03}\n";
+  for (int i = 1; i < 60; ++i) {
+    const std::string n = std::to_string(i);
+    const std::string p = std::to_string(i - 1);
+    chains += "  - &a" + n + " {<<: [*a" + p + ", *b" + p + "], name: a" + n + "}\n";
+    chains += "  - &b" + n + " {<<: [*b" + p + ", *a" + p + "], name: b" + n + "}\n";
+  }
+  const std::string message = errorOf(valid(chains));
+  EXPECT_NE(message.find("merge keys bring in more than 256 maps and keys"), std::string::npos)
+      << message;
+}
+
 TEST(ScenarioReader, LowObstaclesDoNotBlockTheStart) {
   // A 1 mm painted line under the start: below the 2 mm ground clearance.
   EXPECT_EQ(errorOf(valid("obstacles: [{name: line, kind: curb, center: [0.5, 0.5], "
