@@ -209,7 +209,11 @@ struct BulletCollisionWorld::Impl {
       shapes.push_back(std::move(shape));
       objects.push_back(std::move(object));
       // Last, so that an exception above never leaves the world holding an unowned object.
-      world.addCollisionObject(objects.back().get());
+      // Obstacles never test against each other (queries use the broadphase's aabbTest):
+      // with the default filter, Bullet would pair every two overlapping obstacles as they
+      // are added, and 10,000 obstacles on one spot would take minutes and gigabytes.
+      world.addCollisionObject(objects.back().get(), btBroadphaseProxy::StaticFilter,
+                               btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
     }
     // The scratch shape keeps a zero margin; queries only set its half extents.
     footprint_shape.setMargin(0);

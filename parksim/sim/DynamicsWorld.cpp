@@ -53,6 +53,26 @@ constexpr int kWheelMask = kGroundGroup;
 // User index of collision objects that are not obstacles (obstacles carry their index).
 constexpr int kNotObstacle = -1;
 
+// The groups and masks above, and no pair of two fixed obstacles (walls, parked robots not yet
+// woken): they cannot move, so a pair of them is pure cost, and parked robots may overlap each
+// other (docs/world-format.md): with the masks alone, Bullet would keep and visit every step a
+// pair for every two of n overlapping parked robots, n^2 / 2 of them (10,000 on one spot ran
+// out of memory). A woken parked robot is re-added and pairs with its neighbours as before.
+struct FixedObstaclePairFilter final : btOverlapFilterCallback {
+  bool needBroadphaseCollision(btBroadphaseProxy* a, btBroadphaseProxy* b) const override {
+    if ((a->m_collisionFilterGroup & b->m_collisionFilterMask) == 0 ||
+        (b->m_collisionFilterGroup & a->m_collisionFilterMask) == 0) {
+      return false;
+    }
+    const auto* oa = static_cast<const btCollisionObject*>(a->m_clientObject);
+    const auto* ob = static_cast<const btCollisionObject*>(b->m_clientObject);
+    const auto fixed_obstacle = [](const btCollisionObject* o) {
+      return o->isStaticObject() && o->getUserIndex() != kNotObstacle;
+    };
+    return !(fixed_obstacle(oa) && fixed_obstacle(ob));
+  }
+};
+
 constexpr int kLeftWheel = 0;
 constexpr int kRightWheel = 1;
 constexpr int kSupport = 2;
@@ -117,6 +137,7 @@ struct DynamicsWorld::Impl {
 
   std::unique_ptr<btDefaultCollisionConfiguration> config;
   std::unique_ptr<btCollisionDispatcher> dispatcher;
+  FixedObstaclePairFilter pair_filter;  // outlives the broadphase that points to it
   std::unique_ptr<btDbvtBroadphase> broadphase;
   std::unique_ptr<btMultiBodyConstraintSolver> solver;
   std::unique_ptr<btMultiBodyDynamicsWorld> world;
@@ -273,6 +294,7 @@ struct DynamicsWorld::Impl {
     config = std::make_unique<btDefaultCollisionConfiguration>();
     dispatcher = std::make_unique<btCollisionDispatcher>(config.get());
     broadphase = std::make_unique<btDbvtBroadphase>();
+    broadphase->getOverlappingPairCache()->setOverlapFilterCallback(&pair_filter);
     solver = model.solver == SolverKernel::kBullet
                  ? std::make_unique<btMultiBodyConstraintSolver>()
                  : makeFastMultiBodySolver(model.solver == SolverKernel::kFast);
