@@ -11,8 +11,6 @@
 #include <system_error>
 #include <vector>
 
-#include <yaml-cpp/eventhandler.h>
-
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
@@ -389,84 +387,6 @@ std::string readWholeFile(const std::string& path) {
   return text;
 }
 
-// Counts documents without building them. yaml-cpp 0.7 reports an endless run of empty
-// documents for a stray flow indicator such as a lone `,` (upstream issue 1040): every
-// document then starts where the previous one did. That is the parser stuck, and the file a
-// syntax error there.
-struct DocumentCounter final : YAML::EventHandler {
-  YAML::Mark start;    // where the last document started
-  YAML::Mark content;  // where its first node is
-  bool seen = false;
-  void node(const YAML::Mark& mark) {
-    if (!seen) content = mark;
-    seen = true;
-  }
-  void OnDocumentStart(const YAML::Mark& mark) override {
-    start = mark;
-    seen = false;
-  }
-  void OnDocumentEnd() override {}
-  void OnNull(const YAML::Mark& mark, YAML::anchor_t) override { node(mark); }
-  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { node(mark); }
-  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
-                const std::string&) override {
-    node(mark);
-  }
-  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
-                       YAML::EmitterStyle::value) override {
-    node(mark);
-  }
-  void OnSequenceEnd() override {}
-  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
-                  YAML::EmitterStyle::value) override {
-    node(mark);
-  }
-  void OnMapEnd() override {}
-};
-
-[[noreturn]] void syntaxError(const std::string& source_name, int line, const std::string& what) {
-  throw Error(escapeText(source_name + ":" + std::to_string(line) + ": (syntax): " + what));
-}
-
-// The single document of `text`, or a located error. Terminates on every input: the counting
-// pass stops when the parser makes no progress, and YAML::Load reads one document only.
-YAML::Node loadSingleDocument(const std::string& text, const std::string& source_name) {
-  int documents = 0;
-  YAML::Mark second;
-  try {
-    std::istringstream in(text);
-    YAML::Parser parser(in);
-    DocumentCounter counter;
-    int last_start = -1;
-    while (parser.HandleNextDocument(counter)) {
-      if (counter.start.pos <= last_start) {
-        const auto pos = static_cast<std::size_t>(std::max(counter.start.pos, 0));
-        const std::string what =
-            pos < text.size() ? "unexpected '" + text.substr(pos, 1) + "'" : "unexpected input";
-        syntaxError(source_name, lineOf(counter.start),
-                    what + " (outside any [ ] or { } list or map)");
-      }
-      last_start = counter.start.pos;
-      if (++documents == 2) second = counter.content;
-    }
-  } catch (const YAML::Exception& e) {
-    syntaxError(source_name, lineOf(e.mark), e.msg);
-  }
-  if (documents == 0) {
-    YamlField(YAML::Node(), "", 1, source_name)
-        .fail("empty; a world file is a map that starts with format: " + std::string(kFormat));
-  }
-  if (documents > 1) {
-    YamlField(YAML::Node(), "", lineOf(second), source_name)
-        .fail("a world file holds one YAML document, found " + std::to_string(documents));
-  }
-  try {
-    return YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    syntaxError(source_name, lineOf(e.mark), e.msg);
-  }
-}
-
 }  // namespace
 
 Scenario parseScenario(std::string_view yaml_text, const std::string& source_name) {
@@ -479,7 +399,8 @@ YAML::Node loadWorldDocument(std::string_view yaml_text, const std::string& sour
                            " bytes; a world file may hold at most " +
                            std::to_string(kMaxWorldFileBytes) + " bytes (1 MiB)"));
   }
-  const YAML::Node document = loadSingleDocument(std::string(yaml_text), source_name);
+  const YAML::Node document =
+      loadSingleYamlDocument(std::string(yaml_text), source_name, "world file", kFormat);
   if (document.IsNull()) {
     YamlField(document, "", 1, source_name)
         .fail("empty; a world file is a map that starts with format: " + std::string(kFormat));
@@ -537,7 +458,11 @@ Pose2 parsePose(std::string_view text, const std::string& what) {
     const std::string_view trimmed =
         text.substr(std::min(text.find_first_not_of(" \t"), text.size()));
     const bool bare = !trimmed.empty() && trimmed.front() != '[' && trimmed.front() != '{';
-    node = YAML::Load(bare ? "[" + std::string(text) + "]" : std::string(text));
+    // Built in place, as inQuotes: "[" + std::string(text) trips GCC 12's false -Wrestrict.
+    std::string yaml(text.size() + (bare ? 2 : 0), '[');
+    text.copy(yaml.data() + (bare ? 1 : 0), text.size());
+    if (bare) yaml.back() = ']';
+    node = YAML::Load(yaml);
   } catch (const YAML::Exception& e) {
     throw Error(
         escapeText(what + ": cannot read a pose from \"" + std::string(text) + "\": " + e.msg));

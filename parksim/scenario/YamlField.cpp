@@ -1,9 +1,12 @@
 #include "parksim/scenario/YamlField.h"
 
+#include <yaml-cpp/eventhandler.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <set>
+#include <sstream>
 #include <system_error>
 #include <unordered_map>
 #include <utility>
@@ -285,6 +288,89 @@ YamlMap::YamlMap(const YamlField& field) : field_(field) {
       if (seen.insert(key.Scalar()).second) entries_.emplace_back(key, entry.second);
     }
     pending.insert(pending.end(), merges_here.rbegin(), merges_here.rend());
+  }
+}
+
+namespace {
+
+// Counts documents without building them. yaml-cpp 0.7 reports an endless run of empty
+// documents for a stray flow indicator such as a lone `,` (upstream issue 1040): every
+// document then starts where the previous one did. That is the parser stuck, and the file a
+// syntax error there.
+struct DocumentCounter final : YAML::EventHandler {
+  YAML::Mark start;    // where the last document started
+  YAML::Mark content;  // where its first node is
+  bool seen = false;
+  void node(const YAML::Mark& mark) {
+    if (!seen) content = mark;
+    seen = true;
+  }
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    start = mark;
+    seen = false;
+  }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t) override { node(mark); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { node(mark); }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                const std::string&) override {
+    node(mark);
+  }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {
+    node(mark);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {
+    node(mark);
+  }
+  void OnMapEnd() override {}
+};
+
+[[noreturn]] void syntaxError(const std::string& source_name, int line, const std::string& what) {
+  throw Error(escapeText(source_name + ":" + std::to_string(line) + ": (syntax): " + what));
+}
+
+}  // namespace
+
+YAML::Node loadSingleYamlDocument(const std::string& text, const std::string& source_name,
+                                  std::string_view kind, std::string_view format) {
+  int documents = 0;
+  YAML::Mark second;
+  try {
+    std::istringstream in(text);
+    YAML::Parser parser(in);
+    DocumentCounter counter;
+    int last_start = -1;
+    while (parser.HandleNextDocument(counter)) {
+      if (counter.start.pos <= last_start) {
+        const auto pos = static_cast<std::size_t>(std::max(counter.start.pos, 0));
+        const std::string what =
+            pos < text.size() ? "unexpected '" + text.substr(pos, 1) + "'" : "unexpected input";
+        syntaxError(source_name, lineOf(counter.start),
+                    what + " (outside any [ ] or { } list or map)");
+      }
+      last_start = counter.start.pos;
+      if (++documents == 2) second = counter.content;
+    }
+  } catch (const YAML::Exception& e) {
+    syntaxError(source_name, lineOf(e.mark), e.msg);
+  }
+  if (documents == 0) {
+    YamlField(YAML::Node(), "", 1, source_name)
+        .fail("empty; a " + std::string(kind) +
+              " is a map that starts with format: " + std::string(format));
+  }
+  if (documents > 1) {
+    YamlField(YAML::Node(), "", lineOf(second), source_name)
+        .fail("a " + std::string(kind) + " holds one YAML document, found " +
+              std::to_string(documents));
+  }
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    syntaxError(source_name, lineOf(e.mark), e.msg);
   }
 }
 

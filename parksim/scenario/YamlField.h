@@ -104,6 +104,14 @@ class YamlMap {
   std::vector<std::pair<YAML::Node, YAML::Node>> entries_;  // key, value; merges resolved
 };
 
+/// The one YAML document of `text`, or Error "<source>:<line>: (syntax): ..." /
+/// "(document): ...". Terminates on every input: yaml-cpp 0.7 reads an endless run of empty
+/// documents from a stray `,` (its issue 1040), so a first pass counts documents and stops
+/// when the parser makes no progress; `kind` ("world file") and `format` ("parksim-world/1")
+/// word the messages for an empty text and for several documents.
+YAML::Node loadSingleYamlDocument(const std::string& text, const std::string& source_name,
+                                  std::string_view kind, std::string_view format);
+
 /// Shortest text that reads back as the same double ("0.1", "1e-05").
 std::string formatNumber(double value);
 

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "parksim/core/Error.h"
+#include "parksim/core/InputFile.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/planner/TreePlanner.h"
 #include "parksim/scenario/YamlField.h"
@@ -25,6 +26,8 @@ namespace fs = std::filesystem;
 constexpr std::string_view kFormat = "parksim-sweep/1";
 // A sweep is meant to finish; a typo such as `to: 1e9` should not start a billion episodes.
 constexpr std::size_t kMaxEpisodes = 10'000'000;
+// A spec is a page of YAML; /dev/zero or a huge file must not be read into memory.
+constexpr std::uintmax_t kMaxSpecBytes = 1 << 20;
 
 std::string joined(const std::vector<std::string>& names) {
   std::string s;
@@ -219,15 +222,6 @@ void readTolerance(const YamlField& field, ToleranceOverrides& t) {
   }
 }
 
-std::string readWholeFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw Error(path + ": cannot read");
-  return ss.str();
-}
-
 }  // namespace
 
 const char* toString(ExecutedCsvPolicy policy) {
@@ -241,17 +235,9 @@ const char* toString(ExecutedCsvPolicy policy) {
 
 SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_name,
                          const std::string& base_dir) {
-  std::vector<YAML::Node> documents;
-  try {
-    documents = YAML::LoadAll(std::string(yaml_text));
-  } catch (const YAML::Exception& e) {
-    throw Error(source_name + ":" + std::to_string(lineOf(e.mark)) + ": (syntax): " + e.msg);
-  }
-  if (documents.size() != 1) {
-    YamlField(YAML::Node(), "", 1, source_name)
-        .fail("a sweep spec is one YAML map that starts with format: " + std::string(kFormat));
-  }
-  const YamlField root(documents.front(), "", 1, source_name);
+  const YAML::Node document =
+      loadSingleYamlDocument(std::string(yaml_text), source_name, "sweep spec", kFormat);
+  const YamlField root(document, "", 1, source_name);
   const YamlMap top(root);
   const YamlField format = top.required("format");
   if (format.text() != kFormat) {
@@ -326,7 +312,8 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
 }
 
 SweepSpec loadSweepSpec(const std::string& path) {
-  return parseSweepSpec(readWholeFile(path), path, fs::path(path).parent_path().string());
+  return parseSweepSpec(readInputFile(path, kMaxSpecBytes, "sweep spec"), path,
+                        fs::path(path).parent_path().string());
 }
 
 }  // namespace parksim

@@ -87,6 +87,25 @@ TEST(SweepSpecReader, ErrorsNameFileLineAndField) {
               HasSubstr("spec.yaml:1: worlds: missing required field"));
 }
 
+// The spec reader read files whole (/dev/zero until memory ran out) and parsed with
+// YAML::LoadAll, which yaml-cpp 0.7 never ends on a stray ',' (1 GB/s): both found by the
+// hostile pass. Specs now get the world reader's guards.
+TEST(SweepSpecReader, MalformedYamlAndDevicesEndInOneLine) {
+  EXPECT_EQ(errorOf(","),
+            "spec.yaml:1: (syntax): unexpected ',' (outside any [ ] or { } list or map)");
+  EXPECT_EQ(errorOf("format: parksim-sweep/1\nname: x\n---\nname: y\n"),
+            "spec.yaml:4: (document): a sweep spec holds one YAML document, found 2");
+  EXPECT_EQ(errorOf(""),
+            "spec.yaml:1: (document): empty; a sweep spec is a map that starts with format: "
+            "parksim-sweep/1");
+  try {
+    (void)loadSweepSpec("/dev/zero");
+    ADD_FAILURE() << "/dev/zero accepted";
+  } catch (const Error& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr("/dev/zero: is not a regular file"));
+  }
+}
+
 TEST(SweepSpecReader, WorldsResolveAgainstTheSpecFolderAndGlobsExpandSorted) {
   const SweepSpec s = loadSweepSpec(parksim::testing::sourceDir() + "/worlds/sweeps/study.yaml");
   ASSERT_EQ(s.world_files.size(), 2u);
