@@ -5,10 +5,11 @@
 namespace parksim::app {
 
 void WorldOverrideOptions::addTo(CLI::App& sub) {
-  sub.add_option("--start", start,
-                 "replace the world's start pose: x,y,yaw in m, m, degrees (e.g. 0.3,0.6,90)");
-  sub.add_option("--goal", goal,
-                 "replace the world's goal pose (goal.pose): x,y,yaw in m, m, degrees");
+  start_option =
+      sub.add_option("--start", start,
+                     "replace the world's start pose: x,y,yaw in m, m, degrees (e.g. 0.3,0.6,90)");
+  goal_option = sub.add_option(
+      "--goal", goal, "replace the world's goal pose (goal.pose): x,y,yaw in m, m, degrees");
   sub.add_option("--set", sets,
                  "replace one world-file field, PATH=VALUE with PATH as in error messages and "
                  "VALUE in YAML (robot.wheel_radius=0.025, obstacles[1].center=[0.5,0.5]); "
@@ -24,8 +25,11 @@ std::vector<ScenarioOverride> WorldOverrideOptions::overrides() const {
     const bool yaml = first != std::string::npos && (text[first] == '[' || text[first] == '{');
     return yaml ? text : "[" + text + "]";
   };
-  if (!start.empty()) out.push_back({"start", pose(start), "--start " + start});
-  if (!goal.empty()) out.push_back({"goal.pose", pose(goal), "--goal " + goal});
+  // Given means given: an empty --start (a shell variable that was not set) is an error, not
+  // the file's start.
+  const auto given = [](const CLI::Option* o) { return o != nullptr && o->count() > 0; };
+  if (given(start_option)) out.push_back({"start", pose(start), "--start " + start});
+  if (given(goal_option)) out.push_back({"goal.pose", pose(goal), "--goal " + goal});
   for (const std::string& set : sets) {
     const std::size_t eq = set.find('=');
     if (eq == std::string::npos || eq == 0) {

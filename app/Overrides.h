@@ -14,9 +14,12 @@
 namespace parksim::app {
 
 struct WorldOverrideOptions {
-  std::string start;              ///< "x,y,deg" or empty
-  std::string goal;               ///< "x,y,deg" or empty
+  std::string start;              ///< "x,y,deg", when start_option was given
+  std::string goal;               ///< "x,y,deg", when goal_option was given
   std::vector<std::string> sets;  ///< "path.to.field=value", applied in order after start, goal
+
+  CLI::Option* start_option = nullptr;  ///< set by addTo
+  CLI::Option* goal_option = nullptr;
 
   /// Registers --start, --goal and --set on `sub`.
   void addTo(CLI::App& sub);

@@ -40,6 +40,7 @@ std::vector<PathStep> splitPath(const ScenarioOverride& o) {
     const std::size_t end = p.find_first_of(".[", i);
     const std::string key = p.substr(i, end == std::string::npos ? std::string::npos : end - i);
     if (key.empty()) throw bad("empty key");
+    if (key.find(']') != std::string::npos) throw bad("']' without '['");
     path += (path.empty() ? "" : ".") + key;
     steps.push_back({key, 0, path});
     if (end == std::string::npos) break;

@@ -159,6 +159,18 @@ const Case kCases[] = {
     {"render {W} --executed {DIR}/missing.csv --out {OUT}", 2, "missing.csv: cannot open"},
     {"render {W} --executed /dev/zero --out {OUT}", 2, "not a regular file"},
     {"run {W} --tracking sideways --out {OUT}", 2, "--tracking"},
+    // Overrides: given and empty is an error (it used to fall back silently to the file's pose).
+    {"plan {W} --start \"\" --out {OUT}", 2,
+     "--start : start: must be a list [x, y, yaw_deg] of 3 numbers or a map {x, y, yaw_deg}, got "
+     "a list of 0"},
+    {"plan {W} --goal \"\" --out {OUT}", 2, "--goal : goal.pose: must be a list"},
+    {"plan {W} --set obstacles[99999999999].center=[1,1] --out {OUT}", 2,
+     "obstacles[99999999999]: obstacles has 3 items"},
+    {"plan {W} --set obstacles[-1].center=[1,1] --out {OUT}", 2,
+     "list index must be a whole number >= 0"},
+    {"plan {W} --set \"name=a: [b\" --out {OUT}", 2, "(syntax): end of sequence flow not found"},
+    {"plan {W} --set name=, --out {OUT}", 2, "name: must be a string, got null"},
+    {"plan {W} --start 0.1,0.1,1.5708 --out {OUT}", 2, "1.5708 looks like radians"},
     // Plan files: type, size and content limits, checked before anything is written.
     {"run {W} --plan /dev/zero --out {OUT}", 2, "/dev/zero: is not a regular file"},
     {"run {W} --plan /dev/urandom --out {OUT}", 2, "is not a regular file"},

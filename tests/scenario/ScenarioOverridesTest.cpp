@@ -61,6 +61,9 @@ TEST(ScenarioOverrides, BadValuesGetTheFilesChecksAndNameTheOverride) {
             "L: obstacles[99]: obstacles has 3 items");
   EXPECT_EQ(errorOf({{"name.first", "x", "L"}}), "L: name: is not a map");
   EXPECT_EQ(errorOf({{"robot..x", "1", "L"}}), "L: bad field path 'robot..x': empty key");
+  // A stray ']' was read as a key "]" and blamed on the file's line as an unknown field.
+  EXPECT_EQ(errorOf({{"obstacles[1]].x", "1", "L"}}),
+            "L: bad field path 'obstacles[1]].x': ']' without '['");
   EXPECT_EQ(errorOf({{"name", "[1", "L"}}).rfind("L: (syntax): ", 0), 0u);
   // A problem the override causes elsewhere is reported where it shows, with the file's line:
   // an obstacle moved onto the start makes the (unchanged) start entry fail.
