@@ -84,6 +84,8 @@ std::vector<CsvTable::Row> parseRecords(std::string_view text, const std::string
 }  // namespace
 
 CsvTable::CsvTable(std::string_view text, std::string source) : source_(std::move(source)) {
+  // A byte-order mark (spreadsheets' "CSV UTF-8") is no part of the first column's name.
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
   std::vector<Row> records = parseRecords(text, source_);
   if (records.empty()) throw Error(source_ + ":1: empty file (expected a header line)");
   header_ = std::move(records.front().cells);

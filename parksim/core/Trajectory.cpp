@@ -111,12 +111,20 @@ Trajectory parseTrajectoryCsv(std::string_view text, const std::string& path) {
     }
     return true;
   };
+  // A byte-order mark (spreadsheets' "CSV UTF-8") is no part of the first column's name.
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") pos = 3;
   std::string_view line;
   if (!next(line)) throw Error(path + ":1: empty trajectory file (expected a header)");
   std::vector<std::string_view> cells;
   splitCells(line, cells);
+  const std::size_t columns = cells.size();
   std::map<std::string_view, std::size_t> column;
-  for (std::size_t i = 0; i < cells.size(); ++i) column.emplace(cells[i], i);
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (!column.emplace(cells[i], i).second) {
+      const std::string shown(cells[i].substr(0, 40));
+      throw Error(path + ":1: header names column '" + shown + "' twice");
+    }
+  }
   const char* required[] = {"t", "x", "y", "theta", "omega_left", "omega_right"};
   std::size_t index[6];
   for (int k = 0; k < 6; ++k) {
@@ -134,6 +142,11 @@ Trajectory parseTrajectoryCsv(std::string_view text, const std::string& path) {
                   " rows (docs/limits.md)");
     }
     splitCells(line, cells);
+    // A row of another width is a shifted or truncated file, not a row to guess at.
+    if (cells.size() != columns) {
+      throw Error(at(line_no) + "row has " + std::to_string(cells.size()) +
+                  " cells, the header has " + std::to_string(columns) + " columns");
+    }
     double v[6];
     for (int k = 0; k < 6; ++k) {
       const std::string where = at(line_no) + "column '" + required[k] + "'";

@@ -85,7 +85,7 @@ class HostileInput : public ::testing::Test {
     }());
     write(dir_ / "too_many_rows.csv", [] {
       std::string s = kHeader;
-      for (int i = 0; i <= 1'000'000; ++i) s += std::to_string(i * 1e-3) + ",0,0,0,0,0\n";
+      for (int i = 0; i <= 1'000'000; ++i) s += std::to_string(i * 1e-3) + ",0,0,0,0,0,0,0\n";
       return s;
     }());
     write(dir_ / "elsewhere.csv", kHeader + "0,1,1,0,0,0,0,0\n0.1,1,1,0,0,0,0,0\n");

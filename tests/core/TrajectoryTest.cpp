@@ -94,6 +94,26 @@ TEST(Trajectory, ReaderRefusesWhatItsLimitsExclude) {
   EXPECT_NE(message(std::string(5000, ',')).find("p.csv:1: line is 5000 bytes"), std::string::npos);
 }
 
+// Found by the hostile pass: a spreadsheet's byte-order mark made the header "lack column 't'";
+// a column named twice and rows of another width than the header were read silently.
+TEST(Trajectory, ReaderTakesAByteOrderMarkAndRefusesRaggedTables) {
+  const std::string h = "t,x,y,theta,omega_left,omega_right\n";
+  auto message = [](const std::string& text) {
+    try {
+      parseTrajectoryCsv(text, "p.csv");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message("\xEF\xBB\xBF" + h + "0,0,0,0,0,0\n"), "accepted");
+  EXPECT_EQ(message("t,x,y,theta,omega_left,omega_right,t\n0,0,0,0,0,0,0\n"),
+            "p.csv:1: header names column 't' twice");
+  EXPECT_EQ(message(h + "0,0,0,0,0,0\n0.1,0,0,0,0\n"),
+            "p.csv:3: row has 5 cells, the header has 6 columns");
+  EXPECT_EQ(message(h + "0,0,0,0,0,0,7\n"), "p.csv:2: row has 7 cells, the header has 6 columns");
+}
+
 TEST(Trajectory, OnlyRegularFilesAreRead) {
   EXPECT_THROW(readTrajectoryCsv("/dev/zero"), Error);
   EXPECT_THROW(readTrajectoryCsv(std::filesystem::temp_directory_path().string()), Error);
