@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/Command.h"
+#include "app/OutputDir.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/sweep/Report.h"
@@ -122,14 +123,18 @@ int runReport(const std::string& dir, std::string out) {
   SweepManifest manifest;
   std::string name = std::filesystem::path(dir).filename().string();
   if (readSweepManifest(dir, manifest) && !manifest.name.empty()) name = manifest.name;
-  std::vector<std::string> written = writeReport(rows, name, out);
+  // As plan and run do: the report is written whole into a staging directory and swapped in, and
+  // an --out holding files parksim did not write (a home directory, the sweep directory itself)
+  // is refused instead of being written into.
+  OutputDir staged(out);
+  std::vector<std::string> written = writeReport(rows, name, staged.path());
 #ifdef PARKSIM_HAVE_OMPL_BENCH
-  const std::vector<std::string> logs = writeOmplLogs(rows, name, out);
+  const std::vector<std::string> logs = writeOmplLogs(rows, name, staged.path());
   written.insert(written.end(), logs.begin(), logs.end());
 #endif
   std::string summary;
   {
-    std::FILE* f = std::fopen((out + "/summary.md").c_str(), "r");
+    std::FILE* f = std::fopen((staged.path() + "/summary.md").c_str(), "r");
     if (f != nullptr) {
       char buf[4096];
       std::size_t n = 0;
@@ -137,8 +142,9 @@ int runReport(const std::string& dir, std::string out) {
       std::fclose(f);
     }
   }
+  staged.commit();
   std::printf("%s\n", summary.c_str());
-  for (const std::string& w : written) std::printf("wrote %s\n", w.c_str());
+  for (const std::string& w : written) std::printf("wrote %s\n", staged.shown(w).c_str());
   return 0;
 }
 

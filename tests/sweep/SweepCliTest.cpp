@@ -92,6 +92,14 @@ TEST(SweepCli, SurvivesAKillAndCompletesEachEpisodeOnceThenReports) {
   EXPECT_NE(
       slurp(out + "/report/summary.md").find("| head_in | rrt-goal-connect | world | 6 | 6/6"),
       std::string::npos);
+  // The report is an output directory like plan's: written again whole, and never into a
+  // directory of other files (it used to drop its files into any --out, the sweep's own too).
+  EXPECT_EQ(runParksim("report " + out).exit_code, 0);
+  const auto into_sweep = runParksim("report " + out + " --out " + out);
+  EXPECT_EQ(into_sweep.exit_code, 2) << into_sweep.out;
+  EXPECT_NE(into_sweep.out.find("which parksim did not write"), std::string::npos)
+      << into_sweep.out;
+  EXPECT_FALSE(fs::exists(out + "/summary.md"));
 #ifdef PARKSIM_HAVE_BENCH
   // Planner Arena's reader: one run line and one progress line (cost over time) per episode.
   const std::string log = slurp(out + "/report/ompl_head_in.log");
