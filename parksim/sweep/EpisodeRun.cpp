@@ -65,6 +65,9 @@ void film(const EpisodeSetup& setup, const Trajectory& plan, const RecordDef& re
   def.view = frameViewFromString(record.film_view);
   def.out_dir = dir;
   def.video = record.film_video;
+  ExecutionDef exec = setup.execution;
+  // Before the first frame, as run --frames does: not after rendering 50,000 of them.
+  checkFrameLimits(def, plan.duration() + exec.max_stop_time_s);
   FrameRecorder recorder(setup.scenario, def);
   recorder.setPlan(plan);
   const EpisodeObserver observer = [&recorder](const EpisodeSample& s) {
@@ -78,7 +81,6 @@ void film(const EpisodeSetup& setup, const Trajectory& plan, const RecordDef& re
     in.contacts = s.contacts;
     recorder.addFrame(in);
   };
-  ExecutionDef exec = setup.execution;
   exec.csv_stride_steps = INT_MAX / 2;
   (void)runEpisode(setup.scenario, plan, exec, observer, 1.0 / record.film_fps);
   (void)recorder.finish();

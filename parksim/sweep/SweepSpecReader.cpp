@@ -3,9 +3,11 @@
 #include <glob.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -72,10 +74,21 @@ std::vector<std::string> namesAxis(const YamlField& field, const std::vector<std
   return values;
 }
 
+// A seed is any 64-bit value, as --seed takes. Digits are read as an integer: through a double,
+// 9007199254740993 became ...992, another seed, without a word. A whole number in another
+// spelling (1e3, 20.0) is read as a double, where it is exact (up to 2^53).
 std::uint64_t seedValue(const YamlField& field) {
+  const YAML::Node& node = field.node();
+  if (node.IsScalar() && node.Tag() == "?") {
+    const std::string& text = node.Scalar();
+    std::uint64_t value = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec == std::errc() && end == text.data() + text.size()) return value;
+  }
   const double v = field.number();
   if (v < 0.0 || v != std::floor(v) || v > 9007199254740992.0) {
-    field.fail("must be a whole number >= 0, got " + field.node().Scalar());
+    field.fail("must be a whole number in [0, 18446744073709551615] (above 2^53 in digits), got " +
+               node.Scalar());
   }
   return static_cast<std::uint64_t>(v);
 }
@@ -90,7 +103,8 @@ std::vector<std::uint64_t> seedsAxis(const YamlField& field) {
     if (to < from) to_field.fail("must be at least from (" + std::to_string(from) + ")");
     if (to - from >= kMaxEpisodes) to_field.fail("range too large");
     std::vector<std::uint64_t> seeds;
-    for (std::uint64_t s = from; s <= to; ++s) seeds.push_back(s);
+    // Counted, not `s <= to`: that never ends when `to` is the largest seed.
+    for (std::uint64_t k = 0; k <= to - from; ++k) seeds.push_back(from + k);
     return seeds;
   }
   const std::vector<YamlField> items = axisItems(field);
@@ -177,7 +191,12 @@ void readRecord(const YamlField& field, RecordDef& r) {
   }
   if (const std::optional<YamlField> f = m.optional("film")) {
     const YamlMap film = f->map({"fps", "size", "view", "video"});
-    if (const std::optional<YamlField> g = film.optional("fps")) r.film_fps = g->positive();
+    if (const std::optional<YamlField> g = film.optional("fps")) {
+      // As run --fps (docs/limits.md): 1e9 fps rendered frames until the 50,000-frame limit.
+      r.film_fps = g->positive();
+      if (r.film_fps > 1000.0)
+        g->fail("must be in (0, 1000] frames per second, got " + g->node().Scalar());
+    }
     if (const std::optional<YamlField> g = film.optional("size")) {
       const std::string text = g->text();
       int w = 0;
@@ -215,7 +234,11 @@ void readTolerance(const YamlField& field, ToleranceOverrides& t) {
     t.goal_heading_err_deg = f->positive();
   }
   if (const std::optional<YamlField> f = m.optional("max_contacts")) {
-    t.max_contacts = static_cast<int>(seedValue(*f));
+    const std::uint64_t n = seedValue(*f);
+    if (n > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
+      f->fail("must be at most " + std::to_string(std::numeric_limits<int>::max()));
+    }
+    t.max_contacts = static_cast<int>(n);
   }
   if (const std::optional<YamlField> f = m.optional("max_parked_displacement_m")) {
     t.max_parked_displacement_m = f->nonNegative();

@@ -106,6 +106,30 @@ TEST(SweepSpecReader, MalformedYamlAndDevicesEndInOneLine) {
   }
 }
 
+// Seeds went through a double: 9007199254740993 ran as ...992 without a word, and a range up
+// to the largest seed never ended (std::bad_alloc, exit 3). Film fps had no upper bound.
+TEST(SweepSpecReader, SeedsAreExactSixtyFourBitValuesAndFilmFpsIsBounded) {
+  EXPECT_EQ(parseSweepSpec(studySpec("seeds: [9007199254740993, 18446744073709551615]\n"),
+                           "spec.yaml", "")
+                .seeds,
+            (std::vector<std::uint64_t>{9007199254740993u, 18446744073709551615u}));
+  EXPECT_EQ(parseSweepSpec(studySpec("seeds: {from: 18446744073709551614, to: "
+                                     "18446744073709551615}\n"),
+                           "spec.yaml", "")
+                .seeds,
+            (std::vector<std::uint64_t>{18446744073709551614u, 18446744073709551615u}));
+  EXPECT_EQ(parseSweepSpec(studySpec("seeds: [1e3]\n"), "spec.yaml", "").seeds,
+            (std::vector<std::uint64_t>{1000}));
+  EXPECT_THAT(errorOf(studySpec("seeds: 18446744073709551616\n")),
+              HasSubstr("seeds: must be a whole number in [0, 18446744073709551615]"));
+  EXPECT_THAT(errorOf(studySpec("seeds: {from: 1, to: 1e12}\n")),
+              HasSubstr("seeds.to: range too large"));
+  EXPECT_THAT(errorOf(studySpec("tolerance: {max_contacts: 99999999999}\n")),
+              HasSubstr("tolerance.max_contacts: must be at most 2147483647"));
+  EXPECT_THAT(errorOf(studySpec("record: {film_failures: true, film: {fps: 1e9}}\n")),
+              HasSubstr("record.film.fps: must be in (0, 1000] frames per second, got 1e9"));
+}
+
 TEST(SweepSpecReader, WorldsResolveAgainstTheSpecFolderAndGlobsExpandSorted) {
   const SweepSpec s = loadSweepSpec(parksim::testing::sourceDir() + "/worlds/sweeps/study.yaml");
   ASSERT_EQ(s.world_files.size(), 2u);
