@@ -445,12 +445,28 @@ struct Episode::Impl {
   void advance(const std::optional<WheelSpeeds>& external) {
     if (loop) {
       realismStep(external);
+    } else {
+      const WheelSpeeds cmd = external ? *external : command();
+      world.setWheelTargets(cmd);
+      world.step();
+      measure(cmd);
+    }
+    requireFiniteState();
+  }
+
+  // Physics far outside any real robot's range (gravity 1e300 m/s^2, wheels of 1e300 kg) makes
+  // Bullet's state NaN within a step; every later number is then meaningless ("-nan mm", a max
+  // error of 0). Say so once, where it happens.
+  void requireFiniteState() const {
+    const RobotState& state = world.robot();
+    if (std::isfinite(state.pose.x) && std::isfinite(state.pose.y) &&
+        std::isfinite(state.pose.theta)) {
       return;
     }
-    const WheelSpeeds cmd = external ? *external : command();
-    world.setWheelTargets(cmd);
-    world.step();
-    measure(cmd);
+    throw Error("simulation: diverged at t = " + formatGeneral(planTime(world.steps()), 6) +
+                " s (step " + std::to_string(world.steps()) +
+                "): the robot's pose is no longer a finite number; the world's physics or robot "
+                "values are outside what the simulation can integrate");
   }
 
   WheelSpeeds command() const {

@@ -171,6 +171,11 @@ const Case kCases[] = {
     {"plan {W} --set \"name=a: [b\" --out {OUT}", 2, "(syntax): end of sequence flow not found"},
     {"plan {W} --set name=, --out {OUT}", 2, "name: must be a string, got null"},
     {"plan {W} --start 0.1,0.1,1.5708 --out {OUT}", 2, "1.5708 looks like radians"},
+    // Physics no simulation can integrate: Bullet's state became NaN at the first step and the
+    // run printed "-nan mm" and a max tracking error of 0.000 mm, exit 4.
+    {"run {W} --set physics.gravity_mps2=1e300 --out {OUT}", 2,
+     "simulation: diverged at t = 0.00416667 s (step 1)"},
+    {"run {W} --set physics.wheel_mass_kg=1e300 --out {OUT}", 2, "simulation: diverged"},
     // Plan files: type, size and content limits, checked before anything is written.
     {"run {W} --plan /dev/zero --out {OUT}", 2, "/dev/zero: is not a regular file"},
     {"run {W} --plan /dev/urandom --out {OUT}", 2, "is not a regular file"},
