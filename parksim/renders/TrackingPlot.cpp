@@ -197,9 +197,17 @@ TrackingSeries readTrackingCsv(const std::string& path) {
   }
   const std::size_t h_col = h_rad ? *h_rad : *h_deg;
   const double h_scale = h_rad ? 1.0 : kPi / 180.0;
+  // A plot of nothing, or of time running backwards (rows out of order, two files joined),
+  // would be drawn without a word.
+  if (csv.rows().empty()) throw Error(path + ": no rows (the header alone)");
   TrackingSeries series;
   for (const CsvTable::Row& row : csv.rows()) {
-    series.t_s.push_back(csv.number(row, *t_col));
+    const double t = csv.number(row, *t_col);
+    if (!series.t_s.empty() && !(t > series.t_s.back())) {
+      throw Error(path + ":" + std::to_string(row.line) + ": column '" + csv.header()[*t_col] +
+                  "': time does not increase");
+    }
+    series.t_s.push_back(t);
     series.position_error_m.push_back(csv.number(row, *p_col));
     series.heading_error_rad.push_back(csv.number(row, h_col) * h_scale);
   }

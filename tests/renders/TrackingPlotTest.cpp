@@ -48,6 +48,19 @@ TEST(TrackingPlotTest, ReadsColumnsByName) {
               std::string::npos)
         << e.what();
   }
+  // Found by the hostile pass: a header alone and time running backwards were drawn silently.
+  const auto message = [&path](const std::string& text) {
+    std::ofstream(path) << text;
+    try {
+      readTrackingCsv(path);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message("t,pos_err,heading_err\n"), path + ": no rows (the header alone)");
+  EXPECT_EQ(message("t,pos_err,heading_err\n1,0,0\n0.5,0,0\n"),
+            path + ":3: column 't': time does not increase");
 }
 
 TEST(TrackingPlotTest, PlotHasTwoPanelsWithDataAxesAndLabels) {
