@@ -41,6 +41,18 @@ int runMerge(const std::vector<std::string>& sources, std::string out) {
   if (out.empty()) {
     if (sources.size() != 1) throw Error("--out is required when merging several sources");
     out = sources.front();
+  } else {
+    // A table in --out that is not merged would be replaced, its episodes lost.
+    std::error_code ec;
+    bool is_source = false;
+    for (const std::string& src : sources) is_source = is_source || fs::equivalent(src, out, ec);
+    for (const char* table : {"results.jsonl", "results.csv"}) {
+      if (!is_source && fs::exists(fs::path(out) / table, ec)) {
+        throw Error("--out " + out + ": already holds " + table +
+                    ", which is not among the sources; name it as a source too, or choose a "
+                    "new --out");
+      }
+    }
   }
   if (dirs.empty()) throw Error(sources.front() + "/shards: no shard directories");
   const MergeResult r = mergeResults(dirs, manifest_dirs);

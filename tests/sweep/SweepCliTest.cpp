@@ -127,6 +127,13 @@ TEST(SweepCli, ExitsOneWhenAnEpisodeMissesItsToleranceAndShardsMerge) {
   EXPECT_NE(merged.out.find("4 episodes of 4 expected, 0 missing"), std::string::npos)
       << merged.out;
   EXPECT_EQ(lines(out + "/results.csv"), 5u);
+  // A table in --out that is not a source was replaced, its episodes lost (hostile pass).
+  const auto over = runParksim("merge " + out + "/shards/0 --out " + out + "/shards/1");
+  EXPECT_EQ(over.exit_code, 2) << over.out;
+  EXPECT_NE(over.out.find("already holds results.jsonl, which is not among the sources"),
+            std::string::npos)
+      << over.out;
+  EXPECT_EQ(lines(out + "/shards/1/results.jsonl"), 2u);
   fs::remove_all(out + "/shards/1");
   const auto partial = runParksim("merge " + out);
   EXPECT_EQ(partial.exit_code, 1);
