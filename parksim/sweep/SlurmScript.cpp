@@ -1,5 +1,7 @@
 #include "parksim/sweep/SlurmScript.h"
 
+#include <string_view>
+
 #include "parksim/core/Error.h"
 
 namespace parksim {
@@ -19,11 +21,54 @@ std::string quoted(const std::string& s) {
   return out;
 }
 
+// A value on an `#SBATCH` line: one word. A newline in --slurm-partition wrote a shell command
+// of its own into the script, which the job then ran.
+const std::string& sbatchWord(const std::string& value, const char* option) {
+  for (const char c : value) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    std::string_view("_.:,+=@/%-").find(c) != std::string_view::npos;
+    if (!ok) {
+      throw Error(std::string(option) +
+                  ": must be one word of letters, digits and _.:,+=@/%- for an #SBATCH line");
+    }
+  }
+  return value;
+}
+
+// Text on a comment or #SBATCH line (paths): any character but a line break or control byte.
+const std::string& onOneLine(const std::string& value, const char* what) {
+  for (const char c : value) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == '\x7f') {
+      throw Error(std::string(what) +
+                  ": holds a control character, which a line of the sbatch script cannot");
+    }
+  }
+  return value;
+}
+
+// The job name comes from the spec's name, which may hold anything: keep what Slurm shows well.
+std::string jobName(const std::string& name) {
+  std::string out;
+  for (const char c : name) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    c == '_' || c == '.' || c == '-';
+    out += ok ? c : '_';
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string sbatchScript(const SlurmDef& d) {
   if (d.shards < 1) throw Error("--slurm-shards must be at least 1");
   if (d.cpus_per_task < 1) throw Error("--slurm-cpus must be at least 1");
+  sbatchWord(d.mem, "--slurm-mem");
+  sbatchWord(d.time, "--slurm-time");
+  sbatchWord(d.partition, "--slurm-partition");
+  sbatchWord(d.account, "--slurm-account");
+  sbatchWord(d.max_parallel, "--slurm-max-parallel");
+  onOneLine(d.out_dir, "--out");
+  onOneLine(d.parksim_exe, "the parksim executable's path");
   const std::string n = std::to_string(d.shards);
   std::string s = "#!/bin/bash\n";
   s += "# Written by `parksim sweep --slurm`. Submit: sbatch --wait " + d.out_dir +
@@ -31,7 +76,7 @@ std::string sbatchScript(const SlurmDef& d) {
   s += "# then merge: " + d.parksim_exe + " merge " + d.out_dir + "\n";
   s += "# Resubmitting is safe: every shard resumes and runs only its missing episodes;\n";
   s += "# `sbatch --array=3,7 sweep.sbatch` reruns shards 3 and 7 alone.\n";
-  s += "#SBATCH --job-name=" + d.job_name + "\n";
+  s += "#SBATCH --job-name=" + jobName(d.job_name) + "\n";
   s += "#SBATCH --array=0-" + std::to_string(d.shards - 1) + d.max_parallel + "\n";
   s += "#SBATCH --ntasks=1\n";
   s += "#SBATCH --cpus-per-task=" + std::to_string(d.cpus_per_task) + "\n";

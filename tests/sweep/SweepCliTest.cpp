@@ -154,6 +154,14 @@ TEST(SweepCli, SlurmWritesAResubmittableArrayScript) {
   EXPECT_NE(script.find("--shard \"$shard/3\""), std::string::npos);
   EXPECT_TRUE(fs::is_directory(dir + "/out/logs"));
   EXPECT_FALSE(fs::exists(dir + "/out/results.jsonl"));  // nothing ran
+
+  // A line break in an option wrote a shell command of its own into the script (hostile pass).
+  const auto injected = runParksim("sweep " + dir + "/spec.yaml --out " + dir +
+                                   "/injected --slurm --slurm-partition \"debug\necho INJECTED\"");
+  EXPECT_EQ(injected.exit_code, 2) << injected.out;
+  EXPECT_NE(injected.out.find("--slurm-partition: must be one word"), std::string::npos)
+      << injected.out;
+  EXPECT_FALSE(fs::exists(dir + "/injected"));
 }
 
 }  // namespace
