@@ -272,7 +272,8 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
 
   SweepSpec spec;
   spec.source_path = source_name;
-  spec.name = top.required("name").text();
+  // name(): UTF-8 without control characters; it reaches the terminal, reports and job names.
+  spec.name = top.required("name").name();
   readWorlds(top.required("worlds"), base_dir, spec);
 
   std::vector<std::string> planner_names;

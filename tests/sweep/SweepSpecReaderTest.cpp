@@ -95,6 +95,10 @@ TEST(SweepSpecReader, MalformedYamlAndDevicesEndInOneLine) {
             "spec.yaml:1: (syntax): unexpected ',' (outside any [ ] or { } list or map)");
   EXPECT_EQ(errorOf("format: parksim-sweep/1\nname: x\n---\nname: y\n"),
             "spec.yaml:4: (document): a sweep spec holds one YAML document, found 2");
+  // The name was echoed raw: a spec turned the terminal red (hostile pass).
+  EXPECT_EQ(errorOf("format: parksim-sweep/1\nname: \"\\e[31mred\"\nworlds: [a.yaml]\n"),
+            "spec.yaml:2: name: must be UTF-8 text without control characters, got "
+            "\"\\x1b[31mred\"");
   EXPECT_EQ(errorOf(""),
             "spec.yaml:1: (document): empty; a sweep spec is a map that starts with format: "
             "parksim-sweep/1");
