@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/Command.h"
+#include "app/TerminalText.h"
 #include "parksim/core/Error.h"
 #include "parksim/sweep/Merge.h"
 #include "parksim/sweep/ResultsTable.h"
@@ -24,7 +25,7 @@ void list(const char* what, const std::vector<std::string>& ids) {
   if (ids.empty()) return;
   std::fprintf(stderr, "%zu %s:", ids.size(), what);
   for (std::size_t i = 0; i < ids.size() && i < 20; ++i)
-    std::fprintf(stderr, " %s", ids[i].c_str());
+    std::fprintf(stderr, " %s", printable(ids[i]).c_str());
   std::fprintf(stderr, "%s\n", ids.size() > 20 ? " ..." : "");
 }
 
@@ -63,7 +64,8 @@ int runMerge(const std::vector<std::string>& sources, std::string out) {
   std::printf(
       ", %zu missing, %zu duplicated, %zu conflicting\nwrote %s/results.csv and "
       "%s/results.jsonl\n",
-      r.missing.size(), r.duplicated.size(), r.conflicting.size(), out.c_str(), out.c_str());
+      r.missing.size(), r.duplicated.size(), r.conflicting.size(), printable(out).c_str(),
+      printable(out).c_str());
   list("missing (run the sweep or its shard again to add them)", r.missing);
   list("duplicated (identical rows, kept once)", r.duplicated);
   list("conflicting (different results for one id; the first source's row kept)", r.conflicting);

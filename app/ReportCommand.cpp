@@ -13,6 +13,7 @@
 
 #include "app/Command.h"
 #include "app/OutputDir.h"
+#include "app/TerminalText.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/sweep/Report.h"
@@ -143,8 +144,10 @@ int runReport(const std::string& dir, std::string out) {
     }
   }
   staged.commit();
-  std::printf("%s\n", summary.c_str());
-  for (const std::string& w : written) std::printf("wrote %s\n", staged.shown(w).c_str());
+  std::printf("%s\n", printableLines(summary).c_str());
+  for (const std::string& w : written) {
+    std::printf("wrote %s\n", printable(staged.shown(w)).c_str());
+  }
   return 0;
 }
 

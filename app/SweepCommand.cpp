@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "app/Command.h"
+#include "app/TerminalText.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/sweep/EpisodeExpansion.h"
@@ -108,8 +109,9 @@ int writeSlurm(const SweepOptions& o, const SweepSpec& spec,
   std::printf(
       "wrote %s: %zu episodes in %d array tasks (%d CPU%s, %s, %s each)\n"
       "submit:  sbatch --wait %s\nthen:    %s merge %s\n",
-      path.c_str(), episodes.size(), d.shards, d.cpus_per_task, d.cpus_per_task == 1 ? "" : "s",
-      d.mem.c_str(), d.time.c_str(), path.c_str(), d.parksim_exe.c_str(), o.out.c_str());
+      printable(path).c_str(), episodes.size(), d.shards, d.cpus_per_task,
+      d.cpus_per_task == 1 ? "" : "s", d.mem.c_str(), d.time.c_str(), printable(path).c_str(),
+      printable(d.parksim_exe).c_str(), printable(o.out).c_str());
   return 0;
 }
 
@@ -145,7 +147,7 @@ int runSweepCommand(const SweepOptions& o) {
       spec.name.c_str(), episodes.size(),
       shard.count > 1 ? (" (shard " + o.shard + " of " + std::to_string(all.size()) + ")").c_str()
                       : "",
-      already, o.out.c_str(), workers, workers == 1 ? "" : "s");
+      already, printable(o.out).c_str(), workers, workers == 1 ? "" : "s");
   const bool tty = isatty(STDERR_FILENO) == 1;
   SweepProgressFn progress;
   if (tty || o.progress) progress = ProgressPrinter(tty, already);
@@ -159,7 +161,7 @@ int runSweepCommand(const SweepOptions& o) {
       "tolerance, %zu did not\nwrote %s/results.csv and %s/results.jsonl\n",
       spec.name.c_str(), episodes.size(), p.ran, p.elapsed_s,
       p.elapsed_s > 0.0 ? p.ran / p.elapsed_s : 0.0, episodes.size() - failed, failed,
-      o.out.c_str(), o.out.c_str());
+      printable(o.out).c_str(), printable(o.out).c_str());
   if (failed > 0) {
     std::size_t listed = 0;
     for (const nlohmann::ordered_json& row : readResultsJsonl(o.out + "/results.jsonl")) {
@@ -172,7 +174,7 @@ int runSweepCommand(const SweepOptions& o) {
       ++listed;
       std::fprintf(stderr, "  failed %s: %s %s seed %s: %s\n", id.c_str(),
                    row.value("world", "").c_str(), row.value("planner", "").c_str(),
-                   row["seed"].dump().c_str(), row.value("failure", "").c_str());
+                   row["seed"].dump().c_str(), printable(row.value("failure", "")).c_str());
     }
     if (failed > listed) std::fprintf(stderr, "  ... and %zu more\n", failed - listed);
     return 1;

@@ -162,6 +162,12 @@ TEST(SweepCli, SlurmWritesAResubmittableArrayScript) {
   EXPECT_NE(injected.out.find("--slurm-partition: must be one word"), std::string::npos)
       << injected.out;
   EXPECT_FALSE(fs::exists(dir + "/injected"));
+  // Paths reach the terminal escaped, as plan's and run's do (they were echoed raw).
+  const auto escaped =
+      runParksim("sweep " + dir + "/spec.yaml --out \"" + dir + "/red\x1b[31m\" --shard 0/5");
+  EXPECT_EQ(escaped.exit_code, 0) << escaped.out;
+  EXPECT_EQ(escaped.out.find('\x1b'), std::string::npos) << escaped.out;
+  EXPECT_NE(escaped.out.find("red\\x1B[31m"), std::string::npos) << escaped.out;
 }
 
 }  // namespace
