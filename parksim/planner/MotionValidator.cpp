@@ -5,6 +5,7 @@
 
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
+#include "parksim/core/Scenario.h"
 
 namespace parksim {
 
@@ -12,7 +13,10 @@ MotionValidator::MotionValidator(const FootprintChecker& checker, const RobotDef
                                  const LotBounds& lot, const MotionValidatorDef& def)
     : checker_(checker), robot_(robot), def_(def) {
   if (!(def.resolution_m > 0.0)) throw Error("motion validator: resolution_m must be positive");
-  const double h = 0.5 * def.resolution_m;
+  // The placement rule's bounds (core's placementProblem), rounding forgiveness included: a goal
+  // the world reader accepted 1e-10 m inside the margin was refused here as "within half the
+  // motion-check resolution of the lot edge".
+  const double h = 0.5 * def.resolution_m - kPlacementTolerance_m;
   inner_ = {lot.x_min_m + h, lot.y_min_m + h, lot.x_max_m - h, lot.y_max_m - h};
   // Points of the grown footprint lie within this distance of the reference point.
   radius_ = footprintRadius(robot) + std::sqrt(2.0) * 0.5 * def.resolution_m;

@@ -48,7 +48,7 @@ class MotionValidator {
  private:
   const FootprintChecker& checker_;
   RobotDef robot_;
-  LotBounds inner_;  // lot bounds shrunk by resolution_m / 2
+  LotBounds inner_;  // lot bounds shrunk by resolution_m / 2 (less kPlacementTolerance_m)
   MotionValidatorDef def_;
   double radius_;  // farthest footprint point from the reference point, m
   mutable long queries_ = 0;

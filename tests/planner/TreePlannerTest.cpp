@@ -336,6 +336,18 @@ TEST(TreePlanner, StartAndGoalFollowThePlacementRule) {
   EXPECT_EQ(r.status, PlanStatus::kInvalidGoal);
   EXPECT_NE(r.message.find("closer than the 0.5 mm margin to the lot edge"), std::string::npos)
       << r.message;
+  // Rounding within 1 nm of the margin is forgiven by the tree search's own checks too: such a
+  // start passed the reader and was refused as "within half the motion-check resolution".
+  s = testing::studyLot();
+  s.start.x = s.lot.x_min_m + kPlacementMargin_m - 1e-10;
+  ASSERT_FALSE(placementProblem(s, s.start).has_value());
+  for (const PlannerKind kind : {PlannerKind::kRrtGoalConnect, PlannerKind::kHybridAStar}) {
+    PlanSetup setup;
+    setup.planner.kind = kind;
+    setup.planner.max_iterations = 50;
+    r = planScenario(s, checker, setup);
+    EXPECT_NE(r.status, PlanStatus::kInvalidStart) << toString(kind) << ": " << r.message;
+  }
 }
 
 TEST(TreePlanner, AStartOnTheLotEdgeIsNotReportedAsACollision) {
