@@ -13,6 +13,7 @@
 
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/InputFile.h"
 
 namespace parksim {
 namespace {
@@ -21,12 +22,12 @@ double nowSeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+// The table's text, or "" when there is none yet. Only a regular file within the limit is read:
+// a results.jsonl that is /dev/zero (a symlink) grew to 2 GB, a FIFO hung.
 std::string readAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return {};
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return {};
+  return readInputFile(path, kMaxResultsTableBytes, "results table");
 }
 
 [[noreturn]] void failErrno(const std::string& path, const char* what) {
@@ -180,13 +181,7 @@ std::string csvRow(const nlohmann::ordered_json& row) {
 }
 
 std::vector<nlohmann::ordered_json> readResultsJsonl(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) return {};
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  const std::string text = readAll(path);
   std::size_t good = 0;
   return parseRows(path, text.substr(0, wholeLinesLength(text)), good);
 }

@@ -10,6 +10,7 @@
 // parse) is cut off, and results.csv is rebuilt from results.jsonl when the two disagree
 // (results.jsonl is written first and is the reference).
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <string_view>
@@ -36,6 +37,10 @@ nlohmann::ordered_json withoutTiming(const nlohmann::ordered_json& row);
 std::string csvHeader();
 /// One CSV line for `row` (RFC 4180 quoting; booleans true/false; lists joined by '|').
 std::string csvRow(const nlohmann::ordered_json& row);
+
+/// Largest results.jsonl or results.csv read (docs/limits.md): a row is ~2 KB, so ~250,000
+/// episodes; a parsed row takes a few times its text in memory.
+inline constexpr std::uintmax_t kMaxResultsTableBytes = 512u << 20;
 
 /// Every whole row of a results.jsonl; a torn or unparsable last line is skipped. Throws Error
 /// naming the file and line for a bad line before the last, or when the file cannot be read.

@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -252,6 +253,27 @@ TEST(ResultsTableFile, RejectsATableWithOtherColumns) {
   const std::string dir = scratchDir();
   testing::writeText(dir + "/results.csv", "episode_id,something_else\n");
   EXPECT_THROW(ResultsTable table(dir), Error);
+}
+
+// A results.jsonl that is a device or a FIFO was read until 2 GB (report, merge; sweep then
+// exited 3) or forever (hostile pass); it is refused like any input file that is not regular.
+TEST(ResultsTableFile, RefusesADeviceOrFifoAsTheTable) {
+  const std::string dir = scratchDir();
+  std::filesystem::create_symlink("/dev/zero", dir + "/results.jsonl");
+  const auto message = [](const auto& f) {
+    try {
+      f();
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string expected = dir + "/results.jsonl: is not a regular file";
+  EXPECT_EQ(message([&] { readResultsJsonl(dir + "/results.jsonl"); }).rfind(expected, 0), 0u);
+  EXPECT_EQ(message([&] { ResultsTable table(dir); }).rfind(expected, 0), 0u);
+  std::filesystem::remove(dir + "/results.jsonl");
+  ASSERT_EQ(::mkfifo((dir + "/results.jsonl").c_str(), 0600), 0);
+  EXPECT_EQ(message([&] { readResultsJsonl(dir + "/results.jsonl"); }).rfind(expected, 0), 0u);
 }
 
 }  // namespace
