@@ -7,6 +7,8 @@
 
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/InputFile.h"
+#include "parksim/sweep/ResultsTable.h"
 
 namespace parksim {
 
@@ -25,17 +27,24 @@ bool readSweepManifest(const std::string& dir, SweepManifest& m) {
   const std::string path = dir + "/sweep.json";
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) return false;
-  std::ifstream in(path);
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  // A regular file within the results table's limit: a FIFO blocked the open, and keys of the
+  // wrong type ended in a JSON type error (exit 3).
+  const nlohmann::json j = nlohmann::json::parse(
+      readInputFile(path, kMaxResultsTableBytes, "sweep manifest"), nullptr, false);
+  const Error not_manifest(path + ": not a sweep manifest (format parksim-sweep-manifest/1)");
   if (!j.is_object() || j.value("format", "") != "parksim-sweep-manifest/1" ||
       !j.contains("episode_ids") || !j["episode_ids"].is_array()) {
-    throw Error(path + ": not a sweep manifest (format parksim-sweep-manifest/1)");
+    throw not_manifest;
   }
-  m.spec_path = j.value("spec", "");
-  m.name = j.value("name", "");
-  const std::string shard = j.value("shard", "0/1");
-  m.shard = parseShard(shard);
-  m.episode_ids = j["episode_ids"].get<std::vector<std::string>>();
+  try {
+    m.spec_path = j.value("spec", "");
+    m.name = j.value("name", "");
+    const std::string shard = j.value("shard", "0/1");
+    m.shard = parseShard(shard);
+    m.episode_ids = j["episode_ids"].get<std::vector<std::string>>();
+  } catch (const nlohmann::json::exception&) {
+    throw not_manifest;
+  }
   return true;
 }
 

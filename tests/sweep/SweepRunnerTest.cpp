@@ -274,6 +274,19 @@ TEST(ResultsTableFile, RefusesADeviceOrFifoAsTheTable) {
   std::filesystem::remove(dir + "/results.jsonl");
   ASSERT_EQ(::mkfifo((dir + "/results.jsonl").c_str(), 0600), 0);
   EXPECT_EQ(message([&] { readResultsJsonl(dir + "/results.jsonl"); }).rfind(expected, 0), 0u);
+  // sweep.json likewise (a FIFO blocked its open); a key of the wrong type was a JSON type
+  // error, exit 3.
+  SweepManifest m;
+  ASSERT_EQ(::mkfifo((dir + "/sweep.json").c_str(), 0600), 0);
+  EXPECT_EQ(
+      message([&] { readSweepManifest(dir, m); }).rfind(dir + "/sweep.json: is not a regular", 0),
+      0u);
+  std::filesystem::remove(dir + "/sweep.json");
+  testing::writeText(
+      dir + "/sweep.json",
+      "{\"format\": \"parksim-sweep-manifest/1\", \"name\": 5, \"episode_ids\": []}");
+  EXPECT_EQ(message([&] { readSweepManifest(dir, m); }),
+            dir + "/sweep.json: not a sweep manifest (format parksim-sweep-manifest/1)");
 }
 
 }  // namespace
