@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -66,6 +67,49 @@ std::vector<std::string> lines(const std::string& text) {
 
 // Rows of a jsonl text that ends with a newline. Sets `good_length` to the bytes of the rows
 // kept: a last line that does not parse is a torn write and is dropped.
+// What is wrong with the type of a key parksim reads back from a row (sweep, merge, report),
+// or nothing. A hand-edited or foreign row ("met_tolerance": "yes") was a JSON type error,
+// exit 3.
+std::optional<std::string> badKeyType(const nlohmann::ordered_json& row) {
+  using Json = nlohmann::ordered_json;
+  const auto check = [&row](std::initializer_list<const char*> keys, bool (Json::*is)() const,
+                            const char* what) -> std::optional<std::string> {
+    for (const char* key : keys) {
+      const auto it = row.find(key);
+      if (it != row.end() && !it->is_null() && !((*it).*is)()) {
+        const std::string got = it->dump();
+        return "key '" + std::string(key) + "' must be " + what + ", got " + got.substr(0, 40) +
+               (got.size() > 40 ? "..." : "");
+      }
+    }
+    return std::nullopt;
+  };
+  if (auto p = check({"world", "world_file", "planner", "steering", "tracking", "timing", "realism",
+                      "status", "failure", "plan_status", "host"},
+                     &Json::is_string, "a string")) {
+    return p;
+  }
+  if (auto p = check({"met_tolerance", "smooth", "plan_solved", "goal_reached"}, &Json::is_boolean,
+                     "true or false")) {
+    return p;
+  }
+  if (auto p = check({"seed", "noise_seed", "max_iterations", "plan_iterations", "plan_tree_size",
+                      "plan_goal_tree_size", "plan_cusps", "plan_collision_queries"},
+                     &Json::is_number, "a number")) {
+    return p;
+  }
+  if (const auto it = row.find("plan_cost_history"); it != row.end() && !it->is_null()) {
+    bool ok = it->is_array();
+    for (const Json& sample : ok ? *it : Json::array()) {
+      ok = ok && sample.is_array() && sample.size() == 3 && sample[0].is_number() &&
+           sample[1].is_number() && sample[2].is_number();
+    }
+    if (!ok)
+      return std::string("key 'plan_cost_history' must be a list of [time_s, iteration, cost_m]");
+  }
+  return std::nullopt;
+}
+
 std::vector<nlohmann::ordered_json> parseRows(const std::string& path, const std::string& text,
                                               std::size_t& good_length) {
   std::vector<nlohmann::ordered_json> rows;
@@ -77,6 +121,9 @@ std::vector<nlohmann::ordered_json> parseRows(const std::string& path, const std
     if (!ok) {
       if (i + 1 == all.size()) break;
       throw Error(path + ":" + std::to_string(i + 1) + ": not a results row");
+    }
+    if (const std::optional<std::string> problem = badKeyType(row)) {
+      throw Error(path + ":" + std::to_string(i + 1) + ": " + *problem);
     }
     rows.push_back(std::move(row));
     good_length += all[i].size() + 1;

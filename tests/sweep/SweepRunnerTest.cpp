@@ -255,6 +255,24 @@ TEST(ResultsTableFile, RejectsATableWithOtherColumns) {
   EXPECT_THROW(ResultsTable table(dir), Error);
 }
 
+// A row with a key of the wrong type (a hand edit, another tool) was a JSON type error in
+// sweep, merge and report, exit 3 (hostile pass); it is refused naming the line and the key.
+TEST(ResultsTableFile, RefusesRowsWithKeysOfTheWrongType) {
+  const std::string dir = scratchDir();
+  testing::writeText(dir + "/results.jsonl",
+                     "{\"episode_id\": \"a\", \"met_tolerance\": true}\n"
+                     "{\"episode_id\": \"b\", \"met_tolerance\": \"yes\"}\n"
+                     "{\"episode_id\": \"c\", \"met_tolerance\": false}\n");
+  try {
+    readResultsJsonl(dir + "/results.jsonl");
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              dir + "/results.jsonl:2: key 'met_tolerance' must be true or false, got \"yes\"");
+  }
+  EXPECT_THROW(ResultsTable table(dir), Error);
+}
+
 // A results.jsonl that is a device or a FIFO was read until 2 GB (report, merge; sweep then
 // exited 3) or forever (hostile pass); it is refused like any input file that is not regular.
 TEST(ResultsTableFile, RefusesADeviceOrFifoAsTheTable) {
