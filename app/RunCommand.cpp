@@ -14,6 +14,7 @@
 
 #include "app/Command.h"
 #include "app/FigureInputs.h"
+#include "app/GlBackendOption.h"
 #include "app/OptionChecks.h"
 #include "app/OutputDir.h"
 #include "app/Overrides.h"
@@ -179,6 +180,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     double max_tracking_error_mm = -1.0;
     double max_goal_error_mm = -1.0;
     double max_goal_heading_error_deg = -1.0;
+    GlBackendOption gl_backend;
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
@@ -203,6 +205,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
   sub.add_option("--view", opt->view, "top, 3d or both (side by side)")
       ->capture_default_str()
       ->check(CLI::IsMember({"top", "3d", "both"}));
+  opt->gl_backend.addTo(sub);
   sub.add_option("--realism", opt->realism,
                  "robot model: ideal (default; idealised motors, true pose at 240 Hz), lab "
                  "(motors, mocap at 100 Hz with 60 ms latency, fused estimate), odometry "
@@ -262,6 +265,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       frame_def.view = frameViewFromString(opt->view);
       frame_def.video = opt->video;
       frame_def.gif = opt->gif;
+      frame_def.context = opt->gl_backend.context();
     }
     // Every input is read and checked before DIR is touched: bad input leaves an earlier run's
     // outputs as they were. The outputs are written into a staging directory that replaces DIR
@@ -344,6 +348,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     for (const auto& [key, value] : provenance.items()) {
       metrics["provenance." + key] = value;
     }
+    if (recorder) metrics["provenance.gl"] = recorder->glDescription();
     metrics["world"] = scenario.source_path;
     metrics["scenario"] = scenario.name;
     metrics["tolerance.max_pos_err_m"] = tolerance.max_pos_err_m;
@@ -380,8 +385,10 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       figures.steering = steeringExample(scenario);
       figures.plans.push_back(std::move(plan_figure));
       figures.tracking = trackingSeries(episode.rows);
+      FigureDef figure_def;
+      figure_def.context = frame_def.context;
       const std::vector<std::string> written =
-          writeFigures(scenario, figures, FigureDef{}, dir + "/figures");
+          writeFigures(scenario, figures, figure_def, dir + "/figures");
       std::printf("%zu figures: %s/figures/\n", written.size(), shown_dir.c_str());
     }
     out.commit();

@@ -34,6 +34,17 @@ bool contextBackendBuilt(ContextBackend backend) {
 #endif
 }
 
+ContextBackend effectiveContextBackend(ContextBackend requested) {
+  if (requested != ContextBackend::kAuto) return requested;
+  const char* env = std::getenv("PARKSIM_GL_BACKEND");
+  if (env == nullptr || *env == '\0') return requested;
+  try {
+    return contextBackendFromString(env);
+  } catch (const Error& e) {
+    throw Error(std::string("PARKSIM_GL_BACKEND: ") + e.what());
+  }
+}
+
 OffscreenContext::OffscreenContext() = default;
 OffscreenContext::~OffscreenContext() = default;
 
@@ -78,18 +89,7 @@ std::unique_ptr<OffscreenContext> create(ContextBackend backend, const ContextDe
 }  // namespace
 
 std::unique_ptr<OffscreenContext> createOffscreenContext(const ContextDef& def) {
-  ContextBackend backend = def.backend;
-  if (backend == ContextBackend::kAuto) {
-    const char* env = std::getenv("PARKSIM_GL_BACKEND");
-    if (env != nullptr && *env != '\0') {
-      try {
-        backend = contextBackendFromString(env);
-      } catch (const Error& e) {
-        throw Error(std::string("PARKSIM_GL_BACKEND: ") + e.what());
-      }
-    }
-  }
-  return create(backend, def);
+  return create(effectiveContextBackend(def.backend), def);
 }
 
 }  // namespace parksim

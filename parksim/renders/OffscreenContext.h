@@ -29,6 +29,10 @@ const char* toString(ContextBackend backend);
 ContextBackend contextBackendFromString(const std::string& name);
 /// Whether this build has the backend (OSMesa is optional; EGL and auto always are).
 bool contextBackendBuilt(ContextBackend backend);
+/// The backend createOffscreenContext takes for `requested`: `requested` itself unless it is
+/// kAuto, else PARKSIM_GL_BACKEND's (which may be kAuto again: EGL, then OSMesa). Throws Error
+/// naming the variable when its value is not a backend name.
+ContextBackend effectiveContextBackend(ContextBackend requested);
 
 struct ContextDef {
   ContextBackend backend = ContextBackend::kAuto;

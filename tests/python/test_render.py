@@ -71,3 +71,12 @@ def test_frame_recorder_writes_frames(tmp_path, head_in, head_in_plan):
     result = rec.finish()
     assert result["frames"] == 5
     assert sorted(p.name for p in (tmp_path / "frames").iterdir())[0] == "000000.png"
+
+
+def test_frames_choose_their_gl_backend():
+    d = parksim.FrameDef()
+    assert d.gl_backend == "auto"  # PARKSIM_GL_BACKEND, else egl, then osmesa
+    d.gl_backend = "egl"
+    assert d.gl_backend == "egl"
+    with pytest.raises(parksim.Error, match="unknown OpenGL backend 'vulkan'"):
+        d.gl_backend = "vulkan"
