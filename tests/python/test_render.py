@@ -73,10 +73,14 @@ def test_frame_recorder_writes_frames(tmp_path, head_in, head_in_plan):
     assert sorted(p.name for p in (tmp_path / "frames").iterdir())[0] == "000000.png"
 
 
-def test_frames_choose_their_gl_backend():
+def test_frames_choose_their_gl_backend(tmp_path, head_in):
     d = parksim.FrameDef()
     assert d.gl_backend == "auto"  # PARKSIM_GL_BACKEND, else egl, then osmesa
     d.gl_backend = "egl"
     assert d.gl_backend == "egl"
     with pytest.raises(parksim.Error, match="unknown OpenGL backend 'vulkan'"):
         d.gl_backend = "vulkan"
+    rec = parksim.FrameRecorder(head_in, out_dir=str(tmp_path), width_px=64, height_px=48,
+                                gl_backend="egl")
+    rec.add_frame(0.0, (0.3, 0.3, 0.0))
+    assert rec.finish()["frames"] == 1
