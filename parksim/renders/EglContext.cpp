@@ -40,11 +40,11 @@ const char* eglErrorName(EGLint code) {
 }
 
 /// "EGL: WHAT (EGL_BAD_MATCH, 0x3009)", with the calling thread's last EGL error.
-Error eglFailure(const std::string& what) {
+EnvironmentError eglFailure(const std::string& what) {
   const EGLint code = eglGetError();
   char hex[16];
   std::snprintf(hex, sizeof hex, "0x%04x", static_cast<unsigned>(code));
-  return Error("EGL: " + what + " (" + eglErrorName(code) + ", " + hex + ")");
+  return EnvironmentError("EGL: " + what + " (" + eglErrorName(code) + ", " + hex + ")");
 }
 
 /// Whether the space-separated extension list `list` (may be null) holds `name`.
@@ -95,9 +95,10 @@ Display openDisplay() {
         eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (d != EGL_NO_DISPLAY) return {d, "surfaceless"};
   }
-  throw Error(std::string("EGL: neither Mesa's software device nor its surfaceless platform is "
-                          "available (client extensions: ") +
-              (client != nullptr ? client : "none") + ")");
+  throw EnvironmentError(
+      std::string("EGL: neither Mesa's software device nor its surfaceless platform is "
+                  "available (client extensions: ") +
+      (client != nullptr && *client != '\0' ? client : "none") + ")");
 }
 
 class EglContext final : public OffscreenContext {
@@ -113,13 +114,13 @@ class EglContext final : public OffscreenContext {
     EGLint minor = 0;
     if (!eglInitialize(display_, &major, &minor)) throw eglFailure("cannot initialize the display");
     if (major < 1 || (major == 1 && minor < 5)) {
-      throw Error("EGL: version " + std::to_string(major) + "." + std::to_string(minor) +
-                  ", 1.5 is needed");
+      throw EnvironmentError("EGL: version " + std::to_string(major) + "." + std::to_string(minor) +
+                             ", 1.5 is needed");
     }
     const char* extensions = eglQueryString(display_, EGL_EXTENSIONS);
     for (const char* needed : {"EGL_KHR_surfaceless_context", "EGL_KHR_no_config_context"}) {
       if (!hasExtension(extensions, needed)) {
-        throw Error(std::string("EGL: the display lacks ") + needed);
+        throw EnvironmentError(std::string("EGL: the display lacks ") + needed);
       }
     }
     if (!eglBindAPI(EGL_OPENGL_API)) throw eglFailure("no desktop OpenGL");

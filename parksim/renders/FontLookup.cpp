@@ -28,7 +28,7 @@ std::string findFontFile(const std::string& family) {
   // A configuration of our own rather than fontconfig's process-wide one: nothing global is
   // initialized, and all of it is released here.
   const std::unique_ptr<FcConfig, ConfigDeleter> config(FcInitLoadConfigAndFonts());
-  if (!config) throw Error(where + ": fontconfig cannot load its configuration");
+  if (!config) throw EnvironmentError(where + ": fontconfig cannot load its configuration");
   const PatternPtr pattern(FcNameParse(fc(family.c_str())));
   FcChar8* wanted = nullptr;
   if (!pattern || FcPatternGetString(pattern.get(), FC_FAMILY, 0, &wanted) != FcResultMatch) {
@@ -40,7 +40,7 @@ std::string findFontFile(const std::string& family) {
   FcDefaultSubstitute(pattern.get());
   FcResult result = FcResultNoMatch;
   const PatternPtr match(FcFontMatch(config.get(), pattern.get(), &result));
-  if (!match) throw Error(where + ": fontconfig finds no fonts at all");
+  if (!match) throw EnvironmentError(where + ": fontconfig finds no fonts at all");
   FcChar8* file = nullptr;
   if (FcPatternGetString(match.get(), FC_FILE, 0, &file) != FcResultMatch) {
     throw Error(where + ": fontconfig's match has no file");
@@ -52,8 +52,9 @@ std::string findFontFile(const std::string& family) {
   }
   const std::string nearest =
       FcPatternGetString(match.get(), FC_FAMILY, 0, &got) == FcResultMatch ? str(got) : "?";
-  throw Error(where + ": not installed (fontconfig's nearest is '" + nearest + "', " + str(file) +
-              "); the default font comes with the Debian package fonts-dejavu-core");
+  throw EnvironmentError(where + ": not installed (fontconfig's nearest is '" + nearest + "', " +
+                         str(file) +
+                         "); the default font comes with the Debian package fonts-dejavu-core");
 }
 
 }  // namespace parksim

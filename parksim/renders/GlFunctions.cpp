@@ -8,11 +8,11 @@ GlFunctions loadGlFunctions(GlProcLoader load, const std::string& backend) {
   GlFunctions gl;
   // Function pointer to function pointer: reinterpret_cast is the defined conversion, and the
   // backend's loader promises the type glcorearb.h gives.
-#define PARKSIM_GL_LOAD(name, NAME)                                        \
-  gl.name = reinterpret_cast<PFNGL##NAME##PROC>(load("gl" #name));         \
-  if (gl.name == nullptr) {                                                \
-    throw Error(backend + ": the OpenGL library does not provide gl" #name \
-                          " (the renderer needs OpenGL 3.3 core)");        \
+#define PARKSIM_GL_LOAD(name, NAME)                                                   \
+  gl.name = reinterpret_cast<PFNGL##NAME##PROC>(load("gl" #name));                    \
+  if (gl.name == nullptr) {                                                           \
+    throw EnvironmentError(backend + ": the OpenGL library does not provide gl" #name \
+                                     " (the renderer needs OpenGL 3.3 core)");        \
   }
   PARKSIM_GL_FUNCTIONS(PARKSIM_GL_LOAD)
 #undef PARKSIM_GL_LOAD

@@ -81,7 +81,8 @@ std::unique_ptr<OffscreenContext> create(ContextBackend backend, const ContextDe
     try {
       return createOsMesa(def);
     } catch (const Error& osmesa) {
-      throw Error(std::string("no OpenGL context: ") + egl.what() + "; " + osmesa.what());
+      throw EnvironmentError(std::string("no OpenGL context: ") + egl.what() + "; " +
+                             osmesa.what());
     }
   }
 }

@@ -31,8 +31,8 @@ class OsMesaContext final : public OffscreenContext {
                                          0};
     ctx_ = OSMesaCreateContextAttribs(attribs.data(), nullptr);
     if (ctx_ == nullptr) {
-      throw Error("OSMesa: cannot create an OpenGL " + std::to_string(def.gl_major) + "." +
-                  std::to_string(def.gl_minor) + " core context");
+      throw EnvironmentError("OSMesa: cannot create an OpenGL " + std::to_string(def.gl_major) +
+                             "." + std::to_string(def.gl_minor) + " core context");
     }
     try {
       makeCurrent();
@@ -59,7 +59,7 @@ class OsMesaContext final : public OffscreenContext {
     // Drawing goes to the caller's framebuffer objects; the window-system buffer OSMesa
     // insists on is a single pixel.
     if (!OSMesaMakeCurrent(ctx_, pixel_.data(), GL_UNSIGNED_BYTE, 1, 1)) {
-      throw Error("OSMesa: cannot make the context current");
+      throw EnvironmentError("OSMesa: cannot make the context current");
     }
   }
 

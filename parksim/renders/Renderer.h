@@ -48,7 +48,7 @@ class Renderer {
   /// Creates the context (createOffscreenContext(def.context)), framebuffers and shaders.
   /// Throws Error when any of them fails or the font cannot be found or read.
   explicit Renderer(const RenderDef& def = {});
-  /// Uses a context made elsewhere (another backend, or a test's).
+  /// Uses a context made beforehand by createOffscreenContext (its backend is then known first).
   Renderer(const RenderDef& def, std::unique_ptr<OffscreenContext> context);
   ~Renderer();
 

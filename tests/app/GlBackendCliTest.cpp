@@ -20,27 +20,27 @@ using testing::CliRun;
 using testing::runParksim;
 using testing::slurp;
 
-// Sets (or unsets) PARKSIM_GL_BACKEND for the commands one test runs.
-class BackendEnv {
+// Sets (or unsets) an environment variable for the commands one test runs.
+class EnvVar {
  public:
-  explicit BackendEnv(const char* value) {
-    if (const char* old = std::getenv(kName)) old_ = old;
+  EnvVar(const char* name, const char* value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
     set(value);
   }
-  ~BackendEnv() { set(old_ ? old_->c_str() : nullptr); }
-  BackendEnv(const BackendEnv&) = delete;
-  BackendEnv& operator=(const BackendEnv&) = delete;
+  ~EnvVar() { set(old_ ? old_->c_str() : nullptr); }
+  EnvVar(const EnvVar&) = delete;
+  EnvVar& operator=(const EnvVar&) = delete;
 
-  static void set(const char* value) {
+  void set(const char* value) const {
     if (value != nullptr) {
-      ::setenv(kName, value, 1);
+      ::setenv(name_.c_str(), value, 1);
     } else {
-      ::unsetenv(kName);
+      ::unsetenv(name_.c_str());
     }
   }
 
  private:
-  static constexpr const char* kName = "PARKSIM_GL_BACKEND";
+  std::string name_;
   std::optional<std::string> old_;
 };
 
@@ -70,7 +70,7 @@ class GlBackendCli : public ::testing::Test {
 };
 
 TEST_F(GlBackendCli, UnknownBackendIsRefusedWithOneLine) {
-  const BackendEnv env(nullptr);
+  const EnvVar env("PARKSIM_GL_BACKEND", nullptr);
   const fs::path out = dir_ / "never";
   for (const char* cmd : {"render ", "run "}) {
     const CliRun r = runParksim(std::string(cmd) + world("head_in.yaml") +
@@ -79,7 +79,7 @@ TEST_F(GlBackendCli, UnknownBackendIsRefusedWithOneLine) {
     EXPECT_EQ(r.out.substr(0, r.out.find('\n')),
               "parksim: error: --gl-backend: vulkan not in {auto,egl,osmesa}");
   }
-  BackendEnv::set("vulkan");
+  env.set("vulkan");
   const CliRun r = runParksim("render " + world("head_in.yaml") + " --out " + out.string());
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_EQ(r.out,
@@ -90,11 +90,11 @@ TEST_F(GlBackendCli, UnknownBackendIsRefusedWithOneLine) {
 
 TEST_F(GlBackendCli, OptionBeatsEnvironmentAndBothBackendsFilmTheSameBytes) {
   // Without either: EGL on Mesa's software device.
-  const BackendEnv env(nullptr);
+  const EnvVar env("PARKSIM_GL_BACKEND", nullptr);
   ASSERT_EQ(film("auto", "").exit_code, 0);
   EXPECT_EQ(glOf("auto").rfind("EGL (device: software): ", 0), 0u) << glOf("auto");
   // The environment chooses when the option does not, and the option wins over it.
-  BackendEnv::set("osmesa");
+  env.set("osmesa");
   const CliRun osmesa = film("osmesa", "");
   if (osmesa.exit_code == 2 && osmesa.out.find("built without OSMesa") != std::string::npos) {
     GTEST_SKIP() << "built without OSMesa";
@@ -113,6 +113,29 @@ TEST_F(GlBackendCli, OptionBeatsEnvironmentAndBothBackendsFilmTheSameBytes) {
     }
   }
   EXPECT_GT(files, 20);
+}
+
+// glvnd's libEGL without a vendor library: EGL cannot make a context.
+TEST_F(GlBackendCli, WithoutEglAutoFallsBackToOsMesaAndEglAloneExitsWithThree) {
+  const EnvVar env("PARKSIM_GL_BACKEND", nullptr);
+  const EnvVar no_vendor("__EGL_VENDOR_LIBRARY_FILENAMES", "/nonexistent/parksim_egl.json");
+  const fs::path never = dir_ / "never";
+  const CliRun egl =
+      runParksim("render " + world("head_in.yaml") + " --gl-backend egl --out " + never.string());
+  if (egl.exit_code == 0) GTEST_SKIP() << "libEGL is not glvnd's: the variable does not remove EGL";
+  EXPECT_EQ(egl.exit_code, 3) << egl.out;  // the machine's fault, not the input's
+  EXPECT_EQ(egl.out.rfind("parksim: error: EGL: ", 0), 0u) << egl.out;
+  EXPECT_EQ(egl.out.find('\n'), egl.out.size() - 1) << egl.out;  // one line
+  EXPECT_FALSE(fs::exists(never));
+
+  const CliRun fallback = film("auto", "");
+  if (fallback.out.find("built without OSMesa") != std::string::npos) {
+    EXPECT_EQ(fallback.exit_code, 3) << fallback.out;
+    EXPECT_NE(fallback.out.find("no OpenGL context: EGL: "), std::string::npos) << fallback.out;
+    return;
+  }
+  ASSERT_EQ(fallback.exit_code, 0) << fallback.out;
+  EXPECT_EQ(glOf("auto").rfind("OSMesa: ", 0), 0u) << glOf("auto");
 }
 
 }  // namespace
