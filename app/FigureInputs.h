@@ -5,12 +5,19 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "parksim/core/Scenario.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/renders/Figures.h"
 #include "parksim/sim/Episode.h"
 
 namespace parksim::app {
+
+/// Adds `--figures none|all|LIST` to a figure-making command, storing the text in `text` (parse
+/// it with FigureSelection::parse). An unknown name is a usage error (exit 2) whose one line
+/// lists the valid names. `default_help` says what an absent option means.
+CLI::Option* addFiguresOption(CLI::App& sub, std::string& text, const std::string& default_help);
 
 /// One line saying which plan a figure shows.
 std::string planCaption(const Scenario& scenario, const PlanSetup& setup, const PlanResult& result);

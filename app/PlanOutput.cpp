@@ -162,6 +162,17 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
   return j;
 }
 
+nlohmann::json trajectorySummary(const Scenario& scenario, const Trajectory& plan) {
+  const Pose2& end = plan.points.back().pose;
+  return {
+      {"path_length_m", plan.pathLength(scenario.robot)},
+      {"duration_s", plan.duration()},
+      {"cusps", plan.cusps(scenario.robot)},
+      {"final_pos_err_m", positionDistance(end, scenario.goal.pose)},
+      {"final_heading_err_deg", radToDeg(headingDistance(end, scenario.goal.pose))},
+  };
+}
+
 std::string jsonText(const nlohmann::json& j) {
   return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }

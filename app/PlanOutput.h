@@ -48,6 +48,10 @@ int parseIterationBudget(const std::string& text, PlannerKind kind, const LotBou
 nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
                            const PlanResult& result);
 
+/// The statistics a trajectory carries by itself, for a plan the planner did not make (a plan
+/// file, a Python array): path_length_m, duration_s, cusps, final pose error.
+nlohmann::json trajectorySummary(const Scenario& scenario, const Trajectory& plan);
+
 /// `j` as indented text with a final newline. Strings that are not UTF-8 (names and paths
 /// from input files) are written with U+FFFD in place of their bad bytes instead of failing.
 std::string jsonText(const nlohmann::json& j);

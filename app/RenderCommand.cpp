@@ -32,6 +32,7 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     double cspace_heading_deg = -60.0;
     int slices = 36;
     std::vector<double> steer_target;
+    std::string figures = "all";
     PlanCliOptions plan;
     WorldOverrideOptions world_overrides;
     GlBackendOption gl_backend;
@@ -64,6 +65,7 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
       ->expected(3)
       ->check(realIn(-1e4, 1e4));
   opt->gl_backend.addTo(sub);
+  addFiguresOption(sub, opt->figures, "default: all")->capture_default_str();
   CLI::App* app = &sub;
 
   return [opt, app](const OutputOptions&) -> int {
@@ -75,6 +77,7 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     def.cspace_heading_rad = degToRad(opt->cspace_heading_deg);
     def.cspace_slices = opt->slices;
     def.context = opt->gl_backend.context();
+    def.figures = FigureSelection::parse(opt->figures);
 
     FigureInputs inputs;
     // Without --planner both of the study's planners are drawn (its Figs. 7 and 8).

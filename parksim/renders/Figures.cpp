@@ -12,6 +12,7 @@
 #include "parksim/renders/PngEncoder.h"
 #include "parksim/renders/Renderer.h"
 #include "parksim/renders/SceneBuilder.h"
+#include "parksim/renders/SceneClip.h"
 
 namespace parksim {
 
@@ -73,10 +74,38 @@ Extent2 lotExtent(const Scenario& s) {
   return {s.lot.x_min_m, s.lot.y_min_m, s.lot.x_max_m, s.lot.y_max_m};
 }
 
+// A figure of the lot shows the lot: what lies beyond it (obstacles, the parts of C-space
+// slices and footprints past its edge) is clipped away before the axes go into the margin, and
+// the frame is the lot with the usual ground margin (as buildLotScene frames a lot with nothing
+// outside, so such figures are unchanged).
+void clipToLot(Scene& scene, const Scenario& scenario, const SceneStyle& style) {
+  const Extent2 lot = lotExtent(scenario);
+  clipToArea(scene, lot);
+  const double m = style.margin_m;
+  scene.extent = {lot.x_min - m, lot.y_min - m, lot.x_max + m, lot.y_max + m};
+}
+
 void addLabel(Scene& scene, const std::string& text, const Eigen::Vector2d& at, Rgba8 color,
               const SceneStyle& style, HAlign h = HAlign::kLeft, VAlign v = VAlign::kBottom) {
   scene.texts.push_back({text, Eigen::Vector3d(at.x(), at.y(), 0.0), Eigen::Vector2d::Zero(),
                          0.85f * style.text_px, color, style.text_background, h, v});
+}
+
+// A label at `offset` from a marker, moved to the marker's other side along x or y where it
+// would leave the lot (clipping would drop it: a goal by the lot's top edge keeps its label).
+void addMarkerLabel(Scene& scene, const std::string& text, const Pose2& marker,
+                    const Eigen::Vector2d& offset, const Extent2& lot, Rgba8 color,
+                    const SceneStyle& style, HAlign h, VAlign v) {
+  Eigen::Vector2d at(marker.x + offset.x(), marker.y + offset.y());
+  if (at.x() < lot.x_min || at.x() > lot.x_max) {
+    at.x() = marker.x - offset.x();
+    h = h == HAlign::kLeft ? HAlign::kRight : h == HAlign::kRight ? HAlign::kLeft : h;
+  }
+  if (at.y() < lot.y_min || at.y() > lot.y_max) {
+    at.y() = marker.y - offset.y();
+    v = v == VAlign::kTop ? VAlign::kBottom : v == VAlign::kBottom ? VAlign::kTop : v;
+  }
+  addLabel(scene, text, at, color, style, h, v);
 }
 
 // Outlines along a path: at the start, whenever the robot has moved or turned enough since the
@@ -105,10 +134,11 @@ Rgba8 darker(Rgba8 c, double t) { return mix(c, rgb(0, 0, 0), t); }
 Scene buildLotMapFigure(const Scenario& scenario, const SceneStyle& style) {
   Scene scene = buildLotScene(scenario, style);
   const double a = style.arrow_length_m;
-  addLabel(scene, "start", {scenario.start.x + 0.3 * a, scenario.start.y - 0.3 * a}, style.start,
-           style, HAlign::kLeft, VAlign::kTop);
-  addLabel(scene, "goal", {scenario.goal.pose.x + 0.5 * a, scenario.goal.pose.y + 0.6 * a},
-           style.goal, style);
+  addMarkerLabel(scene, "start", scenario.start, {0.3 * a, -0.3 * a}, lotExtent(scenario),
+                 style.start, style, HAlign::kLeft, VAlign::kTop);
+  addMarkerLabel(scene, "goal", scenario.goal.pose, {0.5 * a, 0.6 * a}, lotExtent(scenario),
+                 style.goal, style, HAlign::kLeft, VAlign::kBottom);
+  clipToLot(scene, scenario, style);
   addAxesAndTitle(scene, lotExtent(scenario),
                   "Lot map: " + scenario.name + " (Fig. 3): start red, goal green", style);
   return scene;
@@ -186,6 +216,7 @@ Scene buildSteeringFigure(const Scenario& scenario, const SteeringExample& ex,
   addLabel(scene, "dashed: to goal (" + formatFixed(ex.to_goal.duration(), 1) + " s)",
            {data.x_min + 0.03 * span, data.y_max - 0.09 * span}, style.executed, style,
            HAlign::kLeft, VAlign::kTop);
+  clipToArea(scene, data);  // a safety net: the extent is made to hold every path and marker
   addAxesAndTitle(scene, data, "Move-to-pose steering in both modes (Fig. 2)", style);
   return scene;
 }
@@ -220,6 +251,8 @@ Scene buildCSpaceSliceFigure(const Scenario& scenario, double theta_rad, const S
        style.footprint,
        style.outline_px,
        false});
+  // The lot bounds the reference point: C-space beyond it is no part of the problem.
+  clipToLot(scene, scenario, style);
   addAxesAndTitle(scene, lotExtent(scenario),
                   "C-space obstacles at heading " + formatFixed(radToDeg(theta_rad), 0) +
                       "\u00b0 (Fig. 5): exact Minkowski slices",
@@ -262,6 +295,15 @@ Scene buildCSpaceStackFigure(const Scenario& scenario, int slices, const SceneSt
       scene.lines.push_back(std::move(outline));
     }
   }
+  // Start and goal as points of (x, y, theta): arrows at the height of their heading.
+  const double a = style.arrow_length_m;
+  scene.arrows.push_back(
+      {scenario.start, a, 0.3 * a, height_of(scenario.start.theta), style.start, style.arrow_px});
+  scene.arrows.push_back({scenario.goal.pose, a, 0.3 * a, height_of(scenario.goal.pose.theta),
+                          style.goal, style.arrow_px});
+  // C-space is the lot times the headings: slices (and obstacles) beyond the lot are cut off
+  // at its edge, so the stack is a block the heading axis stands beside.
+  clipToArea(scene, scene.extent);
   // The heading axis at the lot's front-left corner, where no stack hides it.
   const Eigen::Vector2d axis(lot.x_min_m, lot.y_min_m);
   scene.lines.push_back(
@@ -280,12 +322,6 @@ Scene buildCSpaceStackFigure(const Scenario& scenario, int slices, const SceneSt
   scene.texts.push_back(
       SceneText::worldLabel("\u03b8", Eigen::Vector3d(axis.x(), axis.y(), top * 1.04),
                             style.text_px, style.axis, HAlign::kCenter, VAlign::kBottom));
-  // Start and goal as points of (x, y, theta): arrows at the height of their heading.
-  const double a = style.arrow_length_m;
-  scene.arrows.push_back(
-      {scenario.start, a, 0.3 * a, height_of(scenario.start.theta), style.start, style.arrow_px});
-  scene.arrows.push_back({scenario.goal.pose, a, 0.3 * a, height_of(scenario.goal.pose.theta),
-                          style.goal, style.arrow_px});
   scene.texts.push_back({"C-space obstacles over (x, y, \u03b8), " + std::to_string(slices) +
                              " exact slices (Fig. 6)",
                          std::nullopt, Eigen::Vector2d(0.6 * style.text_px, 0.6 * style.text_px),
@@ -308,6 +344,7 @@ Scene buildPlanFigure(const Scenario& scenario, const PlanFigure& plan, const Fi
     scene.lines.push_back(boxOutline(OrientedBox{{w.x, w.y}, {r, r}, kPi / 4}, Layers::kArrow,
                                      style.waypoint, style.outline_px * 1.5f));
   }
+  clipToLot(scene, scenario, style);
   addAxesAndTitle(scene, lotExtent(scenario), plan.caption, style);
   return scene;
 }
@@ -379,20 +416,30 @@ class FigureWriter {
 
 std::vector<std::string> writeFigures(const Scenario& scenario, const FigureInputs& inputs,
                                       const FigureDef& def, const std::string& dir) {
+  const FigureSelection& chosen = def.figures;
+  std::vector<std::string> written;
+  if (chosen.empty()) return written;
   const SceneStyle style = def.style.scaled(styleScaleFor(def.height_px));
   FigureWriter writer(def, dir);
-  std::vector<std::string> written;
   auto put = [&](const std::string& name, const Scene& scene) {
     written.push_back(writer.write(name, scene, figureCamera(name)));
   };
-  put("lot_map", buildLotMapFigure(scenario, style));
-  if (inputs.steering) put("steering", buildSteeringFigure(scenario, *inputs.steering, style));
-  put("cspace_slice", buildCSpaceSliceFigure(scenario, def.cspace_heading_rad, style));
-  put("cspace_stack", buildCSpaceStackFigure(scenario, def.cspace_slices, style));
-  for (const PlanFigure& plan : inputs.plans) {
-    put("plan_" + plan.name, buildPlanFigure(scenario, plan, def, style));
+  if (chosen.contains("lot_map")) put("lot_map", buildLotMapFigure(scenario, style));
+  if (inputs.steering && chosen.contains("steering")) {
+    put("steering", buildSteeringFigure(scenario, *inputs.steering, style));
   }
-  if (inputs.tracking) {
+  if (chosen.contains("cspace_slice")) {
+    put("cspace_slice", buildCSpaceSliceFigure(scenario, def.cspace_heading_rad, style));
+  }
+  if (chosen.contains("cspace_stack")) {
+    put("cspace_stack", buildCSpaceStackFigure(scenario, def.cspace_slices, style));
+  }
+  for (const PlanFigure& plan : inputs.plans) {
+    if (chosen.contains("plan")) {
+      put("plan_" + plan.name, buildPlanFigure(scenario, plan, def, style));
+    }
+  }
+  if (inputs.tracking && chosen.contains("tracking_error")) {
     CameraDef plot_camera;
     plot_camera.fill = 1.0;
     written.push_back(
@@ -401,8 +448,10 @@ std::vector<std::string> writeFigures(const Scenario& scenario, const FigureInpu
                                        def.width_px, def.height_px, style),
                      plot_camera));
   }
-  put("lot_3d",
-      buildLot3dFigure(scenario, inputs.plans.empty() ? nullptr : &inputs.plans.front(), style));
+  if (chosen.contains("lot_3d")) {
+    put("lot_3d",
+        buildLot3dFigure(scenario, inputs.plans.empty() ? nullptr : &inputs.plans.front(), style));
+  }
   return written;
 }
 

@@ -7,6 +7,12 @@
 //   plan_<name>.png    Figs. 7-9  planned trajectory with footprint outlines and the tree
 //   tracking_error.png         position and heading error versus time of an executed episode
 //   lot_3d.png                 the lot in perspective, with the plan when there is one
+//
+// The figures with axes (lot_map, cspace_slice, plan_*: the lot; steering: its data extent)
+// clip their content to that plot area (SceneClip.h) before the axes, ticks and title go into
+// the margin around it, so obstacles beyond the lot never cover them. cspace_stack is clipped
+// to the lot too (C-space is the lot times the headings). lot_3d is a picture of the whole
+// world, with no axes: it is not clipped, and its camera frames everything.
 
 #include <optional>
 #include <string>
@@ -17,6 +23,7 @@
 #include "parksim/core/Scenario.h"
 #include "parksim/core/Trajectory.h"
 #include "parksim/renders/Camera.h"
+#include "parksim/renders/FigureSelection.h"
 #include "parksim/renders/OffscreenContext.h"
 #include "parksim/renders/Scene.h"
 #include "parksim/renders/SceneStyle.h"
@@ -37,6 +44,8 @@ struct FigureDef {
   double footprint_turn_rad = degToRad(30.0);  ///< ... or heading change, rad
   /// The OpenGL backend (default auto: PARKSIM_GL_BACKEND, else EGL, then OSMesa).
   ContextDef context;
+  /// The figures writeFigures writes (FigureSelection.h); the others are not built.
+  FigureSelection figures = FigureSelection::all();
 };
 
 /// Steering from `start` toward `target` in both of the study's modes.
@@ -77,9 +86,11 @@ struct FigureInputs {
   std::optional<TrackingSeries> tracking;
 };
 
-/// Renders every figure the inputs allow (lot_map, cspace_slice, cspace_stack and lot_3d
-/// always) into `dir` (created if missing) and returns the paths written, in the order above.
-/// Throws Error when a file cannot be written or no GL context can be made.
+/// Renders every figure of `def.figures` the inputs allow (lot_map, cspace_slice, cspace_stack
+/// and lot_3d always; steering, plan_* and tracking_error when given) into `dir` (created if
+/// missing) and returns the paths written, in the order above. Writes nothing, creates no
+/// directory and needs no GL context when none is chosen. Throws Error when a file cannot be
+/// written or no GL context can be made.
 std::vector<std::string> writeFigures(const Scenario& scenario, const FigureInputs& inputs,
                                       const FigureDef& def, const std::string& dir);
 

@@ -20,6 +20,7 @@ from ._parksim import (  # noqa: F401  (re-exported)
     Episode,
     Error,
     ExecutionDef,
+    FIGURE_NAMES,
     FrameDef,
     FrameRecorder,
     HybridAStarDef,
@@ -42,6 +43,7 @@ from ._parksim import (  # noqa: F401  (re-exported)
     read_trajectory,
     render_figure,
     run,
+    write_figures,
     write_png,
 )
 from . import _parksim
@@ -101,9 +103,10 @@ from .env import ParkingEnv  # noqa: E402
 from . import spaces  # noqa: E402
 
 __all__ = [
-    "CollisionChecker", "DynamicsWorld", "Episode", "Error", "ExecutionDef", "FrameDef",
-    "FrameRecorder", "HybridAStarDef", "MotionValidatorDef", "MoveToPoseDef", "ParkingEnv", "PlannerDef",
+    "CollisionChecker", "DynamicsWorld", "Episode", "Error", "ExecutionDef", "FIGURE_NAMES",
+    "FrameDef", "FrameRecorder", "HybridAStarDef", "MotionValidatorDef", "MoveToPoseDef", "ParkingEnv", "PlannerDef",
     "PlanResult", "PlanSetup", "ReedsSheppDef", "RobotDef", "RotateTranslateRotateDef", "RunResult",
     "SimModelDef", "TrackingGains", "World", "cspace_slice", "encode_png", "load_world", "plan",
-    "read_png", "read_trajectory", "render_figure", "render_frame", "run", "spaces", "write_png",
+    "read_png", "read_trajectory", "render_figure", "render_frame", "run", "spaces",
+    "write_figures", "write_png",
 ]

@@ -9,7 +9,7 @@
 #include "app/PlanOutput.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/Provenance.h"
-#include "parksim/renders/FrameRecorder.h"
+#include "parksim/renders/EpisodeFrames.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/EpisodeFiles.h"
 #include "python/src/Bindings.h"
@@ -18,30 +18,6 @@
 namespace parksim::python {
 
 namespace {
-
-// The statistics a trajectory carries by itself (a plan not made by plan()).
-nlohmann::json trajectorySummary(const Scenario& scenario, const Trajectory& plan) {
-  const Pose2& end = plan.points.back().pose;
-  return {
-      {"path_length_m", plan.pathLength(scenario.robot)},
-      {"duration_s", plan.duration()},
-      {"cusps", plan.cusps(scenario.robot)},
-      {"final_pos_err_m", positionDistance(end, scenario.goal.pose)},
-      {"final_heading_err_deg", radToDeg(headingDistance(end, scenario.goal.pose))},
-  };
-}
-
-FrameInput frameInput(const EpisodeSample& sample) {
-  FrameInput in;
-  in.t_s = sample.tracking.t_s;
-  in.pose = sample.tracking.pose;
-  in.reference = sample.tracking.reference;
-  in.position_error_m = sample.tracking.pos_err_m;
-  in.heading_error_rad = sample.tracking.heading_err_rad;
-  in.obstacle_poses = sample.obstacles;
-  in.contacts = sample.contacts;
-  return in;
-}
 
 struct RunOutcome {
   std::shared_ptr<const Scenario> scenario;
@@ -76,7 +52,7 @@ RunOutcome runWorld(const World& world, const py::object& plan, const py::object
   } else {
     out.trajectory = trajectoryFrom(plan);
     if (out.trajectory.points.empty()) throw Error("run: the plan has no points");
-    plan_summary = trajectorySummary(scenario, out.trajectory);
+    plan_summary = app::trajectorySummary(scenario, out.trajectory);
   }
 
   py::gil_scoped_release release;

@@ -2,10 +2,12 @@
 // the study's figures, PNG encoding, and FrameRecorder for films. Images are H x W x 3 uint8
 // arrays. Each thread keeps one renderer (an off-screen GL context is bound to a thread).
 
+#include <algorithm>
 #include <optional>
 
 #include <pybind11/stl.h>
 
+#include "app/FigureInputs.h"
 #include "parksim/core/Error.h"
 #include "parksim/renders/Figures.h"
 #include "parksim/renders/FrameRecorder.h"
@@ -101,6 +103,19 @@ PlanFigure planFigureFrom(const py::handle& plan) {
   return figure;
 }
 
+// The tracking error of an executed array (columns t, pos_err, heading_err).
+TrackingSeries seriesFrom(const py::handle& executed) {
+  TrackingSeries s;
+  for (const char* field : {"t", "pos_err", "heading_err"}) {
+    const auto column = py::array_t<double, py::array::forcecast>(executed[py::str(field)]);
+    std::vector<double>& out = field[0] == 't'   ? s.t_s
+                               : field[0] == 'p' ? s.position_error_m
+                                                 : s.heading_error_rad;
+    out.assign(column.data(), column.data() + column.size());
+  }
+  return s;
+}
+
 }  // namespace
 
 void bindRender(py::module_& m) {
@@ -160,15 +175,7 @@ void bindRender(py::module_& m) {
         std::optional<TrackingSeries> series;
         if (name == "tracking_error") {
           if (executed.is_none()) throw py::value_error("tracking_error needs executed=");
-          TrackingSeries s;
-          for (const char* field : {"t", "pos_err", "heading_err"}) {
-            const auto column = py::array_t<double, py::array::forcecast>(executed[py::str(field)]);
-            std::vector<double>& out = field[0] == 't'   ? s.t_s
-                                       : field[0] == 'p' ? s.position_error_m
-                                                         : s.heading_error_rad;
-            out.assign(column.data(), column.data() + column.size());
-          }
-          series = std::move(s);
+          series = seriesFrom(executed);
         }
         if (name == "plan" && !plan_figure) throw py::value_error("the plan figure needs plan=");
         FigureDef def;
@@ -209,6 +216,58 @@ void bindRender(py::module_& m) {
       R"(One of the study's figures as an H x W x 3 uint8 array: lot_map, cspace_slice (at
 heading, rad), cspace_stack, plan (plan=PlanResult or trajectory), lot_3d (plan optional),
 tracking_error (executed=RunResult.executed or Episode.executed).)");
+
+  py::tuple names(kFigureNames.size());
+  for (std::size_t i = 0; i < kFigureNames.size(); ++i) names[i] = py::str(kFigureNames[i]);
+  m.attr("FIGURE_NAMES") = names;
+  m.def(
+      "write_figures",
+      [](const World& world, const std::string& out_dir, const std::string& figures,
+         const py::object& plans, const py::object& executed, const py::object& steer_target,
+         double heading, int slices, int width, int height, int msaa) {
+        const Scenario& scenario = *world.scenario;
+        if (width < 1 || height < 1 || width > 8192 || height > 8192) {
+          throw Error("write_figures: size must be between 1x1 and 8192x8192");
+        }
+        FigureDef def;
+        def.figures = FigureSelection::parse(figures);
+        def.width_px = width;
+        def.height_px = height;
+        def.msaa_samples = msaa;
+        def.cspace_heading_rad = heading;
+        def.cspace_slices = std::clamp(slices, 1, 720);
+        FigureInputs inputs;
+        // The same figure inputs as `parksim render` (app/FigureInputs.h): captions, steering.
+        auto add = [&](const py::handle& p) {
+          if (py::isinstance<PlanOutcome>(p)) {
+            const PlanOutcome& outcome = p.cast<const PlanOutcome&>();
+            inputs.plans.push_back(app::planFigure(scenario, outcome.setup, outcome.result));
+          } else {
+            inputs.plans.push_back(planFigureFrom(p));
+          }
+        };
+        if (py::isinstance<py::list>(plans) || py::isinstance<py::tuple>(plans)) {
+          for (const py::handle p : plans) add(p);
+        } else if (!plans.is_none()) {
+          add(plans);
+        }
+        if (!executed.is_none()) inputs.tracking = seriesFrom(executed);
+        std::optional<Pose2> target;
+        if (!steer_target.is_none()) target = poseFrom(steer_target);
+        inputs.steering = app::steeringExample(scenario, target);
+        py::gil_scoped_release release;
+        return writeFigures(scenario, inputs, def, out_dir);
+      },
+      py::arg("world"), py::arg("out_dir"), py::arg("figures") = "all",
+      py::arg("plans") = py::none(), py::arg("executed") = py::none(),
+      py::arg("steer_target") = py::none(), py::arg("heading") = degToRad(-60.0),
+      py::arg("slices") = 36, py::arg("width") = 1200, py::arg("height") = 800, py::arg("msaa") = 4,
+      R"(Writes the study's figures as `parksim render` does, into out_dir (created), and returns
+the paths written. figures: "all", "none" or a comma-separated list of FIGURE_NAMES ("plan":
+one plan_<name>.png per plan); plans: a PlanResult, a trajectory, or a list of them;
+executed: RunResult.executed or Episode.executed (adds tracking_error); steer_target: the
+steering figure's target (x, y, theta); heading: the C-space slice's heading, rad. A figure
+whose input is missing is skipped; an unknown name raises parksim.Error.)");
 
   m.def(
       "encode_png",

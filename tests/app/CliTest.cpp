@@ -1,11 +1,13 @@
 // End-to-end tests of the parksim executable: exit codes, files written, messages.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -16,7 +18,9 @@
 #include "parksim/core/Geometry.h"
 #include "parksim/core/Provenance.h"
 #include "parksim/core/Trajectory.h"
+#include "parksim/renders/FigureSelection.h"
 #include "parksim/scenario/ScenarioReader.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
@@ -39,7 +43,7 @@ class Cli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
   std::string world(const std::string& name) {
-    return std::string(PARKSIM_SOURCE_DIR) + "/worlds/" + name;
+    return parksim::testing::sourceDir() + "/worlds/" + name;
   }
   fs::path dir_;
 };
@@ -164,9 +168,67 @@ TEST_F(Cli, RunWithFramesFilmsTheEpisodeAndDrawsTheFigures) {
     EXPECT_GT(fs::file_size(e.path()), 1000u) << e.path();
     ++figures;
   }
-  EXPECT_GE(figures, 4);
+  EXPECT_EQ(figures, static_cast<int>(kFigureNames.size()));  // --frames alone: all of them
   EXPECT_TRUE(fs::exists(out / "figures" / "tracking_error.png"));
   EXPECT_TRUE(fs::exists(out / "figures" / "plan_hybrid-a-star.png"));  // the default planner
+}
+
+// The file names in OUT/figures, sorted; empty when there is no such directory.
+std::vector<std::string> figureFiles(const fs::path& out) {
+  std::vector<std::string> names;
+  if (!fs::exists(out / "figures")) return names;
+  for (const auto& e : fs::directory_iterator(out / "figures")) {
+    names.push_back(e.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST_F(Cli, FiguresOptionChoosesTheFiguresOnRunAndRender) {
+  using Names = std::vector<std::string>;
+  // A list alone draws those figures without filming; a repeated name counts once.
+  fs::path out = dir_ / "list";
+  CliRun r = parksim("run " + world("head_in.yaml") + " --figures plan,lot_map,plan --out " +
+                     out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(figureFiles(out), (Names{"lot_map.png", "plan_hybrid-a-star.png"}));
+  EXPECT_FALSE(fs::exists(out / "frames"));
+  // none: frames without figures.
+  out = dir_ / "none";
+  r = parksim("run " + world("head_in.yaml") + " --frames --fps 1 --size 64x48 --figures none " +
+              "--out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_TRUE(fs::exists(out / "frames" / "000000.png"));
+  EXPECT_FALSE(fs::exists(out / "figures"));
+  // render: a figure its inputs do not allow (tracking_error needs --executed) is not drawn.
+  out = dir_ / "render";
+  r = parksim(
+      "render " + world("head_in.yaml") +
+      " --planner rrt --size 240x160 --figures cspace_slice,tracking_error,steering --out " +
+      out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(figureFiles(out), (Names{"cspace_slice.png", "steering.png"}));
+  out = dir_ / "render_none";
+  ASSERT_EQ(parksim("render " + world("head_in.yaml") + " --planner rrt --figures none --out " +
+                    out.string())
+                .exit_code,
+            0);
+  EXPECT_TRUE(fs::exists(out / "plan_rrt.json"));
+  EXPECT_FALSE(fs::exists(out / "figures"));
+  // An unknown name: exit 2, one line listing the valid names, nothing written.
+  for (const char* command : {"run ", "render "}) {
+    out = dir_ / "never";
+    r = parksim(command + world("head_in.yaml") + " --figures lot_map,lotmap --out " +
+                out.string());
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    const std::size_t at = r.out.find("unknown figure 'lotmap'");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    const std::string line = r.out.substr(at, r.out.find('\n', at) - at);
+    for (std::string_view name : kFigureNames) {
+      EXPECT_NE(line.find(name), std::string::npos) << line;
+    }
+    EXPECT_FALSE(fs::exists(out));
+  }
 }
 
 TEST_F(Cli, BadInputToRunLeavesAnEarlierRunsOutputsAlone) {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/RunParksim.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
@@ -55,7 +56,7 @@ class GlBackendCli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
   static std::string world(const std::string& name) {
-    return std::string(PARKSIM_SOURCE_DIR) + "/worlds/" + name;
+    return parksim::testing::sourceDir() + "/worlds/" + name;
   }
   // A short film: 2 frames per simulated second, small frames.
   CliRun film(const std::string& name, const std::string& options) {

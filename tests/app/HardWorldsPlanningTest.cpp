@@ -13,12 +13,13 @@
 #include "parksim/planner/TimeOptimalTiming.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "tests/support/PlanChecks.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
 
 Scenario world(const std::string& name) {
-  return loadScenario(std::string(PARKSIM_SOURCE_DIR) + "/worlds/" + name + ".yaml");
+  return loadScenario(parksim::testing::sourceDir() + "/worlds/" + name + ".yaml");
 }
 
 // What `parksim plan WORLD` uses.

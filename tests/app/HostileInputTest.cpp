@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/RunParksim.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
@@ -34,7 +35,7 @@ struct Outcome {
 // Runs `parksim ARGS` from a shell with `limits` (ulimit commands) first, bounded in time.
 Outcome run(const std::string& args, const std::string& limits = "") {
   const std::string cmd = "ulimit -v 4000000; " + limits + " timeout 60 " +
-                          std::string(PARKSIM_EXE) + " " + args + " 2>&1";
+                          parksim::testing::parksimExe() + " " + args + " 2>&1";
   FILE* pipe = popen(("/bin/bash -c '" + cmd + "'").c_str(), "r");
   if (pipe == nullptr) return {-1, "popen failed"};
   std::string out;
@@ -67,7 +68,7 @@ class HostileInput : public ::testing::Test {
     dir_ = fs::temp_directory_path() / ("parksim_hostile_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    const std::string src = PARKSIM_SOURCE_DIR;
+    const std::string src = parksim::testing::sourceDir();
     const std::string corpus = src + "/tests/fuzz/corpus/";
     vars_ = {
         {"{W}", src + "/worlds/head_in.yaml"},

@@ -23,6 +23,7 @@
 #include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/EpisodeFiles.h"
 #include "parksim/sim/TrackingTolerance.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
@@ -50,7 +51,7 @@ struct Written {
 
 Written writeEverything(const fs::path& dir) {
   Written w{
-      loadScenario(std::string(PARKSIM_SOURCE_DIR) + "/worlds/head_in.yaml"), {}, {}, {}, {}, {}};
+      loadScenario(parksim::testing::sourceDir() + "/worlds/head_in.yaml"), {}, {}, {}, {}, {}};
   w.setup.planner.seed = 1;
   const BulletCollisionWorld collision(w.scenario);
   w.plan = planScenario(w.scenario, collision, w.setup);
@@ -80,7 +81,7 @@ Written writeEverything(const fs::path& dir) {
 class LocaleRoundTrip : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(PARKSIM_BINARY_DIR) / "test-output" / "locale";
+    dir_ = fs::path(parksim::testing::binaryDir()) / "test-output" / "locale";
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "c");
     fs::create_directories(dir_ / "de");

@@ -9,6 +9,7 @@
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "tests/support/PlanChecks.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
@@ -17,7 +18,7 @@ class StudyWorldsPlanning : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(StudyWorldsPlanning, GoalConnectRrtSolvesAtLeast99Of100Seeds) {
   const Scenario s =
-      loadScenario(std::string(PARKSIM_SOURCE_DIR) + "/worlds/" + GetParam() + ".yaml");
+      loadScenario(parksim::testing::sourceDir() + "/worlds/" + GetParam() + ".yaml");
   const BulletCollisionWorld checker(s);
   PlanSetup setup;
   setup.planner.kind = PlannerKind::kRrtGoalConnect;

@@ -9,11 +9,12 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/Error.h"
 #include "parksim/scenario/ScenarioReader.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim::bench {
 namespace {
 
-Scenario headIn() { return loadScenario(PARKSIM_SOURCE_DIR "/worlds/head_in.yaml"); }
+Scenario headIn() { return loadScenario(parksim::testing::sourceDir() + "/worlds/head_in.yaml"); }
 
 OmplRunDef easyQuery(std::uint32_t seed) {
   OmplRunDef def;

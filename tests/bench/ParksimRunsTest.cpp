@@ -10,12 +10,13 @@
 
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/scenario/ScenarioReader.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim::bench {
 namespace {
 
 TEST(ParksimRuns, EveryPlannerAndSteeringGivesACheckedRecord) {
-  const Scenario s = loadScenario(PARKSIM_SOURCE_DIR "/worlds/head_in.yaml");
+  const Scenario s = loadScenario(parksim::testing::sourceDir() + "/worlds/head_in.yaml");
   const BulletCollisionWorld world(s);
   for (SteeringKind steering : allSteeringKinds()) {
     for (PlannerKind kind : allPlannerKinds()) {

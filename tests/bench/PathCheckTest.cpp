@@ -8,11 +8,12 @@
 #include "parksim/core/Angle.h"
 #include "parksim/core/Geometry.h"
 #include "parksim/scenario/ScenarioReader.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim::bench {
 namespace {
 
-Scenario headIn() { return loadScenario(PARKSIM_SOURCE_DIR "/worlds/head_in.yaml"); }
+Scenario headIn() { return loadScenario(parksim::testing::sourceDir() + "/worlds/head_in.yaml"); }
 
 // Poses along a straight line, `step` apart, heading along the line.
 std::vector<Pose2> line(Pose2 from, double length, double step) {

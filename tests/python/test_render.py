@@ -50,6 +50,22 @@ def test_figures(head_in, head_in_plan, name):
     assert image.std() > 0
 
 
+def test_write_figures_writes_the_chosen_figures(tmp_path, head_in, head_in_plan):
+    assert parksim.FIGURE_NAMES == ("lot_map", "steering", "cspace_slice", "cspace_stack",
+                                    "plan", "tracking_error", "lot_3d")
+    out = tmp_path / "some"
+    written = parksim.write_figures(head_in, str(out), figures="plan, lot_map,plan",
+                                    plans=[head_in_plan], width=240, height=160, msaa=1)
+    assert written == [str(out / "lot_map.png"), str(out / "plan_hybrid-a-star.png")]
+    assert sorted(p.name for p in out.iterdir()) == ["lot_map.png", "plan_hybrid-a-star.png"]
+    assert parksim.read_png(written[0]).shape == (160, 240, 3)
+    assert parksim.write_figures(head_in, str(tmp_path / "none"), figures="none") == []
+    assert not (tmp_path / "none").exists()
+    with pytest.raises(parksim.Error, match="unknown figure 'lotmap'.*lot_3d"):
+        parksim.write_figures(head_in, str(tmp_path / "bad"), figures="lot_map,lotmap")
+    assert not (tmp_path / "bad").exists()
+
+
 def test_png_round_trip(tmp_path, head_in):
     image = parksim.render_frame(head_in, width=64, height=48, msaa=1)
     data = parksim.encode_png(image)

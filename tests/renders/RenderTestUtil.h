@@ -9,6 +9,7 @@
 #include "parksim/core/Angle.h"
 #include "parksim/core/Geometry.h"
 #include "parksim/core/Scenario.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim::rendertest {
 
@@ -46,7 +47,7 @@ inline Scenario testLot() {
 
 /// A fresh, empty directory for one test's files, under the build tree.
 inline std::string outputDir(const std::string& name) {
-  const std::string dir = std::string(PARKSIM_BINARY_DIR) + "/test-output/renders/" + name;
+  const std::string dir = parksim::testing::binaryDir() + "/test-output/renders/" + name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

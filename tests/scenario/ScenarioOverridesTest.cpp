@@ -9,11 +9,12 @@
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
 #include "parksim/scenario/ScenarioReader.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
 
-const std::string kWorld = std::string(PARKSIM_SOURCE_DIR) + "/worlds/head_in.yaml";
+const std::string kWorld = parksim::testing::sourceDir() + "/worlds/head_in.yaml";
 
 std::string errorOf(const std::vector<ScenarioOverride>& overrides) {
   try {

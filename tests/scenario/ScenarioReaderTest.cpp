@@ -11,6 +11,7 @@
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
@@ -456,7 +457,7 @@ TEST_F(ScenarioFile, DevicesAreNotWorldFiles) {
 }
 
 TEST_F(ScenarioFile, ShowcaseWorldHasEveryShape) {
-  const Scenario s = loadScenario(std::string(PARKSIM_SOURCE_DIR) + "/worlds/bollards.yaml");
+  const Scenario s = loadScenario(parksim::testing::sourceDir() + "/worlds/bollards.yaml");
   int circles = 0;
   int polygons = 0;
   int low = 0;
@@ -477,7 +478,7 @@ TEST_F(ScenarioFile, ShowcaseWorldHasEveryShape) {
 
 TEST_F(ScenarioFile, DocumentationExampleIsAValidWorld) {
   // Keeps docs/world-format.md honest: its complete example must load as documented.
-  std::ifstream in(std::string(PARKSIM_SOURCE_DIR) + "/docs/world-format.md");
+  std::ifstream in(parksim::testing::sourceDir() + "/docs/world-format.md");
   ASSERT_TRUE(in) << "docs/world-format.md is missing";
   const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::size_t section = doc.find("## A complete example");

@@ -9,6 +9,7 @@
 #include "parksim/core/Angle.h"
 #include "parksim/core/Geometry.h"
 #include "parksim/scenario/ScenarioReader.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
@@ -37,7 +38,7 @@ constexpr std::array<StudyRect, 11> kStudyTable = {{
 constexpr double kTol = 1e-9;
 
 std::string worldPath(const char* file) {
-  return std::string(PARKSIM_SOURCE_DIR) + "/worlds/" + file;
+  return parksim::testing::sourceDir() + "/worlds/" + file;
 }
 
 const Obstacle* findObstacle(const Scenario& s, const std::string& name) {

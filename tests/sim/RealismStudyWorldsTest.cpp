@@ -15,6 +15,7 @@
 #include "parksim/sim/Episode.h"
 #include "parksim/sim/EpisodeFiles.h"
 #include "tests/sim/SimTestSupport.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
@@ -29,7 +30,7 @@ const Planned& planned(const std::string& world) {
   auto it = cache.find(world);
   if (it == cache.end()) {
     Planned p;
-    p.scenario = loadScenario(std::string(PARKSIM_SOURCE_DIR) + "/worlds/" + world + ".yaml");
+    p.scenario = loadScenario(parksim::testing::sourceDir() + "/worlds/" + world + ".yaml");
     const BulletCollisionWorld checker(p.scenario);
     PlanSetup setup;
     setup.planner.seed = 1;

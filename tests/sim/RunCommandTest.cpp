@@ -13,6 +13,7 @@
 #include "tests/support/RunParksim.h"
 
 #include "parksim/sim/TrackingTolerance.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
@@ -27,13 +28,13 @@ CliRun parksim(const std::string& args) { return testing::runParksim(args); }
 class RunCommand : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(PARKSIM_BINARY_DIR) / "test-output" / "sim" /
+    dir_ = fs::path(parksim::testing::binaryDir()) / "test-output" / "sim" /
            ::testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
   std::string world(const std::string& name) const {
-    return std::string(PARKSIM_SOURCE_DIR) + "/worlds/" + name + ".yaml";
+    return parksim::testing::sourceDir() + "/worlds/" + name + ".yaml";
   }
   std::string out(const std::string& sub) const { return (dir_ / sub).string(); }
   fs::path dir_;
@@ -95,7 +96,7 @@ TEST_F(RunCommand, AnUnsolvedPlanWritesNoEpisodeFiles) {
 
 TEST_F(RunCommand, BadInputIsOneLineWithExitTwo) {
   const CliRun wrong_start =
-      parksim("run " + world("head_in") + " --plan " + std::string(PARKSIM_SOURCE_DIR) +
+      parksim("run " + world("head_in") + " --plan " + parksim::testing::sourceDir() +
               "/worlds/head_in.yaml --out " + out("bad"));
   EXPECT_EQ(wrong_start.exit_code, 2) << wrong_start.out;
   const CliRun mode = parksim("run " + world("head_in") + " --tracking sideways --out " + out("m"));

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/RunParksim.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
@@ -22,13 +23,13 @@ using testing::slurp;
 class RunRealism : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(PARKSIM_BINARY_DIR) / "test-output" / "sim-realism" /
+    dir_ = fs::path(parksim::testing::binaryDir()) / "test-output" / "sim-realism" /
            ::testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
   static std::string world(const std::string& name) {
-    return std::string(PARKSIM_SOURCE_DIR) + "/worlds/" + name + ".yaml";
+    return parksim::testing::sourceDir() + "/worlds/" + name + ".yaml";
   }
   std::string out(const std::string& sub) const { return (dir_ / sub).string(); }
   static std::string header(const std::string& csv) { return csv.substr(0, csv.find('\n')); }

@@ -20,12 +20,13 @@
 #include "tests/support/ExactShapes.h"
 #include "tests/support/PlanChecks.h"
 #include "tests/support/StudyLot.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
 
 Scenario showcase() {
-  return loadScenario(std::string(PARKSIM_SOURCE_DIR) + "/worlds/bollards.yaml");
+  return loadScenario(parksim::testing::sourceDir() + "/worlds/bollards.yaml");
 }
 
 class ShowcaseWorld : public ::testing::TestWithParam<std::uint64_t> {};

@@ -16,6 +16,7 @@
 #include "parksim/sim/Episode.h"
 #include "parksim/sim/EpisodeFiles.h"
 #include "parksim/sim/TrackingTolerance.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
@@ -41,7 +42,7 @@ const Planned& planned(const Case& c) {
   auto it = cache.find(key);
   if (it == cache.end()) {
     Planned p;
-    p.scenario = loadScenario(std::string(PARKSIM_SOURCE_DIR) + "/worlds/" + c.world + ".yaml");
+    p.scenario = loadScenario(parksim::testing::sourceDir() + "/worlds/" + c.world + ".yaml");
     const BulletCollisionWorld checker(p.scenario);
     PlanSetup setup;
     setup.planner.seed = c.seed;

@@ -14,6 +14,7 @@
 #include "parksim/sim/ReferenceTrajectory.h"
 #include "parksim/sim/TrackingController.h"
 #include "tests/sim/SimTestSupport.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
@@ -28,7 +29,7 @@ EpisodeMetrics goodMetrics() {
 }
 
 std::string tempDir(const char* name) {
-  const std::string dir = std::string(PARKSIM_BINARY_DIR) + "/test-output/sim/" + name;
+  const std::string dir = parksim::testing::binaryDir() + "/test-output/sim/" + name;
   std::filesystem::remove_all(dir);
   ensureDirectory(dir);
   return dir;

@@ -1,5 +1,5 @@
 #pragma once
-// Test support: runs the parksim executable (path in PARKSIM_EXE) and reads files back.
+// Test support: runs the parksim executable (TestPaths.h) and reads files back.
 
 #include <sys/wait.h>
 
@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include "tests/support/TestPaths.h"
 
 namespace parksim::testing {
 
@@ -18,7 +19,7 @@ struct CliRun {
 
 /// Runs `parksim ARGS` through the shell and waits for it.
 inline CliRun runParksim(const std::string& args) {
-  const std::string cmd = std::string(PARKSIM_EXE) + " " + args + " 2>&1";
+  const std::string cmd = parksim::testing::parksimExe() + " " + args + " 2>&1";
   FILE* pipe = popen(cmd.c_str(), "r");
   if (pipe == nullptr) return {-1, "popen failed"};
   std::string out;

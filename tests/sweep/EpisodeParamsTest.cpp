@@ -10,6 +10,7 @@
 #include "parksim/sweep/EpisodeExpansion.h"
 #include "parksim/sweep/EpisodeSetup.h"
 #include "parksim/sweep/SweepSpecReader.h"
+#include "tests/support/TestPaths.h"
 #include "tests/sweep/SweepTestSupport.h"
 
 namespace parksim {
@@ -86,7 +87,8 @@ TEST(EpisodeExpansion, IdsDependOnParametersNotOnTheirPositionInTheSpec) {
 }
 
 TEST(EpisodeSetup, AppliesOffsetsAndRejectsOnesThatLeaveTheLot) {
-  const SweepWorld sweep_world{loadScenario(PARKSIM_SOURCE_DIR "/worlds/head_in.yaml"), {}};
+  const SweepWorld sweep_world{loadScenario(parksim::testing::sourceDir() + "/worlds/head_in.yaml"),
+                               {}};
   const Scenario& world = sweep_world.scenario;
   EpisodeParams p;
   p.world = world.name;

@@ -57,13 +57,14 @@ TEST(SweepCli, SurvivesAKillAndCompletesEachEpisodeOnceThenReports) {
   const std::string dir = scratchDir();
   writeText(dir + "/spec.yaml", studySpec("seeds: {from: 1, to: 6}\n"));
   const std::string out = dir + "/out";
+  const std::string exe = testing::parksimExe();
   const pid_t child = fork();
   ASSERT_GE(child, 0);
   if (child == 0) {
     const int devnull = ::open("/dev/null", O_WRONLY);
     dup2(devnull, 1);
     dup2(devnull, 2);
-    execl(PARKSIM_EXE, PARKSIM_EXE, "sweep", (dir + "/spec.yaml").c_str(), "--out", out.c_str(),
+    execl(exe.c_str(), exe.c_str(), "sweep", (dir + "/spec.yaml").c_str(), "--out", out.c_str(),
           "--workers", "1", static_cast<char*>(nullptr));
     _exit(127);
   }

@@ -17,6 +17,7 @@
 #include "parksim/sweep/Shard.h"
 #include "parksim/sweep/SweepManifest.h"
 #include "parksim/sweep/SweepSpecReader.h"
+#include "tests/support/TestPaths.h"
 #include "tests/sweep/SweepTestSupport.h"
 
 namespace parksim {
@@ -81,8 +82,8 @@ class SweepRunnerTest : public ::testing::Test {
   static void SetUpTestSuite() {
     sweep_ = new SmallSweep(std::string(kAxes) + "max_iterations: [1, 2000]\n");
     // One per process: ctest runs each test of this suite as its own process, in parallel.
-    reference_dir_ = new std::string(std::string(PARKSIM_BINARY_DIR) +
-                                     "/test-out/sweep/reference-" + std::to_string(getpid()));
+    reference_dir_ = new std::string(parksim::testing::binaryDir() + "/test-out/sweep/reference-" +
+                                     std::to_string(getpid()));
     std::filesystem::remove_all(*reference_dir_);
     run(sweep_->episodes, *reference_dir_, 1);
   }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/Error.h"
+#include "tests/support/TestPaths.h"
 #include "tests/sweep/SweepTestSupport.h"
 
 namespace parksim {
@@ -87,12 +88,12 @@ TEST(SweepSpecReader, ErrorsNameFileLineAndField) {
 }
 
 TEST(SweepSpecReader, WorldsResolveAgainstTheSpecFolderAndGlobsExpandSorted) {
-  const SweepSpec s = loadSweepSpec(PARKSIM_SOURCE_DIR "/worlds/sweeps/study.yaml");
+  const SweepSpec s = loadSweepSpec(parksim::testing::sourceDir() + "/worlds/sweeps/study.yaml");
   ASSERT_EQ(s.world_files.size(), 2u);
   EXPECT_EQ(s.world_files[0], "../head_in.yaml");
   EXPECT_EQ(s.world_files[1], "../parallel.yaml");
   const SweepSpec g = parseSweepSpec("format: parksim-sweep/1\nname: g\nworlds: \"../*.yaml\"\n",
-                                     "g.yaml", PARKSIM_SOURCE_DIR "/worlds/sweeps");
+                                     "g.yaml", parksim::testing::sourceDir() + "/worlds/sweeps");
   ASSERT_GE(g.world_files.size(), 2u);
   EXPECT_TRUE(std::is_sorted(g.world_files.begin(), g.world_files.end()));
   EXPECT_NE(std::find(g.world_files.begin(), g.world_files.end(), "../head_in.yaml"),
