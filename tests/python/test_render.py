@@ -1,5 +1,7 @@
 """Images as NumPy arrays: frames of the lot, an episode instant, the study's figures, PNG."""
 
+import pathlib
+
 import numpy as np
 import pytest
 
@@ -100,3 +102,8 @@ def test_frames_choose_their_gl_backend(tmp_path, head_in):
                                 gl_backend="egl")
     rec.add_frame(0.0, (0.3, 0.3, 0.0))
     assert rec.finish()["frames"] == 1
+    paths = parksim.write_figures(head_in, str(tmp_path / "figures"), figures="lot_map",
+                                  width=120, height=80, gl_backend="egl")
+    assert [pathlib.Path(p).name for p in paths] == ["lot_map.png"]
+    with pytest.raises(parksim.Error, match="unknown OpenGL backend"):
+        parksim.write_figures(head_in, str(tmp_path / "never"), gl_backend="gles")
