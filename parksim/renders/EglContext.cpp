@@ -163,13 +163,17 @@ class EglContext final : public OffscreenContext {
     return eglQueryAPI() == EGL_OPENGL_API && eglGetCurrentContext() == ctx_;
   }
 
+  void releaseCurrent() override {
+    if (isCurrent()) eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  }
+
   std::string description() const override { return description_; }
 
   ContextBackend backend() const override { return ContextBackend::kEgl; }
 
  private:
   void release() {
-    if (isCurrent()) eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    releaseCurrent();
     eglDestroyContext(display_, ctx_);
   }
 

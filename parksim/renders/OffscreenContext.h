@@ -48,6 +48,9 @@ class OffscreenContext {
   virtual void makeCurrent() = 0;
   /// True when the context is current on the calling thread.
   virtual bool isCurrent() const = 0;
+  /// Leaves the calling thread without a current context when this one is current, so that
+  /// another thread may make it current (EGL refuses a context current elsewhere).
+  virtual void releaseCurrent() = 0;
   /// Backend, GL version and renderer, e.g. "EGL (device: software): 4.5 (Core Profile) Mesa
   /// 22.3.6, llvmpipe (LLVM 15.0.6, 256 bits)".
   virtual std::string description() const = 0;

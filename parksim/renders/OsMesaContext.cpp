@@ -65,14 +65,17 @@ class OsMesaContext final : public OffscreenContext {
 
   bool isCurrent() const override { return OSMesaGetCurrentContext() == ctx_; }
 
+  void releaseCurrent() override {
+    if (isCurrent()) OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);
+  }
+
   std::string description() const override { return description_; }
 
   ContextBackend backend() const override { return ContextBackend::kOsMesa; }
 
  private:
   void release() {
-    if (OSMesaGetCurrentContext() == ctx_)
-      OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);
+    releaseCurrent();
     OSMesaDestroyContext(ctx_);
   }
 

@@ -78,6 +78,22 @@ std::optional<std::array<int, 4>> groundRectangle(const Scene& scene, const Came
   return std::array<int, 4>{i0, j0, i1 - i0, j1 - j0};
 }
 
+// The context is current on the calling thread while the guard lives and released after, so a
+// renderer may move between threads (one at a time): EGL refuses to make a context current while
+// it is still current on another thread. Releasing costs nothing measurable next to a frame.
+class CurrentContext {
+ public:
+  explicit CurrentContext(OffscreenContext& context) : context_(context) {
+    if (!context_.isCurrent()) context_.makeCurrent();
+  }
+  ~CurrentContext() { context_.releaseCurrent(); }
+  CurrentContext(const CurrentContext&) = delete;
+  CurrentContext& operator=(const CurrentContext&) = delete;
+
+ private:
+  OffscreenContext& context_;
+};
+
 }  // namespace
 
 struct Renderer::Impl {
@@ -633,7 +649,7 @@ Renderer::Renderer(const RenderDef& def, std::unique_ptr<OffscreenContext> conte
   } else if (!def.font_family.empty()) {
     impl_->font_data = readFontFile(findFontFile(def.font_family));
   }
-  impl_->ensureCurrent();
+  const CurrentContext current(*impl_->context);
   impl_->init();
   impl_->width = def.width_px;
   impl_->height = def.height_px;
@@ -665,7 +681,7 @@ void Renderer::setSize(int width_px, int height_px) {
                 std::to_string(height_px));
   }
   if (width_px == impl_->width && height_px == impl_->height) return;
-  impl_->ensureCurrent();
+  const CurrentContext current(*impl_->context);
   impl_->width = width_px;
   impl_->height = height_px;
   impl_->allocateFramebuffers();
@@ -691,7 +707,7 @@ void Renderer::renderInto(const Scene& scene, const CameraDef& camera_def, RgbIm
                 std::to_string(x_offset_px) + " of a " + std::to_string(out.width) + "x" +
                 std::to_string(out.height) + " image");
   }
-  impl_->ensureCurrent();
+  const CurrentContext current(*impl_->context);
   impl_->draw(scene, camera(scene, camera_def));
   // llvmpipe reads RGBA with a plain copy but converts to RGB pixel by pixel (~10x slower):
   // read RGBA and drop alpha here.

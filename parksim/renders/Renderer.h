@@ -11,7 +11,7 @@
 // and sides darken.
 //
 // Not thread-safe; use a renderer from one thread at a time (it makes its context current on
-// the calling thread whenever it draws).
+// the calling thread while it draws, and releases it afterwards).
 
 #include <memory>
 #include <string>

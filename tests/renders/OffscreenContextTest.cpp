@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <thread>
 
 #include "RenderTestUtil.h"
 #include "parksim/core/Error.h"
@@ -173,6 +174,30 @@ TEST(OffscreenContextTest, EglAndOsMesaDrawIdenticalImages) {
     for (std::size_t i = 0; i < a.pixels.size(); ++i) differing += a.pixels[i] != b.pixels[i];
     EXPECT_EQ(differing, 0u) << "bytes differ between EGL and OSMesa";
     EXPECT_EQ(a.pixels, again.pixels);
+  }
+}
+
+// A renderer may move between threads, one at a time (EGL refuses a context that is still
+// current on another thread, so the renderer releases it after each image).
+TEST(OffscreenContextTest, ARendererMovesBetweenThreads) {
+  for (ContextBackend backend : {ContextBackend::kEgl, ContextBackend::kOsMesa}) {
+    if (!contextBackendBuilt(backend)) continue;
+    SCOPED_TRACE(toString(backend));
+    RenderDef def;
+    def.width_px = 160;
+    def.height_px = 120;
+    def.context.backend = backend;
+    Renderer renderer(def);
+    const View v = views().front();
+    RgbImage here;
+    RgbImage there;
+    RgbImage back;
+    renderer.render(v.scene, v.camera, here);
+    std::thread other([&] { renderer.render(v.scene, v.camera, there); });
+    other.join();
+    renderer.render(v.scene, v.camera, back);
+    EXPECT_EQ(here.pixels, there.pixels);
+    EXPECT_EQ(here.pixels, back.pixels);
   }
 }
 
