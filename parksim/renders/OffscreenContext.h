@@ -70,8 +70,9 @@ class OffscreenContext {
 };
 
 /// Creates a context of the requested backend and makes it current on the calling thread.
-/// kAuto reads PARKSIM_GL_BACKEND (an explicit backend in `def` wins over it). Throws Error with
-/// the backend's reason when it cannot (with kAuto and neither working: both reasons).
+/// kAuto reads PARKSIM_GL_BACKEND (an explicit backend in `def` wins over it). Throws
+/// EnvironmentError with the backend's reason when it cannot make one (with kAuto and neither
+/// working: both reasons), Error for a bad PARKSIM_GL_BACKEND or a backend not built.
 std::unique_ptr<OffscreenContext> createOffscreenContext(const ContextDef& def = {});
 
 }  // namespace parksim
