@@ -89,19 +89,7 @@ SteerResult RotateTranslateRotateSteering::steer(const Pose2& from, const WheelS
   rotate(angleDiff(to.theta, pose.theta));
   traj.points.push_back({static_cast<double>(traj.points.size()) * dt, pose, {}});
 
-  const std::size_t full_periods = traj.points.size() - 1;
-  const auto horizon_periods = static_cast<std::size_t>(std::lround(def_.horizon_s / dt));
-  if (mode == SteerMode::kFixedHorizon && full_periods > horizon_periods) {
-    // Cut after the horizon: the robot is still moving and carries its wheel speeds on.
-    traj.points.resize(horizon_periods + 1);
-    traj.points.back().wheels = {};
-    result.reached = false;
-    return result;
-  }
-  // The integrated end differs from the target by rounding only; store the target itself so
-  // trajectories that continue from `to` join bit for bit.
-  traj.points.back().pose = to;
-  result.reached = true;
+  finishAtTarget(result, to, mode, def_.horizon_s, dt);
   return result;
 }
 

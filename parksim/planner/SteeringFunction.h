@@ -31,6 +31,14 @@ struct SteerResult {
   bool reached = false;
 };
 
+/// The common end of steering functions that plan a whole path to `to` (rotate-translate-rotate,
+/// Reeds-Shepp): in kFixedHorizon, a trajectory longer than `horizon_s` is cut after it (the
+/// robot still moving, its last point with zero wheel speeds as every trajectory's) and
+/// `reached` is false; otherwise the last pose is set to `to` itself, which the integration
+/// missed by rounding only, so trajectories continuing from `to` join bit for bit.
+void finishAtTarget(SteerResult& result, const Pose2& to, SteerMode mode, double horizon_s,
+                    double period_s);
+
 class SteeringFunction {
  public:
   virtual ~SteeringFunction() = default;

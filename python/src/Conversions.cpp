@@ -132,58 +132,54 @@ Trajectory trajectoryFrom(const py::handle& plan) {
   return traj;
 }
 
+namespace {
+
+// Columns and values as executedCsv writes them (sim/EpisodeFiles.h): the ones every episode has.
+template <typename Record>
+void fillExecuted(Record& r, const ExecutedRow& row) {
+  r.t = row.t_s;
+  r.x = row.pose.x;
+  r.y = row.pose.y;
+  r.theta = row.pose.theta;
+  r.x_ref = row.reference.x;
+  r.y_ref = row.reference.y;
+  r.theta_ref = row.reference.theta;
+  r.omega_left_cmd = row.wheels_cmd.left_radps;
+  r.omega_right_cmd = row.wheels_cmd.right_radps;
+  r.omega_left = row.wheels.left_radps;
+  r.omega_right = row.wheels.right_radps;
+  r.pos_err = row.pos_err_m;
+  r.heading_err = row.heading_err_rad;
+}
+
+}  // namespace
+
 py::array executedArray(const std::vector<ExecutedRow>& rows, bool realism_columns) {
   registerDtypes();
-  if (realism_columns) {
-    py::array_t<ExecutedRealismRecord> out(static_cast<py::ssize_t>(rows.size()));
-    ExecutedRealismRecord* r = out.mutable_data();
-    for (const ExecutedRow& row : rows) {
-      *r++ = {row.t_s,
-              row.pose.x,
-              row.pose.y,
-              row.pose.theta,
-              row.reference.x,
-              row.reference.y,
-              row.reference.theta,
-              row.wheels_cmd.left_radps,
-              row.wheels_cmd.right_radps,
-              row.wheels.left_radps,
-              row.wheels.right_radps,
-              row.pos_err_m,
-              row.heading_err_rad,
-              row.estimate.x,
-              row.estimate.y,
-              row.estimate.theta,
-              row.est_pos_err_m,
-              row.est_heading_err_rad,
-              row.effort.left_radps,
-              row.effort.right_radps,
-              row.torque_nm.left_radps,
-              row.torque_nm.right_radps,
-              row.slip_mps.left_radps,
-              row.slip_mps.right_radps,
-              row.encoder_rad.left_radps,
-              row.encoder_rad.right_radps};
-    }
+  if (!realism_columns) {
+    py::array_t<ExecutedRecord> out(static_cast<py::ssize_t>(rows.size()));
+    ExecutedRecord* r = out.mutable_data();
+    for (const ExecutedRow& row : rows) fillExecuted(*r++, row);
     return out;
   }
-  py::array_t<ExecutedRecord> out(static_cast<py::ssize_t>(rows.size()));
-  ExecutedRecord* r = out.mutable_data();
-  // Columns and values as executedCsv writes them (sim/EpisodeFiles.h).
+  py::array_t<ExecutedRealismRecord> out(static_cast<py::ssize_t>(rows.size()));
+  ExecutedRealismRecord* r = out.mutable_data();
   for (const ExecutedRow& row : rows) {
-    *r++ = {row.t_s,
-            row.pose.x,
-            row.pose.y,
-            row.pose.theta,
-            row.reference.x,
-            row.reference.y,
-            row.reference.theta,
-            row.wheels_cmd.left_radps,
-            row.wheels_cmd.right_radps,
-            row.wheels.left_radps,
-            row.wheels.right_radps,
-            row.pos_err_m,
-            row.heading_err_rad};
+    fillExecuted(*r, row);
+    r->x_est = row.estimate.x;
+    r->y_est = row.estimate.y;
+    r->theta_est = row.estimate.theta;
+    r->est_pos_err = row.est_pos_err_m;
+    r->est_heading_err = row.est_heading_err_rad;
+    r->effort_left = row.effort.left_radps;
+    r->effort_right = row.effort.right_radps;
+    r->torque_left = row.torque_nm.left_radps;
+    r->torque_right = row.torque_nm.right_radps;
+    r->slip_left = row.slip_mps.left_radps;
+    r->slip_right = row.slip_mps.right_radps;
+    r->encoder_left = row.encoder_rad.left_radps;
+    r->encoder_right = row.encoder_rad.right_radps;
+    ++r;
   }
   return out;
 }

@@ -1,0 +1,16 @@
+#include "parksim/planner/PlanResult.h"
+
+namespace parksim {
+
+const char* toString(PlanStatus status) {
+  switch (status) {
+    case PlanStatus::kSolved: return "solved";
+    case PlanStatus::kIterationLimit: return "iteration_limit";
+    case PlanStatus::kTimeLimit: return "time_limit";
+    case PlanStatus::kInvalidStart: return "invalid_start";
+    case PlanStatus::kInvalidGoal: return "invalid_goal";
+  }
+  return "?";
+}
+
+}  // namespace parksim

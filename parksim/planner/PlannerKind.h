@@ -1,0 +1,20 @@
+#pragma once
+// Which planner: the names `plan`, `run`, `bench` and sweep specs accept.
+
+#include <string>
+#include <vector>
+
+namespace parksim {
+
+/// The planner list: every planner `plan`, `run` and `bench` accept (the tree planner's
+/// variants and Hybrid A*, HybridAStar.h).
+enum class PlannerKind { kRrt, kRrtGoalConnect, kRrtStar, kRrtConnect, kHybridAStar };
+
+const char* toString(PlannerKind kind);
+/// Every planner kind, in a fixed order (for benchmarks and help texts).
+std::vector<PlannerKind> allPlannerKinds();
+/// Parses "rrt", "rrt-goal-connect", "rrt-star", "rrt-connect" or "hybrid-a-star"; throws
+/// Error otherwise.
+PlannerKind plannerKindFromString(const std::string& name);
+
+}  // namespace parksim
