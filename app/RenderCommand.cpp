@@ -7,6 +7,7 @@
 
 #include "app/Command.h"
 #include "app/FigureInputs.h"
+#include "app/GlBackendOption.h"
 #include "app/OptionChecks.h"
 #include "app/OutputDir.h"
 #include "app/Overrides.h"
@@ -34,6 +35,7 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     std::string figures = "all";
     PlanCliOptions plan;
     WorldOverrideOptions world_overrides;
+    GlBackendOption gl_backend;
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
@@ -62,6 +64,7 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
                  "0.3 m north of the start, heading 0)")
       ->expected(3)
       ->check(realIn(-1e4, 1e4));
+  opt->gl_backend.addTo(sub);
   addFiguresOption(sub, opt->figures, "default: all")->capture_default_str();
   CLI::App* app = &sub;
 
@@ -73,6 +76,7 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     def.height_px = size.height_px;
     def.cspace_heading_rad = degToRad(opt->cspace_heading_deg);
     def.cspace_slices = opt->slices;
+    def.context = opt->gl_backend.context();
     def.figures = FigureSelection::parse(opt->figures);
 
     FigureInputs inputs;

@@ -15,6 +15,7 @@
 
 #include "app/Command.h"
 #include "app/FigureInputs.h"
+#include "app/GlBackendOption.h"
 #include "app/OptionChecks.h"
 #include "app/OutputDir.h"
 #include "app/Overrides.h"
@@ -155,6 +156,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     double max_tracking_error_mm = -1.0;
     double max_goal_error_mm = -1.0;
     double max_goal_heading_error_deg = -1.0;
+    GlBackendOption gl_backend;
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
@@ -182,6 +184,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
   sub.add_option("--view", opt->view, "top, 3d or both (side by side)")
       ->capture_default_str()
       ->check(CLI::IsMember({"top", "3d", "both"}));
+  opt->gl_backend.addTo(sub);
   sub.add_option("--realism", opt->realism,
                  "robot model: ideal (default; idealised motors, true pose at 240 Hz), lab "
                  "(motors, mocap at 100 Hz with 60 ms latency, fused estimate), odometry "
@@ -235,6 +238,8 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     FigureDef figure_def;
     figure_def.figures = opt->figures.empty() ? (film ? FigureSelection::all() : FigureSelection{})
                                               : FigureSelection::parse(opt->figures);
+    // The GL backend, checked before anything is written when frames or figures are drawn.
+    if (film || !figure_def.figures.empty()) figure_def.context = opt->gl_backend.context();
     FrameDef frame_def;
     if (film) {  // bad film options fail before anything is planned or written
       const ImageSize size = parseImageSize(opt->size);
@@ -244,6 +249,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       frame_def.view = frameViewFromString(opt->view);
       frame_def.video = opt->video;
       frame_def.gif = opt->gif;
+      frame_def.context = figure_def.context;
     }
     // Every input is read and checked before DIR is touched: bad input leaves an earlier run's
     // outputs as they were. The outputs are written into a staging directory that replaces DIR
@@ -327,6 +333,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     for (const auto& [key, value] : provenance.items()) {
       metrics["provenance." + key] = value;
     }
+    if (recorder) metrics["provenance.gl"] = recorder->glDescription();
     metrics["world"] = scenario.source_path;
     metrics["scenario"] = scenario.name;
     metrics["tolerance.max_pos_err_m"] = tolerance.max_pos_err_m;

@@ -85,6 +85,9 @@ int main(int argc, char** argv) {
       if (output.quiet && std::freopen("/dev/null", "w", stdout) == nullptr) return kExitInternal;
       return run(output);
     }
+  } catch (const parksim::EnvironmentError& e) {  // no OpenGL, no font: the machine, not the input
+    std::fprintf(stderr, "parksim: error: %s\n", printable(e.what()).c_str());
+    return kExitInternal;
   } catch (const parksim::Error& e) {
     std::fprintf(stderr, "parksim: error: %s\n", printable(e.what()).c_str());
     return kExitBadInput;

@@ -5,7 +5,8 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config ninja-build
   libbullet-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
-  libnanoflann-dev libosmesa6-dev libstb-dev zlib1g-dev fonts-dejavu-core
+  libnanoflann-dev libstb-dev zlib1g-dev
+  libegl-dev libgl1-mesa-dri libosmesa6-dev libfontconfig-dev fonts-dejavu-core
   libgtest-dev libgmock-dev libbenchmark-dev libompl-dev ffmpeg locales
   slurm-wlm munge python3
   pybind11-dev python3-dev python3-numpy python3-pytest python3-yaml python3-pandas

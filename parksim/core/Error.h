@@ -13,4 +13,11 @@ class Error : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The machine lacks what a request needs (no OpenGL context can be made, a font is not
+/// installed): not the input's fault. The command line exits with 3 for it rather than 2.
+class EnvironmentError : public Error {
+ public:
+  using Error::Error;
+};
+
 }  // namespace parksim

@@ -403,6 +403,7 @@ class FigureWriter {
     r.width_px = def.width_px;
     r.height_px = def.height_px;
     r.msaa_samples = def.msaa_samples;
+    r.context = def.context;
     return r;
   }
 
@@ -461,6 +462,7 @@ void writeTrackingPlot(const TrackingSeries& series, const std::string& title, c
   r.width_px = def.width_px;
   r.height_px = def.height_px;
   r.msaa_samples = def.msaa_samples;
+  r.context = def.context;
   Renderer renderer(r);
   RgbImage image;
   CameraDef camera;

@@ -24,6 +24,7 @@
 #include "parksim/core/Trajectory.h"
 #include "parksim/renders/Camera.h"
 #include "parksim/renders/FigureSelection.h"
+#include "parksim/renders/OffscreenContext.h"
 #include "parksim/renders/Scene.h"
 #include "parksim/renders/SceneStyle.h"
 #include "parksim/renders/TrackingPlot.h"
@@ -41,6 +42,8 @@ struct FigureDef {
   int cspace_slices = 36;             ///< slices in the stacked C-space figure
   double footprint_spacing_m = 0.07;  ///< plan figures: path length between footprint outlines, m
   double footprint_turn_rad = degToRad(30.0);  ///< ... or heading change, rad
+  /// The OpenGL backend (default auto: PARKSIM_GL_BACKEND, else EGL, then OSMesa).
+  ContextDef context;
   /// The figures writeFigures writes (FigureSelection.h); the others are not built.
   FigureSelection figures = FigureSelection::all();
 };

@@ -1,7 +1,8 @@
 #pragma once
 // Text with stb_truetype: glyphs of a TrueType font (DejaVu Sans Mono from fonts-dejavu-core by
-// default) packed into one coverage bitmap per pixel size, and laid out as textured quads.
-// Pure CPU work; the renderer uploads the bitmap once and draws the quads.
+// default, found through fontconfig: FontLookup.h) packed into one coverage bitmap per pixel size,
+// and laid out as textured quads. Pure CPU work; the renderer uploads the bitmap once and draws the
+// quads.
 
 #include <cstdint>
 #include <memory>
@@ -11,9 +12,6 @@
 #include <vector>
 
 namespace parksim {
-
-inline constexpr const char* kDefaultFontPath =
-    "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
 
 /// Reads a whole font file. Throws Error naming the file and the package that ships the default.
 std::vector<unsigned char> readFontFile(const std::string& path);

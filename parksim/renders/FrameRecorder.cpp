@@ -363,6 +363,7 @@ FrameRecorder::FrameRecorder(const Scenario& scenario, const FrameDef& def)
   render_def.width_px = def.width_px;
   render_def.height_px = def.height_px;
   render_def.msaa_samples = def.msaa_samples;
+  render_def.context = def.context;
   impl_->renderer = std::make_unique<Renderer>(render_def);
   const int image_width = def.view == FrameView::kBoth ? 2 * def.width_px : def.width_px;
   impl_->queue = std::make_unique<EncodeQueue>(
@@ -440,6 +441,8 @@ RecordingResult FrameRecorder::finish() {
 }
 
 int FrameRecorder::frames() const { return impl_->next_frame; }
+
+std::string FrameRecorder::glDescription() const { return impl_->renderer->description(); }
 
 std::string FrameRecorder::framePath(int index) const {
   return framePathIn(impl_->frames_dir, index);

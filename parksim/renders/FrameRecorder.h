@@ -23,6 +23,7 @@
 #include "parksim/core/Scenario.h"
 #include "parksim/core/Trajectory.h"
 #include "parksim/renders/Camera.h"
+#include "parksim/renders/OffscreenContext.h"
 #include "parksim/renders/SceneStyle.h"
 
 namespace parksim {
@@ -76,6 +77,8 @@ struct FrameDef {
   /// Most frames one recording may write (docs/limits.md): 50,000 frames are ~28 min of
   /// simulated time at 30 fps and ~1.5 min of rendering at 640x480.
   int max_frames = 50'000;
+  /// The OpenGL backend (default auto: PARKSIM_GL_BACKEND, else EGL, then OSMesa).
+  ContextDef context;
 };
 
 /// The frames an episode of `duration_s` simulated seconds takes at def.fps (one per 1/fps and
@@ -147,6 +150,8 @@ class FrameRecorder {
 
   /// Frames rendered so far.
   int frames() const;
+  /// The GL context's description (Renderer::description), for provenance.
+  std::string glDescription() const;
   /// Path of frame `index`: DIR/frames/%06d.png.
   std::string framePath(int index) const;
 

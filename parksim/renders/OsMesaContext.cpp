@@ -1,9 +1,10 @@
 #include "parksim/renders/OsMesaContext.h"
 
+// First: <GL/osmesa.h> includes <GL/gl.h>, which would hide glcorearb.h's GL 1.1 types.
+#include "parksim/renders/GlFunctions.h"
+
+#include <EGL/egl.h>
 #include <GL/osmesa.h>
-// osmesa.h pulls in the compatibility GL header; core-profile entry points come from glext.h
-// (libOSMesa exports them, GL_GLEXT_PROTOTYPES is set for this library).
-#include <GL/glext.h>
 
 #include <array>
 #include <string>
@@ -30,39 +31,54 @@ class OsMesaContext final : public OffscreenContext {
                                          0};
     ctx_ = OSMesaCreateContextAttribs(attribs.data(), nullptr);
     if (ctx_ == nullptr) {
-      throw Error("OSMesa: cannot create an OpenGL " + std::to_string(def.gl_major) + "." +
-                  std::to_string(def.gl_minor) + " core context");
+      throw EnvironmentError("OSMesa: cannot create an OpenGL " + std::to_string(def.gl_major) +
+                             "." + std::to_string(def.gl_minor) + " core context");
     }
-    makeCurrent();
-    auto str = [](GLenum name) {
-      const auto* s = reinterpret_cast<const char*>(glGetString(name));
-      return std::string(s != nullptr ? s : "?");
-    };
-    description_ = "OSMesa: " + str(GL_VERSION) + ", " + str(GL_RENDERER);
+    try {
+      makeCurrent();
+      setGlFunctions(loadGlFunctions(&OSMesaGetProcAddress, "OSMesa"));
+      description_ = "OSMesa: " + glVersionAndRenderer(gl());
+    } catch (...) {
+      release();
+      throw;
+    }
   }
 
-  ~OsMesaContext() override {
-    if (OSMesaGetCurrentContext() == ctx_)
-      OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);
-    OSMesaDestroyContext(ctx_);
-  }
+  ~OsMesaContext() override { release(); }
 
   OsMesaContext(const OsMesaContext&) = delete;
   OsMesaContext& operator=(const OsMesaContext&) = delete;
 
   void makeCurrent() override {
+    // Mesa's EGL and OSMesa share one GL dispatch (libglapi) but keep separate books of what is
+    // current: an EGL context left current would go on believing it is, and its calls would
+    // reach this context. It is released first (afterwards, releasing it would unbind this one).
+    if (eglGetCurrentContext() != EGL_NO_CONTEXT) {
+      eglMakeCurrent(eglGetCurrentDisplay(), EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    }
     // Drawing goes to the caller's framebuffer objects; the window-system buffer OSMesa
     // insists on is a single pixel.
     if (!OSMesaMakeCurrent(ctx_, pixel_.data(), GL_UNSIGNED_BYTE, 1, 1)) {
-      throw Error("OSMesa: cannot make the context current");
+      throw EnvironmentError("OSMesa: cannot make the context current");
     }
   }
 
   bool isCurrent() const override { return OSMesaGetCurrentContext() == ctx_; }
 
+  void releaseCurrent() override {
+    if (isCurrent()) OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);
+  }
+
   std::string description() const override { return description_; }
 
+  ContextBackend backend() const override { return ContextBackend::kOsMesa; }
+
  private:
+  void release() {
+    releaseCurrent();
+    OSMesaDestroyContext(ctx_);
+  }
+
   OSMesaContext ctx_ = nullptr;
   std::array<unsigned char, 4> pixel_{};
   std::string description_;

@@ -1,5 +1,6 @@
 #pragma once
-// Internal to parksim_render: the OSMesa backend of OffscreenContext.
+// Internal to parksim_render: the OSMesa backend of OffscreenContext (compiled only when
+// pkg-config finds osmesa; Mesa 25.1 and later have none).
 
 #include <memory>
 

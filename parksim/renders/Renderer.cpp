@@ -1,13 +1,9 @@
 #include "parksim/renders/Renderer.h"
 
-#include <GL/gl.h>
-#include <GL/glext.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <map>
 #include <optional>
 #include <string>
@@ -17,6 +13,9 @@
 #include <Eigen/Geometry>
 
 #include "parksim/core/Error.h"
+#include "parksim/renders/Font.h"
+#include "parksim/renders/GlFunctions.h"
+#include "parksim/renders/RendererPrograms.h"
 
 namespace parksim {
 
@@ -34,121 +33,6 @@ struct OverlayVertex {
   float uv[2];  // atlas coordinates; negative: solid colour
   std::uint8_t color[4];
 };
-
-constexpr const char* kMeshVs = R"(#version 330 core
-layout(location = 0) in vec3 a_pos;
-layout(location = 1) in vec3 a_normal;
-layout(location = 2) in vec4 a_color;
-uniform mat4 u_view_proj;
-out vec3 v_normal;
-out vec4 v_color;
-void main() {
-  gl_Position = u_view_proj * vec4(a_pos, 1.0);
-  v_normal = a_normal;
-  v_color = a_color;
-}
-)";
-
-constexpr const char* kFlatFs = R"(#version 330 core
-in vec3 v_normal;
-in vec4 v_color;
-out vec4 o_color;
-void main() { o_color = v_color; }
-)";
-
-// The light is scaled so that an upward face gets exactly its colour (factor 1).
-constexpr const char* kLitFs = R"(#version 330 core
-in vec3 v_normal;
-in vec4 v_color;
-uniform vec3 u_light;
-uniform float u_ambient;
-uniform float u_up_factor;
-out vec4 o_color;
-void main() {
-  float d = max(dot(normalize(v_normal), u_light), 0.0);
-  float f = min((u_ambient + (1.0 - u_ambient) * d) / u_up_factor, 1.0);
-  o_color = vec4(v_color.rgb * f, v_color.a);
-}
-)";
-
-constexpr const char* kOverlayVs = R"(#version 330 core
-layout(location = 0) in vec4 a_pos;
-layout(location = 1) in vec2 a_uv;
-layout(location = 2) in vec4 a_color;
-out vec2 v_uv;
-out vec4 v_color;
-void main() {
-  // Rows are read back top first: flip y so the image needs no flip on the CPU.
-  gl_Position = vec4(a_pos.x, -a_pos.y, a_pos.z, a_pos.w);
-  v_uv = a_uv;
-  v_color = a_color;
-}
-)";
-
-// v_uv.x: distance from a line's centre, pixels; v_uv.y: the line's half width. Coverage fades
-// over the outermost pixel, which anti-aliases lines when there is no multisampling. Solid
-// areas pass a huge half width.
-constexpr const char* kSolidFs = R"(#version 330 core
-in vec2 v_uv;
-in vec4 v_color;
-out vec4 o_color;
-void main() {
-  float coverage = clamp(v_uv.y + 0.5 - abs(v_uv.x), 0.0, 1.0);
-  o_color = vec4(v_color.rgb, v_color.a * coverage);
-}
-)";
-
-constexpr const char* kTextFs = R"(#version 330 core
-in vec2 v_uv;
-in vec4 v_color;
-uniform sampler2D u_atlas;
-out vec4 o_color;
-void main() { o_color = vec4(v_color.rgb, v_color.a * texture(u_atlas, v_uv).r); }
-)";
-
-GLuint compileShader(GLenum type, const char* source) {
-  const GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    char log[1024] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
-    throw Error(std::string("renderer: shader does not compile: ") + log);
-  }
-  return shader;
-}
-
-GLuint linkProgram(const char* vs, const char* fs) {
-  const GLuint v = compileShader(GL_VERTEX_SHADER, vs);
-  const GLuint f = compileShader(GL_FRAGMENT_SHADER, fs);
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, v);
-  glAttachShader(program, f);
-  glLinkProgram(program);
-  glDeleteShader(v);
-  glDeleteShader(f);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    char log[1024] = {};
-    glGetProgramInfoLog(program, sizeof log, nullptr, log);
-    glDeleteProgram(program);
-    throw Error(std::string("renderer: shader program does not link: ") + log);
-  }
-  return program;
-}
-
-void checkGl(const char* where) {
-  const GLenum err = glGetError();
-  if (err != GL_NO_ERROR) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "renderer: OpenGL error 0x%04x in %s", err, where);
-    throw Error(buf);
-  }
-}
 
 // Half width given to solid areas drawn by the line shader: never fades.
 constexpr float kSolidHalfWidth = 1e6f;
@@ -194,11 +78,28 @@ std::optional<std::array<int, 4>> groundRectangle(const Scene& scene, const Came
   return std::array<int, 4>{i0, j0, i1 - i0, j1 - j0};
 }
 
+// The context is current on the calling thread while the guard lives and released after, so a
+// renderer may move between threads (one at a time): EGL refuses to make a context current while
+// it is still current on another thread. Releasing costs nothing measurable next to a frame.
+class CurrentContext {
+ public:
+  explicit CurrentContext(OffscreenContext& context) : context_(context) {
+    if (!context_.isCurrent()) context_.makeCurrent();
+  }
+  ~CurrentContext() { context_.releaseCurrent(); }
+  CurrentContext(const CurrentContext&) = delete;
+  CurrentContext& operator=(const CurrentContext&) = delete;
+
+ private:
+  OffscreenContext& context_;
+};
+
 }  // namespace
 
 struct Renderer::Impl {
   RenderDef def;
   std::unique_ptr<OffscreenContext> context;
+  const GlFunctions* gl = nullptr;  // the context's entry points
   std::vector<unsigned char> font_data;
   std::map<int, std::pair<FontAtlas, GLuint>> fonts;  // by pixel height
 
@@ -208,11 +109,7 @@ struct Renderer::Impl {
   GLint max_samples = 1;
   GLuint msaa_fbo = 0, msaa_color = 0, msaa_depth = 0;
   GLuint resolve_fbo = 0, resolve_color = 0, resolve_depth = 0;
-  // Separate programs rather than branches on uniforms: llvmpipe's shaders run both sides of
-  // a branch under a mask, so an unused texture fetch or lighting term costs every fragment.
-  GLuint flat_program = 0, lit_program = 0, solid_program = 0, text_program = 0;
-  GLint flat_view_proj = -1, lit_view_proj = -1;
-  GLint u_light = -1, u_ambient = -1, u_up_factor = -1;
+  RendererPrograms programs;
   GLuint mesh_vao = 0, mesh_vbo = 0, overlay_vao = 0, overlay_vbo = 0;
 
   // Scratch, kept between frames so steady-state drawing does not allocate.
@@ -253,101 +150,92 @@ struct Renderer::Impl {
 };
 
 void Renderer::Impl::init() {
-  const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  const char* version = reinterpret_cast<const char*>(gl->GetString(GL_VERSION));
   if (version == nullptr) throw Error("renderer: the GL context does not answer");
-  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
-  flat_program = linkProgram(kMeshVs, kFlatFs);
-  lit_program = linkProgram(kMeshVs, kLitFs);
-  solid_program = linkProgram(kOverlayVs, kSolidFs);
-  text_program = linkProgram(kOverlayVs, kTextFs);
-  flat_view_proj = glGetUniformLocation(flat_program, "u_view_proj");
-  lit_view_proj = glGetUniformLocation(lit_program, "u_view_proj");
-  u_light = glGetUniformLocation(lit_program, "u_light");
-  u_ambient = glGetUniformLocation(lit_program, "u_ambient");
-  u_up_factor = glGetUniformLocation(lit_program, "u_up_factor");
+  gl->GetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  programs.create(*gl);
 
-  glGenVertexArrays(1, &mesh_vao);
-  glGenBuffers(1, &mesh_vbo);
-  glBindVertexArray(mesh_vao);
-  glBindBuffer(GL_ARRAY_BUFFER, mesh_vbo);
+  gl->GenVertexArrays(1, &mesh_vao);
+  gl->GenBuffers(1, &mesh_vbo);
+  gl->BindVertexArray(mesh_vao);
+  gl->BindBuffer(GL_ARRAY_BUFFER, mesh_vbo);
   const auto mesh_stride = static_cast<GLsizei>(sizeof(MeshVertex));
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, mesh_stride,
-                        reinterpret_cast<void*>(offsetof(MeshVertex, pos)));
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, mesh_stride,
-                        reinterpret_cast<void*>(offsetof(MeshVertex, normal)));
-  glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, mesh_stride,
-                        reinterpret_cast<void*>(offsetof(MeshVertex, color)));
+  gl->EnableVertexAttribArray(0);
+  gl->VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, mesh_stride,
+                          reinterpret_cast<void*>(offsetof(MeshVertex, pos)));
+  gl->EnableVertexAttribArray(1);
+  gl->VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, mesh_stride,
+                          reinterpret_cast<void*>(offsetof(MeshVertex, normal)));
+  gl->EnableVertexAttribArray(2);
+  gl->VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, mesh_stride,
+                          reinterpret_cast<void*>(offsetof(MeshVertex, color)));
 
-  glGenVertexArrays(1, &overlay_vao);
-  glGenBuffers(1, &overlay_vbo);
-  glBindVertexArray(overlay_vao);
-  glBindBuffer(GL_ARRAY_BUFFER, overlay_vbo);
+  gl->GenVertexArrays(1, &overlay_vao);
+  gl->GenBuffers(1, &overlay_vbo);
+  gl->BindVertexArray(overlay_vao);
+  gl->BindBuffer(GL_ARRAY_BUFFER, overlay_vbo);
   const auto overlay_stride = static_cast<GLsizei>(sizeof(OverlayVertex));
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, overlay_stride,
-                        reinterpret_cast<void*>(offsetof(OverlayVertex, pos)));
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, overlay_stride,
-                        reinterpret_cast<void*>(offsetof(OverlayVertex, uv)));
-  glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, overlay_stride,
-                        reinterpret_cast<void*>(offsetof(OverlayVertex, color)));
-  glBindVertexArray(0);
+  gl->EnableVertexAttribArray(0);
+  gl->VertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, overlay_stride,
+                          reinterpret_cast<void*>(offsetof(OverlayVertex, pos)));
+  gl->EnableVertexAttribArray(1);
+  gl->VertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, overlay_stride,
+                          reinterpret_cast<void*>(offsetof(OverlayVertex, uv)));
+  gl->EnableVertexAttribArray(2);
+  gl->VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, overlay_stride,
+                          reinterpret_cast<void*>(offsetof(OverlayVertex, color)));
+  gl->BindVertexArray(0);
 
-  glUseProgram(text_program);
-  glUniform1i(glGetUniformLocation(text_program, "u_atlas"), 0);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  checkGl("setup");
+  gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  gl->PixelStorei(GL_PACK_ALIGNMENT, 1);
+  checkGl(*gl, "setup");
 }
 
 void Renderer::Impl::releaseFramebuffers() {
   const GLuint fbos[] = {msaa_fbo, resolve_fbo};
   const GLuint rbs[] = {msaa_color, msaa_depth, resolve_color, resolve_depth};
-  glDeleteFramebuffers(2, fbos);
-  glDeleteRenderbuffers(4, rbs);
+  gl->DeleteFramebuffers(2, fbos);
+  gl->DeleteRenderbuffers(4, rbs);
   msaa_fbo = msaa_color = msaa_depth = resolve_fbo = resolve_color = resolve_depth = 0;
 }
 
 void Renderer::Impl::allocateFramebuffers() {
   releaseFramebuffers();
   auto storage = [&](GLuint& rb, GLenum format, int n) {
-    glGenRenderbuffers(1, &rb);
-    glBindRenderbuffer(GL_RENDERBUFFER, rb);
+    gl->GenRenderbuffers(1, &rb);
+    gl->BindRenderbuffer(GL_RENDERBUFFER, rb);
     if (n > 1) {
-      glRenderbufferStorageMultisample(GL_RENDERBUFFER, n, format, width, height);
+      gl->RenderbufferStorageMultisample(GL_RENDERBUFFER, n, format, width, height);
     } else {
-      glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+      gl->RenderbufferStorage(GL_RENDERBUFFER, format, width, height);
     }
   };
-  auto complete = [](const char* which) {
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+  auto complete = [this](const char* which) {
+    if (gl->CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
       throw Error(std::string("renderer: ") + which + " framebuffer is incomplete");
     }
   };
   samples = std::clamp(def.msaa_samples, 1, std::max(1, static_cast<int>(max_samples)));
-  glGenFramebuffers(1, &resolve_fbo);
-  glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo);
+  gl->GenFramebuffers(1, &resolve_fbo);
+  gl->BindFramebuffer(GL_FRAMEBUFFER, resolve_fbo);
   storage(resolve_color, GL_RGBA8, 1);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_color);
+  gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_color);
   if (samples == 1) {
     storage(resolve_depth, GL_DEPTH_COMPONENT24, 1);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, resolve_depth);
+    gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                resolve_depth);
   }
   complete("resolve");
   if (samples > 1) {
-    glGenFramebuffers(1, &msaa_fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo);
+    gl->GenFramebuffers(1, &msaa_fbo);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, msaa_fbo);
     storage(msaa_color, GL_RGBA8, samples);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color);
+    gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color);
     storage(msaa_depth, GL_DEPTH_COMPONENT24, samples);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaa_depth);
+    gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaa_depth);
     complete("multisample");
   }
-  checkGl("framebuffer allocation");
+  checkGl(*gl, "framebuffer allocation");
 }
 
 std::pair<FontAtlas, GLuint>* Renderer::Impl::font(float size_px) {
@@ -357,14 +245,14 @@ std::pair<FontAtlas, GLuint>* Renderer::Impl::font(float size_px) {
   if (it == fonts.end()) {
     FontAtlas atlas(font_data, static_cast<float>(key));
     GLuint tex = 0;
-    glGenTextures(1, &tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, atlas.atlasWidth(), atlas.atlasHeight(), 0, GL_RED,
-                 GL_UNSIGNED_BYTE, atlas.bitmap().data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl->GenTextures(1, &tex);
+    gl->BindTexture(GL_TEXTURE_2D, tex);
+    gl->TexImage2D(GL_TEXTURE_2D, 0, GL_R8, atlas.atlasWidth(), atlas.atlasHeight(), 0, GL_RED,
+                   GL_UNSIGNED_BYTE, atlas.bitmap().data());
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     it = fonts.emplace(key, std::make_pair(std::move(atlas), tex)).first;
   }
   return &it->second;
@@ -627,16 +515,16 @@ void Renderer::Impl::draw(const Scene& scene, const Camera& cam) {
   std::map<int, std::vector<OverlayVertex>> text_by_font;
   for (const SceneText& t : scene.texts) addText(t, cam, text_by_font);
 
-  glBindFramebuffer(GL_FRAMEBUFFER, samples > 1 ? msaa_fbo : resolve_fbo);
-  glViewport(0, 0, width, height);
+  gl->BindFramebuffer(GL_FRAMEBUFFER, samples > 1 ? msaa_fbo : resolve_fbo);
+  gl->Viewport(0, 0, width, height);
   // With a ground rectangle the whole framebuffer is cleared to its colour (llvmpipe's fast
   // path) and the background is put back around it by scissored clears of the thin margins
   // (a scissored clear is drawn like a quad: cheap only when small).
   const Rgba8& fill = ground ? scene.polygons.front().color : scene.background;
-  glClearColor(fill.r / 255.0f, fill.g / 255.0f, fill.b / 255.0f, 1.0f);
-  glClearDepth(1.0);
-  glDepthMask(GL_TRUE);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  gl->ClearColor(fill.r / 255.0f, fill.g / 255.0f, fill.b / 255.0f, 1.0f);
+  gl->ClearDepth(1.0);
+  gl->DepthMask(GL_TRUE);
+  gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (ground) {
     const std::array<int, 4>& r = *ground;  // x, y (image rows from the top), width, height
     const std::array<std::array<int, 4>, 4> margins = {{
@@ -646,40 +534,40 @@ void Renderer::Impl::draw(const Scene& scene, const Camera& cam) {
         {r[0] + r[2], r[1], width - r[0] - r[2], r[3]},  // right
     }};
     const Rgba8& bg = scene.background;
-    glClearColor(bg.r / 255.0f, bg.g / 255.0f, bg.b / 255.0f, 1.0f);
-    glEnable(GL_SCISSOR_TEST);
+    gl->ClearColor(bg.r / 255.0f, bg.g / 255.0f, bg.b / 255.0f, 1.0f);
+    gl->Enable(GL_SCISSOR_TEST);
     for (const std::array<int, 4>& m : margins) {
       if (m[2] <= 0 || m[3] <= 0) continue;
-      glScissor(m[0], m[1], m[2], m[3]);  // image rows are framebuffer rows (y is flipped)
-      glClear(GL_COLOR_BUFFER_BIT);
+      gl->Scissor(m[0], m[1], m[2], m[3]);  // image rows are framebuffer rows (y is flipped)
+      gl->Clear(GL_COLOR_BUFFER_BIT);
     }
-    glDisable(GL_SCISSOR_TEST);
+    gl->Disable(GL_SCISSOR_TEST);
   }
-  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
-  if (samples > 1) glEnable(GL_MULTISAMPLE);
+  gl->BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  gl->Enable(GL_DEPTH_TEST);
+  gl->DepthFunc(GL_LEQUAL);
+  if (samples > 1) gl->Enable(GL_MULTISAMPLE);
 
   // One upload per frame; each batch is a range of the buffer.
-  auto upload = [](GLuint vao, GLuint vbo, const auto& first, const auto& second) {
+  auto upload = [this](GLuint vao, GLuint vbo, const auto& first, const auto& second) {
     using Vertex = typename std::decay_t<decltype(first)>::value_type;
-    glBindVertexArray(vao);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    gl->BindVertexArray(vao);
+    gl->BindBuffer(GL_ARRAY_BUFFER, vbo);
     const auto bytes = static_cast<GLsizeiptr>((first.size() + second.size()) * sizeof(Vertex));
-    glBufferData(GL_ARRAY_BUFFER, bytes, nullptr, GL_STREAM_DRAW);
-    glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(first.size() * sizeof(Vertex)),
-                    first.data());
-    glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(first.size() * sizeof(Vertex)),
-                    static_cast<GLsizeiptr>(second.size() * sizeof(Vertex)), second.data());
+    gl->BufferData(GL_ARRAY_BUFFER, bytes, nullptr, GL_STREAM_DRAW);
+    gl->BufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(first.size() * sizeof(Vertex)),
+                      first.data());
+    gl->BufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(first.size() * sizeof(Vertex)),
+                      static_cast<GLsizeiptr>(second.size() * sizeof(Vertex)), second.data());
   };
-  auto drawRange = [](std::size_t first, std::size_t count, bool blend) {
+  auto drawRange = [this](std::size_t first, std::size_t count, bool blend) {
     if (count == 0) return;
     if (blend) {
-      glEnable(GL_BLEND);
+      gl->Enable(GL_BLEND);
     } else {
-      glDisable(GL_BLEND);
+      gl->Disable(GL_BLEND);
     }
-    glDrawArrays(GL_TRIANGLES, static_cast<GLint>(first), static_cast<GLsizei>(count));
+    gl->DrawArrays(GL_TRIANGLES, static_cast<GLint>(first), static_cast<GLsizei>(count));
   };
 
   if (!mesh.empty() || !mesh_blend.empty()) {
@@ -691,15 +579,15 @@ void Renderer::Impl::draw(const Scene& scene, const Camera& cam) {
     const double ambient = std::clamp(def.ambient, 0.0, 1.0);
     const double up = ambient + (1.0 - ambient) * std::max(light.z(), 0.0);
     if (cam.perspective) {
-      glUseProgram(lit_program);
-      glUniformMatrix4fv(lit_view_proj, 1, GL_FALSE, m.data());
-      glUniform3f(u_light, static_cast<float>(light.x()), static_cast<float>(light.y()),
-                  static_cast<float>(light.z()));
-      glUniform1f(u_ambient, static_cast<float>(ambient));
-      glUniform1f(u_up_factor, static_cast<float>(std::max(up, 1e-3)));
+      gl->UseProgram(programs.lit);
+      gl->UniformMatrix4fv(programs.lit_view_proj, 1, GL_FALSE, m.data());
+      gl->Uniform3f(programs.light, static_cast<float>(light.x()), static_cast<float>(light.y()),
+                    static_cast<float>(light.z()));
+      gl->Uniform1f(programs.ambient, static_cast<float>(ambient));
+      gl->Uniform1f(programs.up_factor, static_cast<float>(std::max(up, 1e-3)));
     } else {
-      glUseProgram(flat_program);
-      glUniformMatrix4fv(flat_view_proj, 1, GL_FALSE, m.data());
+      gl->UseProgram(programs.flat);
+      gl->UniformMatrix4fv(programs.flat_view_proj, 1, GL_FALSE, m.data());
     }
     upload(mesh_vao, mesh_vbo, mesh, mesh_blend);
     drawRange(0, mesh.size(), false);
@@ -707,41 +595,41 @@ void Renderer::Impl::draw(const Scene& scene, const Camera& cam) {
   }
 
   if (!lines.empty() || !lines_blend.empty()) {
-    glUseProgram(solid_program);
+    gl->UseProgram(programs.solid);
     // Lines are depth-tested (boxes hide what lies under them) but write no depth, so crossing
     // lines simply paint in list order.
-    glDepthMask(GL_FALSE);
+    gl->DepthMask(GL_FALSE);
     upload(overlay_vao, overlay_vbo, lines, lines_blend);
     drawRange(0, lines.size(), false);
     drawRange(lines.size(), lines_blend.size(), true);
   }
-  glDisable(GL_DEPTH_TEST);
+  gl->Disable(GL_DEPTH_TEST);
   if (!text.empty()) {
-    glUseProgram(solid_program);
+    gl->UseProgram(programs.solid);
     upload(overlay_vao, overlay_vbo, text, std::vector<OverlayVertex>{});
     drawRange(0, text.size(), true);
   }
   if (!text_by_font.empty()) {
-    glUseProgram(text_program);
-    glActiveTexture(GL_TEXTURE0);
-    glBindVertexArray(overlay_vao);
-    glBindBuffer(GL_ARRAY_BUFFER, overlay_vbo);
+    gl->UseProgram(programs.text);
+    gl->ActiveTexture(GL_TEXTURE0);
+    gl->BindVertexArray(overlay_vao);
+    gl->BindBuffer(GL_ARRAY_BUFFER, overlay_vbo);
     for (auto& [size, verts] : text_by_font) {
-      glBindTexture(GL_TEXTURE_2D, fonts.at(size).second);
-      glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(verts.size() * sizeof(OverlayVertex)),
-                   verts.data(), GL_STREAM_DRAW);
+      gl->BindTexture(GL_TEXTURE_2D, fonts.at(size).second);
+      gl->BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(verts.size() * sizeof(OverlayVertex)),
+                     verts.data(), GL_STREAM_DRAW);
       drawRange(0, verts.size(), true);
     }
   }
-  glDepthMask(GL_TRUE);
-  glBindVertexArray(0);
+  gl->DepthMask(GL_TRUE);
+  gl->BindVertexArray(0);
 
   if (samples > 1) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo);
-    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    gl->BindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo);
+    gl->BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo);
+    gl->BlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   }
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo);
+  gl->BindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo);
 }
 
 Renderer::Renderer(const RenderDef& def) : Renderer(def, createOffscreenContext(def.context)) {}
@@ -755,8 +643,13 @@ Renderer::Renderer(const RenderDef& def, std::unique_ptr<OffscreenContext> conte
   }
   impl_->def = def;
   impl_->context = std::move(context);
-  if (!def.font_path.empty()) impl_->font_data = readFontFile(def.font_path);
-  impl_->ensureCurrent();
+  impl_->gl = &impl_->context->gl();
+  if (!def.font_path.empty()) {
+    impl_->font_data = readFontFile(def.font_path);
+  } else if (!def.font_family.empty()) {
+    impl_->font_data = readFontFile(findFontFile(def.font_family));
+  }
+  const CurrentContext current(*impl_->context);
   impl_->init();
   impl_->width = def.width_px;
   impl_->height = def.height_px;
@@ -767,21 +660,20 @@ Renderer::~Renderer() {
   if (!impl_ || !impl_->context) return;
   impl_->ensureCurrent();
   impl_->releaseFramebuffers();
-  for (auto& [size, entry] : impl_->fonts) glDeleteTextures(1, &entry.second);
-  glDeleteBuffers(1, &impl_->mesh_vbo);
-  glDeleteBuffers(1, &impl_->overlay_vbo);
-  glDeleteVertexArrays(1, &impl_->mesh_vao);
-  glDeleteVertexArrays(1, &impl_->overlay_vao);
-  for (GLuint program :
-       {impl_->flat_program, impl_->lit_program, impl_->solid_program, impl_->text_program}) {
-    glDeleteProgram(program);
-  }
+  const GlFunctions& gl = *impl_->gl;
+  for (auto& [size, entry] : impl_->fonts) gl.DeleteTextures(1, &entry.second);
+  gl.DeleteBuffers(1, &impl_->mesh_vbo);
+  gl.DeleteBuffers(1, &impl_->overlay_vbo);
+  gl.DeleteVertexArrays(1, &impl_->mesh_vao);
+  gl.DeleteVertexArrays(1, &impl_->overlay_vao);
+  impl_->programs.destroy(gl);
 }
 
 int Renderer::width() const { return impl_->width; }
 int Renderer::height() const { return impl_->height; }
 int Renderer::samples() const { return impl_->samples; }
 std::string Renderer::description() const { return impl_->context->description(); }
+ContextBackend Renderer::backend() const { return impl_->context->backend(); }
 
 void Renderer::setSize(int width_px, int height_px) {
   if (width_px <= 0 || height_px <= 0) {
@@ -789,7 +681,7 @@ void Renderer::setSize(int width_px, int height_px) {
                 std::to_string(height_px));
   }
   if (width_px == impl_->width && height_px == impl_->height) return;
-  impl_->ensureCurrent();
+  const CurrentContext current(*impl_->context);
   impl_->width = width_px;
   impl_->height = height_px;
   impl_->allocateFramebuffers();
@@ -815,7 +707,7 @@ void Renderer::renderInto(const Scene& scene, const CameraDef& camera_def, RgbIm
                 std::to_string(x_offset_px) + " of a " + std::to_string(out.width) + "x" +
                 std::to_string(out.height) + " image");
   }
-  impl_->ensureCurrent();
+  const CurrentContext current(*impl_->context);
   impl_->draw(scene, camera(scene, camera_def));
   // llvmpipe reads RGBA with a plain copy but converts to RGB pixel by pixel (~10x slower):
   // read RGBA and drop alpha here.
@@ -823,8 +715,8 @@ void Renderer::renderInto(const Scene& scene, const CameraDef& camera_def, RgbIm
   const int h = impl_->height;
   std::vector<std::uint8_t>& rgba = impl_->rgba;
   rgba.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-  checkGl("render");
+  impl_->gl->ReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  checkGl(*impl_->gl, "render");
   for (int y = 0; y < h; ++y) {
     const std::uint8_t* src = rgba.data() + static_cast<std::size_t>(y) * w * 4;
     std::uint8_t* dst =

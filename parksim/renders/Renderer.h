@@ -11,7 +11,7 @@
 // and sides darken.
 //
 // Not thread-safe; use a renderer from one thread at a time (it makes its context current on
-// the calling thread whenever it draws).
+// the calling thread while it draws, and releases it afterwards).
 
 #include <memory>
 #include <string>
@@ -19,7 +19,7 @@
 #include <Eigen/Core>
 
 #include "parksim/renders/Camera.h"
-#include "parksim/renders/Font.h"
+#include "parksim/renders/FontLookup.h"
 #include "parksim/renders/Image.h"
 #include "parksim/renders/OffscreenContext.h"
 #include "parksim/renders/Scene.h"
@@ -32,8 +32,10 @@ struct RenderDef {
   /// Samples per pixel for anti-aliasing; 0 or 1 turns it off. Clamped to what the GL offers
   /// (4 on llvmpipe).
   int msaa_samples = 4;
-  /// TrueType font for text; empty: text is not drawn.
-  std::string font_path = kDefaultFontPath;
+  /// TrueType font file for text; empty: font_family's file, found through fontconfig.
+  std::string font_path;
+  /// Font family (a fontconfig pattern) when font_path is empty; both empty: text is not drawn.
+  std::string font_family = kDefaultFontFamily;
   /// Direction towards the light in the world frame (normalized on use).
   Eigen::Vector3d light_direction{0.35, -0.55, 0.75};
   /// Lit views: share of a face's colour independent of the light direction, 0..1.
@@ -44,9 +46,9 @@ struct RenderDef {
 class Renderer {
  public:
   /// Creates the context (createOffscreenContext(def.context)), framebuffers and shaders.
-  /// Throws Error when any of them fails or the font cannot be read.
+  /// Throws Error when any of them fails or the font cannot be found or read.
   explicit Renderer(const RenderDef& def = {});
-  /// Uses a context made elsewhere (another backend, or a test's).
+  /// Uses a context made beforehand by createOffscreenContext (its backend is then known first).
   Renderer(const RenderDef& def, std::unique_ptr<OffscreenContext> context);
   ~Renderer();
 
@@ -57,8 +59,10 @@ class Renderer {
   int height() const;
   /// Samples per pixel actually used (1: no anti-aliasing).
   int samples() const;
-  /// The GL context's description.
+  /// The GL context's description ("EGL (device: software): 4.5 (Core Profile) Mesa ...").
   std::string description() const;
+  /// The backend that made the context (never kAuto).
+  ContextBackend backend() const;
 
   /// Changes the image size; reallocates framebuffers only when it differs.
   void setSize(int width_px, int height_px);

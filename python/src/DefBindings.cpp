@@ -237,7 +237,13 @@ void bindDefs(py::module_& m) {
       .def_readwrite("show_tree", &FrameDef::show_tree)
       .def_readwrite("msaa_samples", &FrameDef::msaa_samples)
       .def_readwrite("encode_threads", &FrameDef::encode_threads)
-      .def_readwrite("queue_depth", &FrameDef::queue_depth);
+      .def_readwrite("queue_depth", &FrameDef::queue_depth)
+      .def_property(
+          "gl_backend", [](const FrameDef& d) { return std::string(toString(d.context.backend)); },
+          [](FrameDef& d, const std::string& s) {
+            d.context.backend = contextBackendFromString(s);
+          },
+          "auto (PARKSIM_GL_BACKEND, else egl, then osmesa), egl or osmesa");
 }
 
 }  // namespace parksim::python

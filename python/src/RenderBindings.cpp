@@ -224,7 +224,8 @@ tracking_error (executed=RunResult.executed or Episode.executed).)");
       "write_figures",
       [](const World& world, const std::string& out_dir, const std::string& figures,
          const py::object& plans, const py::object& executed, const py::object& steer_target,
-         double heading, int slices, int width, int height, int msaa) {
+         double heading, int slices, int width, int height, int msaa,
+         const std::string& gl_backend) {
         const Scenario& scenario = *world.scenario;
         if (width < 1 || height < 1 || width > 8192 || height > 8192) {
           throw Error("write_figures: size must be between 1x1 and 8192x8192");
@@ -236,6 +237,7 @@ tracking_error (executed=RunResult.executed or Episode.executed).)");
         def.msaa_samples = msaa;
         def.cspace_heading_rad = heading;
         def.cspace_slices = std::clamp(slices, 1, 720);
+        def.context.backend = contextBackendFromString(gl_backend);
         FigureInputs inputs;
         // The same figure inputs as `parksim render` (app/FigureInputs.h): captions, steering.
         auto add = [&](const py::handle& p) {
@@ -262,11 +264,13 @@ tracking_error (executed=RunResult.executed or Episode.executed).)");
       py::arg("plans") = py::none(), py::arg("executed") = py::none(),
       py::arg("steer_target") = py::none(), py::arg("heading") = degToRad(-60.0),
       py::arg("slices") = 36, py::arg("width") = 1200, py::arg("height") = 800, py::arg("msaa") = 4,
+      py::arg("gl_backend") = "auto",
       R"(Writes the study's figures as `parksim render` does, into out_dir (created), and returns
 the paths written. figures: "all", "none" or a comma-separated list of FIGURE_NAMES ("plan":
 one plan_<name>.png per plan); plans: a PlanResult, a trajectory, or a list of them;
 executed: RunResult.executed or Episode.executed (adds tracking_error); steer_target: the
-steering figure's target (x, y, theta); heading: the C-space slice's heading, rad. A figure
+steering figure's target (x, y, theta); heading: the C-space slice's heading, rad;
+gl_backend: "auto" (PARKSIM_GL_BACKEND, else egl, then osmesa), "egl" or "osmesa". A figure
 whose input is missing is skipped; an unknown name raises parksim.Error.)");
 
   m.def(

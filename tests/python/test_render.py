@@ -1,5 +1,7 @@
 """Images as NumPy arrays: frames of the lot, an episode instant, the study's figures, PNG."""
 
+import pathlib
+
 import numpy as np
 import pytest
 
@@ -87,3 +89,21 @@ def test_frame_recorder_writes_frames(tmp_path, head_in, head_in_plan):
     result = rec.finish()
     assert result["frames"] == 5
     assert sorted(p.name for p in (tmp_path / "frames").iterdir())[0] == "000000.png"
+
+
+def test_frames_choose_their_gl_backend(tmp_path, head_in):
+    d = parksim.FrameDef()
+    assert d.gl_backend == "auto"  # PARKSIM_GL_BACKEND, else egl, then osmesa
+    d.gl_backend = "egl"
+    assert d.gl_backend == "egl"
+    with pytest.raises(parksim.Error, match="unknown OpenGL backend 'vulkan'"):
+        d.gl_backend = "vulkan"
+    rec = parksim.FrameRecorder(head_in, out_dir=str(tmp_path), width_px=64, height_px=48,
+                                gl_backend="egl")
+    rec.add_frame(0.0, (0.3, 0.3, 0.0))
+    assert rec.finish()["frames"] == 1
+    paths = parksim.write_figures(head_in, str(tmp_path / "figures"), figures="lot_map",
+                                  width=120, height=80, gl_backend="egl")
+    assert [pathlib.Path(p).name for p in paths] == ["lot_map.png"]
+    with pytest.raises(parksim.Error, match="unknown OpenGL backend"):
+        parksim.write_figures(head_in, str(tmp_path / "never"), gl_backend="gles")

@@ -3,12 +3,13 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/Error.h"
+#include "parksim/renders/FontLookup.h"
 
 namespace parksim {
 namespace {
 
 TEST(FontTest, PacksDejaVuAndLaysOutMonospacedText) {
-  const std::vector<unsigned char> ttf = readFontFile(kDefaultFontPath);
+  const std::vector<unsigned char> ttf = readFontFile(findFontFile());
   const FontAtlas atlas(ttf, 18.0f);
   EXPECT_GT(atlas.ascent(), 10.0f);
   EXPECT_GT(atlas.descent(), 2.0f);

@@ -72,7 +72,9 @@ TEST_F(RendererTest, ImageHasTheRequestedSize) {
 
 TEST_F(RendererTest, UsesMultisamplingAndDescribesTheContext) {
   EXPECT_EQ(renderer_->samples(), 4);
-  EXPECT_NE(renderer_->description().find("OSMesa"), std::string::npos);
+  const std::string name = renderer_->backend() == ContextBackend::kEgl ? "EGL" : "OSMesa";
+  EXPECT_EQ(renderer_->description().rfind(name, 0), 0u) << renderer_->description();
+  EXPECT_NE(renderer_->description().find("Core Profile"), std::string::npos);
 }
 
 TEST_F(RendererTest, TopViewShowsRobotAndObstaclesInTheirColours) {
