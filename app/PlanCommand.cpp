@@ -1,5 +1,6 @@
 // parksim plan WORLD: plan a parking manoeuvre and write trajectory.csv and plan.json.
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -7,6 +8,7 @@
 #include "app/OutputDir.h"
 #include "app/Overrides.h"
 #include "app/PlanOutput.h"
+#include "app/Progress.h"
 #include "app/TerminalText.h"
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/scenario/ScenarioReader.h"
@@ -26,13 +28,17 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
   opt->world_overrides.addTo(sub);
   sub.add_option("--out", opt->out, "output directory")->capture_default_str();
 
-  return [opt](const OutputOptions&) -> int {
+  return [opt](const OutputOptions& output) -> int {
     const Scenario scenario = loadWorld(opt->world, opt->world_overrides);
     const PlanSetup setup = opt->plan.toSetup(scenario);
     checkPlanningLimits(scenario, setup);
     OutputDir out(opt->out);
     const BulletCollisionWorld collision(scenario);
-    const PlanResult result = planScenario(scenario, collision, setup);
+    Progress progress(std::string("planning (") + toString(setup.planner.kind) + ")",
+                      std::max(1, setup.planner.max_iterations),
+                      progressWanted(output.progress, output.quiet));
+    const PlanResult result = planScenario(scenario, collision, setup, planProgress(progress));
+    progress.finish();
     writePlanFiles(out.path(), scenario, setup, result);
     out.commit();
     if (!result.solved()) {

@@ -57,4 +57,8 @@ void Progress::finish() {
   std::fputc('\n', stderr);
 }
 
+PlanProgress planProgress(Progress& progress) {
+  return [&progress](long done, long) { progress.update(done); };
+}
+
 }  // namespace parksim::app

@@ -6,6 +6,8 @@
 #include <chrono>
 #include <string>
 
+#include "parksim/planner/PlanResult.h"
+
 namespace parksim::app {
 
 /// Whether commands draw progress: on a terminal unless -q, always with --progress.
@@ -37,5 +39,10 @@ class Progress {
   Clock::time_point start_;
   Clock::time_point last_draw_;
 };
+
+/// A progress line for a planner's search ("planning (hybrid-a-star expansions): 1200/20000
+/// ..."): `budget` is the planner's iteration budget; a search that succeeds ends early.
+/// The returned callback feeds `progress`, which must outlive it.
+PlanProgress planProgress(Progress& progress);
 
 }  // namespace parksim::app

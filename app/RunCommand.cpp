@@ -280,7 +280,11 @@ CommandRunner setupRunCommand(CLI::App& sub) {
       plan_figure = {"file", "plan from " + opt->plan_file, plan, {}, {}};
     } else {
       const BulletCollisionWorld collision(scenario);
-      const PlanResult result = planScenario(scenario, collision, setup);
+      Progress progress(std::string("planning (") + toString(setup.planner.kind) + ")",
+                        std::max(1, setup.planner.max_iterations),
+                        progressWanted(output.progress, output.quiet));
+      const PlanResult result = planScenario(scenario, collision, setup, planProgress(progress));
+      progress.finish();
       writePlanFiles(dir, scenario, setup, result);
       if (!result.solved()) {
         out.commit();

@@ -64,7 +64,8 @@ HybridAStar::HybridAStar(const RobotDef& robot, const LotBounds& lot,
   }
 }
 
-PlanResult HybridAStar::solve(const Pose2& start, const GoalRegion& goal) const {
+PlanResult HybridAStar::solve(const Pose2& start, const GoalRegion& goal,
+                              const PlanProgress& progress) const {
   const Clock::time_point t_begin = Clock::now();
   const long queries_before = validator_.queries();
   PlanResult result;
@@ -191,6 +192,7 @@ PlanResult HybridAStar::solve(const Pose2& start, const GoalRegion& goal) const 
       if (closed.count(k) || best[k] != id) continue;
       closed[k] = 1;
       ++expansions;
+      if (progress) progress(expansions, def_.max_iterations);
       const Node n = nodes[id];
       const double h = (f - n.g) / hybrid_.heuristic_weight;
 

@@ -65,7 +65,9 @@ class HybridAStar {
               const MotionValidator& validator, const PlannerDef& def,
               const HybridAStarDef& hybrid = {});
 
-  PlanResult solve(const Pose2& start, const GoalRegion& goal) const;
+  /// `progress`, when set, is told of every node expansion.
+  PlanResult solve(const Pose2& start, const GoalRegion& goal,
+                   const PlanProgress& progress = {}) const;
 
  private:
   RobotDef robot_;

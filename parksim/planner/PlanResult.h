@@ -2,6 +2,7 @@
 // What every planner returns (TreePlanner, HybridAStar): a status, the trajectory exactly as it
 // was validated, and the statistics of the search.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -75,5 +76,10 @@ struct PlanResult {
 
   bool solved() const { return status == PlanStatus::kSolved; }
 };
+
+/// Called by a planner as its search advances: `done` of at most `budget` iterations (tree
+/// planners) or node expansions (Hybrid A*). A search that succeeds stops before its budget.
+/// For progress displays: it must be cheap and must not throw.
+using PlanProgress = std::function<void(long done, long budget)>;
 
 }  // namespace parksim

@@ -128,7 +128,7 @@ int defaultIterationBudget(PlannerKind kind, const LotBounds& lot) {
 }
 
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
-                        const PlanSetup& setup) {
+                        const PlanSetup& setup, const PlanProgress& progress) {
   checkPlanningLimits(scenario, setup);
   std::unique_ptr<SteeringFunction> steering;
   switch (setup.steering_kind) {
@@ -180,10 +180,10 @@ PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checke
     const ReedsSheppSteering curves(scenario.robot, setup.reeds_shepp);
     const HybridAStar planner(scenario.robot, scenario.lot, curves, validator, setup.planner,
                               setup.hybrid_a_star);
-    result = planner.solve(scenario.start, scenario.goal);
+    result = planner.solve(scenario.start, scenario.goal, progress);
   } else {
     const TreePlanner planner(scenario.robot, scenario.lot, *steering, validator, setup.planner);
-    result = planner.solve(scenario.start, scenario.goal);
+    result = planner.solve(scenario.start, scenario.goal, progress);
   }
   if (!result.solved()) return result;
   const auto t0 = std::chrono::steady_clock::now();

@@ -85,8 +85,8 @@ void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup);
 
 /// Plans with the selected planner and steering, then times the plan as `timing` says (the
 /// re-timed trajectory is validated again; if rounding ever made it fail, the planner's own
-/// timing is kept) and sets its duration lower bound.
+/// timing is kept) and sets its duration lower bound. `progress` is passed to the planner.
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
-                        const PlanSetup& setup);
+                        const PlanSetup& setup, const PlanProgress& progress = {});
 
 }  // namespace parksim

@@ -62,7 +62,7 @@ class Search {
         optimize_(def.kind == PlannerKind::kRrtStar),
         t_begin_(Clock::now()) {}
 
-  PlanResult run();
+  PlanResult run(const PlanProgress& progress);
 
  private:
   double headingLength() const {
@@ -542,7 +542,7 @@ PlanResult Search::finish(PlanStatus status, std::string message) {
   return std::move(result_);
 }
 
-PlanResult Search::run() {
+PlanResult Search::run(const PlanProgress& progress) {
   queries_before_ = validator_.queries();
   if (!validator_.isValid(start_)) {
     return finish(PlanStatus::kInvalidStart,
@@ -589,6 +589,7 @@ PlanResult Search::run() {
       const int s = optimize_ ? extendOptimal(target) : extendStart(target);
       if (s >= 0) connectToGoal(s);
     }
+    if (progress) progress(iteration_, def_.max_iterations);
   }
   result_.stats.iterations = iteration_;
   if (optimize_ && solved_ && !extractBestLeaf()) {
@@ -653,8 +654,9 @@ TreePlanner::TreePlanner(const RobotDef& robot, const LotBounds& lot,
   if (!(def.max_time_s >= 0.0)) throw Error("planner: max_time_s must be >= 0");
 }
 
-PlanResult TreePlanner::solve(const Pose2& start, const GoalRegion& goal) const {
-  return Search(robot_, lot_, steering_, validator_, def_, start, goal).run();
+PlanResult TreePlanner::solve(const Pose2& start, const GoalRegion& goal,
+                              const PlanProgress& progress) const {
+  return Search(robot_, lot_, steering_, validator_, def_, start, goal).run(progress);
 }
 
 }  // namespace parksim

@@ -90,7 +90,9 @@ class TreePlanner {
   TreePlanner(const RobotDef& robot, const LotBounds& lot, const SteeringFunction& steering,
               const MotionValidator& validator, const PlannerDef& def);
 
-  PlanResult solve(const Pose2& start, const GoalRegion& goal) const;
+  /// `progress`, when set, is told of every iteration.
+  PlanResult solve(const Pose2& start, const GoalRegion& goal,
+                   const PlanProgress& progress = {}) const;
 
  private:
   RobotDef robot_;

@@ -46,7 +46,10 @@ double coordinate(const YamlField& f) { return f.inRange(-kMaxCoordinate_m, kMax
 
 double length(const YamlField& f) {
   const double v = f.positive();
-  if (v > kMaxLength_m) f.inRange(0.0, kMaxLength_m);
+  if (v > kMaxLength_m) {
+    f.fail("must be positive and at most " + formatNumber(kMaxLength_m) + " m, got " +
+           f.node().Scalar());
+  }
   return v;
 }
 

@@ -208,6 +208,30 @@ TEST(TreePlanner, SameSeedSameResultForEveryPlannerAndSteering) {
   }
 }
 
+TEST(TreePlanner, ProgressCountsEveryIterationUpToTheResult) {
+  // Every planner reports each iteration (node expansion for hybrid-a-star) once, in order,
+  // against its budget; the last report is the result's own count.
+  const Scenario s = testing::studyLot();
+  const SatChecker checker(s);
+  for (PlannerKind kind : allPlannerKinds()) {
+    SCOPED_TRACE(toString(kind));
+    PlanSetup setup = setupFor(kind, SteeringKind::kReedsShepp, 3);
+    if (kind == PlannerKind::kRrtStar) setup.planner.max_iterations = 60;
+    std::vector<long> done;
+    long budget = -1;
+    const PlanResult r = planScenario(s, checker, setup, [&](long d, long b) {
+      done.push_back(d);
+      budget = b;
+    });
+    ASSERT_FALSE(done.empty());
+    EXPECT_EQ(budget, setup.planner.max_iterations);
+    for (std::size_t i = 0; i < done.size(); ++i) EXPECT_EQ(done[i], static_cast<long>(i) + 1);
+    EXPECT_EQ(done.back(), r.stats.iterations);
+    // The callback only watches: the plan is the one made without it.
+    EXPECT_EQ(planScenario(s, checker, setup).trajectory, r.trajectory);
+  }
+}
+
 TEST(TreePlanner, OtherSeedOtherTrajectory) {
   const Scenario s = testing::studyLotParallel();
   const SatChecker checker(s);

@@ -823,7 +823,7 @@ const BadCase kBadCases[] = {
      "y_max: 2}\n",
      "t.yaml:3: lot.x_max: must be in [-10000, 10000], got 1e300"},
     {"HugeSize", valid("obstacles: [{name: a, kind: box, center: [1, 1], size: [1e6, 1]}]\n"),
-     "t.yaml:6: obstacles[0].size[0]: must be in [0, 10000], got 1e6"},
+     "t.yaml:6: obstacles[0].size[0]: must be positive and at most 10000 m, got 1e6"},
     {"TerminalEscapeInNameIsEscaped", "format: parksim-world/1\nname: \"\\e[31mred\"\n",
      "t.yaml:2: name: must be UTF-8 text without control characters, got \"\\x1b[31mred\""},
     {"TerminalEscapeInKeyIsEscaped", valid("\"\\e[2J\": 1\n"),
