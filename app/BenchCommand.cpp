@@ -17,7 +17,6 @@
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -92,15 +91,6 @@ std::string cpuInfo() {
   return "";
 }
 
-std::string localTime() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  localtime_r(&now, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S", &tm);
-  return buf;
-}
-
 // FILE for a single world; FILE with ".<scenario>" before its extension for several.
 std::string logPathFor(const std::string& path, const std::string& scenario, bool several) {
   if (!several) return path;
@@ -170,7 +160,7 @@ int runBench(const BenchOptions& o, const OutputOptions& output) {
 
   std::vector<bench::BenchRecord> all;
   std::vector<double> world_seconds;
-  const std::string start_time = localTime();
+  const std::string start_time = bench::omplLogTimeNow();
   const bench::PathCheckDef check;  // 0.2 mm, margin 0, with clearance
   for (const Scenario& scenario : scenarios) {
     const BulletCollisionWorld world(scenario);

@@ -21,8 +21,6 @@
 #include "parksim/sweep/SweepManifest.h"
 
 #ifdef PARKSIM_HAVE_OMPL_BENCH
-#include <ctime>
-
 #include "bench/ompl/OmplLog.h"
 #endif
 
@@ -69,15 +67,6 @@ bench::BenchRecord benchRecord(const Json& row) {
   return r;
 }
 
-std::string nowText() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  localtime_r(&now, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S", &tm);
-  return buf;
-}
-
 std::vector<std::string> writeOmplLogs(const std::vector<Json>& rows, const std::string& name,
                                        const std::string& out) {
   std::map<std::string, std::vector<bench::BenchRecord>> by_world;
@@ -100,7 +89,7 @@ std::vector<std::string> writeOmplLogs(const std::vector<Json>& rows, const std:
     bench::OmplLogInfo info;
     info.experiment = "parksim_sweep_" + name + "_" + world;
     info.host = rows.empty() ? "" : rows.front().value("host", "");
-    info.start_time = nowText();
+    info.start_time = bench::omplLogTimeNow();
     info.setup = "parksim sweep " + name + ", world " + world +
                  "; plans are validated gap-free; valid = the executed episode met its tolerance";
     info.time_limit_s = longest;

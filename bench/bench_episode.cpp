@@ -52,18 +52,10 @@ const Trajectory& plannedOnce(long index) {
   return it->second;
 }
 
-void BM_Simulate(benchmark::State& state) {
-  const Scenario s = world(state.range(0), state.range(2));
-  const Trajectory& plan = plannedOnce(state.range(0));
-  if (plan.empty()) {
-    state.SkipWithError("the plan is unsolved");
-    return;
-  }
-  ExecutionDef def;
-  def.tracking = state.range(1) == 0 ? TrackingMode::kClosed : TrackingMode::kOpen;
-  SimModelDef model;
-  if (state.range(3) >= 1) model.solver = SolverKernel::kBullet;
-  if (state.range(3) == 1) model.solver_residual_threshold = 0.0;
+// Runs the episode once per benchmark iteration; counters: real-time factor, simulated seconds
+// and the last episode's largest tracking error.
+void simulate(benchmark::State& state, const Scenario& s, const Trajectory& plan,
+              const ExecutionDef& def, const SimModelDef& model = {}) {
   double sim_s = 0.0;
   double max_err = 0.0;
   for (auto _ : state) {
@@ -77,6 +69,21 @@ void BM_Simulate(benchmark::State& state) {
   state.counters["rtf"] = benchmark::Counter(sim_s, benchmark::Counter::kIsRate);
   state.counters["sim_s"] = sim_s / static_cast<double>(state.iterations());
   state.counters["max_err_mm"] = max_err * 1e3;
+}
+
+void BM_Simulate(benchmark::State& state) {
+  const Scenario s = world(state.range(0), state.range(2));
+  const Trajectory& plan = plannedOnce(state.range(0));
+  if (plan.empty()) {
+    state.SkipWithError("the plan is unsolved");
+    return;
+  }
+  ExecutionDef def;
+  def.tracking = state.range(1) == 0 ? TrackingMode::kClosed : TrackingMode::kOpen;
+  SimModelDef model;
+  if (state.range(3) >= 1) model.solver = SolverKernel::kBullet;
+  if (state.range(3) == 1) model.solver_residual_threshold = 0.0;
+  simulate(state, s, plan, def, model);
   state.SetLabel(std::string(kWorlds[state.range(0)]) +
                  (def.tracking == TrackingMode::kClosed ? " closed" : " open") +
                  (state.range(3) == 1   ? " bullet-reference"
@@ -85,23 +92,6 @@ void BM_Simulate(benchmark::State& state) {
 }
 
 const char* const kPresets[] = {"ideal", "lab", "odometry"};
-
-void simulate(benchmark::State& state, const Scenario& s, const Trajectory& plan,
-              const ExecutionDef& def) {
-  double sim_s = 0.0;
-  double max_err = 0.0;
-  for (auto _ : state) {
-    Episode episode(s, plan, def);
-    while (!episode.finished()) episode.step();
-    const EpisodeMetrics m = episode.metrics();
-    sim_s += m.sim_time_s;
-    max_err = m.max_pos_err_m;
-    benchmark::DoNotOptimize(episode.rows().data());
-  }
-  state.counters["rtf"] = benchmark::Counter(sim_s, benchmark::Counter::kIsRate);
-  state.counters["sim_s"] = sim_s / static_cast<double>(state.iterations());
-  state.counters["max_err_mm"] = max_err * 1e3;
-}
 
 void BM_SimulateRealism(benchmark::State& state) {
   const Scenario s = world(state.range(0), 50);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <map>
 
 #include <ompl/base/PlannerStatus.h>
@@ -57,6 +58,15 @@ int omplStatusCode(const BenchRecord& r) {
   if (r.status == "invalid_goal") return ob::PlannerStatus::INVALID_GOAL;
   if (r.status.rfind("child", 0) == 0) return ob::PlannerStatus::CRASH;
   return ob::PlannerStatus::UNKNOWN;
+}
+
+std::string omplLogTimeNow() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  localtime_r(&now, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S", &tm);
+  return buf;
 }
 
 std::string omplBenchmarkLog(const OmplLogInfo& info, const std::vector<BenchRecord>& records) {

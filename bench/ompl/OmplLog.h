@@ -28,6 +28,9 @@ struct OmplLogInfo {
   double total_s = 0;  ///< wall time spent collecting the data, s
 };
 
+/// The local time now in start_time's format.
+std::string omplLogTimeNow();
+
 /// The log text for `records` (all of one scenario).
 std::string omplBenchmarkLog(const OmplLogInfo& info, const std::vector<BenchRecord>& records);
 
