@@ -40,7 +40,9 @@ void Progress::draw(long done) {
   const double rate = elapsed > 0.0 ? done / elapsed : 0.0;
   const long total = std::max(total_, done);  // an estimated total may be passed
   std::string line = what_ + ": " + std::to_string(done) + "/" + std::to_string(total) + " (" +
-                     formatFixed(100.0 * done / total, 0) + "%), " + formatGeneral(rate, 3) + "/s";
+                     formatFixed(100.0 * done / total, 0) + "%), " +
+                     // 3 significant digits, but never an exponent: "3860/s", "54.3/s".
+                     (rate >= 1000.0 ? formatFixed(rate, 0) : formatGeneral(rate, 3)) + "/s";
   if (rate > 0.0 && done < total) {
     line += ", ETA " + formatFixed((total - done) / rate, 0) + " s";
   }
