@@ -8,12 +8,15 @@
 
 #include "parksim/core/Error.h"
 #include "parksim/core/InputFile.h"
+#include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
 
 std::string tempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("parksim_" + name)).string();
+  const std::filesystem::path dir = parksim::testing::testOutputDir("core");
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
 }
 
 Trajectory sample() {
@@ -118,8 +121,7 @@ TEST(Trajectory, OnlyRegularFilesAreRead) {
   EXPECT_THROW(readTrajectoryCsv("/dev/zero"), Error);
   EXPECT_THROW(readTrajectoryCsv(std::filesystem::temp_directory_path().string()), Error);
   EXPECT_THROW(readInputFile("/dev/urandom", 100, "plan file"), Error);
-  const std::string path =
-      (std::filesystem::temp_directory_path() / "parksim_input_file_test.csv").string();
+  const std::string path = tempPath("input_file_test.csv");
   std::ofstream(path) << std::string(101, 'x');
   EXPECT_THROW(readInputFile(path, 100, "plan file"), Error);
   EXPECT_EQ(readInputFile(path, 101, "plan file").size(), 101u);

@@ -31,6 +31,12 @@ inline std::string sourceDir() {
                            " (set PARKSIM_SOURCE_DIR to the source tree)");
 }
 
+/// BUILD/test-output/NAME: where a test writes its files. Inside the build tree, so that two
+/// builds testing at once on one machine (a CI clone beside a work tree) never share a directory.
+inline std::filesystem::path testOutputDir(const std::string& name) {
+  return std::filesystem::path(binaryDir()) / "test-output" / name;
+}
+
 /// The parksim executable of the same build.
 inline std::string parksimExe() {
   if (const char* env = std::getenv("PARKSIM_EXE")) return env;
