@@ -80,8 +80,13 @@ struct OutputDir::Impl {
       {
         std::lock_guard<std::mutex> hold(mutex);
         if (!committed) {
+          // Other threads (PNG encoders, the episode) may still be writing into it by path:
+          // move it aside first, so that no entry can appear in it while it is removed.
           std::error_code ec;
-          fs::remove_all(staging, ec);
+          fs::path doomed = staging;
+          doomed += ".removing";
+          fs::rename(staging, doomed, ec);
+          fs::remove_all(ec ? staging : doomed, ec);
         }
         ::signal(sig, SIG_DFL);
         sigset_t one;
