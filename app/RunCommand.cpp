@@ -32,7 +32,7 @@
 #include "parksim/renders/Figures.h"
 #include "parksim/scenario/RealismReader.h"
 #include "parksim/scenario/ScenarioReader.h"
-#include "parksim/sim/Distribution.h"
+#include "parksim/realism/Distribution.h"
 #include "parksim/sim/Episode.h"
 #include "parksim/sim/EpisodeFiles.h"
 #include "parksim/sim/TrackingTolerance.h"

@@ -9,8 +9,7 @@ include(CMakePackageConfigHelpers)
 set(PARKSIM_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/parksim)
 
 # Module targets keep their build names (parksim_sim) and are exported as parksim::sim; the
-# aliases give a project that adds parksim as a subdirectory the same names. (parksim::realism
-# is built in parksim/sim/: the world reader parses its definitions without Bullet.)
+# aliases give a project that adds parksim as a subdirectory the same names.
 set(parksim_modules core realism scenario collision planner sim render)
 foreach(module IN LISTS parksim_modules)
   set_target_properties(parksim_${module} PROPERTIES EXPORT_NAME ${module})

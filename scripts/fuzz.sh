@@ -39,9 +39,9 @@ build() {  # build NAME SOURCES... LIBS...
 
 # The reader's realism: section is checked by the Bullet-free parksim_realism library
 # (parksim/sim/CMakeLists.txt lists its sources; keep the two lists alike).
-realism=(parksim/sim/Distribution.cpp parksim/sim/Encoder.cpp parksim/sim/Estimator.cpp
-  parksim/sim/MotorModel.cpp parksim/sim/PoseSensor.cpp parksim/sim/RealismDef.cpp
-  parksim/sim/WheelSpeedLoop.cpp)
+realism=(parksim/realism/Distribution.cpp parksim/realism/Encoder.cpp parksim/realism/Estimator.cpp
+  parksim/realism/MotorModel.cpp parksim/realism/PoseSensor.cpp parksim/realism/RealismDef.cpp
+  parksim/realism/WheelSpeedLoop.cpp)
 build world tests/fuzz/WorldReaderFuzz.cpp parksim/scenario/*.cpp "${realism[@]}" \
   "${core[@]}" -lyaml-cpp
 build plan tests/fuzz/PlanReaderFuzz.cpp "${core[@]}"

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "parksim/sim/RealismDef.h"
+#include "parksim/realism/RealismDef.h"
 #include "parksim/sim/TrackingTolerance.h"
 
 namespace parksim {

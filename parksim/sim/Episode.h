@@ -101,7 +101,7 @@ struct EpisodeMetrics {
   /// Wall time spent stepping and measuring (observer calls excluded), s.
   double wall_time_s = 0.0;
 
-  // Realism (sim/RealismDef.h).
+  // Realism (realism/RealismDef.h).
   std::string realism = "ideal";
   std::uint64_t noise_seed = 0;
   std::string estimator = "truth";

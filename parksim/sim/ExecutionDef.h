@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "parksim/sim/RealismDef.h"
+#include "parksim/realism/RealismDef.h"
 
 namespace parksim {
 
@@ -51,7 +51,7 @@ struct ExecutionDef {
   /// time steps of the scenario's physics (docs/limits.md). 10^6 steps are ~69 min of
   /// simulated time at 240 Hz, ~1 min of CPU and ~100 MB of executed rows at csv stride 1.
   double max_steps = 1e6;
-  /// Motors, calibration, sensors, estimation and control-loop timing (sim/RealismDef.h);
+  /// Motors, calibration, sensors, estimation and control-loop timing (realism/RealismDef.h);
   /// the default is the `ideal` robot.
   RealismDef realism;
   /// Seed of every random draw of the realism layers (calibration errors, motor gains, sensor

@@ -5,7 +5,7 @@
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
-#include "parksim/sim/RealismDef.h"
+#include "parksim/realism/RealismDef.h"
 
 namespace parksim {
 namespace {

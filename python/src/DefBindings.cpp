@@ -10,7 +10,7 @@
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/ExecutionDef.h"
-#include "parksim/sim/RealismDef.h"
+#include "parksim/realism/RealismDef.h"
 #include "python/src/Bindings.h"
 
 namespace parksim::python {

@@ -6,7 +6,7 @@
 
 #include "parksim/sim/Episode.h"
 #include "parksim/sim/EpisodeFiles.h"
-#include "parksim/sim/RealismDef.h"
+#include "parksim/realism/RealismDef.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

@@ -1,4 +1,4 @@
-#include "parksim/sim/Distribution.h"
+#include "parksim/realism/Distribution.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "parksim/sim/WheelSpeedLoop.h"
+#include "parksim/realism/WheelSpeedLoop.h"
 
 #include <algorithm>
 

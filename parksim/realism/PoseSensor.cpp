@@ -1,4 +1,4 @@
-#include "parksim/sim/PoseSensor.h"
+#include "parksim/realism/PoseSensor.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "parksim/sim/Encoder.h"
+#include "parksim/realism/Encoder.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "parksim/sim/MotorModel.h"
+#include "parksim/realism/MotorModel.h"
 
 #include <algorithm>
 

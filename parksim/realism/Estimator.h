@@ -14,7 +14,7 @@
 
 #include "parksim/core/Pose2.h"
 #include "parksim/core/RobotDef.h"
-#include "parksim/sim/PoseSensor.h"
+#include "parksim/realism/PoseSensor.h"
 
 namespace parksim {
 

@@ -1,4 +1,4 @@
-#include "parksim/sim/Estimator.h"
+#include "parksim/realism/Estimator.h"
 
 #include <cmath>
 

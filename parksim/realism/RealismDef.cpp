@@ -1,4 +1,4 @@
-#include "parksim/sim/RealismDef.h"
+#include "parksim/realism/RealismDef.h"
 
 #include <cmath>
 

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "parksim/sim/Encoder.h"
-#include "parksim/sim/Estimator.h"
-#include "parksim/sim/MotorModel.h"
-#include "parksim/sim/PoseSensor.h"
-#include "parksim/sim/WheelSpeedLoop.h"
+#include "parksim/realism/Encoder.h"
+#include "parksim/realism/Estimator.h"
+#include "parksim/realism/MotorModel.h"
+#include "parksim/realism/PoseSensor.h"
+#include "parksim/realism/WheelSpeedLoop.h"
 
 namespace parksim {
 
