@@ -127,8 +127,17 @@ int defaultIterationBudget(PlannerKind kind, const LotBounds& lot) {
       std::min(kMaxDefaultBudget, std::ceil(base * std::max(1.0, area / kStudyLotAreaM2))));
 }
 
+PlanSetup resolvedPlanSetup(const PlanSetup& setup, const Scenario& scenario) {
+  PlanSetup resolved = setup;
+  if (resolved.planner.max_iterations == kAutoIterations) {
+    resolved.planner.max_iterations = defaultIterationBudget(setup.planner.kind, scenario.lot);
+  }
+  return resolved;
+}
+
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
-                        const PlanSetup& setup, const PlanProgress& progress) {
+                        const PlanSetup& requested, const PlanProgress& progress) {
+  const PlanSetup setup = resolvedPlanSetup(requested, scenario);
   checkPlanningLimits(scenario, setup);
   std::unique_ptr<SteeringFunction> steering;
   switch (setup.steering_kind) {

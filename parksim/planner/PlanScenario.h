@@ -41,11 +41,16 @@ const char* toString(TimingKind kind);
 /// Parses "time-optimal" or "study"; throws Error otherwise.
 TimingKind timingKindFromString(const std::string& name);
 
-/// Defaults are the command line's: hybrid-a-star (with its base budget of 20000 expansions;
-/// the command line scales it with the lot, defaultIterationBudget), reeds-shepp steering for
-/// the tree planners, time-optimal timing with 20% feedback headroom.
+/// planner.max_iterations: the budget chosen for the lot (defaultIterationBudget), resolved
+/// when the plan is made (resolvedPlanSetup).
+inline constexpr int kAutoIterations = 0;
+
+/// parksim's planning defaults, the same for every front-end (the command line, sweeps, Python,
+/// the episode pipeline): hybrid-a-star with the lot-scaled budget, reeds-shepp steering for the
+/// tree planners, time-optimal timing with 20% feedback headroom.
 struct PlanSetup {
-  PlannerDef planner{.kind = PlannerKind::kHybridAStar, .max_iterations = 20000};
+  /// max_iterations kAutoIterations (the default): defaultIterationBudget(kind, lot).
+  PlannerDef planner{.kind = PlannerKind::kHybridAStar, .max_iterations = kAutoIterations};
   SteeringKind steering_kind = SteeringKind::kReedsShepp;
   /// Move-to-pose parameters; its to-goal tolerance is taken from the scenario's goal region,
   /// scaled by goal_tolerance_fraction.
@@ -75,6 +80,11 @@ inline constexpr double kStudyLotAreaM2 = 1.8 * 1.2;
 /// 2000 iterations; hybrid-a-star: 20000 node expansions) times max(1, lot area / study lot
 /// area), rounded up, so budgets grow with the space to search.
 int defaultIterationBudget(PlannerKind kind, const LotBounds& lot);
+
+/// `setup` with its automatic choices made for `scenario`: an iteration budget of
+/// kAutoIterations becomes defaultIterationBudget(kind, lot). planScenario plans with this, and
+/// result files record it.
+PlanSetup resolvedPlanSetup(const PlanSetup& setup, const Scenario& scenario);
 
 /// Refuses, before any work, a setup whose steering would build unbounded trajectories in this
 /// scenario: rotate-translate-rotate profiles (a straight move across the lot's diagonal, a

@@ -22,12 +22,9 @@ Scenario world(const std::string& name) {
   return loadScenario(parksim::testing::sourceDir() + "/worlds/" + name + ".yaml");
 }
 
-// What `parksim plan WORLD` uses.
-PlanSetup cliDefaults(const Scenario& s) {
+// What `parksim plan WORLD` uses: the library's defaults.
+PlanSetup cliDefaults() {
   PlanSetup setup;
-  setup.planner.kind = PlannerKind::kHybridAStar;
-  setup.steering_kind = SteeringKind::kReedsShepp;
-  setup.planner.max_iterations = defaultIterationBudget(setup.planner.kind, s.lot);
   setup.planner.record_tree = false;
   return setup;
 }
@@ -37,7 +34,7 @@ class DefaultPlanning : public ::testing::TestWithParam<const char*> {};
 TEST_P(DefaultPlanning, SolvesWithAValidPlanWithinTheHeadroom) {
   const Scenario s = world(GetParam());
   const BulletCollisionWorld checker(s);
-  const PlanSetup setup = cliDefaults(s);
+  const PlanSetup setup = cliDefaults();
   const PlanResult r = planScenario(s, checker, setup);
   ASSERT_TRUE(r.solved()) << r.message;
   testing::expectValidPlan(s, checker, setup, r);
@@ -61,7 +58,7 @@ INSTANTIATE_TEST_SUITE_P(Worlds, DefaultPlanning,
 TEST(DefaultPlanning, HybridAStarIgnoresTheSeed) {
   const Scenario s = world("garage_reverse");
   const BulletCollisionWorld checker(s);
-  PlanSetup setup = cliDefaults(s);
+  PlanSetup setup = cliDefaults();
   const PlanResult a = planScenario(s, checker, setup);
   setup.planner.seed = 12345;
   const PlanResult b = planScenario(s, checker, setup);
@@ -93,6 +90,18 @@ TEST(DefaultPlanning, BudgetGrowsWithTheLot) {
   EXPECT_EQ(defaultIterationBudget(PlannerKind::kHybridAStar, world("tight_parallel").lot), 20000);
   // 100 m^2 / 2.16 m^2 = 46.3 study lots.
   EXPECT_EQ(defaultIterationBudget(PlannerKind::kRrtConnect, world("big_lot").lot), 92593);
+}
+
+TEST(DefaultPlanning, AnAutomaticBudgetIsTheLotsAndAGivenOneIsKept) {
+  const Scenario big = world("big_lot");
+  PlanSetup setup;
+  EXPECT_EQ(setup.planner.max_iterations, kAutoIterations);
+  EXPECT_EQ(resolvedPlanSetup(setup, big).planner.max_iterations,
+            defaultIterationBudget(PlannerKind::kHybridAStar, big.lot));
+  setup.planner.kind = PlannerKind::kRrtStar;
+  EXPECT_EQ(resolvedPlanSetup(setup, big).planner.max_iterations, 92593);
+  setup.planner.max_iterations = 17;
+  EXPECT_EQ(resolvedPlanSetup(setup, big).planner.max_iterations, 17);
 }
 
 }  // namespace
