@@ -11,12 +11,15 @@
 #include <vector>
 
 #include "app/Command.h"
-#include "app/TerminalText.h"
+#include "parksim/cli/TerminalText.h"
 #include "parksim/core/Error.h"
 #include "parksim/sweep/Merge.h"
 #include "parksim/sweep/ResultsTable.h"
 
 namespace parksim::app {
+
+using cli::printable;
+using cli::printableLines;
 namespace {
 
 namespace fs = std::filesystem;

@@ -1,17 +1,18 @@
-// parksim plan WORLD: plan a parking manoeuvre and write trajectory.csv and plan.json.
+// parksim plan WORLD: plan a parking manoeuvre and write trajectory.csv and plan.json: the
+// episode pipeline without driving.
 
 #include <algorithm>
 #include <cstdio>
 #include <string>
 
 #include "app/Command.h"
-#include "app/OutputDir.h"
-#include "app/Overrides.h"
-#include "app/PlanOutput.h"
-#include "app/Progress.h"
-#include "app/TerminalText.h"
-#include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/cli/OutputDir.h"
+#include "parksim/cli/PlanOptions.h"
+#include "parksim/cli/Progress.h"
+#include "parksim/cli/TerminalText.h"
+#include "parksim/cli/WorldOptions.h"
+#include "parksim/pipeline/EpisodePipeline.h"
+#include "parksim/pipeline/EpisodeSettings.h"
 
 namespace parksim::app {
 
@@ -19,8 +20,8 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
   struct Options {
     std::string world;
     std::string out = "out";
-    PlanCliOptions plan;
-    WorldOverrideOptions world_overrides;
+    cli::PlanCliOptions plan;
+    cli::WorldOverrideOptions world_overrides;
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
@@ -29,32 +30,36 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
   sub.add_option("--out", opt->out, "output directory")->capture_default_str();
 
   return [opt](const OutputOptions& output) -> int {
-    const Scenario scenario = loadWorld(opt->world, opt->world_overrides);
-    const PlanSetup setup = opt->plan.toSetup(scenario);
-    checkPlanningLimits(scenario, setup);
-    OutputDir out(opt->out);
-    const BulletCollisionWorld collision(scenario);
-    Progress progress(std::string("planning (") + toString(setup.planner.kind) + ")",
-                      std::max(1, setup.planner.max_iterations),
-                      progressWanted(output.progress, output.quiet));
-    const PlanResult result = planScenario(scenario, collision, setup, planProgress(progress));
+    EpisodeRequest request;
+    request.world = cli::loadWorldWith(opt->world, opt->world_overrides);
+    request.plan = opt->plan.toSetup();
+    request.drive = false;
+    checkEpisodeRequest(request);
+    cli::OutputDir out(opt->out);
+    request.out_dir = out.path();
+    const PlanSetup setup = resolvedPlanSetup(request.plan, request.world->scenario);
+    cli::Progress progress(std::string("planning (") + toString(setup.planner.kind) + ")",
+                           std::max(1, setup.planner.max_iterations),
+                           cli::progressWanted(output.progress, output.quiet));
+    request.progress.plan = cli::planProgress(progress);
+    const EpisodeOutcome outcome = runEpisodePipeline(request);
     progress.finish();
-    writePlanFiles(out.path(), scenario, setup, result);
     out.commit();
-    if (!result.solved()) {
-      std::fprintf(stderr, "parksim plan: unsolved (%s): %s\n", toString(result.status),
-                   printable(result.message).c_str());
-      return kExitUnsolved;
+    if (!outcome.verdict.met()) {
+      std::fprintf(stderr, "parksim plan: %s\n", cli::printable(outcome.verdict.reason).c_str());
+      return exitCodeFor(outcome.verdict.status);
     }
+    const PlanResult& result = *outcome.plan;
+    const RobotDef& robot = request.world->scenario.robot;
+    const std::string dir = cli::printable(opt->out);
     std::printf(
         "solved %s with %s (seed %llu): %d iterations, %d tree nodes, path %.3f m, %.1f s of "
         "motion, planned in %.2f ms\nwrote %s/trajectory.csv and %s/plan.json\n",
-        printable(scenario.name).c_str(), toString(setup.planner.kind),
+        cli::printable(request.world->scenario.name).c_str(), toString(setup.planner.kind),
         static_cast<unsigned long long>(setup.planner.seed), result.stats.iterations,
-        result.stats.tree_size, result.trajectory.pathLength(scenario.robot),
-        result.trajectory.duration(), 1e3 * result.stats.times.total_s, printable(opt->out).c_str(),
-        printable(opt->out).c_str());
-    return 0;
+        result.stats.tree_size, result.trajectory.pathLength(robot), result.trajectory.duration(),
+        1e3 * result.stats.times.total_s, dir.c_str(), dir.c_str());
+    return kExitOk;
   };
 }
 

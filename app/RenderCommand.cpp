@@ -6,20 +6,22 @@
 #include <vector>
 
 #include "app/Command.h"
-#include "app/FigureInputs.h"
-#include "app/GlBackendOption.h"
-#include "app/OptionChecks.h"
-#include "app/OutputDir.h"
-#include "app/Overrides.h"
-#include "app/PlanOutput.h"
-#include "app/TerminalText.h"
-#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/cli/FiguresOption.h"
+#include "parksim/cli/GlBackendOption.h"
+#include "parksim/cli/OutputDir.h"
+#include "parksim/cli/PlanOptions.h"
+#include "parksim/cli/TerminalText.h"
+#include "parksim/cli/Validators.h"
+#include "parksim/cli/WorldOptions.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/pipeline/EpisodeFigures.h"
+#include "parksim/pipeline/EpisodePipeline.h"
+#include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/renders/Figures.h"
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/renders/TrackingPlot.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/results/JsonFile.h"
 
 namespace parksim::app {
 
@@ -33,9 +35,9 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     int slices = 36;
     std::vector<double> steer_target;
     std::string figures = "all";
-    PlanCliOptions plan;
-    WorldOverrideOptions world_overrides;
-    GlBackendOption gl_backend;
+    cli::PlanCliOptions plan;
+    cli::WorldOverrideOptions world_overrides;
+    cli::GlBackendOption gl_backend;
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
@@ -55,21 +57,22 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
   sub.add_option("--cspace-heading", opt->cspace_heading_deg,
                  "heading of the C-space slice figure, degrees")
       ->capture_default_str()
-      ->check(realIn(-360.0, 360.0));
+      ->check(cli::realIn(-360.0, 360.0));
   sub.add_option("--slices", opt->slices, "headings in the stacked C-space figure")
       ->capture_default_str()
-      ->check(integerIn(1, 720));
+      ->check(cli::integerIn(1, 720));
   sub.add_option("--steer-target", opt->steer_target,
                  "target pose x y heading_deg of the steering figure (default: 0.3 m east and "
                  "0.3 m north of the start, heading 0)")
       ->expected(3)
-      ->check(realIn(-1e4, 1e4));
+      ->check(cli::realIn(-1e4, 1e4));
   opt->gl_backend.addTo(sub);
-  addFiguresOption(sub, opt->figures, "default: all")->capture_default_str();
+  cli::addFiguresOption(sub, opt->figures, "default: all")->capture_default_str();
   CLI::App* app = &sub;
 
   return [opt, app](const OutputOptions&) -> int {
-    const Scenario scenario = loadWorld(opt->world, opt->world_overrides);
+    const std::shared_ptr<const World> world = cli::loadWorldWith(opt->world, opt->world_overrides);
+    const Scenario& scenario = world->scenario;
     const ImageSize size = parseImageSize(opt->size);
     FigureDef def;
     def.width_px = size.width_px;
@@ -84,12 +87,15 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     std::vector<std::string> planners = {opt->plan.planner};
     if (app->count("--planner") == 0) planners = {"rrt", "rrt-goal-connect"};
     // Every input is read and checked before --out is touched.
-    std::vector<PlanSetup> setups;
+    std::vector<EpisodeRequest> requests;
     for (const std::string& name : planners) {
-      PlanCliOptions options = opt->plan;
+      cli::PlanCliOptions options = opt->plan;
       options.planner = name;
-      setups.push_back(options.toSetup(scenario));
-      checkPlanningLimits(scenario, setups.back());
+      EpisodeRequest& r = requests.emplace_back();
+      r.world = world;
+      r.plan = options.toSetup();
+      r.drive = false;
+      checkEpisodeRequest(r);
     }
     if (!opt->executed.empty()) inputs.tracking = readTrackingCsv(opt->executed);
     std::optional<Pose2> target;
@@ -97,22 +103,20 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
       target = Pose2{opt->steer_target[0], opt->steer_target[1], degToRad(opt->steer_target[2])};
     }
 
-    OutputDir out(opt->out);
-    const BulletCollisionWorld collision(scenario);
+    cli::OutputDir out(opt->out);
     std::string report;
     for (std::size_t i = 0; i < planners.size(); ++i) {
-      const PlanResult result = planScenario(scenario, collision, setups[i]);
+      const EpisodeOutcome outcome = runEpisodePipeline(requests[i]);
       const std::string json_name = "/plan_" + planners[i] + ".json";
-      writeFileAtomically(out.path() + json_name,
-                          jsonText(planSummary(scenario, setups[i], result)));
-      report += printable(planners[i] + ": " + toString(result.status) + " (" + opt->out +
-                          json_name + ")") +
+      writeFileAtomically(out.path() + json_name, jsonText(outcome.plan_summary));
+      report += cli::printable(planners[i] + ": " + toString(outcome.plan->status) + " (" +
+                               opt->out + json_name + ")") +
                 "\n";
-      inputs.plans.push_back(planFigure(scenario, setups[i], result));
+      inputs.plans.push_back(planFigure(scenario, outcome.plan_setup, *outcome.plan));
     }
     inputs.steering = steeringExample(scenario, target);
     for (const std::string& path : writeFigures(scenario, inputs, def, out.path() + "/figures")) {
-      report += printable("wrote " + out.shown(path)) + "\n";
+      report += cli::printable("wrote " + out.shown(path)) + "\n";
     }
     out.commit();
     std::fputs(report.c_str(), stdout);

@@ -12,24 +12,23 @@
 #include <vector>
 
 #include "app/Command.h"
-#include "app/OutputDir.h"
-#include "app/TerminalText.h"
+#include "parksim/cli/OutputDir.h"
+#include "parksim/cli/TerminalText.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/results/OmplLog.h"
 #include "parksim/sweep/Report.h"
 #include "parksim/sweep/ResultsTable.h"
 #include "parksim/sweep/SweepManifest.h"
 
-#ifdef PARKSIM_HAVE_OMPL_BENCH
-#include "bench/ompl/OmplLog.h"
-#endif
-
 namespace parksim::app {
+
+using cli::printable;
+using cli::printableLines;
 namespace {
 
 using Json = nlohmann::ordered_json;
 
-#ifdef PARKSIM_HAVE_OMPL_BENCH
 bench::BenchRecord benchRecord(const Json& row) {
   bench::BenchRecord r;
   r.library = "parksim";
@@ -101,7 +100,6 @@ std::vector<std::string> writeOmplLogs(const std::vector<Json>& rows, const std:
   }
   return written;
 }
-#endif
 
 int runReport(const std::string& dir, std::string out) {
   const std::string path = dir + "/results.jsonl";
@@ -116,12 +114,10 @@ int runReport(const std::string& dir, std::string out) {
   // As plan and run do: the report is written whole into a staging directory and swapped in, and
   // an --out holding files parksim did not write (a home directory, the sweep directory itself)
   // is refused instead of being written into.
-  OutputDir staged(out);
+  cli::OutputDir staged(out);
   std::vector<std::string> written = writeReport(rows, name, staged.path());
-#ifdef PARKSIM_HAVE_OMPL_BENCH
   const std::vector<std::string> logs = writeOmplLogs(rows, name, staged.path());
   written.insert(written.end(), logs.begin(), logs.end());
-#endif
   std::string summary;
   {
     std::FILE* f = std::fopen((staged.path() + "/summary.md").c_str(), "r");

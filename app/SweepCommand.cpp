@@ -17,7 +17,7 @@
 #include <thread>
 
 #include "app/Command.h"
-#include "app/TerminalText.h"
+#include "parksim/cli/TerminalText.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/sweep/EpisodeExpansion.h"
@@ -29,6 +29,9 @@
 #include "parksim/sweep/SweepSpecReader.h"
 
 namespace parksim::app {
+
+using cli::printable;
+using cli::printableLines;
 namespace {
 
 namespace fs = std::filesystem;
@@ -130,6 +133,9 @@ int runSweepCommand(const SweepOptions& o) {
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const std::vector<SweepEpisode> episodes = selectShard(all, shard);
 
+  // A table of another id format (an older parksim's) is refused before anything is written.
+  SweepManifest existing;
+  (void)readSweepManifest(o.out, existing);
   ResultsTable table(o.out);  // refuses a table with other columns before anything is written
   SweepManifest manifest{o.spec, spec.name, shard, {}};
   for (const SweepEpisode& e : all) manifest.episode_ids.push_back(e.id);

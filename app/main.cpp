@@ -10,7 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/Command.h"
-#include "app/TerminalText.h"
+#include "parksim/cli/TerminalText.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/Provenance.h"
 
@@ -40,7 +40,6 @@ int main(int argc, char** argv) {
       setupRunCommand);
   add("render", "draw the study's figures for a world, without running an episode",
       setupRenderCommand);
-  add("bench", "benchmark parksim's planners, optionally against OMPL", setupBenchCommand);
   add("sweep", "run a sweep spec's episodes (plan + simulate + measure) into one results table",
       setupSweepCommand);
   add("merge", "merge sweep results (shards, machines) into one table", setupMergeCommand);
@@ -55,7 +54,12 @@ int main(int argc, char** argv) {
       known = known || sub->get_name() == argv[1];
     }
     if (!known) {
-      std::fprintf(stderr, "parksim: unknown command '%s'; commands: %s\n", argv[1], names.c_str());
+      // The planning benchmark is a program of its own, standing beside parksim on the library.
+      const char* hint = std::string(argv[1]) == "bench"
+                             ? " (the planning benchmark is the program parksim-bench)"
+                             : "";
+      std::fprintf(stderr, "parksim: unknown command '%s'; commands: %s%s\n",
+                   parksim::cli::printable(argv[1]).c_str(), names.c_str(), hint);
       return kExitBadInput;
     }
   }
@@ -66,7 +70,7 @@ int main(int argc, char** argv) {
     // option text the user gave is escaped.
     if (e.get_exit_code() == 0) return app.exit(e);
     std::fprintf(stderr, "parksim: error: %s\nRun with --help for more information.\n",
-                 printable(e.what()).c_str());
+                 parksim::cli::printable(e.what()).c_str());
     return kExitBadInput;
   }
   try {
@@ -86,13 +90,14 @@ int main(int argc, char** argv) {
       return run(output);
     }
   } catch (const parksim::EnvironmentError& e) {  // no OpenGL, no font: the machine, not the input
-    std::fprintf(stderr, "parksim: error: %s\n", printable(e.what()).c_str());
+    std::fprintf(stderr, "parksim: error: %s\n", parksim::cli::printable(e.what()).c_str());
     return kExitInternal;
   } catch (const parksim::Error& e) {
-    std::fprintf(stderr, "parksim: error: %s\n", printable(e.what()).c_str());
+    std::fprintf(stderr, "parksim: error: %s\n", parksim::cli::printable(e.what()).c_str());
     return kExitBadInput;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "parksim: internal error: %s\n", printable(e.what()).c_str());
+    std::fprintf(stderr, "parksim: internal error: %s\n",
+                 parksim::cli::printable(e.what()).c_str());
     return kExitInternal;
   }
   return kExitBadInput;

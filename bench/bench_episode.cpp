@@ -18,9 +18,11 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/Geometry.h"
 #include "parksim/planner/PlanScenario.h"
+#include "parksim/results/ExecutedFile.h"
+#include "parksim/results/JsonFile.h"
+#include "parksim/results/MetricsFile.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/Episode.h"
-#include "parksim/sim/EpisodeFiles.h"
 
 namespace parksim {
 namespace {

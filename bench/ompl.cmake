@@ -1,7 +1,7 @@
 # OMPL side of the planning benchmark: OMPL's planners on parksim's footprint checker, each run
 # in a forked child process (OMPL's RNG seed is process-wide), and OMPL's benchmark log format.
-# parksim_ompl_bench is what the parksim executable links for `parksim bench`; it brings
-# parksim_plan_bench along and defines PARKSIM_HAVE_OMPL_BENCH for the command.
+# parksim_ompl_bench is what parksim-bench links (parksim_bench.cmake); it brings
+# parksim_plan_bench along.
 include_guard(GLOBAL)
 include(${CMAKE_CURRENT_LIST_DIR}/planning.cmake)
 
@@ -13,12 +13,9 @@ set(parksim_ompl_libraries ${OMPL_LIBRARIES})
 list(FILTER parksim_ompl_libraries INCLUDE REGEX "libompl\\.")
 
 add_library(parksim_ompl_bench
-  ${CMAKE_CURRENT_LIST_DIR}/ompl/OmplLog.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ompl/OmplPlanners.cpp)
 target_include_directories(parksim_ompl_bench SYSTEM PRIVATE ${OMPL_INCLUDE_DIR})
 target_link_libraries(parksim_ompl_bench PUBLIC parksim_plan_bench
                                          PRIVATE ${parksim_ompl_libraries})
-target_compile_definitions(parksim_ompl_bench
-  PUBLIC PARKSIM_HAVE_OMPL_BENCH
-  PRIVATE PARKSIM_VERSION_STRING="${PROJECT_VERSION}")
+
 parksim_target_defaults(parksim_ompl_bench)

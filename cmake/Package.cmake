@@ -1,6 +1,6 @@
 # The installed package: libraries, headers under include/parksim/, the parksim executable (app/)
 # and parksimConfig.cmake, so that a consumer writes
-#   find_package(parksim 0.2 REQUIRED)
+#   find_package(parksim 0.3 REQUIRED)
 #   target_link_libraries(app PRIVATE parksim::parksim)   # or parksim::sim, parksim::planner...
 # and gets the include directory, C++20 and the dependencies through the targets.
 
@@ -10,7 +10,7 @@ set(PARKSIM_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/parksim)
 
 # Module targets keep their build names (parksim_sim) and are exported as parksim::sim; the
 # aliases give a project that adds parksim as a subdirectory the same names.
-set(parksim_modules core realism scenario collision planner sim render)
+set(parksim_modules core realism scenario collision planner sim results render pipeline sweep)
 foreach(module IN LISTS parksim_modules)
   set_target_properties(parksim_${module} PROPERTIES EXPORT_NAME ${module})
   add_library(parksim::${module} ALIAS parksim_${module})
@@ -41,7 +41,7 @@ install(EXPORT parksimTargets NAMESPACE parksim:: DESTINATION ${PARKSIM_CMAKE_DI
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/parksimConfig.cmake.in
   ${PROJECT_BINARY_DIR}/parksimConfig.cmake
   INSTALL_DESTINATION ${PARKSIM_CMAKE_DIR})
-# 0.x releases break their API between minor versions: 0.2 accepts 0.2.*, not 0.1 or 0.3.
+# 0.x releases break their API between minor versions: 0.3 accepts 0.3.*, not 0.2 or 0.4.
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/parksimConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
 install(FILES

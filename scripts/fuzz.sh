@@ -38,13 +38,11 @@ build() {  # build NAME SOURCES... LIBS...
 }
 
 # The reader's realism: section is checked by the Bullet-free parksim_realism library
-# (parksim/sim/CMakeLists.txt lists its sources; keep the two lists alike).
-realism=(parksim/realism/Distribution.cpp parksim/realism/Encoder.cpp parksim/realism/Estimator.cpp
-  parksim/realism/MotorModel.cpp parksim/realism/PoseSensor.cpp parksim/realism/RealismDef.cpp
-  parksim/realism/WheelSpeedLoop.cpp)
+# (parksim/realism/, all of it).
+realism=(parksim/realism/*.cpp)
 build world tests/fuzz/WorldReaderFuzz.cpp parksim/scenario/*.cpp "${realism[@]}" \
   "${core[@]}" -lyaml-cpp
-build plan tests/fuzz/PlanReaderFuzz.cpp "${core[@]}"
+build plan tests/fuzz/PlanReaderFuzz.cpp parksim/results/TrajectoryFile.cpp "${core[@]}"
 
 timeout_s=${FUZZ_TIMEOUT:-10}
 common=(-timeout="$timeout_s" -rss_limit_mb=2048 -malloc_limit_mb=2048 -max_len=65536

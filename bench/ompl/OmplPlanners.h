@@ -18,12 +18,12 @@
 #include <string>
 #include <vector>
 
-#include "bench/planning/BenchRecord.h"
 #include "bench/planning/PathCheck.h"
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/FootprintChecker.h"
 #include "parksim/core/Pose2.h"
 #include "parksim/core/Scenario.h"
+#include "parksim/results/BenchRecord.h"
 
 namespace parksim::bench {
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "bench/planning/BenchRecord.h"
 #include "parksim/core/Provenance.h"
+#include "parksim/results/BenchRecord.h"
 
 namespace parksim::bench {
 

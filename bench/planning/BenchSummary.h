@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "bench/planning/BenchRecord.h"
+#include "parksim/results/BenchRecord.h"
 
 namespace parksim::bench {
 

@@ -5,11 +5,11 @@
 
 #include <cstdint>
 
-#include "bench/planning/BenchRecord.h"
 #include "bench/planning/PathCheck.h"
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/Scenario.h"
 #include "parksim/planner/PlanScenario.h"
+#include "parksim/results/BenchRecord.h"
 
 namespace parksim::bench {
 

@@ -8,10 +8,10 @@
 
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/Error.h"
+#include "parksim/pipeline/Verdict.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/Episode.h"
-#include "parksim/sim/TrackingTolerance.h"
 
 int main(int argc, char** argv) {
   if (argc != 3) {

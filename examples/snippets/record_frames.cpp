@@ -8,8 +8,8 @@
 
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/Error.h"
+#include "parksim/pipeline/EpisodeFigures.h"
 #include "parksim/planner/PlanScenario.h"
-#include "parksim/renders/EpisodeFrames.h"
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/Episode.h"
@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
     FrameRecorder rec(scenario, def);               // creates out_dir/frames
     rec.setPlan(plan.trajectory, plan.tree_edges);  // the tree is drawn only with def.show_tree
     const EpisodeObserver observer = [&rec](const EpisodeSample& sample) {
-      rec.addFrame(frameInput(sample));  // EpisodeFrames.h: the sample as the recorder's input
+      rec.addFrame(frameInput(sample));  // pipeline/EpisodeFigures.h: sample -> frame input
     };
     runEpisode(scenario, plan.trajectory, ExecutionDef{}, observer, 1.0 / def.fps);
     const RecordingResult r = rec.finish();  // waits for the PNGs, runs ffmpeg if asked

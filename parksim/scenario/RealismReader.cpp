@@ -1,8 +1,6 @@
 #include "parksim/scenario/RealismReader.h"
 
-#include <fstream>
 #include <optional>
-#include <sstream>
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
@@ -181,25 +179,6 @@ WorldRealism readRealismSections(const YamlMap& top) {
     w.has_tolerance = true;
   }
   return w;
-}
-
-WorldRealism parseWorldRealism(std::string_view yaml_text, const std::string& source_name) {
-  YAML::Node doc;
-  try {
-    doc = YAML::Load(std::string(yaml_text));
-  } catch (const YAML::Exception& e) {
-    throw Error(source_name + ":" + std::to_string(lineOf(e.mark)) + ": (syntax): " + e.msg);
-  }
-  const YamlField root(doc, "", 1, source_name);
-  return readRealismSections(YamlMap(root));
-}
-
-WorldRealism loadWorldRealism(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseWorldRealism(text.str(), path);
 }
 
 }  // namespace parksim

@@ -1,13 +1,10 @@
 #pragma once
 // The `realism:` and `tolerance:` sections of a world file (docs/realism.md): how real the
 // simulated robot is and which tracking tolerance `parksim run` holds the world to. Both are
-// optional; loadScenario validates them with the rest of the file (same located messages).
+// optional; loadWorld (scenario/World.h) reads them with the rest of the file.
 
-#include <string>
-#include <string_view>
-
+#include "parksim/core/TrackingTolerance.h"
 #include "parksim/realism/RealismDef.h"
-#include "parksim/sim/TrackingTolerance.h"
 
 namespace parksim {
 
@@ -17,10 +14,5 @@ struct WorldRealism {
   bool has_tolerance = false;
   TrackingTolerance tolerance;  ///< TrackingTolerance{} with the section's overrides
 };
-
-/// Reads the two sections of the world file at `path` (call after loadScenario accepted it).
-/// Throws Error with `<file>:<line>: <field>: <what>` on bad values.
-WorldRealism loadWorldRealism(const std::string& path);
-WorldRealism parseWorldRealism(std::string_view yaml_text, const std::string& source_name);
 
 }  // namespace parksim

@@ -58,8 +58,9 @@ YAML::Node parseValue(const ScenarioOverride& o) {
   }
 }
 
-// Replaces the node at o.path in `document` by o.value.
-void apply(YAML::Node& document, const ScenarioOverride& o) {
+}  // namespace
+
+void applyOverride(YAML::Node& document, const ScenarioOverride& o) {
   const std::vector<PathStep> steps = splitPath(o);
   const YAML::Node value = parseValue(o);
   YAML::Node node = document;
@@ -92,14 +93,16 @@ void apply(YAML::Node& document, const ScenarioOverride& o) {
   }
 }
 
+namespace {
+
 bool startsWithField(std::string_view text, std::string_view path) {
   if (text.substr(0, path.size()) != path || text.size() == path.size()) return false;
   const char next = text[path.size()];
   return next == ':' || next == '.' || next == '[';
 }
 
-// A reader message is "<source>:<line>: <field path>: <what>"; when the field is an overridden
-// one (or inside one), its file line is meaningless: name the override instead.
+}  // namespace
+
 [[noreturn]] void rethrowNamingOverride(const Error& e, const std::string& source,
                                         const std::vector<ScenarioOverride>& overrides) {
   const std::string_view message = e.what();
@@ -114,23 +117,6 @@ bool startsWithField(std::string_view text, std::string_view path) {
     }
   }
   throw e;
-}
-
-}  // namespace
-
-Scenario parseScenario(std::string_view yaml_text, const std::string& source_name,
-                       const std::vector<ScenarioOverride>& overrides) {
-  YAML::Node document = loadWorldDocument(yaml_text, source_name);
-  for (const ScenarioOverride& o : overrides) apply(document, o);
-  try {
-    return readWorldDocument(document, source_name);
-  } catch (const Error& e) {
-    rethrowNamingOverride(e, source_name, overrides);
-  }
-}
-
-Scenario loadScenario(const std::string& path, const std::vector<ScenarioOverride>& overrides) {
-  return parseScenario(readWorldFile(path), path, overrides);
 }
 
 }  // namespace parksim

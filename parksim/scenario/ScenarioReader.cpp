@@ -392,10 +392,6 @@ std::string readWholeFile(const std::string& path) {
 
 }  // namespace
 
-Scenario parseScenario(std::string_view yaml_text, const std::string& source_name) {
-  return readWorldDocument(loadWorldDocument(yaml_text, source_name), source_name);
-}
-
 YAML::Node loadWorldDocument(std::string_view yaml_text, const std::string& source_name) {
   if (yaml_text.size() > kMaxWorldFileBytes) {
     throw Error(escapeText(source_name + ": file size: " + std::to_string(yaml_text.size()) +
@@ -411,15 +407,15 @@ YAML::Node loadWorldDocument(std::string_view yaml_text, const std::string& sour
   return document;
 }
 
-Scenario readWorldDocument(const YAML::Node& document, const std::string& source_name) {
+World readWorldDocument(const YAML::Node& document, const std::string& source_name) {
   const YamlField root(document, "", 1, source_name);
   const YamlMap top(root);
   readFormat(top.required("format"));
   top.rejectUnknownKeys({"format", "name", "lot", "robot", "obstacles", "parked_robots", "start",
                          "goal", "physics", "realism", "tolerance"});
-  readRealismSections(top);  // validated here, read by loadWorldRealism (scenario/RealismReader.h)
-
-  Scenario s;
+  World world;
+  world.sections = readRealismSections(top);
+  Scenario& s = world.scenario;
   s.source_path = source_name;
   s.name = top.required("name").name();
   s.lot = readLot(top.required("lot"));
@@ -447,10 +443,8 @@ Scenario readWorldDocument(const YAML::Node& document, const std::string& source
   s.goal = readGoal(goal);
   checkPlacement(start, placementProblem(s, s.start));
   checkPlacement(YamlMap(goal).required("pose"), goalPlacementProblem(s));
-  return s;
+  return world;
 }
-
-Scenario loadScenario(const std::string& path) { return parseScenario(readWholeFile(path), path); }
 
 std::string readWorldFile(const std::string& path) { return readWholeFile(path); }
 

@@ -7,7 +7,12 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <vector>
+
+#include "parksim/core/Error.h"
 #include "parksim/core/Scenario.h"
+#include "parksim/scenario/ScenarioOverrides.h"
+#include "parksim/scenario/World.h"
 
 namespace parksim {
 
@@ -18,7 +23,17 @@ std::string readWorldFile(const std::string& path);
 /// text or several documents.
 YAML::Node loadWorldDocument(std::string_view yaml_text, const std::string& source_name);
 
-/// Validates a world document into a Scenario (parseScenario's second half).
-Scenario readWorldDocument(const YAML::Node& document, const std::string& source_name);
+/// Validates a world document into a World (parseWorld's second half).
+World readWorldDocument(const YAML::Node& document, const std::string& source_name);
+
+/// Replaces the node at o.path in `document` by o.value (ScenarioOverrides.h). Throws Error
+/// naming the override on a bad path or value.
+void applyOverride(YAML::Node& document, const ScenarioOverride& o);
+
+/// A reader message is "<source>:<line>: <field path>: <what>"; when the field is an
+/// overridden one (or inside one), its file line is meaningless: rethrows `e` naming the
+/// override instead, or unchanged.
+[[noreturn]] void rethrowNamingOverride(const Error& e, const std::string& source,
+                                        const std::vector<ScenarioOverride>& overrides);
 
 }  // namespace parksim

@@ -29,8 +29,11 @@ struct TrackingGains {
   double k_theta = 10.0;  ///< 1/s: yaw rate per radian of heading error (sin e_theta)
 };
 
+/// ExecutionDef's default tracking, named for the options and parameters that state it.
+inline constexpr TrackingMode kDefaultTracking = TrackingMode::kClosed;
+
 struct ExecutionDef {
-  TrackingMode tracking = TrackingMode::kClosed;
+  TrackingMode tracking = kDefaultTracking;
   TrackingGains gains;
   /// After the plan ends the robot is commanded to stop (open: zero wheel speeds; closed: hold
   /// the plan's last pose, zero feed-forward). It is at rest once its reference point moves

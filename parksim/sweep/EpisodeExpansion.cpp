@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "parksim/core/Error.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/sweep/EpisodeSetup.h"
 
 namespace parksim {
@@ -11,13 +11,12 @@ namespace parksim {
 std::vector<SweepWorld> loadSweepWorlds(const SweepSpec& spec) {
   std::vector<SweepWorld> worlds;
   for (std::size_t i = 0; i < spec.world_paths.size(); ++i) {
-    Scenario scenario = loadScenario(spec.world_paths[i]);
-    worlds.push_back({std::move(scenario), loadWorldRealism(spec.world_paths[i])});
+    worlds.push_back(std::make_shared<const World>(loadWorld(spec.world_paths[i])));
     for (std::size_t j = 0; j < i; ++j) {
-      if (worlds[j].scenario.name == worlds[i].scenario.name) {
+      if (worlds[j]->scenario.name == worlds[i]->scenario.name) {
         throw Error(spec.source_path + ":" + std::to_string(spec.worlds_line) +
                     ": worlds: " + spec.world_files[j] + " and " + spec.world_files[i] +
-                    " both name their scenario '" + worlds[i].scenario.name +
+                    " both name their scenario '" + worlds[i]->scenario.name +
                     "' (episode ids use the name; rename one)");
       }
     }
@@ -41,7 +40,7 @@ std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
                       for (const PoseOffset& start : spec.start_offsets)
                         for (const PoseOffset& goal : spec.goal_offsets) {
                           EpisodeParams p;
-                          p.world = worlds[w].scenario.name;
+                          p.world = worlds[w]->scenario.name;
                           p.world_file = spec.world_files.at(w);
                           p.planner = planner;
                           p.steering = steering;
@@ -54,14 +53,14 @@ std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
                           p.noise_seed = noise_seed;
                           p.start_offset = start;
                           p.goal_offset = goal;
-                          out.push_back({p, episodeId(p), &worlds[w], &spec.tolerance});
+                          out.push_back({p, episodeId(p), worlds[w], &spec.tolerance});
                         }
   }
   // Every combination is checked before anything runs: a bad offset stops the sweep before it
   // writes anything.
   for (const SweepEpisode& e : out) {
     try {
-      (void)setupEpisode(e.params, *e.world, spec.tolerance);
+      checkEpisodeRequest(episodeRequest(e.params, e.world, spec.tolerance));
     } catch (const Error& err) {
       throw Error(spec.source_path + ": " + err.what());
     }

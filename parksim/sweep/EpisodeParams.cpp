@@ -14,20 +14,16 @@ std::string offset(const PoseOffset& o) {
 }  // namespace
 
 std::string canonicalString(const EpisodeParams& p) {
-  const EpisodeParams d;
-  std::string s = "world=" + p.world + ";planner=" + p.planner;
-  if (p.steering != d.steering) s += ";steering=" + p.steering;
-  if (p.smooth != d.smooth) s += ";smooth=1";
+  std::string s = "ids=" + std::to_string(kEpisodeIdFormat);
+  s += ";world=" + p.world + ";planner=" + p.planner + ";steering=" + p.steering;
+  s += std::string(";smooth=") + (p.smooth ? "1" : "0");
   s += ";seed=" + std::to_string(p.seed);
-  if (p.max_iterations != d.max_iterations) {
-    s += ";max_iterations=" + std::to_string(p.max_iterations);
-  }
-  if (p.tracking != d.tracking) s += ";tracking=" + p.tracking;
-  if (p.timing != d.timing) s += ";timing=" + p.timing;
-  if (p.realism != d.realism) s += ";realism=" + p.realism;
-  if (p.noise_seed != d.noise_seed) s += ";noise_seed=" + std::to_string(p.noise_seed);
-  if (!p.start_offset.isZero()) s += ";start_offset=" + offset(p.start_offset);
-  if (!p.goal_offset.isZero()) s += ";goal_offset=" + offset(p.goal_offset);
+  s +=
+      ";max_iterations=" + (p.max_iterations == kAutoIterations ? std::string("auto")
+                                                                : std::to_string(p.max_iterations));
+  s += ";tracking=" + p.tracking + ";timing=" + p.timing + ";realism=" + p.realism;
+  s += ";noise_seed=" + std::to_string(p.noise_seed);
+  s += ";start_offset=" + offset(p.start_offset) + ";goal_offset=" + offset(p.goal_offset);
   return s;
 }
 

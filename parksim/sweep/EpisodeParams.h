@@ -3,15 +3,22 @@
 //
 // The id is a hash of the canonical text, never the episode's position in the sweep, so the
 // same episode has the same id in every sweep that contains it, however the spec lists or
-// orders its axes, and whichever shard or machine runs it. A parameter at its default value is
-// left out of the canonical text: adding a new axis (with a default that reproduces today's
-// behaviour) keeps every existing id.
+// orders its axes, and whichever shard or machine runs it: a baseline table and a candidate
+// table of the same spec pair by id. The canonical text spells every parameter, defaults
+// included, after the id format's version ("ids=2;world=...;planner=..."), so an id never
+// depends on what the defaults were when it was made; a change of the parameters an id spells
+// is a new format version, and a table of another version is refused by name
+// (docs/sweeps.md, "Episode ids").
 
 #include <cstdint>
 #include <string>
 #include <string_view>
 
 #include <nlohmann/json.hpp>
+
+#include "parksim/pipeline/EpisodeRequest.h"
+#include "parksim/planner/PlanScenario.h"
+#include "parksim/sim/ExecutionDef.h"
 
 namespace parksim {
 
@@ -25,30 +32,36 @@ struct PoseOffset {
   friend bool operator==(const PoseOffset&, const PoseOffset&) = default;
 };
 
-/// Defaults here are the sweep format's, frozen: they define which values the canonical text
-/// omits, so changing one would change ids.
+/// The version of the canonical text the ids hash (sweep.json records it).
+inline constexpr int kEpisodeIdFormat = 2;
+
+/// Defaults are the library's, the same as `parksim run` and Python's (PlanSetup{},
+/// EpisodeRequest{}, ExecutionDef{}).
 struct EpisodeParams {
   std::string world;       ///< the world's Scenario::name (its file is provenance, not identity)
   std::string world_file;  ///< the file the world was read from; not part of the id
-  std::string planner = "rrt-goal-connect";
-  std::string steering = "move-to-pose";
-  bool smooth = false;
-  std::uint64_t seed = 1;  ///< planner seed
-  int max_iterations = 2000;
-  std::string tracking = "closed";      ///< "closed" or "open"
-  std::string timing = "time-optimal";  ///< how the plan is timed ("time-optimal", "study")
+  std::string planner = toString(PlanSetup{}.planner.kind);
+  std::string steering = toString(PlanSetup{}.steering_kind);
+  bool smooth = PlanSetup{}.planner.smooth;
+  std::uint64_t seed = PlanSetup{}.planner.seed;  ///< planner seed
+  /// Iteration budget; kAutoIterations ("auto") is the lot's (defaultIterationBudget).
+  int max_iterations = PlanSetup{}.planner.max_iterations;
+  std::string tracking = toString(kDefaultTracking);  ///< "closed" or "open"
+  /// How the plan is timed ("time-optimal", "study").
+  std::string timing = toString(PlanSetup{}.timing);
   /// The robot's realism: "world" (the world file's realism: section; ideal without one) or a
   /// preset name ("ideal", "lab", "odometry").
-  std::string realism = "world";
-  std::uint64_t noise_seed = 1;  ///< seeds the realism's random draws (as `parksim run`)
-  PoseOffset start_offset;       ///< applied to the world's start
-  PoseOffset goal_offset;        ///< applied to the world's goal pose
+  std::string realism = kDefaultRealism;
+  /// Seeds the realism's random draws (as `parksim run`).
+  std::uint64_t noise_seed = kDefaultNoiseSeed;
+  PoseOffset start_offset;  ///< applied to the world's start
+  PoseOffset goal_offset;   ///< applied to the world's goal pose
 
   friend bool operator==(const EpisodeParams&, const EpisodeParams&) = default;
 };
 
-/// "key=value;key=value" over the parameters that differ from the defaults, world, planner
-/// and seed always; keys in a fixed order, numbers in their shortest round-trip form.
+/// "ids=2;world=...;planner=...;...": every parameter but world_file, keys in a fixed order,
+/// numbers in their shortest round-trip form, an automatic budget as "auto".
 std::string canonicalString(const EpisodeParams& params);
 
 /// 64-bit FNV-1a of `text`.
@@ -57,10 +70,10 @@ std::uint64_t fnv1a64(std::string_view text);
 /// fnv1a64(canonicalString(params)) as 16 lower-case hex digits.
 std::string episodeId(const EpisodeParams& params);
 
-/// Every parameter (defaults included) as the leading columns of a results row, after
-/// episode_id: world, world_file, planner, steering, smooth, seed, max_iterations, tracking,
-/// timing, realism, noise_seed, start_dx_m, start_dy_m, start_dyaw_deg, goal_dx_m, goal_dy_m,
-/// goal_dyaw_deg.
+/// Every parameter as the leading columns of a results row, after episode_id (max_iterations
+/// 0 when automatic; the budget used is the row's plan_max_iterations): world, world_file, planner,
+/// steering, smooth, seed, max_iterations, tracking, timing, realism, noise_seed, start_dx_m,
+/// start_dy_m, start_dyaw_deg, goal_dx_m, goal_dy_m, goal_dyaw_deg.
 void appendParamColumns(const EpisodeParams& params, nlohmann::ordered_json& row);
 
 }  // namespace parksim

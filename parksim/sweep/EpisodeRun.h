@@ -1,7 +1,9 @@
 #pragma once
-// One sweep episode end to end: set up (EpisodeSetup.h), plan, simulate, measure, judge against
-// the tolerance, and write the episode's own files. Builds its own Bullet collision and dynamics
-// worlds, so workers run episodes side by side with nothing shared but read-only inputs.
+// One sweep episode end to end: its parameters as a request (EpisodeSetup.h), one call of the
+// episode pipeline (plan, simulate, measure, judge, write the episode's own files, film a
+// failure), and the outcome as a results row. The pipeline builds its own Bullet collision and
+// dynamics worlds, so workers run episodes side by side with nothing shared but read-only
+// inputs.
 
 #include <mutex>
 #include <string>
@@ -14,7 +16,7 @@
 namespace parksim {
 
 struct EpisodeRunDef {
-  RecordDef record;
+  SweepRecordDef record;
   /// Episode files go to episodes_dir/<episode_id>/ (executed.csv, trajectory.csv, frames/).
   std::string episodes_dir;
   /// Serialises filming (one off-screen GL context at a time); required when
@@ -22,18 +24,10 @@ struct EpisodeRunDef {
   std::mutex* film_mutex = nullptr;
 };
 
-/// Outcome classes, the row's `status`.
-inline constexpr const char* kStatusMet = "met";
-inline constexpr const char* kStatusPlanFailed = "plan_failed";
-inline constexpr const char* kStatusContact = "contact";
-inline constexpr const char* kStatusGoalMissed = "goal_missed";
-inline constexpr const char* kStatusToleranceMissed = "tolerance_missed";
-
 /// The episode's results row, without provenance (see ResultsTable.h for its keys): id,
-/// parameters, status, met_tolerance, failure (one line; empty when met), plan statistics,
-/// simulation metrics (absent when the plan failed) and timing. The tolerance is the episode's
-/// (EpisodeSetup::tolerance). Throws Error when a file cannot
-/// be written.
+/// parameters, status (the verdict's, pipeline/Verdict.h), met_tolerance, failure (the
+/// verdict's one line; empty when met), plan statistics, simulation metrics (absent when the
+/// plan failed) and timing. Throws Error when a file cannot be written.
 nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const EpisodeRunDef& def);
 
 }  // namespace parksim

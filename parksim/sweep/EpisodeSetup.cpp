@@ -5,6 +5,7 @@
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
+#include "parksim/planner/PlanScenario.h"
 #include "parksim/realism/RealismDef.h"
 
 namespace parksim {
@@ -34,44 +35,42 @@ std::vector<std::string> supportedTimings() {
   return {toString(TimingKind::kTimeOptimal), toString(TimingKind::kStudy)};
 }
 
-EpisodeSetup setupEpisode(const EpisodeParams& p, const SweepWorld& world,
-                          const ToleranceOverrides& tolerance) {
+EpisodeRequest episodeRequest(const EpisodeParams& p, const std::shared_ptr<const World>& world,
+                              const ToleranceOverrides& tolerance) {
   requireOneOf("realism", p.realism, supportedRealismPresets());
   requireOneOf("timing", p.timing, supportedTimings());
-  EpisodeSetup s;
-  s.scenario = world.scenario;
-  s.scenario.start = applyOffset(world.scenario.start, p.start_offset);
-  s.scenario.goal.pose = applyOffset(world.scenario.goal.pose, p.goal_offset);
-  // The world reader's one placement rule, so a perturbed episode is one it would accept.
-  if (!p.start_offset.isZero()) {
-    if (const std::optional<std::string> why = placementProblem(s.scenario, s.scenario.start)) {
-      throw Error("start offset on " + world.scenario.name + ": " + *why);
+  EpisodeRequest r;
+  r.world = world;
+  if (!p.start_offset.isZero() || !p.goal_offset.isZero()) {
+    auto moved = std::make_shared<World>(*world);
+    Scenario& s = moved->scenario;
+    s.start = applyOffset(world->scenario.start, p.start_offset);
+    s.goal.pose = applyOffset(world->scenario.goal.pose, p.goal_offset);
+    // The world reader's one placement rule, so a perturbed episode is one it would accept.
+    if (!p.start_offset.isZero()) {
+      if (const std::optional<std::string> why = placementProblem(s, s.start)) {
+        throw Error("start offset on " + s.name + ": " + *why);
+      }
     }
-  }
-  if (!p.goal_offset.isZero()) {
-    if (const std::optional<std::string> why = goalPlacementProblem(s.scenario)) {
-      throw Error("goal offset on " + world.scenario.name + ": " + *why);
+    if (!p.goal_offset.isZero()) {
+      if (const std::optional<std::string> why = goalPlacementProblem(s)) {
+        throw Error("goal offset on " + s.name + ": " + *why);
+      }
     }
+    r.world = std::move(moved);
   }
-
-  s.plan.planner.kind = plannerKindFromString(p.planner);
-  s.plan.planner.seed = p.seed;
-  s.plan.planner.max_iterations = p.max_iterations;
-  s.plan.planner.smooth = p.smooth;
-  s.plan.planner.record_tree = false;  // the tree is for figures; a sweep keeps statistics only
-  s.plan.steering_kind = steeringKindFromString(p.steering);
-  s.plan.timing = timingKindFromString(p.timing);
-
-  s.execution.tracking = trackingModeFromString(p.tracking);
-  // As `parksim run`: a preset replaces the world's realism: section; "world" keeps it.
-  if (p.realism != "world") {
-    s.execution.realism = presetRealism(p.realism);
-  } else if (world.realism.has_realism) {
-    s.execution.realism = world.realism.realism;
-  }
-  s.execution.noise_seed = p.noise_seed;
-  s.tolerance = tolerance.appliedTo(world.realism.tolerance);
-  return s;
+  r.plan.planner.kind = plannerKindFromString(p.planner);
+  r.plan.planner.seed = p.seed;
+  r.plan.planner.max_iterations = p.max_iterations;
+  r.plan.planner.smooth = p.smooth;
+  r.plan.planner.record_tree = false;  // the tree is for figures; a sweep keeps statistics only
+  r.plan.steering_kind = steeringKindFromString(p.steering);
+  r.plan.timing = timingKindFromString(p.timing);
+  r.execution.tracking = trackingModeFromString(p.tracking);
+  r.realism = p.realism;
+  r.noise_seed = p.noise_seed;
+  r.tolerance = tolerance;
+  return r;
 }
 
 }  // namespace parksim

@@ -1,36 +1,28 @@
 #pragma once
-// The one place where an episode's parameters become the inputs of planning and simulation.
-// A new axis of the sweep spec (a realism preset's noise, a timing option) is wired here and
-// nowhere else.
+// The one place where a sweep episode's parameters become an episode request for the pipeline
+// (pipeline/EpisodeRequest.h). A new axis of the sweep spec is wired here and nowhere else;
+// what the parameters leave alone keeps the library's defaults, as on the command line.
 
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "parksim/core/Scenario.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/sim/ExecutionDef.h"
-#include "parksim/sim/TrackingTolerance.h"
-#include "parksim/sweep/EpisodeExpansion.h"
+#include "parksim/pipeline/EpisodeRequest.h"
+#include "parksim/scenario/World.h"
 #include "parksim/sweep/EpisodeParams.h"
-#include "parksim/sweep/SweepSpec.h"
 
 namespace parksim {
-
-struct EpisodeSetup {
-  Scenario scenario;  ///< the world with the episode's start and goal offsets applied
-  PlanSetup plan;
-  ExecutionDef execution;
-  TrackingTolerance tolerance;  ///< the world's (or parksim's default) with the spec's overrides
-};
 
 /// Values the realism and timing axes accept: "world" and every realism preset; every timing.
 std::vector<std::string> supportedRealismPresets();
 std::vector<std::string> supportedTimings();
 
-/// `world` with `params` applied. Throws Error when a value is unknown or an offset puts the
-/// start or the goal where the world reader would not accept it (outside the lot, too close to
-/// an obstacle).
-EpisodeSetup setupEpisode(const EpisodeParams& params, const SweepWorld& world,
-                          const ToleranceOverrides& tolerance);
+/// The request for `params` in `world`, with the spec's tolerance overrides. The world is
+/// shared unless an offset moves the start or the goal (then it is a copy with them moved).
+/// Throws Error when a value is unknown or an offset puts the start or the goal where the world
+/// reader would not accept it (outside the lot, too close to an obstacle).
+EpisodeRequest episodeRequest(const EpisodeParams& params,
+                              const std::shared_ptr<const World>& world,
+                              const ToleranceOverrides& tolerance);
 
 }  // namespace parksim

@@ -11,6 +11,7 @@
 #include "parksim/renders/PngEncoder.h"
 #include "parksim/renders/Renderer.h"
 #include "parksim/renders/SuccessMatrix.h"
+#include "parksim/sweep/EpisodeParams.h"
 
 namespace parksim {
 namespace {
@@ -89,24 +90,26 @@ std::string plannerLabel(const Json& row) {
   // Appended piece by piece: `"x" + std::string` trips GCC 12's false -Wrestrict (bug 105329).
   std::string s = str(row, "planner", "?");
   if (flag(row, "smooth")) s += "+smooth";
-  const std::string steering = str(row, "steering", "move-to-pose");
-  if (steering != "move-to-pose") {
+  // Labels name what differs from the library's defaults (EpisodeParams{}).
+  const EpisodeParams defaults;
+  const std::string steering = str(row, "steering", defaults.steering.c_str());
+  if (steering != defaults.steering) {
     s += '/';
     s += steering;
   }
-  const std::string tracking = str(row, "tracking", "closed");
-  if (tracking != "closed") {
+  const std::string tracking = str(row, "tracking", defaults.tracking.c_str());
+  if (tracking != defaults.tracking) {
     s += ' ';
     s += tracking;
     s += "-loop";
   }
-  double iterations = 2000;
-  if (number(row, "max_iterations", iterations) && iterations != 2000) {
+  double iterations = defaults.max_iterations;
+  if (number(row, "max_iterations", iterations) && iterations != defaults.max_iterations) {
     s += " it=";
     s += std::to_string(static_cast<long long>(iterations));
   }
-  const std::string timing = str(row, "timing", "time-optimal");
-  if (timing != "time-optimal") {
+  const std::string timing = str(row, "timing", defaults.timing.c_str());
+  if (timing != defaults.timing) {
     s += " timing=";
     s += timing;
   }

@@ -93,9 +93,10 @@ std::optional<std::string> badKeyType(const nlohmann::ordered_json& row) {
                      "true or false")) {
     return p;
   }
-  if (auto p = check({"seed", "noise_seed", "max_iterations", "plan_iterations", "plan_tree_size",
-                      "plan_goal_tree_size", "plan_cusps", "plan_collision_queries"},
-                     &Json::is_number, "a number")) {
+  if (auto p =
+          check({"seed", "noise_seed", "max_iterations", "plan_max_iterations", "plan_iterations",
+                 "plan_tree_size", "plan_goal_tree_size", "plan_cusps", "plan_collision_queries"},
+                &Json::is_number, "a number")) {
     return p;
   }
   if (const auto it = row.find("plan_cost_history"); it != row.end() && !it->is_null()) {
@@ -170,9 +171,9 @@ const std::vector<std::string>& resultColumns() {
       // outcome
       "status", "met_tolerance", "failure",
       // plan
-      "plan_status", "plan_solved", "plan_iterations", "plan_tree_size", "plan_goal_tree_size",
-      "plan_collision_queries", "plan_cost_m", "plan_path_length_m", "plan_duration_s",
-      "plan_cusps", "plan_first_solution_iteration",
+      "plan_status", "plan_solved", "plan_max_iterations", "plan_iterations", "plan_tree_size",
+      "plan_goal_tree_size", "plan_collision_queries", "plan_cost_m", "plan_path_length_m",
+      "plan_duration_s", "plan_cusps", "plan_first_solution_iteration",
       // simulation
       "max_pos_err_m", "rms_pos_err_m", "final_pos_err_m", "max_heading_err_deg",
       "rms_heading_err_deg", "final_heading_err_deg", "final_x_m", "final_y_m", "final_theta_rad",

@@ -30,6 +30,8 @@ constexpr std::string_view kFormat = "parksim-sweep/1";
 constexpr std::size_t kMaxEpisodes = 10'000'000;
 // A spec is a page of YAML; /dev/zero or a huge file must not be read into memory.
 constexpr std::uintmax_t kMaxSpecBytes = 1 << 20;
+// As --max-iterations (docs/limits.md): the tree and its edges stay in memory.
+constexpr int kMaxSpecIterations = 1'000'000;
 
 std::string joined(const std::vector<std::string>& names) {
   std::string s;
@@ -169,16 +171,16 @@ void readWorlds(const YamlField& field, const std::string& base_dir, SweepSpec& 
   }
 }
 
-void readRecord(const YamlField& field, RecordDef& r) {
+void readRecord(const YamlField& field, SweepRecordDef& r) {
   const YamlMap m = field.map({"executed_csv", "executed_rate_hz", "film_failures", "film"});
   if (const std::optional<YamlField> f = m.optional("executed_csv")) {
     const std::string v = f->text();
     if (v == "none") {
-      r.executed_csv = ExecutedCsvPolicy::kNone;
+      r.executed_csv = FilesPolicy::kNone;
     } else if (v == "failures") {
-      r.executed_csv = ExecutedCsvPolicy::kFailures;
+      r.executed_csv = FilesPolicy::kFailures;
     } else if (v == "all") {
-      r.executed_csv = ExecutedCsvPolicy::kAll;
+      r.executed_csv = FilesPolicy::kAll;
     } else {
       f->fail("must be none, failures or all, got '" + v + "'");
     }
@@ -247,15 +249,6 @@ void readTolerance(const YamlField& field, ToleranceOverrides& t) {
 
 }  // namespace
 
-const char* toString(ExecutedCsvPolicy policy) {
-  switch (policy) {
-    case ExecutedCsvPolicy::kNone: return "none";
-    case ExecutedCsvPolicy::kFailures: return "failures";
-    case ExecutedCsvPolicy::kAll: return "all";
-  }
-  return "?";
-}
-
 SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_name,
                          const std::string& base_dir) {
   const YAML::Node document =
@@ -296,7 +289,19 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
   if (const auto f = top.optional("max_iterations")) {
     const std::vector<YamlField> items = axisItems(*f);
     spec.max_iterations.clear();
-    for (const YamlField& item : items) spec.max_iterations.push_back(item.positiveInt());
+    for (const YamlField& item : items) {
+      // "auto": the lot's budget, as --max-iterations auto.
+      if (item.node().IsScalar() && item.node().Scalar() == "auto") {
+        spec.max_iterations.push_back(kAutoIterations);
+        continue;
+      }
+      const int n = item.positiveInt();
+      if (n > kMaxSpecIterations) {
+        item.fail("must be auto or an integer in [1, " + std::to_string(kMaxSpecIterations) +
+                  "], got " + item.node().Scalar());
+      }
+      spec.max_iterations.push_back(n);
+    }
     rejectDuplicates(items, spec.max_iterations);
   }
   if (const auto f = top.optional("tracking")) {

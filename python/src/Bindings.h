@@ -13,7 +13,8 @@
 #include "parksim/core/Pose2.h"
 #include "parksim/core/Scenario.h"
 #include "parksim/core/Trajectory.h"
-#include "parksim/scenario/RealismReader.h"
+#include "parksim/pipeline/EpisodeRequest.h"
+#include "parksim/scenario/World.h"
 #include "parksim/sim/Episode.h"
 
 namespace parksim::python {
@@ -26,16 +27,20 @@ void bindPlan(py::module_& m);     // PlanBindings.cpp: plan(), PlanResult, traj
 void bindEpisode(py::module_& m);  // EpisodeBindings.cpp: run(), Episode, DynamicsWorld
 void bindRender(py::module_& m);   // RenderBindings.cpp: images, figures, FrameRecorder
 
-/// A loaded world: immutable, shared by every plan and episode made from it.
-struct World {
-  std::shared_ptr<const Scenario> scenario;
-  /// The file's realism: and tolerance: sections.
-  std::shared_ptr<const WorldRealism> realism;
+/// A loaded world (scenario/World.h): immutable, shared by every plan and episode made from it.
+struct WorldHandle {
+  explicit WorldHandle(std::shared_ptr<const World> w)
+      : world(std::move(w)), scenario(world, &world->scenario) {}
+  std::shared_ptr<const World> world;
+  std::shared_ptr<const Scenario> scenario;  ///< world->scenario, sharing its lifetime
 };
 
-/// How run() and Episode() execute: as `parksim run` by default (the world's realism section,
-/// noise seed 1), with the ExecutionDef fields in `options` taken from it.
-ExecutionDef executionFrom(const World& world, py::dict& options);
+/// The episode request (pipeline/EpisodeRequest.h) plan(), run() and Episode() make: the
+/// library's defaults, with the options in `options` taken from it (and removed): planner
+/// options when `planning` (planner, steering, PlannerDef and PlanSetup fields), then realism
+/// (a preset name or "world"), noise_seed, realisations, min_success_fraction, tolerance (a dict
+/// of ToleranceOverrides' bounds) and any ExecutionDef field (tracking, gains, ...).
+EpisodeRequest requestFrom(const WorldHandle& world, py::dict& options, bool planning);
 
 /// Copies the keys of `options` that name a field of `def`'s Python class onto it, removing
 /// them from `options`. Fields are the class's properties (DefBindings.cpp), so a field added to

@@ -7,6 +7,7 @@
 
 #include "parksim/core/DiffDrive.h"
 #include "parksim/core/Error.h"
+#include "parksim/results/TrajectoryFile.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
 
@@ -134,7 +135,8 @@ Trajectory trajectoryFrom(const py::handle& plan) {
 
 namespace {
 
-// Columns and values as executedCsv writes them (sim/EpisodeFiles.h): the ones every episode has.
+// Columns and values as executedCsv writes them (results/ExecutedFile.h): the ones every episode
+// has.
 template <typename Record>
 void fillExecuted(Record& r, const ExecutedRow& row) {
   r.t = row.t_s;

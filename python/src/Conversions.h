@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 
 #include "parksim/core/Scenario.h"
+#include "parksim/pipeline/EpisodeRequest.h"
 #include "parksim/planner/PlanScenario.h"
 #include "python/src/Bindings.h"
 
@@ -14,15 +15,16 @@ namespace parksim::python {
 /// A plan with what made it: parksim.PlanResult.
 struct PlanOutcome {
   std::shared_ptr<const Scenario> scenario;
-  PlanSetup setup;
+  PlanSetup setup;  ///< as used (automatic choices made)
   PlanResult result;
+  nlohmann::json summary;  ///< plan.json's content
 };
 
 /// plan()'s options taken from `options` (removed from it): planner, steering, PlannerDef and
-/// PlanSetup fields.
+/// PlanSetup fields, over the library's defaults.
 PlanSetup planSetupFrom(py::dict& options);
 
-/// Plans with the GIL released.
-PlanOutcome planWorld(const World& world, const PlanSetup& setup);
+/// Plans through the episode pipeline (a request that does not drive), the GIL released.
+PlanOutcome planWorld(const WorldHandle& world, const EpisodeRequest& request);
 
 }  // namespace parksim::python

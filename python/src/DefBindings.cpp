@@ -7,10 +7,10 @@
 
 #include "parksim/core/RobotDef.h"
 #include "parksim/planner/PlanScenario.h"
+#include "parksim/realism/RealismDef.h"
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/ExecutionDef.h"
-#include "parksim/realism/RealismDef.h"
 #include "python/src/Bindings.h"
 
 namespace parksim::python {
@@ -84,9 +84,7 @@ SolverKernel solverFromName(const std::string& name) {
   throw py::value_error("solver must be bullet, exact or fast, got '" + name + "'");
 }
 
-}  // namespace
-
-void bindDefs(py::module_& m) {
+void bindPlanningDefs(py::module_& m) {
   defClass<RobotDef>(m, "RobotDef", "The differential-drive robot (core/RobotDef.h), SI units.")
       .def_readwrite("length_m", &RobotDef::length_m)
       .def_readwrite("width_m", &RobotDef::width_m)
@@ -183,7 +181,9 @@ void bindDefs(py::module_& m) {
           "timing", [](const PlanSetup& s) { return std::string(toString(s.timing)); },
           [](PlanSetup& s, const std::string& name) { s.timing = timingKindFromString(name); })
       .def_readwrite("feedback_headroom", &PlanSetup::feedback_headroom);
+}
 
+void bindEpisodeDefs(py::module_& m) {
   defClass<TrackingGains>(m, "TrackingGains", "Kanayama tracking gains (sim/ExecutionDef.h).")
       .def_readwrite("k_x", &TrackingGains::k_x)
       .def_readwrite("k_y", &TrackingGains::k_y)
@@ -244,6 +244,13 @@ void bindDefs(py::module_& m) {
             d.context.backend = contextBackendFromString(s);
           },
           "auto (PARKSIM_GL_BACKEND, else egl, then osmesa), egl or osmesa");
+}
+
+}  // namespace
+
+void bindDefs(py::module_& m) {
+  bindPlanningDefs(m);
+  bindEpisodeDefs(m);
 }
 
 }  // namespace parksim::python

@@ -6,12 +6,11 @@
 
 #include <pybind11/stl.h>
 
-#include "app/PlanOutput.h"
 #include "parksim/core/Error.h"
-#include "parksim/core/Provenance.h"
-#include "parksim/renders/EpisodeFrames.h"
+#include "parksim/pipeline/EpisodePipeline.h"
+#include "parksim/pipeline/EpisodeSettings.h"
+#include "parksim/results/MetricsFile.h"
 #include "parksim/sim/DynamicsWorld.h"
-#include "parksim/sim/EpisodeFiles.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
 
@@ -22,77 +21,70 @@ namespace {
 struct RunOutcome {
   std::shared_ptr<const Scenario> scenario;
   std::optional<PlanOutcome> plan;
-  Trajectory trajectory;
-  EpisodeResult episode;
-  nlohmann::json metrics;
-  std::optional<RecordingResult> recording;
-  bool ran = false;
-  bool realism = false;  // executed.csv has the realism columns
+  EpisodeOutcome outcome;
 };
 
-RunOutcome runWorld(const World& world, const py::object& plan, const py::object& film,
-                    py::dict& options) {
-  RunOutcome out;
-  out.scenario = world.scenario;
-  const Scenario& scenario = *world.scenario;
-  std::optional<PlanSetup> setup;
-  if (plan.is_none()) setup = planSetupFrom(options);
-  const ExecutionDef exec = executionFrom(world, options);
+py::dict verdictDict(const Verdict& v) {
+  py::dict d;
+  d["status"] = toString(v.status);
+  d["met"] = v.met();
+  d["reason"] = v.reason;
+  return d;
+}
+
+// run()'s plan argument as the request's plan to drive (None: the pipeline plans).
+void takePlan(const py::object& plan, EpisodeRequest& request) {
+  if (plan.is_none()) return;
+  request.given_plan = trajectoryFrom(plan);
+  if (py::isinstance<py::str>(plan) || py::hasattr(plan, "__fspath__")) {
+    request.given_plan_source = py::str(py::module_::import("os").attr("fspath")(plan));
+  }
+}
+
+RunOutcome runWorld(const WorldHandle& world, const py::object& plan, const py::object& film,
+                    const py::object& out, py::dict& options) {
+  EpisodeRequest request = requestFrom(world, options, plan.is_none());
   rejectUnknownOptions(options, "run");
-  out.realism = exec.realism.active();
-  std::optional<FrameDef> frame_def;
-  if (!film.is_none()) frame_def = defFrom<FrameDef>(film, "film");
-
-  nlohmann::json plan_summary;
-  if (setup) {
-    out.plan = planWorld(world, *setup);
-    if (!out.plan->result.solved()) return out;
-    out.trajectory = out.plan->result.trajectory;
-    plan_summary = app::planSummary(scenario, *setup, out.plan->result);
-  } else {
-    out.trajectory = trajectoryFrom(plan);
-    if (out.trajectory.points.empty()) throw Error("run: the plan has no points");
-    plan_summary = app::trajectorySummary(scenario, out.trajectory);
+  takePlan(plan, request);
+  if (!out.is_none()) {
+    request.out_dir = py::str(py::module_::import("os").attr("fspath")(out));
+    request.record.files = FilesPolicy::kAll;
   }
-
-  py::gil_scoped_release release;
-  std::unique_ptr<FrameRecorder> recorder;
-  EpisodeObserver observer;
-  double period = 1.0 / 30.0;
-  if (frame_def) {
-    recorder = std::make_unique<FrameRecorder>(scenario, *frame_def);
-    recorder->setPlan(out.trajectory);
-    observer = [&recorder](const EpisodeSample& s) { recorder->addFrame(frameInput(s)); };
-    period = 1.0 / frame_def->fps;
+  if (!film.is_none()) {
+    request.film.when = FilmWhen::kAlways;
+    request.film.frames = defFrom<FrameDef>(film, "film");
+    if (request.out_dir.empty()) request.out_dir = request.film.frames.out_dir;
   }
-  // The same call as `parksim run`.
-  out.episode = runEpisode(scenario, out.trajectory, exec, observer, period);
-  if (recorder) out.recording = recorder->finish();
-  out.metrics = metricsToJson(out.episode.metrics);
-  out.metrics["world"] = scenario.source_path;
-  out.metrics["scenario"] = scenario.name;
-  app::addPlanKeys(out.metrics, plan_summary);
-  const nlohmann::json provenance = provenanceToJson(buildProvenance());
-  for (const auto& [key, value] : provenance.items()) {
-    out.metrics["provenance." + key] = value;
+  RunOutcome r;
+  r.scenario = world.scenario;
+  {
+    py::gil_scoped_release release;
+    r.outcome = runEpisodePipeline(request);
   }
-  out.ran = true;
-  return out;
+  if (r.outcome.plan) {
+    r.plan =
+        PlanOutcome{world.scenario, r.outcome.plan_setup, *r.outcome.plan, r.outcome.plan_summary};
+  }
+  return r;
 }
 
 // parksim.Episode: an Episode with its inputs kept, and a wheel command held until changed.
+// The settings (execution, tolerance) are the pipeline's for the same options
+// (resolveSettings), so a stepped episode drives and is judged as run() would.
 struct EpisodeHandle {
   std::shared_ptr<const Scenario> scenario;
   Trajectory plan;
+  EpisodeSettings settings;
   std::unique_ptr<Episode> episode;
   std::optional<WheelSpeeds> held;  // unset: the tracking controller drives
   bool realism = false;
 
-  EpisodeHandle(const World& w, Trajectory p, const ExecutionDef& def, const SimModelDef& model)
+  EpisodeHandle(const WorldHandle& w, Trajectory p, EpisodeSettings s, const SimModelDef& model)
       : scenario(w.scenario),
         plan(std::move(p)),
-        episode(std::make_unique<Episode>(*scenario, plan, def, model)),
-        realism(def.realism.active()) {}
+        settings(std::move(s)),
+        episode(std::make_unique<Episode>(*scenario, plan, settings.execution, model)),
+        realism(settings.execution.realism.active()) {}
 
   bool step(long n) {
     py::gil_scoped_release release;
@@ -172,14 +164,45 @@ py::dict robotState(const RobotState& s) {
 
 }  // namespace
 
-ExecutionDef executionFrom(const World& world, py::dict& options) {
-  ExecutionDef def;
-  if (world.realism->has_realism) def.realism = world.realism->realism;
-  def.noise_seed = 1;  // --noise-seed's default
-  return takeOptions(def, options);
+EpisodeRequest requestFrom(const WorldHandle& world, py::dict& options, bool planning) {
+  EpisodeRequest r;
+  r.world = world.world;
+  if (planning) r.plan = planSetupFrom(options);
+  const auto take = [&options](const char* key) -> py::object {
+    if (!options.contains(key)) return py::none();
+    return options.attr("pop")(key);
+  };
+  if (const py::object v = take("realism"); !v.is_none()) r.realism = v.cast<std::string>();
+  if (const py::object v = take("noise_seed"); !v.is_none()) {
+    r.noise_seed = v.cast<std::uint64_t>();
+  }
+  if (const py::object v = take("realisations"); !v.is_none()) r.realisations = v.cast<int>();
+  if (const py::object v = take("min_success_fraction"); !v.is_none()) {
+    r.min_success_fraction = v.cast<double>();
+  }
+  if (const py::object v = take("tolerance"); !v.is_none()) {
+    py::dict bounds(v.cast<py::dict>());
+    const auto bound = [&bounds](const char* key) -> std::optional<double> {
+      if (!bounds.contains(key)) return std::nullopt;
+      const double value = bounds.attr("pop")(key).cast<double>();
+      return value;
+    };
+    r.tolerance.max_pos_err_m = bound("max_pos_err_m");
+    r.tolerance.goal_pos_err_m = bound("goal_pos_err_m");
+    r.tolerance.goal_heading_err_deg = bound("goal_heading_err_deg");
+    r.tolerance.max_parked_displacement_m = bound("max_parked_displacement_m");
+    if (const std::optional<double> n = bound("max_contacts")) {
+      r.tolerance.max_contacts = static_cast<int>(*n);
+    }
+    rejectUnknownOptions(bounds, "tolerance");
+  }
+  r.execution = takeOptions(r.execution, options);
+  return r;
 }
 
-void bindEpisode(py::module_& m) {
+namespace {
+
+void bindRunResult(py::module_& m) {
   py::class_<RunOutcome>(m, "RunResult", "An episode run by parksim.run().")
       .def_property_readonly(
           "plan",
@@ -189,64 +212,120 @@ void bindEpisode(py::module_& m) {
           },
           "The PlanResult when run() planned; None when a plan was given.")
       .def_property_readonly(
-          "solved", [](const RunOutcome& r) { return r.ran; },
+          "solved", [](const RunOutcome& r) { return r.outcome.driven(); },
           "False when planning failed (then nothing ran: executed is empty, metrics {}).")
       .def_property_readonly(
+          "status", [](const RunOutcome& r) { return toString(r.outcome.verdict.status); },
+          "The verdict: met, plan_failed, contact, goal_missed or tolerance_missed (as the "
+          "command line's exit status and a sweep row's status).")
+      .def_property_readonly(
+          "met", [](const RunOutcome& r) { return r.outcome.verdict.met(); },
+          "True when the episode met its tolerance (status == 'met').")
+      .def_property_readonly(
+          "reason", [](const RunOutcome& r) { return r.outcome.verdict.reason; },
+          "The verdict's one line: why the episode failed; empty when met.")
+      .def_property_readonly(
+          "realisations",
+          [](const RunOutcome& r) {
+            py::list l;
+            for (const RealisationOutcome& x : r.outcome.realisations) {
+              py::dict d = verdictDict(x.verdict);
+              d["noise_seed"] = x.noise_seed;
+              d["metrics"] = toPython(metricsToJson(x.metrics));
+              l.append(d);
+            }
+            return l;
+          },
+          "One dict per realisation (noise_seed, status, met, reason, metrics).")
+      .def_property_readonly(
           "trajectory",
-          [](const RunOutcome& r) { return trajectoryArray(r.trajectory, r.scenario->robot); },
+          [](const RunOutcome& r) {
+            return trajectoryArray(r.outcome.trajectory, r.scenario->robot);
+          },
           "The plan driven, as trajectory.csv.")
       .def_property_readonly(
-          "executed", [](const RunOutcome& r) { return executedArray(r.episode.rows, r.realism); },
+          "executed",
+          [](const RunOutcome& r) {
+            return executedArray(r.outcome.episode.rows, r.outcome.execution.realism.active());
+          },
           "Structured array with executed.csv's columns.")
       .def_property_readonly(
           "metrics",
-          [](const RunOutcome& r) { return r.ran ? toPython(r.metrics) : py::object(py::dict()); },
+          [](const RunOutcome& r) {
+            return r.outcome.driven() ? toPython(r.outcome.metrics) : py::object(py::dict());
+          },
           "metrics.json's content as a dict.")
-      .def_property_readonly("contact_events",
-                             [](const RunOutcome& r) { return contactEvents(r.episode.metrics); })
+      .def_property_readonly(
+          "files", [](const RunOutcome& r) { return r.outcome.files; },
+          "Files written (paths under out), when out was given.")
+      .def_property_readonly(
+          "contact_events",
+          [](const RunOutcome& r) { return contactEvents(r.outcome.episode.metrics); })
       .def_property_readonly("recording", [](const RunOutcome& r) -> py::object {
-        if (!r.recording) return py::none();
+        if (!r.outcome.recording) return py::none();
+        const RecordingResult& rec = *r.outcome.recording;
         py::dict d;
-        d["frames"] = r.recording->frames;
-        d["frames_dir"] = r.recording->frames_dir;
-        d["video"] = r.recording->video.path;
-        d["gif"] = r.recording->gif.path;
-        d["message"] = r.recording->message;
+        d["frames"] = rec.frames;
+        d["frames_dir"] = rec.frames_dir;
+        d["video"] = rec.video.path;
+        d["gif"] = rec.gif.path;
+        d["message"] = rec.message;
         return d;
       });
 
   m.def(
       "run",
-      [](const World& world, const py::object& plan, const py::object& film,
-         const py::kwargs& kwargs) {
+      [](const WorldHandle& world, const py::object& plan, const py::object& film,
+         const py::object& out, const py::kwargs& kwargs) {
         py::dict options = optionsDict(kwargs);
-        return runWorld(world, plan, film, options);
+        return runWorld(world, plan, film, out, options);
       },
       py::arg("world"), py::arg("plan") = py::none(), py::arg("film") = py::none(),
-      R"(Plans (unless plan is given) and drives the plan in the simulation, as `parksim run`.
+      py::arg("out") = py::none(),
+      R"(Plans (unless plan is given), drives the plan in the simulation and judges it: the
+episode pipeline, as `parksim run`, with the same defaults and the same verdict.
 
 plan: None (plan with plan()'s options: planner, seed, steering, smooth, ...), a PlanResult,
   a structured array like PlanResult.trajectory, or a trajectory.csv path.
-Execution options: any ExecutionDef field (tracking="closed" or "open", gains={...}, ...).
+Options: realism ("world": the world's realism: section, else ideal; or "ideal", "lab",
+  "odometry"), noise_seed=1, realisations=1, min_success_fraction=1.0, tolerance={bound: value}
+  (max_pos_err_m, goal_pos_err_m, goal_heading_err_deg, max_contacts,
+  max_parked_displacement_m), and any ExecutionDef field (tracking="closed" or "open",
+  gains={...}, ...).
 film: None, or a FrameDef / dict of its fields (out_dir, fps, video, ...) to write frames.
-Results are bit-identical to `parksim run` for the same options.
-Releases the GIL while planning and simulating.)");
+out: None, or a directory for trajectory.csv, plan.json, executed.csv and metrics.json.
+The result's status, met and reason are the verdict. Results are bit-identical to
+`parksim run` for the same options. Releases the GIL while planning and simulating.)");
+}
 
+void bindEpisodeHandle(py::module_& m) {
   py::class_<EpisodeHandle>(
       m, "Episode",
       "An episode stepped from Python: the plan is the reference the episode is measured "
       "against; the tracking controller drives unless set_wheel_speeds() holds a command.")
-      .def(py::init([](const World& world, const py::object& plan, const py::object& model,
+      .def(py::init([](const WorldHandle& world, const py::object& plan, const py::object& model,
                        const py::kwargs& kwargs) {
              py::dict options = optionsDict(kwargs);
-             const ExecutionDef exec = executionFrom(world, options);
+             EpisodeRequest request = requestFrom(world, options, false);
              rejectUnknownOptions(options, "Episode");
+             request.given_plan = trajectoryFrom(plan);
+             checkEpisodeRequest(request);
              const SimModelDef sim_model =
                  model.is_none() ? SimModelDef{} : defFrom<SimModelDef>(model, "model");
-             return std::make_unique<EpisodeHandle>(world, trajectoryFrom(plan), exec, sim_model);
+             return std::make_unique<EpisodeHandle>(world, *request.given_plan,
+                                                    resolveSettings(request), sim_model);
            }),
            py::arg("world"), py::arg("plan"), py::arg("model") = py::none(),
-           "Options: any ExecutionDef field (tracking, gains, ...).")
+           "Options as run()'s: realism, noise_seed, tolerance={...} and any ExecutionDef field "
+           "(tracking, gains, ...).")
+      .def(
+          "verdict",
+          [](const EpisodeHandle& h) {
+            return verdictDict(
+                judgeEpisode(*h.scenario, h.settings.tolerance, h.episode->metrics()));
+          },
+          "The verdict on the steps so far, as run() judges a finished episode: a dict with "
+          "status, met and reason.")
       .def("step", &EpisodeHandle::step, py::arg("n") = 1,
            "Advances n simulation steps (fewer if the episode finishes); returns finished. "
            "Releases the GIL.")
@@ -302,11 +381,13 @@ Releases the GIL while planning and simulating.)");
       .def_property_readonly("contact_events", [](const EpisodeHandle& h) {
         return contactEvents(h.episode->metrics());
       });
+}
 
+void bindDynamicsWorld(py::module_& m) {
   py::class_<DynamicsHandle>(m, "DynamicsWorld",
                              "The bare simulation: the world's obstacles and the robot, driven by "
                              "wheel motor targets. No plan, no measurement (see Episode).")
-      .def(py::init([](const World& world, const py::object& start, const py::object& model) {
+      .def(py::init([](const WorldHandle& world, const py::object& start, const py::object& model) {
              const Pose2 pose = start.is_none() ? world.scenario->start : poseFrom(start);
              const SimModelDef sim_model =
                  model.is_none() ? SimModelDef{} : defFrom<SimModelDef>(model, "model");
@@ -341,6 +422,14 @@ Releases the GIL while planning and simulating.)");
       .def_property_readonly("obstacle_poses", [](const DynamicsHandle& h) {
         return posesArray(h.world->obstaclePoses());
       });
+}
+
+}  // namespace
+
+void bindEpisode(py::module_& m) {
+  bindRunResult(m);
+  bindEpisodeHandle(m);
+  bindDynamicsWorld(m);
 }
 
 }  // namespace parksim::python

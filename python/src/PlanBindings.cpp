@@ -1,10 +1,11 @@
-// parksim.plan() and its result. Options map onto PlanSetup and PlannerDef (DefBindings.cpp);
-// the statistics are plan.json's (app/PlanOutput.h), so the two never drift apart.
+// parksim.plan() and its result: the episode pipeline without driving, as `parksim plan`.
+// Options map onto PlanSetup and PlannerDef (DefBindings.cpp); the statistics are plan.json's
+// (results/PlanFile.h), so the two never drift apart.
 
 #include <pybind11/stl.h>
 
-#include "app/PlanOutput.h"
-#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/pipeline/EpisodePipeline.h"
+#include "parksim/results/TrajectoryFile.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
 
@@ -26,12 +27,12 @@ PlanSetup planSetupFrom(py::dict& options) {
   return setup;
 }
 
-PlanOutcome planWorld(const World& world, const PlanSetup& setup) {
-  PlanOutcome out{world.scenario, setup, {}};
+PlanOutcome planWorld(const WorldHandle& world, const EpisodeRequest& request) {
+  EpisodeRequest plan_only = request;
+  plan_only.drive = false;
   py::gil_scoped_release release;
-  const BulletCollisionWorld collision(*world.scenario);
-  out.result = planScenario(*world.scenario, collision, setup);
-  return out;
+  EpisodeOutcome out = runEpisodePipeline(plan_only);
+  return {world.scenario, out.plan_setup, std::move(*out.plan), std::move(out.plan_summary)};
 }
 
 void bindPlan(py::module_& m) {
@@ -48,10 +49,7 @@ void bindPlan(py::module_& m) {
           "Structured array with trajectory.csv's columns t, x, y, theta, omega_left, "
           "omega_right, v, omega (s, m, rad, rad/s, m/s); empty unless solved.")
       .def_property_readonly(
-          "stats",
-          [](const PlanOutcome& p) {
-            return toPython(app::planSummary(*p.scenario, p.setup, p.result));
-          },
+          "stats", [](const PlanOutcome& p) { return toPython(p.summary); },
           "plan.json's content as a dict.")
       .def_property_readonly("cost", [](const PlanOutcome& p) { return p.result.cost; })
       .def_property_readonly("waypoints",
@@ -78,25 +76,28 @@ void bindPlan(py::module_& m) {
 
   m.def(
       "plan",
-      [](const World& world, const py::kwargs& kwargs) {
+      [](const WorldHandle& world, const py::kwargs& kwargs) {
         py::dict options = optionsDict(kwargs);
-        const PlanSetup setup = planSetupFrom(options);
+        EpisodeRequest request;
+        request.world = world.world;
+        request.plan = planSetupFrom(options);
         rejectUnknownOptions(options, "plan");
-        return planWorld(world, setup);
+        return planWorld(world, request);
       },
       py::arg("world"),
       R"(Plans the world's parking manoeuvre, as `parksim plan` does.
 
-Options (keywords, defaults as on the command line):
-  planner="rrt-goal-connect" (rrt, rrt-goal-connect, rrt-star, rrt-connect) or a PlannerDef,
-  steering="move-to-pose" (or "rotate-translate-rotate"), any PlannerDef field (seed=1,
-  max_iterations=2000, smooth=False, smoothing_attempts=100, goal_bias, ...), and any PlanSetup
-  field (goal_tolerance_fraction, move_to_pose={...}, rotate_translate_rotate={...},
-  validation={...}). Releases the GIL while planning.)");
+Options (keywords; the defaults are the library's, the same as `parksim plan`'s and a sweep's):
+  planner (a name: hybrid-a-star, rrt, rrt-goal-connect, rrt-star, rrt-connect; or a
+  PlannerDef), steering (reeds-shepp, rotate-translate-rotate, move-to-pose), any PlannerDef
+  field (seed, max_iterations: 0 for the lot's budget, smooth, smoothing_attempts, goal_bias,
+  ...), and any PlanSetup field (timing, feedback_headroom, goal_tolerance_fraction,
+  move_to_pose={...}, reeds_shepp={...}, validation={...}). parksim.PlanSetup() shows every
+  default. Releases the GIL while planning.)");
 
   m.def(
       "read_trajectory",
-      [](const World& world, const std::string& path) {
+      [](const WorldHandle& world, const std::string& path) {
         return trajectoryArray(readTrajectoryCsv(path), world.scenario->robot);
       },
       py::arg("world"), py::arg("path"), "A trajectory.csv as a structured array.");

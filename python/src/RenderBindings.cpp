@@ -7,8 +7,8 @@
 
 #include <pybind11/stl.h>
 
-#include "app/FigureInputs.h"
 #include "parksim/core/Error.h"
+#include "parksim/pipeline/EpisodeFigures.h"
 #include "parksim/renders/Figures.h"
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/renders/PngEncoder.h"
@@ -116,12 +116,10 @@ TrackingSeries seriesFrom(const py::handle& executed) {
   return s;
 }
 
-}  // namespace
-
-void bindRender(py::module_& m) {
+void bindImages(py::module_& m) {
   m.def(
       "_render_frame",
-      [](const World& world, const py::object& pose, const py::object& plan,
+      [](const WorldHandle& world, const py::object& pose, const py::object& plan,
          const py::object& reference, const py::object& obstacle_poses,
          const std::vector<int>& contacts, const py::object& executed, const py::object& overlay,
          int width, int height, const std::string& view, int msaa) {
@@ -160,7 +158,7 @@ void bindRender(py::module_& m) {
 
   m.def(
       "render_figure",
-      [](const World& world, const std::string& name, const py::object& plan,
+      [](const WorldHandle& world, const std::string& name, const py::object& plan,
          const py::object& executed, double heading, int width, int height, int msaa) {
         const Scenario& scenario = *world.scenario;
         if (name != "lot_map" && name != "cspace_slice" && name != "cspace_stack" &&
@@ -220,9 +218,12 @@ tracking_error (executed=RunResult.executed or Episode.executed).)");
   py::tuple names(kFigureNames.size());
   for (std::size_t i = 0; i < kFigureNames.size(); ++i) names[i] = py::str(kFigureNames[i]);
   m.attr("FIGURE_NAMES") = names;
+}
+
+void bindFigures(py::module_& m) {
   m.def(
       "write_figures",
-      [](const World& world, const std::string& out_dir, const std::string& figures,
+      [](const WorldHandle& world, const std::string& out_dir, const std::string& figures,
          const py::object& plans, const py::object& executed, const py::object& steer_target,
          double heading, int slices, int width, int height, int msaa,
          const std::string& gl_backend) {
@@ -239,11 +240,12 @@ tracking_error (executed=RunResult.executed or Episode.executed).)");
         def.cspace_slices = std::clamp(slices, 1, 720);
         def.context.backend = contextBackendFromString(gl_backend);
         FigureInputs inputs;
-        // The same figure inputs as `parksim render` (app/FigureInputs.h): captions, steering.
+        // The same figure inputs as `parksim render` (pipeline/EpisodeFigures.h): captions,
+        // steering.
         auto add = [&](const py::handle& p) {
           if (py::isinstance<PlanOutcome>(p)) {
             const PlanOutcome& outcome = p.cast<const PlanOutcome&>();
-            inputs.plans.push_back(app::planFigure(scenario, outcome.setup, outcome.result));
+            inputs.plans.push_back(planFigure(scenario, outcome.setup, outcome.result));
           } else {
             inputs.plans.push_back(planFigureFrom(p));
           }
@@ -256,7 +258,7 @@ tracking_error (executed=RunResult.executed or Episode.executed).)");
         if (!executed.is_none()) inputs.tracking = seriesFrom(executed);
         std::optional<Pose2> target;
         if (!steer_target.is_none()) target = poseFrom(steer_target);
-        inputs.steering = app::steeringExample(scenario, target);
+        inputs.steering = steeringExample(scenario, target);
         py::gil_scoped_release release;
         return writeFigures(scenario, inputs, def, out_dir);
       },
@@ -292,11 +294,13 @@ whose input is missing is skipped; an unknown name raises parksim.Error.)");
   m.def(
       "read_png", [](const std::string& path) { return imageArray(readPng(path)); },
       py::arg("path"), "A PNG file as an H x W x 3 uint8 array.");
+}
 
+void bindFrameRecorder(py::module_& m) {
   py::class_<FrameRecorder>(m, "FrameRecorder",
                             "Films an episode into OUT/frames/*.png, and episode.mp4 / .gif with "
                             "ffmpeg (renders/FrameRecorder.h). Options: FrameDef fields.")
-      .def(py::init([](const World& world, const py::kwargs& kwargs) {
+      .def(py::init([](const WorldHandle& world, const py::kwargs& kwargs) {
              py::dict options = optionsDict(kwargs);
              const FrameDef def = takeOptions(FrameDef{}, options);
              rejectUnknownOptions(options, "FrameRecorder");
@@ -346,6 +350,14 @@ whose input is missing is skipped; an unknown name raises parksim.Error.)");
           },
           "Writes the last frame, waits for the files, runs ffmpeg if asked; returns a dict.")
       .def_property_readonly("frames", &FrameRecorder::frames);
+}
+
+}  // namespace
+
+void bindRender(py::module_& m) {
+  bindImages(m);
+  bindFigures(m);
+  bindFrameRecorder(m);
 }
 
 }  // namespace parksim::python

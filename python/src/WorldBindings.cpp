@@ -7,8 +7,7 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/Geometry.h"
 #include "parksim/renders/CSpace.h"
-#include "parksim/scenario/RealismReader.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/scenario/World.h"
 #include "python/src/Bindings.h"
 
 namespace parksim::python {
@@ -66,19 +65,21 @@ py::dict obstacleDict(const Obstacle& o) {
 struct CollisionChecker {
   std::shared_ptr<const Scenario> scenario;
   BulletCollisionWorld collision;
-  explicit CollisionChecker(const World& w) : scenario(w.scenario), collision(*w.scenario) {}
+  explicit CollisionChecker(const WorldHandle& w) : scenario(w.scenario), collision(*w.scenario) {}
 };
 
 }  // namespace
 
 void bindWorld(py::module_& m) {
-  py::class_<World>(m, "World",
-                    "A parking problem read from a world file (immutable): lot, obstacles, robot, "
-                    "start, goal, physics. Made by parksim.load_world().")
-      .def_property_readonly("name", [](const World& w) { return w.scenario->name; })
-      .def_property_readonly("source_path", [](const World& w) { return w.scenario->source_path; })
+  py::class_<WorldHandle>(
+      m, "World",
+      "A parking problem read from a world file (immutable): lot, obstacles, robot, "
+      "start, goal, physics. Made by parksim.load_world().")
+      .def_property_readonly("name", [](const WorldHandle& w) { return w.scenario->name; })
+      .def_property_readonly("source_path",
+                             [](const WorldHandle& w) { return w.scenario->source_path; })
       .def_property_readonly("lot",
-                             [](const World& w) {
+                             [](const WorldHandle& w) {
                                const LotBounds& b = w.scenario->lot;
                                py::dict d;
                                d["x_min"] = b.x_min_m;
@@ -89,7 +90,7 @@ void bindWorld(py::module_& m) {
                              })
       .def_property_readonly(
           "obstacles",
-          [](const World& w) {
+          [](const WorldHandle& w) {
             py::list l;
             for (const Obstacle& o : w.scenario->obstacles) {
               l.append(obstacleDict(o));
@@ -98,10 +99,11 @@ void bindWorld(py::module_& m) {
           },
           "One dict per obstacle: name, kind, center, size, yaw, height, "
           "corners (4 x 2 array), m and rad.")
-      .def_property_readonly("robot", [](const World& w) { return w.scenario->robot; })
-      .def_property_readonly("start", [](const World& w) { return poseTuple(w.scenario->start); })
+      .def_property_readonly("robot", [](const WorldHandle& w) { return w.scenario->robot; })
+      .def_property_readonly("start",
+                             [](const WorldHandle& w) { return poseTuple(w.scenario->start); })
       .def_property_readonly("goal",
-                             [](const World& w) {
+                             [](const WorldHandle& w) {
                                const GoalRegion& g = w.scenario->goal;
                                py::dict d;
                                d["pose"] = poseTuple(g.pose);
@@ -112,21 +114,21 @@ void bindWorld(py::module_& m) {
                              })
       .def_property_readonly(
           "realism",
-          [](const World& w) -> py::object {
-            if (!w.realism->has_realism) return py::none();
-            return py::str(w.realism->realism.name);
+          [](const WorldHandle& w) -> py::object {
+            if (!w.world->sections.has_realism) return py::none();
+            return py::str(w.world->sections.realism.name);
           },
           "The realism: section's preset name (None: the ideal robot).")
       .def_property_readonly("time_step_s",
-                             [](const World& w) { return w.scenario->physics.time_step_s; })
+                             [](const WorldHandle& w) { return w.scenario->physics.time_step_s; })
       .def(
           "footprint",
-          [](const World& w, const py::handle& pose, double margin_m) {
+          [](const WorldHandle& w, const py::handle& pose, double margin_m) {
             return corners(footprintAt(w.scenario->robot, poseFrom(pose), margin_m));
           },
           py::arg("pose"), py::arg("margin_m") = 0.0,
           "Corners (4 x 2 array, m) of the robot's footprint at pose (x, y, theta).")
-      .def("__repr__", [](const World& w) {
+      .def("__repr__", [](const WorldHandle& w) {
         return "<parksim.World '" + w.scenario->name + "' from " + w.scenario->source_path + ": " +
                std::to_string(w.scenario->obstacles.size()) + " obstacles>";
       });
@@ -134,23 +136,20 @@ void bindWorld(py::module_& m) {
   m.def(
       "_load_world",
       [](const std::string& path) {
-        auto scenario = std::make_shared<const Scenario>(loadScenario(path));
-        return World{scenario, std::make_shared<const WorldRealism>(loadWorldRealism(path))};
+        return WorldHandle(std::make_shared<const World>(loadWorld(path)));
       },
       py::arg("path"));
   m.def(
       "_parse_world",
       [](const std::string& text, const std::string& source_name) {
-        auto scenario = std::make_shared<const Scenario>(parseScenario(text, source_name));
-        return World{scenario,
-                     std::make_shared<const WorldRealism>(parseWorldRealism(text, source_name))};
+        return WorldHandle(std::make_shared<const World>(parseWorld(text, source_name)));
       },
       py::arg("text"), py::arg("source_name"));
 
   py::class_<CollisionChecker>(m, "CollisionChecker",
                                "Footprint queries against a world's obstacles (the planner's "
                                "collision checker). Not thread-safe: one per thread.")
-      .def(py::init<const World&>(), py::arg("world"))
+      .def(py::init<const WorldHandle&>(), py::arg("world"))
       .def(
           "is_free",
           [](const CollisionChecker& c, const py::handle& pose, double margin_m) {
@@ -173,7 +172,7 @@ void bindWorld(py::module_& m) {
 
   m.def(
       "cspace_slice",
-      [](const World& w, double theta_rad) {
+      [](const WorldHandle& w, double theta_rad) {
         py::list out;
         for (const Obstacle& o : w.scenario->obstacles) {
           out.append(polygon(cspaceSlice(o, w.scenario->robot, theta_rad)));

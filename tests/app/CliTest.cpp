@@ -19,6 +19,7 @@
 #include "parksim/core/Provenance.h"
 #include "parksim/core/Trajectory.h"
 #include "parksim/renders/FigureSelection.h"
+#include "parksim/results/TrajectoryFile.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "tests/support/TestPaths.h"
 
@@ -87,9 +88,9 @@ TEST_F(Cli, SameSeedGivesByteIdenticalTrajectoryFiles) {
 TEST_F(Cli, UnsolvedPlanExitsNonZeroAndWritesNoTrajectory) {
   const fs::path out = dir_ / "out";
   const CliRun r = parksim("plan " + world("head_in.yaml") +
-                           " --max-iterations 0 --planner rrt --out " + out.string());
+                           " --max-iterations 1 --planner rrt --out " + out.string());
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.out.find("unsolved (iteration_limit)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("unsolved plan (iteration_limit)"), std::string::npos) << r.out;
   EXPECT_FALSE(fs::exists(out / "trajectory.csv"));
   EXPECT_EQ(nlohmann::json::parse(slurp(out / "plan.json"))["status"], "iteration_limit");
 }
@@ -121,29 +122,11 @@ TEST_F(Cli, MissingWorldFileAndBadOptionsAreRefused) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-TEST_F(Cli, BenchWritesTheCsvWithItsRequiredColumns) {
-#ifndef PARKSIM_HAVE_BENCH
-  GTEST_SKIP() << "parksim bench is built only with PARKSIM_BUILD_BENCH=ON";
-#endif
-  const fs::path out = dir_ / "bench";
-  const CliRun r = parksim("bench " + world("head_in.yaml") +
-                           " --seeds 2 --planners rrt-goal-connect,rrt-connect --ompl"
-                           " --ompl-planners RRTConnect --ompl-spaces reeds-shepp --out " +
-                           out.string());
-  ASSERT_EQ(r.exit_code, 0) << r.out;
-  const std::string csv = slurp(out / "bench.csv");
-  const std::string header = csv.substr(0, csv.find('\n'));
-  for (const char* column : {"library", "planner", "scenario", "seed", "solved", "time_first_s",
-                             "length_m", "cusps", "min_clearance_m"}) {
-    EXPECT_NE(header.find(column), std::string::npos) << column;
-  }
-  // 2 seeds x (2 parksim planners x 3 steering functions + 1 OMPL planner) rows.
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * (2 * 3 + 1)) << csv;
-  EXPECT_NE(csv.find("\nompl,"), std::string::npos);
-  EXPECT_NE(csv.find("\nparksim,"), std::string::npos);
-  const std::string summary = slurp(out / "summary.md");
-  EXPECT_NE(summary.find("## parksim vs OMPL\n"), std::string::npos) << summary;
-  EXPECT_EQ(summary.find("issue"), std::string::npos) << summary;  // speaks to users
+TEST_F(Cli, BenchIsItsOwnProgramAndTheMessageSaysSo) {
+  const CliRun r = parksim("bench " + world("head_in.yaml"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("the planning benchmark is the program parksim-bench"), std::string::npos)
+      << r.out;
 }
 
 TEST_F(Cli, RunWithFramesFilmsTheEpisodeAndDrawsTheFigures) {
@@ -257,7 +240,7 @@ TEST_F(Cli, UsageErrorsExitWithTwo) {
 }
 
 TEST_F(Cli, EveryCommandHasHelp) {
-  for (const char* cmd : {"", "plan", "run", "render", "bench"}) {
+  for (const char* cmd : {"", "plan", "run", "render", "sweep", "merge", "report"}) {
     const CliRun r = parksim(std::string(cmd) + " --help");
     EXPECT_EQ(r.exit_code, 0) << cmd;
     EXPECT_NE(r.out.find("--help"), std::string::npos) << cmd;
@@ -312,7 +295,7 @@ TEST_F(Cli, MessagesSayWhatIsWrongInFewWords) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(
       r.out,
-      "parksim: unknown command 'foo'; commands: plan, run, render, bench, sweep, merge, report\n");
+      "parksim: unknown command 'foo'; commands: plan, run, render, sweep, merge, report\n");
   // Bounds are stated, not printed as the 309-digit largest double.
   r = parksim("plan " + world("head_in.yaml") + " --seed -1");
   EXPECT_EQ(r.exit_code, 2);
@@ -334,7 +317,7 @@ TEST_F(Cli, MessagesSayWhatIsWrongInFewWords) {
 
 TEST_F(Cli, EveryCommandPrintsTheVersionAndBuild) {
   const Provenance build = buildProvenance();
-  for (const char* cmd : {"", "plan", "run", "render", "bench"}) {
+  for (const char* cmd : {"", "plan", "run", "render", "sweep", "merge", "report"}) {
     const CliRun r = parksim(std::string(cmd) + " --version");
     EXPECT_EQ(r.exit_code, 0) << cmd;
     EXPECT_EQ(r.out, versionLine(build) + "\n") << cmd;

@@ -143,7 +143,8 @@ const Case kCases[] = {
      "--seed: must be an integer in [0, 18446744073709551615]"},
     {"plan {W} --seed -3 --out {OUT}", 2, "--seed: must be an integer in"},
     {"plan {W} --seed abc --out {OUT}", 2, "--seed: not an integer: 'abc'"},
-    {"plan {W} --max-iterations 99999999999 --out {OUT}", 2, "[0, 1000000]"},
+    {"plan {W} --max-iterations 99999999999 --out {OUT}", 2, "[1, 1000000]"},
+    {"plan {W} --max-iterations 0 --out {OUT}", 2, "expected auto or an integer in [1, 1000000]"},
     {"plan {W} --planner bogus --out {OUT}", 2, "unknown planner 'bogus'"},
     {"run {W} --frames --fps 0 --out {OUT}", 2, "--fps: must be in (0, 1000], got '0'"},
     {"run {W} --frames --fps nan --out {OUT}", 2, "--fps: must be a finite number in (0, 1000]"},
@@ -295,7 +296,7 @@ TEST_F(HostileInput, AnUnsolvedPlanIsAResultAndReplacesTheEarlierOutputWhole) {
   const fs::path out = dir_ / "unsolved";
   ASSERT_EQ(run("run " + vars_["{W}"] + " --out " + out.string()).exit_code, 0);
   ASSERT_TRUE(fs::exists(out / "executed.csv"));
-  const Outcome r = run("run " + vars_["{W}"] + " --max-iterations 0 --out " + out.string());
+  const Outcome r = run("run " + vars_["{W}"] + " --planner rrt --max-iterations 1 --out " + out.string());
   EXPECT_EQ(r.exit_code, 1) << r.out;
   // The new outputs (plan.json of the unsolved plan) and none of the earlier run's.
   EXPECT_TRUE(fs::exists(out / "plan.json"));

@@ -144,8 +144,8 @@ def test_yaml_block_is_valid(where, text, tmp_path):
         for key in keys:
             assert not re.search(rf"^{key}:", base, re.MULTILINE), key
         world.write_text(base + "\n" + text + "\n", encoding="utf-8")
-    # `parksim plan` with no iterations reads and checks the whole world, then stops unsolved.
-    code, _, err = run_cli("plan", world, "--planner", "rrt", "--max-iterations", "0",
+    # `parksim plan` with one iteration reads and checks the whole world, then stops unsolved.
+    code, _, err = run_cli("plan", world, "--planner", "rrt", "--max-iterations", "1",
                            "--out", tmp_path / "plan")
     assert code in (0, 1), f"{where}: {err}"
 

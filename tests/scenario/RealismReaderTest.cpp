@@ -1,4 +1,5 @@
 #include "parksim/scenario/RealismReader.h"
+#include "parksim/scenario/World.h"
 
 #include <string>
 #include <string_view>
@@ -23,8 +24,7 @@ constexpr std::string_view kWorld =
 std::string errorOf(std::string_view extra) {
   const std::string text = std::string(kWorld) + std::string(extra);
   try {
-    parseScenario(text, "t.yaml");
-    parseWorldRealism(text, "t.yaml");
+    parseWorld(text, "t.yaml");
   } catch (const Error& e) {
     return e.what();
   }
@@ -32,7 +32,7 @@ std::string errorOf(std::string_view extra) {
 }
 
 TEST(RealismReader, AbsentSectionsLeaveTheDefaults) {
-  const WorldRealism w = parseWorldRealism(kWorld, "t.yaml");
+  const WorldRealism w = parseWorld(kWorld, "t.yaml").sections;
   EXPECT_FALSE(w.has_realism);
   EXPECT_FALSE(w.has_tolerance);
   EXPECT_FALSE(w.realism.active());
@@ -47,7 +47,7 @@ TEST(RealismReader, APresetWithOverridesAndATolerance) {
                            "  control: {rate_hz: 30}\n"
                            "tolerance: {max_pos_err_m: 0.01, require_goal_reached: true}\n";
   EXPECT_NO_THROW(parseScenario(text, "t.yaml"));
-  const WorldRealism w = parseWorldRealism(text, "t.yaml");
+  const WorldRealism w = parseWorld(text, "t.yaml").sections;
   ASSERT_TRUE(w.has_realism);
   EXPECT_EQ(w.realism.name, "lab+world");
   EXPECT_DOUBLE_EQ(w.realism.pose_sensor.latency_s, 0.075);

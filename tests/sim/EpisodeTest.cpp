@@ -9,8 +9,10 @@
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
-#include "parksim/sim/EpisodeFiles.h"
-#include "parksim/sim/TrackingTolerance.h"
+#include "parksim/pipeline/Verdict.h"
+#include "parksim/results/ExecutedFile.h"
+#include "parksim/results/JsonFile.h"
+#include "parksim/results/MetricsFile.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

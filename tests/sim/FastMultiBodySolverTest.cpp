@@ -8,9 +8,11 @@
 
 #include <gtest/gtest.h>
 
+#include "parksim/results/ExecutedFile.h"
+#include "parksim/results/JsonFile.h"
+#include "parksim/results/MetricsFile.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/Episode.h"
-#include "parksim/sim/EpisodeFiles.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

@@ -12,10 +12,10 @@
 #include <gtest/gtest.h>
 
 #include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/pipeline/Verdict.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/Episode.h"
-#include "parksim/sim/TrackingTolerance.h"
 #include "tests/sim/SimTestSupport.h"
 #include "tests/support/ExactShapes.h"
 #include "tests/support/PlanChecks.h"

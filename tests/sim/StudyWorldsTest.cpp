@@ -11,11 +11,13 @@
 
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/Geometry.h"
+#include "parksim/pipeline/Verdict.h"
 #include "parksim/planner/PlanScenario.h"
+#include "parksim/results/ExecutedFile.h"
+#include "parksim/results/JsonFile.h"
+#include "parksim/results/MetricsFile.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/Episode.h"
-#include "parksim/sim/EpisodeFiles.h"
-#include "parksim/sim/TrackingTolerance.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

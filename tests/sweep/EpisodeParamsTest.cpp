@@ -6,7 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/Error.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/pipeline/EpisodeSettings.h"
+#include "parksim/scenario/World.h"
 #include "parksim/sweep/EpisodeExpansion.h"
 #include "parksim/sweep/EpisodeSetup.h"
 #include "parksim/sweep/SweepSpecReader.h"
@@ -23,23 +24,41 @@ TEST(EpisodeParams, Fnv1aMatchesTheReferenceVectors) {
   EXPECT_EQ(fnv1a64("foobar"), 0x85944171f73967e8ULL);
 }
 
-TEST(EpisodeParams, CanonicalTextOmitsDefaultsSoNewAxesKeepIds) {
+TEST(EpisodeParams, CanonicalTextSpellsEveryParameterWithTheFormat) {
   EpisodeParams p;
   p.world = "head_in";
   p.seed = 7;
-  EXPECT_EQ(canonicalString(p), "world=head_in;planner=rrt-goal-connect;seed=7");
+  const std::string defaults =
+      "ids=2;world=head_in;planner=hybrid-a-star;steering=reeds-shepp;smooth=0;seed=7;"
+      "max_iterations=auto;tracking=closed;timing=time-optimal;realism=world;noise_seed=1;"
+      "start_offset=0.0,0.0,0.0;goal_offset=0.0,0.0,0.0";
+  EXPECT_EQ(canonicalString(p), defaults);
   EXPECT_EQ(episodeId(p), episodeId(p));
-  p.noise_seed = 1;  // the default, as `parksim run`
-  p.timing = "time-optimal";
-  p.realism = "world";
-  EXPECT_EQ(canonicalString(p), "world=head_in;planner=rrt-goal-connect;seed=7");
   EXPECT_EQ(episodeId(p).size(), 16u);
   p.world_file = "elsewhere/head_in.yaml";  // provenance, not identity
-  EXPECT_EQ(canonicalString(p), "world=head_in;planner=rrt-goal-connect;seed=7");
+  EXPECT_EQ(canonicalString(p), defaults);
   p.smooth = true;
+  p.max_iterations = 5000;
   p.start_offset = {0.01, 0.0, -2.5};
   EXPECT_EQ(canonicalString(p),
-            "world=head_in;planner=rrt-goal-connect;smooth=1;seed=7;start_offset=0.01,0.0,-2.5");
+            "ids=2;world=head_in;planner=hybrid-a-star;steering=reeds-shepp;smooth=1;seed=7;"
+            "max_iterations=5000;tracking=closed;timing=time-optimal;realism=world;noise_seed=1;"
+            "start_offset=0.01,0.0,-2.5;goal_offset=0.0,0.0,0.0");
+}
+
+TEST(EpisodeParams, DefaultsAreTheLibrarys) {
+  const EpisodeParams p;
+  const PlanSetup plan;
+  const EpisodeRequest request;
+  EXPECT_EQ(p.planner, toString(plan.planner.kind));
+  EXPECT_EQ(p.steering, toString(plan.steering_kind));
+  EXPECT_EQ(p.smooth, plan.planner.smooth);
+  EXPECT_EQ(p.seed, plan.planner.seed);
+  EXPECT_EQ(p.max_iterations, kAutoIterations);
+  EXPECT_EQ(p.timing, toString(plan.timing));
+  EXPECT_EQ(p.tracking, toString(kDefaultTracking));
+  EXPECT_EQ(p.realism, request.realism);
+  EXPECT_EQ(p.noise_seed, request.noise_seed);
 }
 
 TEST(EpisodeParams, EveryParameterChangesTheId) {
@@ -87,9 +106,9 @@ TEST(EpisodeExpansion, IdsDependOnParametersNotOnTheirPositionInTheSpec) {
 }
 
 TEST(EpisodeSetup, AppliesOffsetsAndRejectsOnesThatLeaveTheLot) {
-  const SweepWorld sweep_world{loadScenario(parksim::testing::sourceDir() + "/worlds/head_in.yaml"),
-                               {}};
-  const Scenario& world = sweep_world.scenario;
+  const SweepWorld sweep_world = std::make_shared<const World>(
+      loadWorld(parksim::testing::sourceDir() + "/worlds/head_in.yaml"));
+  const Scenario& world = sweep_world->scenario;
   EpisodeParams p;
   p.world = world.name;
   p.start_offset = {0.01, -0.02, 0.0};
@@ -101,23 +120,31 @@ TEST(EpisodeSetup, AppliesOffsetsAndRejectsOnesThatLeaveTheLot) {
   p.timing = "study";
   ToleranceOverrides overrides;
   overrides.goal_pos_err_m = 0.01;
-  const EpisodeSetup s = setupEpisode(p, sweep_world, overrides);
-  EXPECT_DOUBLE_EQ(s.scenario.start.x, world.start.x + 0.01);
-  EXPECT_DOUBLE_EQ(s.scenario.start.y, world.start.y - 0.02);
-  EXPECT_NEAR(std::remainder(s.scenario.goal.pose.theta - world.goal.pose.theta - kPi / 2, 2 * kPi),
-              0.0, 1e-12);
+  const EpisodeRequest r = episodeRequest(p, sweep_world, overrides);
+  const Scenario& moved = r.world->scenario;
+  EXPECT_NE(r.world, sweep_world);  // a copy with the start and goal moved
+  EXPECT_DOUBLE_EQ(moved.start.x, world.start.x + 0.01);
+  EXPECT_DOUBLE_EQ(moved.start.y, world.start.y - 0.02);
+  EXPECT_NEAR(std::remainder(moved.goal.pose.theta - world.goal.pose.theta - kPi / 2, 2 * kPi), 0.0,
+              1e-12);
+  const EpisodeSettings s = resolveSettings(r);
   EXPECT_EQ(s.plan.planner.seed, 9u);
   EXPECT_EQ(s.execution.tracking, TrackingMode::kOpen);
   EXPECT_EQ(s.execution.realism.name, "lab");
   EXPECT_EQ(s.execution.noise_seed, 4u);
   EXPECT_EQ(s.plan.timing, TimingKind::kStudy);
+  EXPECT_EQ(s.plan.planner.max_iterations, defaultIterationBudget(s.plan.planner.kind, world.lot));
   EXPECT_EQ(s.tolerance.goal_pos_err_m, 0.01);
   EXPECT_EQ(s.tolerance.max_pos_err_m, TrackingTolerance{}.max_pos_err_m);
-  // "world" keeps the world's realism (none here: the ideal robot).
+  // "world" keeps the world's realism (none here: the ideal robot); no offset shares the world.
   p.realism = "world";
-  EXPECT_EQ(setupEpisode(p, sweep_world, {}).execution.realism.name, "ideal");
+  p.start_offset = {};
+  p.goal_offset = {};
+  const EpisodeRequest plain = episodeRequest(p, sweep_world, {});
+  EXPECT_EQ(plain.world, sweep_world);
+  EXPECT_EQ(resolveSettings(plain).execution.realism.name, "ideal");
   p.start_offset = {5.0, 0.0, 0.0};
-  EXPECT_THROW((void)setupEpisode(p, sweep_world, {}), Error);
+  EXPECT_THROW((void)episodeRequest(p, sweep_world, {}), Error);
 }
 
 }  // namespace

@@ -55,7 +55,7 @@ TEST(SweepCli, BadSpecExitsTwoWithALocatedErrorAndWritesNothing) {
 
 TEST(SweepCli, SurvivesAKillAndCompletesEachEpisodeOnceThenReports) {
   const std::string dir = scratchDir();
-  writeText(dir + "/spec.yaml", studySpec("seeds: {from: 1, to: 6}\n"));
+  writeText(dir + "/spec.yaml", studySpec("planners: rrt-goal-connect\nseeds: {from: 1, to: 6}\n"));
   const std::string out = dir + "/out";
   const std::string exe = testing::parksimExe();
   const pid_t child = fork();
@@ -100,14 +100,12 @@ TEST(SweepCli, SurvivesAKillAndCompletesEachEpisodeOnceThenReports) {
   EXPECT_NE(into_sweep.out.find("which parksim did not write"), std::string::npos)
       << into_sweep.out;
   EXPECT_FALSE(fs::exists(out + "/summary.md"));
-#ifdef PARKSIM_HAVE_BENCH
   // Planner Arena's reader: one run line and one progress line (cost over time) per episode.
   const std::string log = slurp(out + "/report/ompl_head_in.log");
   EXPECT_NE(log.find("6 runs per planner"), std::string::npos) << log;
   EXPECT_NE(log.find("2 progress properties for each run\nbest cost REAL\ntime REAL\n6 runs\n"),
             std::string::npos)
       << log;
-#endif
 }
 
 TEST(SweepCli, ExitsOneWhenAnEpisodeMissesItsToleranceAndShardsMerge) {

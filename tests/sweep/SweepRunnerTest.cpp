@@ -44,7 +44,7 @@ struct SmallSweep {
 const char* kAxes = "planners: rrt-goal-connect\nseeds: [1, 2, 3]\ntracking: closed\n";
 
 SweepProgress run(const std::vector<SweepEpisode>& episodes, const std::string& dir, int workers,
-                  const RecordDef& record = {}) {
+                  const SweepRecordDef& record = {}) {
   ResultsTable table(dir);
   SweepRunnerDef def;
   def.workers = workers;
@@ -220,8 +220,8 @@ TEST(EpisodeRecording, ExecutedCsvAndFilmOfFailuresAtTheChosenRates) {
   const std::string dir = scratchDir();
   // Closed loop meets the default tolerance; with a 0.1 um bound on the tracking error it fails.
   const SmallSweep sweep("seeds: [1]\ntracking: [closed]\ntolerance: {max_pos_err_m: 1e-7}\n");
-  RecordDef record;
-  record.executed_csv = ExecutedCsvPolicy::kFailures;
+  SweepRecordDef record;
+  record.executed_csv = FilesPolicy::kFailures;
   record.executed_rate_hz = 10.0;
   record.film_failures = true;
   record.film_fps = 1.0;  // few, small frames: the test checks that the failure is filmed
@@ -300,11 +300,36 @@ TEST(ResultsTableFile, RefusesADeviceOrFifoAsTheTable) {
       message([&] { readSweepManifest(dir, m); }).rfind(dir + "/sweep.json: is not a regular", 0),
       0u);
   std::filesystem::remove(dir + "/sweep.json");
-  testing::writeText(
-      dir + "/sweep.json",
-      "{\"format\": \"parksim-sweep-manifest/1\", \"name\": 5, \"episode_ids\": []}");
+  testing::writeText(dir + "/sweep.json",
+                     "{\"format\": \"parksim-sweep-manifest/2\", \"episode_id_format\": 2, "
+                     "\"name\": 5, \"episode_ids\": []}");
   EXPECT_EQ(message([&] { readSweepManifest(dir, m); }),
-            dir + "/sweep.json: not a sweep manifest (format parksim-sweep-manifest/1)");
+            dir + "/sweep.json: not a sweep manifest (format parksim-sweep-manifest/2)");
+}
+
+// A table written by parksim 0.2 holds ids of another format (defaults left out, other
+// defaults): it is refused by name, not resumed into a mix of two meanings of one id.
+TEST(SweepManifestFile, RefusesATableOfAnotherEpisodeIdFormat) {
+  const std::string dir = scratchDir();
+  testing::writeText(dir + "/sweep.json",
+                     "{\"format\": \"parksim-sweep-manifest/1\", \"spec\": \"s.yaml\", "
+                     "\"name\": \"old\", \"shard\": \"0/1\", \"episode_ids\": []}");
+  SweepManifest m;
+  std::string why;
+  try {
+    readSweepManifest(dir, m);
+  } catch (const Error& e) {
+    why = e.what();
+  }
+  EXPECT_NE(why.find("written by parksim 0.2"), std::string::npos) << why;
+  EXPECT_NE(why.find("sweep into a new --out"), std::string::npos) << why;
+  // What this version writes, it reads back, with its id format.
+  const SweepManifest written{"spec.yaml", "now", Shard{1, 3}, {"00000000000000aa"}};
+  writeSweepManifest(dir, written);
+  ASSERT_TRUE(readSweepManifest(dir, m));
+  EXPECT_EQ(m.episode_ids, written.episode_ids);
+  EXPECT_EQ(m.shard.index, 1);
+  EXPECT_NE(slurp(dir + "/sweep.json").find("\"episode_id_format\": 2"), std::string::npos);
 }
 
 }  // namespace

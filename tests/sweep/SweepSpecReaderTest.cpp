@@ -45,7 +45,7 @@ TEST(SweepSpecReader, ReadsEveryAxis) {
   ASSERT_EQ(s.start_offsets.size(), 2u);
   EXPECT_EQ(s.start_offsets[1], (PoseOffset{0.01, -0.02, 5.0}));
   EXPECT_EQ(s.goal_offsets.size(), 1u);
-  EXPECT_EQ(s.record.executed_csv, ExecutedCsvPolicy::kFailures);
+  EXPECT_EQ(s.record.executed_csv, FilesPolicy::kFailures);
   EXPECT_EQ(s.record.executed_rate_hz, 30.0);
   EXPECT_TRUE(s.record.film_failures);
   EXPECT_EQ(s.record.film_width_px, 320);

@@ -1,0 +1,16 @@
+#include "app/Command.h"
+
+namespace parksim::app {
+
+int exitCodeFor(EpisodeStatus status) {
+  switch (status) {
+    case EpisodeStatus::kMet: return kExitOk;
+    case EpisodeStatus::kPlanFailed: return kExitUnsolved;
+    case EpisodeStatus::kContact:
+    case EpisodeStatus::kGoalMissed:
+    case EpisodeStatus::kToleranceMissed: return kExitToleranceNotMet;
+  }
+  return kExitInternal;
+}
+
+}  // namespace parksim::app

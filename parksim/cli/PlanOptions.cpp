@@ -1,0 +1,87 @@
+#include "parksim/cli/PlanOptions.h"
+
+#include <cstdint>
+
+#include "parksim/cli/Validators.h"
+#include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
+
+namespace parksim::cli {
+
+namespace {
+
+template <class Kind>
+std::string namesOf(const std::vector<Kind>& kinds) {
+  std::string names;
+  for (Kind k : kinds) names += (names.empty() ? "" : ", ") + std::string(toString(k));
+  return names;
+}
+
+}  // namespace
+
+void PlanCliOptions::addTo(CLI::App& sub) {
+  sub.add_option("--planner", planner, "one of: " + namesOf(allPlannerKinds()))
+      ->capture_default_str();
+  sub.add_option("--steering", steering,
+                 "steering function, one of: " + namesOf(allSteeringKinds()))
+      ->capture_default_str();
+  // CLI11 would wrap "-3" and clamp 2^64 into a 64-bit unsigned seed; refuse both instead.
+  sub.add_option("--seed", seed, "seed of the planner's random number generator")
+      ->capture_default_str()
+      ->check(unsigned64());
+  sub.add_option("--max-iterations", max_iterations,
+                 "iteration budget (hybrid-a-star: node expansions); auto: 2000 for tree "
+                 "planners, 20000 for hybrid-a-star, times max(1, lot area / 2.16 m^2)")
+      ->capture_default_str();
+  sub.add_option("--time-limit", time_limit_s,
+                 "wall-time budget of the search, s (0: none); the plan then depends on the "
+                 "machine's speed, so reproducible runs use --max-iterations alone")
+      ->capture_default_str()
+      ->check(realIn(0.0, 3600.0));
+  sub.add_flag("--smooth,!--no-smooth", smooth,
+               "shortcut-smooth the plan (study 3(c)(3)); --no-smooth: do not")
+      ->capture_default_str();
+  sub.add_option("--smoothing-attempts", smoothing_attempts, "random shortcuts tried by --smooth")
+      ->capture_default_str()
+      ->check(integerIn(0, kMaxSmoothingAttempts));
+  sub.add_option("--timing", timing,
+                 "time-optimal: re-time the plan to the fastest wheel speeds within the limits "
+                 "(less the feedback headroom); study: keep the steering controller's timing")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"time-optimal", "study"}));
+  sub.add_option("--feedback-headroom", feedback_headroom,
+                 "share of the wheel-speed limit time-optimal plans leave to feedback, in [0, 1)")
+      ->capture_default_str()
+      ->check(realIn(0.0, 0.99));
+  sub.add_option("--turning-radius", turning_radius_m,
+                 "arc radius of reeds-shepp steering and of hybrid-a-star's primitives, m")
+      ->capture_default_str()
+      ->check(realIn(0.0, 100.0, true));
+}
+
+int parseIterationBudget(const std::string& text, const std::string& option) {
+  if (text == "auto") return kAutoIterations;
+  long long value = -1;
+  if (!parseInt(text, value) || value < 1 || value > kMaxPlannerIterations) {
+    throw Error(option + ": expected auto or an integer in [1, " +
+                std::to_string(kMaxPlannerIterations) + "], got '" + text + "'");
+  }
+  return static_cast<int>(value);
+}
+
+PlanSetup PlanCliOptions::toSetup() const {
+  PlanSetup setup;
+  setup.planner.kind = plannerKindFromString(planner);
+  setup.planner.seed = seed;
+  setup.planner.max_iterations = parseIterationBudget(max_iterations);
+  setup.planner.max_time_s = time_limit_s;
+  setup.timing = timingKindFromString(timing);
+  setup.feedback_headroom = feedback_headroom;
+  setup.reeds_shepp.turning_radius_m = turning_radius_m;
+  setup.planner.smooth = smooth;
+  setup.planner.smoothing_attempts = smoothing_attempts;
+  setup.steering_kind = steeringKindFromString(steering);
+  return setup;
+}
+
+}  // namespace parksim::cli

@@ -1,0 +1,60 @@
+#include "parksim/pipeline/EpisodeFigures.h"
+
+#include "parksim/core/NumberFormat.h"
+#include "parksim/planner/MoveToPoseSteering.h"
+
+namespace parksim {
+
+std::string planCaption(const Scenario& scenario, const PlanSetup& setup,
+                        const PlanResult& result) {
+  const std::string head = scenario.name + ", " + toString(setup.planner.kind) + " (seed " +
+                           std::to_string(setup.planner.seed) + "): ";
+  if (result.solved()) {
+    const int cusps = result.trajectory.cusps(scenario.robot);
+    return head + std::to_string(result.stats.tree_size) + " tree nodes, path " +
+           formatFixed(result.trajectory.pathLength(scenario.robot), 2) + " m, " +
+           std::to_string(cusps) + (cusps == 1 ? " cusp" : " cusps");
+  }
+  return head + toString(result.status) + " after " + std::to_string(result.stats.iterations) +
+         " iterations";
+}
+
+PlanFigure planFigure(const Scenario& scenario, const PlanSetup& setup, const PlanResult& result) {
+  return {toString(setup.planner.kind), planCaption(scenario, setup, result), result.trajectory,
+          result.waypoints, result.tree_edges};
+}
+
+SteeringExample steeringExample(const Scenario& scenario, const std::optional<Pose2>& target) {
+  SteeringExample example;
+  example.start = scenario.start;
+  example.target = target.value_or(Pose2{scenario.start.x + 0.3, scenario.start.y + 0.3, 0.0});
+  const MoveToPoseSteering steer(scenario.robot);
+  example.fixed_horizon =
+      steer.steer(example.start, {}, example.target, SteerMode::kFixedHorizon).trajectory;
+  example.to_goal = steer.steer(example.start, {}, example.target, SteerMode::kToGoal).trajectory;
+  return example;
+}
+
+TrackingSeries trackingSeries(const std::vector<ExecutedRow>& rows) {
+  TrackingSeries series;
+  for (const ExecutedRow& row : rows) {
+    series.t_s.push_back(row.t_s);
+    series.position_error_m.push_back(row.pos_err_m);
+    series.heading_error_rad.push_back(row.heading_err_rad);
+  }
+  return series;
+}
+
+FrameInput frameInput(const EpisodeSample& sample) {
+  FrameInput in;
+  in.t_s = sample.tracking.t_s;
+  in.pose = sample.tracking.pose;
+  in.reference = sample.tracking.reference;
+  in.position_error_m = sample.tracking.pos_err_m;
+  in.heading_error_rad = sample.tracking.heading_err_rad;
+  in.obstacle_poses = sample.obstacles;
+  in.contacts = sample.contacts;
+  return in;
+}
+
+}  // namespace parksim

@@ -1,0 +1,241 @@
+#include "parksim/pipeline/EpisodePipeline.h"
+
+#include <climits>
+#include <memory>
+
+#include "parksim/collision/BulletCollisionWorld.h"
+#include "parksim/core/AtomicFile.h"
+#include "parksim/core/Error.h"
+#include "parksim/pipeline/EpisodeFigures.h"
+#include "parksim/pipeline/EpisodeSettings.h"
+#include "parksim/results/ExecutedFile.h"
+#include "parksim/results/JsonFile.h"
+#include "parksim/results/MetricsFile.h"
+#include "parksim/results/PlanFile.h"
+#include "parksim/results/TrajectoryFile.h"
+
+namespace parksim {
+
+namespace {
+
+// Rows of realisations after the first and of a second, filmed drive are not kept: only the
+// first and the last row are recorded.
+constexpr int kFirstAndLastRowOnly = INT_MAX / 2;
+
+// Plans, or takes the given plan. Sets the trajectory to drive, the plan's summary, and the
+// plan_failed verdict when the planner found nothing.
+void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
+  const Scenario& scenario = request.world->scenario;
+  if (request.given_plan) {
+    out.trajectory = *request.given_plan;
+    out.plan_summary = trajectorySummary(scenario, out.trajectory);
+    if (!request.given_plan_source.empty()) out.plan_summary["source"] = request.given_plan_source;
+    return;
+  }
+  const BulletCollisionWorld collision(scenario);
+  out.plan = planScenario(scenario, collision, out.plan_setup, request.progress.plan);
+  out.plan_summary = planSummary(scenario, out.plan_setup, *out.plan);
+  if (out.plan->solved()) {
+    out.trajectory = out.plan->trajectory;
+  } else {
+    out.verdict = planFailedVerdict(*out.plan);
+  }
+}
+
+// A recorder filming into the request's directory, with the plan drawn.
+std::unique_ptr<FrameRecorder> makeRecorder(const EpisodeRequest& request, const Trajectory& plan) {
+  FrameDef def = request.film.frames;
+  def.out_dir = request.out_dir;
+  auto recorder = std::make_unique<FrameRecorder>(request.world->scenario, def);
+  recorder->setPlan(plan);
+  return recorder;
+}
+
+// Drives the plan under one noise seed; `recorder` (optional) films it.
+EpisodeResult drive(const EpisodeRequest& request, const Trajectory& plan,
+                    const ExecutionDef& execution, FrameRecorder* recorder) {
+  if (recorder == nullptr) return runEpisode(request.world->scenario, plan, execution);
+  const double fps = request.film.frames.fps;
+  const long expected = static_cast<long>(plan.duration() * fps) + 1;
+  long frames = 0;
+  const EpisodeObserver observer = [&](const EpisodeSample& sample) {
+    recorder->addFrame(frameInput(sample));
+    if (request.progress.frames) request.progress.frames(++frames, expected);
+  };
+  return runEpisode(request.world->scenario, plan, execution, observer, 1.0 / fps);
+}
+
+// Every realisation, each judged; the first is kept whole (and filmed when asked).
+void driveStage(const EpisodeRequest& request, const EpisodeSettings& settings,
+                FrameRecorder* recorder, EpisodeOutcome& out) {
+  const Scenario& scenario = request.world->scenario;
+  out.execution = settings.execution;
+  out.tolerance = settings.tolerance;
+  out.episode = drive(request, out.trajectory, settings.execution, recorder);
+  out.realisations.push_back({settings.execution.noise_seed, out.episode.metrics,
+                              judgeEpisode(scenario, settings.tolerance, out.episode.metrics)});
+  for (int i = 1; i < request.realisations; ++i) {
+    ExecutionDef again = settings.execution;
+    again.noise_seed = settings.execution.noise_seed + static_cast<std::uint64_t>(i);
+    again.csv_stride_steps = kFirstAndLastRowOnly;
+    const EpisodeMetrics m = runEpisode(scenario, out.trajectory, again).metrics;
+    out.realisations.push_back(
+        {again.noise_seed, m, judgeEpisode(scenario, settings.tolerance, m)});
+  }
+  std::vector<RealisationVerdict> verdicts;
+  for (const RealisationOutcome& r : out.realisations)
+    verdicts.push_back({r.noise_seed, r.verdict});
+  out.verdict = judgeRealisations(verdicts, request.min_success_fraction);
+}
+
+nlohmann::json metricsOf(const EpisodeRequest& request, const EpisodeOutcome& out,
+                         const FrameRecorder* recorder) {
+  MetricsDocument doc;
+  doc.metrics = out.episode.metrics;
+  doc.world = request.world->scenario.source_path;
+  doc.scenario = request.world->scenario.name;
+  doc.tolerance = out.tolerance;
+  doc.status = toString(out.verdict.status);
+  doc.met = out.verdict.met();
+  doc.failure = out.verdict.reason;
+  doc.plan_summary = out.plan_summary;
+  if (recorder != nullptr) doc.gl_description = recorder->glDescription();
+  for (const RealisationOutcome& r : out.realisations) {
+    doc.realisations.push_back(
+        {r.noise_seed, r.metrics, toString(r.verdict.status), r.verdict.met()});
+  }
+  return metricsDocumentJson(doc);
+}
+
+bool keepsFiles(const EpisodeRequest& request, const Verdict& verdict) {
+  if (request.out_dir.empty()) return false;
+  switch (request.record.files) {
+    case FilesPolicy::kNone: return false;
+    case FilesPolicy::kFailures: return !verdict.met();
+    case FilesPolicy::kAll: return true;
+  }
+  return false;
+}
+
+// trajectory.csv and plan.json (a given plan: trajectory.csv alone), then, when driven,
+// executed.csv, sensors.csv (with a pose sensor) and metrics.json.
+void writeFiles(const EpisodeRequest& request, EpisodeOutcome& out) {
+  const Scenario& scenario = request.world->scenario;
+  const std::string& dir = request.out_dir;
+  ensureDirectory(dir);
+  if (out.plan) {
+    writePlanFiles(dir, scenario, out.plan_setup, *out.plan);
+    if (out.plan->solved()) out.files.push_back("trajectory.csv");
+    out.files.push_back("plan.json");
+  } else {
+    writeTrajectoryCsv(dir + "/trajectory.csv", out.trajectory, scenario.robot);
+    out.files.push_back("trajectory.csv");
+  }
+  if (!out.driven()) return;
+  writeExecutedCsv(dir + "/executed.csv", out.episode.rows, out.execution.realism.active());
+  out.files.push_back("executed.csv");
+  if (out.execution.realism.pose_sensor.enabled) {
+    writeFileAtomically(dir + "/sensors.csv",
+                        sensorsCsv(out.episode.pose_samples, out.episode.metrics.time_step_s));
+    out.files.push_back("sensors.csv");
+  }
+  writeJsonFile(dir + "/metrics.json", out.metrics);
+  out.files.push_back("metrics.json");
+}
+
+// The film of a failed episode: the first realisation driven again with the camera on.
+RecordingResult filmFailure(const EpisodeRequest& request, const EpisodeOutcome& out) {
+  const std::unique_ptr<FrameRecorder> recorder = makeRecorder(request, out.trajectory);
+  ExecutionDef execution = out.execution;
+  execution.csv_stride_steps = kFirstAndLastRowOnly;
+  (void)drive(request, out.trajectory, execution, recorder.get());
+  return recorder->finish();
+}
+
+void drawFigures(const EpisodeRequest& request, EpisodeOutcome& out) {
+  const Scenario& scenario = request.world->scenario;
+  FigureInputs inputs;
+  inputs.steering = steeringExample(scenario);
+  if (out.plan) {
+    inputs.plans.push_back(planFigure(scenario, out.plan_setup, *out.plan));
+  } else {
+    inputs.plans.push_back(
+        {"file", "plan from " + request.given_plan_source, out.trajectory, {}, {}});
+  }
+  if (out.driven()) inputs.tracking = trackingSeries(out.episode.rows);
+  const std::string dir = request.out_dir + "/figures";
+  for (const std::string& path : writeFigures(scenario, inputs, request.figures, dir)) {
+    out.files.push_back(path.substr(request.out_dir.size() + 1));
+  }
+}
+
+// The film's files, as paths under the request's directory.
+void addFilmFiles(const EpisodeRequest& request, EpisodeOutcome& out) {
+  if (!out.recording) return;
+  out.files.push_back("frames");
+  for (const VideoOutcome* v : {&out.recording->video, &out.recording->gif}) {
+    if (v->status == VideoStatus::kWritten && v->path.size() > request.out_dir.size()) {
+      out.files.push_back(v->path.substr(request.out_dir.size() + 1));
+    }
+  }
+}
+
+std::string outDirNeeded(const EpisodeRequest& request) {
+  if (request.film.when != FilmWhen::kNever) return "filming";
+  if (!request.figures.figures.empty()) return "figures";
+  return {};
+}
+
+}  // namespace
+
+int EpisodeOutcome::realisationsMet() const {
+  int met = 0;
+  for (const RealisationOutcome& r : realisations) met += r.verdict.met() ? 1 : 0;
+  return met;
+}
+
+EpisodeOutcome runEpisodePipeline(const EpisodeRequest& request) {
+  checkEpisodeRequest(request);
+  if (const std::string what = outDirNeeded(request); !what.empty() && request.out_dir.empty()) {
+    throw Error("episode request: " + what + " needs an output directory");
+  }
+  const EpisodeSettings settings = resolveSettings(request);
+  EpisodeOutcome out;
+  out.world = request.world;
+  out.plan_setup = settings.plan;
+  planStage(request, out);
+  if (out.verdict.status == EpisodeStatus::kPlanFailed || !request.drive) {
+    if (keepsFiles(request, out.verdict)) writeFiles(request, out);
+    return out;
+  }
+  const Scenario& scenario = request.world->scenario;
+  checkEpisodeLimits(scenario, out.trajectory, settings.execution);
+  const bool film_now = request.film.when == FilmWhen::kAlways;
+  if (request.film.when != FilmWhen::kNever) {
+    checkFrameLimits(request.film.frames,
+                     out.trajectory.duration() + settings.execution.max_stop_time_s);
+  }
+  std::unique_lock<std::mutex> film_lock;
+  if (film_now && request.film.lock != nullptr) {
+    film_lock = std::unique_lock<std::mutex>(*request.film.lock);
+  }
+  std::unique_ptr<FrameRecorder> recorder;
+  if (film_now) recorder = makeRecorder(request, out.trajectory);
+  driveStage(request, settings, recorder.get(), out);
+  out.metrics = metricsOf(request, out, recorder.get());
+  if (keepsFiles(request, out.verdict)) writeFiles(request, out);
+  if (recorder) {
+    out.recording = recorder->finish();
+    recorder.reset();
+    film_lock = {};
+  } else if (request.film.when == FilmWhen::kOnFailure && !out.verdict.met()) {
+    std::unique_lock<std::mutex> lock;
+    if (request.film.lock != nullptr) lock = std::unique_lock<std::mutex>(*request.film.lock);
+    out.recording = filmFailure(request, out);
+  }
+  addFilmFiles(request, out);
+  if (!request.figures.figures.empty()) drawFigures(request, out);
+  return out;
+}
+
+}  // namespace parksim

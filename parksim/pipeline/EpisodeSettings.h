@@ -1,0 +1,38 @@
+#pragma once
+// A request's settings made concrete: the planning setup with its automatic choices, the
+// execution with the realism and noise seed applied, the tolerance with the overrides applied.
+// runEpisodePipeline uses them; a front-end that steps an episode itself (Python's Episode)
+// takes them from here, so it drives and judges exactly as the pipeline would.
+
+#include "parksim/core/TrackingTolerance.h"
+#include "parksim/pipeline/EpisodeRequest.h"
+#include "parksim/planner/PlanScenario.h"
+#include "parksim/sim/ExecutionDef.h"
+
+namespace parksim {
+
+struct EpisodeSettings {
+  PlanSetup plan;               ///< resolvedPlanSetup(request.plan, scenario)
+  ExecutionDef execution;       ///< realism, noise seed and executed-row stride applied
+  TrackingTolerance tolerance;  ///< the world's, with request.tolerance applied
+};
+
+/// Limits of a request (docs/limits.md).
+inline constexpr int kMaxRealisations = 10'000;
+
+/// Checks everything about `request` that needs no planning or simulation: a world, a known
+/// realism, realisations and success fraction in range, a given plan that starts at the
+/// world's start and whose episode stays within the step and frame limits, a planning setup
+/// within the planning limits. Throws Error with one line naming the value (and the plan file).
+/// runEpisodePipeline calls it first; front-ends call it before they create an output
+/// directory, so bad input writes nothing.
+void checkEpisodeRequest(const EpisodeRequest& request);
+
+/// The settings `request` runs with. Throws Error on an unknown realism.
+EpisodeSettings resolveSettings(const EpisodeRequest& request);
+
+/// The executed-row stride for `rate_hz` rows per simulated second at `time_step_s` (1 for
+/// rate 0: every step).
+int executedStride(double rate_hz, double time_step_s);
+
+}  // namespace parksim

@@ -1,0 +1,179 @@
+#include "parksim/results/MetricsFile.h"
+
+#include <algorithm>
+
+#include "parksim/core/Error.h"
+#include "parksim/core/Provenance.h"
+#include "parksim/realism/Distribution.h"
+#include "parksim/results/JsonFile.h"
+#include "parksim/results/PlanFile.h"
+
+namespace parksim {
+
+nlohmann::json metricsToJson(const EpisodeMetrics& m) {
+  nlohmann::json j;
+  j["tracking"] = toString(m.tracking);
+  j["max_pos_err_m"] = m.max_pos_err_m;
+  j["rms_pos_err_m"] = m.rms_pos_err_m;
+  j["final_pos_err_m"] = m.final_pos_err_m;
+  j["max_heading_err_deg"] = m.max_heading_err_deg;
+  j["rms_heading_err_deg"] = m.rms_heading_err_deg;
+  j["final_heading_err_deg"] = m.final_heading_err_deg;
+  j["final_x_m"] = m.final_pose.x;
+  j["final_y_m"] = m.final_pose.y;
+  j["final_theta_rad"] = m.final_pose.theta;
+  j["goal_pos_err_m"] = m.goal_pos_err_m;
+  j["goal_heading_err_deg"] = m.goal_heading_err_deg;
+  j["goal_reached"] = m.goal_reached;
+  j["contacts"] = m.contacts;
+  // JSON has no infinity; -1 keeps the key a number for tools that read it as one.
+  j["first_contact_t_s"] = m.first_contact_t_s;
+  j["first_contact_body"] = m.first_contact_body;
+  nlohmann::json bodies = nlohmann::json::array();
+  for (const ContactEvent& e : m.contact_events) {
+    if (std::find(bodies.begin(), bodies.end(), e.body) == bodies.end()) bodies.push_back(e.body);
+  }
+  j["contact_bodies"] = bodies;
+  j["max_parked_displacement_m"] = m.max_parked_displacement_m;
+  for (const ParkedRobotDisplacement& p : m.parked) {
+    j["parked_displacement_m." + p.name] = p.max_m;
+  }
+  j["plan_duration_s"] = m.plan_duration_s;
+  j["sim_time_s"] = m.sim_time_s;
+  j["steps"] = m.steps;
+  j["time_step_s"] = m.time_step_s;
+  j["ended_at_rest"] = m.ended_at_rest;
+  j["wall_time_s"] = m.wall_time_s;
+  j["real_time_factor"] = m.wall_time_s > 0.0 ? m.sim_time_s / m.wall_time_s : 0.0;
+  j["realism"] = m.realism;
+  j["noise_seed"] = m.noise_seed;
+  j["estimator"] = m.estimator;
+  j["max_est_pos_err_m"] = m.max_est_pos_err_m;
+  j["rms_est_pos_err_m"] = m.rms_est_pos_err_m;
+  j["max_est_heading_err_deg"] = m.max_est_heading_err_deg;
+  j["final_est_pos_err_m"] = m.final_est_pos_err_m;
+  j["max_slip_mps"] = m.max_slip_mps;
+  j["rms_slip_mps"] = m.rms_slip_mps;
+  j["slip_fraction"] = m.slip_fraction;
+  j["max_motor_torque_nm"] = m.max_motor_torque_nm;
+  j["max_motor_effort"] = m.max_motor_effort;
+  j["true_left_radius_m"] = m.true_left_radius_m;
+  j["true_right_radius_m"] = m.true_right_radius_m;
+  j["true_track_m"] = m.true_track_m;
+  j["left_motor_gain"] = m.left_motor_gain;
+  j["right_motor_gain"] = m.right_motor_gain;
+  j["pose_samples_taken"] = m.pose_samples_taken;
+  j["pose_samples_dropped"] = m.pose_samples_dropped;
+  j["pose_samples_received"] = m.pose_samples_received;
+  return j;
+}
+
+EpisodeMetrics metricsFromJson(const nlohmann::json& j) {
+  auto get = [&](const char* key) -> const nlohmann::json& {
+    if (!j.is_object() || !j.contains(key)) {
+      throw Error(std::string("metrics: missing key '") + key + "'");
+    }
+    return j.at(key);
+  };
+  auto number = [&](const char* key) {
+    const nlohmann::json& v = get(key);
+    if (!v.is_number()) throw Error(std::string("metrics: key '") + key + "' is not a number");
+    return v.get<double>();
+  };
+  EpisodeMetrics m;
+  m.max_pos_err_m = number("max_pos_err_m");
+  m.rms_pos_err_m = number("rms_pos_err_m");
+  m.final_pos_err_m = number("final_pos_err_m");
+  m.final_heading_err_deg = number("final_heading_err_deg");
+  m.goal_pos_err_m = number("goal_pos_err_m");
+  m.goal_heading_err_deg = number("goal_heading_err_deg");
+  m.max_parked_displacement_m = number("max_parked_displacement_m");
+  m.sim_time_s = number("sim_time_s");
+  m.wall_time_s = number("wall_time_s");
+  const double contacts = number("contacts");
+  m.contacts = static_cast<int>(contacts);
+  const nlohmann::json& reached = get("goal_reached");
+  if (!reached.is_boolean()) throw Error("metrics: key 'goal_reached' is not a boolean");
+  m.goal_reached = reached.get<bool>();
+  if (j.contains("tracking") && j.at("tracking").is_string()) {
+    m.tracking = trackingModeFromString(j.at("tracking").get<std::string>());
+  }
+  return m;
+}
+
+namespace {
+
+void addRealisations(nlohmann::json& j, const std::vector<MetricsDocument::Realisation>& rows) {
+  std::vector<double> max_err;
+  std::vector<double> goal_err;
+  std::vector<double> goal_heading;
+  std::vector<double> est_err;
+  std::vector<double> contacts;
+  std::vector<double> slip;
+  int met = 0;
+  int reached = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const EpisodeMetrics& m = rows[i].metrics;
+    const std::string p = "realisation." + std::to_string(i) + ".";
+    j[p + "noise_seed"] = rows[i].noise_seed;
+    j[p + "max_pos_err_m"] = m.max_pos_err_m;
+    j[p + "rms_pos_err_m"] = m.rms_pos_err_m;
+    j[p + "goal_pos_err_m"] = m.goal_pos_err_m;
+    j[p + "goal_heading_err_deg"] = m.goal_heading_err_deg;
+    j[p + "max_est_pos_err_m"] = m.max_est_pos_err_m;
+    j[p + "max_slip_mps"] = m.max_slip_mps;
+    j[p + "contacts"] = m.contacts;
+    j[p + "goal_reached"] = m.goal_reached;
+    j[p + "status"] = rows[i].status;
+    j[p + "success"] = rows[i].met;
+    max_err.push_back(m.max_pos_err_m);
+    goal_err.push_back(m.goal_pos_err_m);
+    goal_heading.push_back(m.goal_heading_err_deg);
+    est_err.push_back(m.max_est_pos_err_m);
+    contacts.push_back(m.contacts);
+    slip.push_back(m.max_slip_mps);
+    met += rows[i].met ? 1 : 0;
+    reached += m.goal_reached ? 1 : 0;
+  }
+  const auto add = [&j](const std::string& key, const std::vector<double>& values) {
+    const Distribution d = summarize(values);
+    j["realisations." + key + ".median"] = d.median;
+    j["realisations." + key + ".p95"] = d.p95;
+    j["realisations." + key + ".max"] = d.max;
+  };
+  const auto n = static_cast<double>(rows.size());
+  j["realisations.count"] = rows.size();
+  add("max_pos_err_m", max_err);
+  add("goal_pos_err_m", goal_err);
+  add("goal_heading_err_deg", goal_heading);
+  add("max_est_pos_err_m", est_err);
+  add("contacts", contacts);
+  add("max_slip_mps", slip);
+  j["realisations.goal_reached_fraction"] = reached / n;
+  j["realisations.success_fraction"] = met / n;
+}
+
+}  // namespace
+
+nlohmann::json metricsDocumentJson(const MetricsDocument& doc) {
+  nlohmann::json j = metricsToJson(doc.metrics);
+  // Held in a variable: a range-for over a temporary's items() would dangle.
+  const nlohmann::json provenance = provenanceToJson(buildProvenance());
+  for (const auto& [key, value] : provenance.items()) j["provenance." + key] = value;
+  if (!doc.gl_description.empty()) j["provenance.gl"] = doc.gl_description;
+  j["world"] = doc.world;
+  j["scenario"] = doc.scenario;
+  j["tolerance.max_pos_err_m"] = doc.tolerance.max_pos_err_m;
+  j["tolerance.goal_pos_err_m"] = doc.tolerance.goal_pos_err_m;
+  j["tolerance.goal_heading_err_deg"] = doc.tolerance.goal_heading_err_deg;
+  j["tolerance.max_contacts"] = doc.tolerance.max_contacts;
+  j["tolerance.max_parked_displacement_m"] = doc.tolerance.max_parked_displacement_m;
+  j["status"] = doc.status;
+  j["met_tolerance"] = doc.met;
+  j["failure"] = doc.failure;
+  addPlanKeys(j, doc.plan_summary);
+  if (doc.realisations.size() > 1) addRealisations(j, doc.realisations);
+  return j;
+}
+
+}  // namespace parksim

@@ -1,0 +1,56 @@
+#pragma once
+// An episode's measurements as metrics.json's flat keys, and back.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "parksim/core/TrackingTolerance.h"
+#include "parksim/sim/Episode.h"
+
+namespace parksim {
+
+/// metrics.json's content, flat: every value is a number, a boolean or a string, except
+/// contact_bodies (a list of names, in the order they were first touched). Parked robots get
+/// one key each, parked_displacement_m.<name>. Keys are listed in docs/simulation.md.
+nlohmann::json metricsToJson(const EpisodeMetrics& metrics);
+
+/// The metrics a TrackingTolerance checks, read back from metricsToJson's keys. Throws Error
+/// naming a missing or mistyped key.
+EpisodeMetrics metricsFromJson(const nlohmann::json& json);
+
+/// Everything metrics.json holds about one episode request, as plain data.
+struct MetricsDocument {
+  /// The first (or only) realisation's measurements: metricsToJson's keys.
+  EpisodeMetrics metrics;
+  std::string world;     ///< the world file ("world")
+  std::string scenario;  ///< its scenario's name ("scenario")
+  /// The tolerance judged ("tolerance.<bound>").
+  TrackingTolerance tolerance;
+  /// The verdict: "status" (met, contact, ...), "met_tolerance", "failure" (empty when met).
+  std::string status;
+  bool met = false;
+  std::string failure;
+  /// plan.json's content; its keys are added with a plan_ prefix (addPlanKeys).
+  nlohmann::json plan_summary;
+  /// "provenance.gl": the renderer when the episode was filmed, else empty (no key).
+  std::string gl_description;
+
+  struct Realisation {
+    std::uint64_t noise_seed = 0;
+    EpisodeMetrics metrics;
+    std::string status;
+    bool met = false;
+  };
+  /// With more than one: "realisation.<i>.<key>" per realisation and "realisations.<key>.median"
+  /// / ".p95" / ".max" distributions, "realisations.count", the goal-reached and met fractions.
+  std::vector<Realisation> realisations;
+};
+
+/// metrics.json's content for `doc`: metricsToJson(doc.metrics) with "provenance.<key>" of
+/// this build, the world, the tolerance, the verdict, the plan keys and the realisations.
+nlohmann::json metricsDocumentJson(const MetricsDocument& doc);
+
+}  // namespace parksim

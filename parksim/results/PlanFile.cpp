@@ -1,0 +1,115 @@
+#include "parksim/results/PlanFile.h"
+
+#include <filesystem>
+
+#include "parksim/core/Angle.h"
+#include "parksim/core/AtomicFile.h"
+#include "parksim/results/JsonFile.h"
+#include "parksim/results/TrajectoryFile.h"
+
+namespace parksim {
+
+nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
+                           const PlanResult& result) {
+  const PhaseTimes& t = result.stats.times;
+  nlohmann::json j = {
+      {"provenance", provenanceToJson(buildProvenance())},
+      {"world", scenario.source_path},
+      {"scenario", scenario.name},
+      {"status", toString(result.status)},
+      {"solved", result.solved()},
+      {"message", result.message},
+      {"planner", toString(setup.planner.kind)},
+      {"steering", toString(setup.steering_kind)},
+      {"smooth", setup.planner.smooth},
+      {"seed", setup.planner.seed},
+      {"max_iterations", setup.planner.max_iterations},
+      {"time_limit_s", setup.planner.max_time_s},
+      {"iterations", result.stats.iterations},
+      {"tree_size", result.stats.tree_size},
+      {"goal_tree_size", result.stats.goal_tree_size},
+      {"goal_attempts", result.stats.goal_attempts},
+      {"connection_attempts", result.stats.connection_attempts},
+      {"rewires", result.stats.rewires},
+      {"smoothing_shortcuts", result.stats.smoothing_shortcuts},
+      {"collision_queries", result.stats.collision_queries},
+      {"motion_check_resolution_m", setup.validation.resolution_m},
+      {"planning_time_s", t.total_s},
+      {"phase_times_s",
+       {{"sampling", t.sampling_s},
+        {"nearest_neighbour", t.nearest_s},
+        {"steering", t.steering_s},
+        {"collision_checking", t.collision_s},
+        {"goal_checks", t.goal_check_s},
+        {"rewiring", t.rewiring_s},
+        {"connection", t.connection_s},
+        {"smoothing", t.smoothing_s},
+        {"heuristic", t.heuristic_s},
+        {"timing", t.timing_s}}},
+      {"timing", toString(setup.timing)},
+      {"feedback_headroom", setup.feedback_headroom},
+  };
+  if (result.stats.first_solution_iteration >= 0) {
+    j["first_solution_s"] = result.stats.first_solution_s;
+    j["first_solution_iteration"] = result.stats.first_solution_iteration;
+  }
+  nlohmann::json history = nlohmann::json::array();
+  for (const CostSample& c : result.cost_history) {
+    history.push_back({{"time_s", c.time_s}, {"iteration", c.iteration}, {"cost_m", c.cost}});
+  }
+  j["cost_history"] = history;
+  if (result.solved()) {
+    const Pose2& end = result.trajectory.points.back().pose;
+    j["cost_m"] = result.cost;
+    j["path_length_m"] = result.trajectory.pathLength(scenario.robot);
+    j["duration_s"] = result.trajectory.duration();
+    j["duration_lower_bound_s"] = result.duration_lower_bound_s;
+    j["duration_over_lower_bound"] =
+        result.duration_lower_bound_s > 0.0
+            ? result.trajectory.duration() / result.duration_lower_bound_s
+            : 0.0;
+    j["cusps"] = result.trajectory.cusps(scenario.robot);
+    j["waypoints"] = result.waypoints.size();
+    j["final_pos_err_m"] = positionDistance(end, scenario.goal.pose);
+    j["final_heading_err_deg"] = radToDeg(headingDistance(end, scenario.goal.pose));
+  }
+  return j;
+}
+
+nlohmann::json trajectorySummary(const Scenario& scenario, const Trajectory& plan) {
+  const Pose2& end = plan.points.back().pose;
+  return {
+      {"path_length_m", plan.pathLength(scenario.robot)},
+      {"duration_s", plan.duration()},
+      {"cusps", plan.cusps(scenario.robot)},
+      {"final_pos_err_m", positionDistance(end, scenario.goal.pose)},
+      {"final_heading_err_deg", radToDeg(headingDistance(end, scenario.goal.pose))},
+  };
+}
+
+void writePlanFiles(const std::string& dir, const Scenario& scenario, const PlanSetup& setup,
+                    const PlanResult& result) {
+  ensureDirectory(dir);
+  const std::string traj_path = dir + "/trajectory.csv";
+  if (result.solved()) {
+    writeTrajectoryCsv(traj_path, result.trajectory, scenario.robot);
+  } else {
+    // Never leave an earlier run's trajectory beside this run's plan.json.
+    std::error_code ec;
+    std::filesystem::remove(traj_path, ec);
+  }
+  writeFileAtomically(dir + "/plan.json", jsonText(planSummary(scenario, setup, result)));
+}
+
+void addPlanKeys(nlohmann::json& metrics, const nlohmann::json& summary) {
+  for (const auto& [key, value] : summary.items()) {
+    if (value.is_array() || key == "provenance") continue;
+    if (value.is_object()) {
+      for (const auto& [sub, inner] : value.items()) metrics["plan_" + key + "." + sub] = inner;
+    } else {
+      metrics["plan_" + key] = value;
+    }
+  }
+}
+
+}  // namespace parksim

@@ -1,0 +1,34 @@
+#pragma once
+// plan.json (a plan's status, settings and statistics) beside trajectory.csv, and the plan
+// keys metrics.json repeats with a plan_ prefix.
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "parksim/core/Scenario.h"
+#include "parksim/core/Trajectory.h"
+#include "parksim/planner/PlanResult.h"
+#include "parksim/planner/PlanScenario.h"
+
+namespace parksim {
+
+/// plan.json's content: status, planner, steering, seed, iterations, tree sizes, per-phase
+/// times, planning_time_s, first solution, cost and its history, path_length_m, cusps, final
+/// pose error.
+nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
+                           const PlanResult& result);
+
+/// The statistics a trajectory carries by itself, for a plan the planner did not make (a plan
+/// file, a Python array): path_length_m, duration_s, cusps, final pose error.
+nlohmann::json trajectorySummary(const Scenario& scenario, const Trajectory& plan);
+
+/// Adds planSummary's keys to a flat metrics.json with a plan_ prefix: nested objects flattened
+/// as plan_<key>.<sub>; arrays (the RRT* cost history) and provenance stay in plan.json.
+void addPlanKeys(nlohmann::json& metrics, const nlohmann::json& summary);
+
+/// Writes DIR/trajectory.csv (only if solved) and DIR/plan.json, creating DIR.
+void writePlanFiles(const std::string& dir, const Scenario& scenario, const PlanSetup& setup,
+                    const PlanResult& result);
+
+}  // namespace parksim

@@ -1,0 +1,71 @@
+// The planning benchmark program end to end (bench/parksim_bench.cpp).
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "tests/support/RunParksim.h"
+#include "tests/support/TestPaths.h"
+
+namespace parksim {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::CliRun;
+using testing::slurp;
+
+// Runs `parksim-bench ARGS` (beside the other benchmark programs in the build tree).
+CliRun runBench(const std::string& args) {
+  const std::string cmd = testing::binaryDir() + "/bench/parksim-bench " + args + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (pipe == nullptr) return {-1, "popen failed"};
+  std::string out;
+  char buf[4096];
+  while (std::fgets(buf, sizeof buf, pipe)) out += buf;
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+TEST(ParksimBench, WritesTheCsvWithItsRequiredColumns) {
+  const fs::path out = testing::testOutputDir("parksim_bench");
+  fs::remove_all(out);
+  const CliRun r = runBench(testing::sourceDir() + "/worlds/head_in.yaml" +
+                            " --seeds 2 --planners rrt-goal-connect,rrt-connect --ompl"
+                            " --ompl-planners RRTConnect --ompl-spaces reeds-shepp --out " +
+                            out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string csv = slurp(out / "bench.csv");
+  const std::string header = csv.substr(0, csv.find('\n'));
+  for (const char* column : {"library", "planner", "scenario", "seed", "solved", "time_first_s",
+                             "length_m", "cusps", "min_clearance_m"}) {
+    EXPECT_NE(header.find(column), std::string::npos) << column;
+  }
+  // 2 seeds x (2 parksim planners x 3 steering functions + 1 OMPL planner) rows.
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * (2 * 3 + 1)) << csv;
+  EXPECT_NE(csv.find("\nompl,"), std::string::npos);
+  EXPECT_NE(csv.find("\nparksim,"), std::string::npos);
+  const std::string summary = slurp(out / "summary.md");
+  EXPECT_NE(summary.find("## parksim vs OMPL\n"), std::string::npos) << summary;
+  EXPECT_EQ(summary.find("issue"), std::string::npos) << summary;  // speaks to users
+}
+
+TEST(ParksimBench, BadInputIsOneLineAndExitTwo) {
+  const CliRun r = runBench(testing::sourceDir() + "/worlds/head_in.yaml --seeds 0");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("parksim-bench: error:"), std::string::npos) << r.out;
+  const CliRun budget =
+      runBench(testing::sourceDir() + "/worlds/head_in.yaml --max-iterations 0 --out " +
+               testing::testOutputDir("parksim_bench_zero").string());
+  EXPECT_EQ(budget.exit_code, 2) << budget.out;
+  EXPECT_NE(budget.out.find("--max-iterations: expected auto or an integer in [1, 1000000]"),
+            std::string::npos)
+      << budget.out;
+}
+
+}  // namespace
+}  // namespace parksim
