@@ -48,7 +48,7 @@ from ._parksim import (  # noqa: F401  (re-exported)
 )
 from . import _parksim
 
-__version__ = "0.2.0"
+__version__ = "0.3.0"
 
 
 def _plain(value):

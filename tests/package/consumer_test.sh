@@ -25,9 +25,9 @@ cmake --build "$tmp/consumer" >/dev/null
 
 # The version file refuses another minor version.
 cat >"$tmp/version.cmake" <<'CMAKE'
-find_package(parksim 0.3 QUIET)
+find_package(parksim 0.4 QUIET)
 if(parksim_FOUND)
-  message(FATAL_ERROR "find_package(parksim 0.3) accepted version ${parksim_VERSION}")
+  message(FATAL_ERROR "find_package(parksim 0.4) accepted version ${parksim_VERSION}")
 endif()
 CMAKE
 cmake -DCMAKE_PREFIX_PATH="$tmp/prefix" -P "$tmp/version.cmake"
