@@ -56,6 +56,11 @@ struct Renderer::Impl {
   GLuint resolve_fbo = 0, resolve_color = 0, resolve_depth = 0;
   RendererPrograms programs;
   GLuint mesh_vao = 0, mesh_vbo = 0, overlay_vao = 0, overlay_vbo = 0;
+  // Bytes each vertex buffer holds: its storage is kept and grown, not made anew each image
+  // (llvmpipe allocates and zeroes new storage, page by page).
+  std::size_t mesh_capacity = 0, overlay_capacity = 0;
+  std::vector<const std::vector<MeshVertex>*> mesh_batches;
+  std::vector<const std::vector<OverlayVertex>*> overlay_batches;
 
   // Kept between images, so steady-state drawing does not allocate.
   SceneTessellator tessellator;
@@ -73,8 +78,8 @@ struct Renderer::Impl {
   void draw(const DrawList& list);
   void clear(const DrawList& list);
   template <class Vertex>
-  void upload(GLuint vao, GLuint vbo, const std::vector<Vertex>& first,
-              const std::vector<Vertex>& second);
+  void upload(GLuint vbo, std::size_t& capacity,
+              const std::vector<const std::vector<Vertex>*>& batches);
   void drawRange(std::size_t first, std::size_t count, bool blend);
   void useMeshProgram(const DrawList& list);
 };
@@ -185,18 +190,28 @@ GLuint Renderer::Impl::fontTexture(int font_px) {
   return tex;
 }
 
-// One upload per batch pair; each batch is a range of the buffer.
+// One upload per buffer and image, before any draw: each batch is a range of the buffer, one
+// after the other. The last image's draws are finished (it was read back), so overwriting the
+// storage does not wait for them.
 template <class Vertex>
-void Renderer::Impl::upload(GLuint vao, GLuint vbo, const std::vector<Vertex>& first,
-                            const std::vector<Vertex>& second) {
-  gl->BindVertexArray(vao);
+void Renderer::Impl::upload(GLuint vbo, std::size_t& capacity,
+                            const std::vector<const std::vector<Vertex>*>& batches) {
+  std::size_t bytes = 0;
+  for (const std::vector<Vertex>* b : batches) bytes += b->size() * sizeof(Vertex);
   gl->BindBuffer(GL_ARRAY_BUFFER, vbo);
-  const auto bytes = static_cast<GLsizeiptr>((first.size() + second.size()) * sizeof(Vertex));
-  gl->BufferData(GL_ARRAY_BUFFER, bytes, nullptr, GL_STREAM_DRAW);
-  gl->BufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(first.size() * sizeof(Vertex)),
-                    first.data());
-  gl->BufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(first.size() * sizeof(Vertex)),
-                    static_cast<GLsizeiptr>(second.size() * sizeof(Vertex)), second.data());
+  if (bytes > capacity) {
+    capacity = std::max(bytes, 2 * capacity);
+    gl->BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(capacity), nullptr, GL_DYNAMIC_DRAW);
+  }
+  std::size_t offset = 0;
+  for (const std::vector<Vertex>* b : batches) {
+    const std::size_t n = b->size() * sizeof(Vertex);
+    if (n > 0) {
+      gl->BufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(n),
+                        b->data());
+    }
+    offset += n;
+  }
 }
 
 void Renderer::Impl::drawRange(std::size_t first, std::size_t count, bool blend) {
@@ -253,36 +268,40 @@ void Renderer::Impl::draw(const DrawList& dl) {
 
   if (!dl.mesh.empty() || !dl.mesh_blend.empty()) {
     useMeshProgram(dl);
-    upload(mesh_vao, mesh_vbo, dl.mesh, dl.mesh_blend);
+    mesh_batches.assign({&dl.mesh, &dl.mesh_blend});
+    upload(mesh_vbo, mesh_capacity, mesh_batches);
+    gl->BindVertexArray(mesh_vao);
     drawRange(0, dl.mesh.size(), false);
     drawRange(dl.mesh.size(), dl.mesh_blend.size(), true);
   }
+  // Lines, text boxes and glyphs share the overlay buffer, in that order.
+  overlay_batches.assign({&dl.lines, &dl.lines_blend, &dl.text_boxes});
+  for (const GlyphBatch& batch : dl.glyphs) overlay_batches.push_back(&batch.vertices);
+  upload(overlay_vbo, overlay_capacity, overlay_batches);
+  gl->BindVertexArray(overlay_vao);
+  std::size_t first = 0;
   if (!dl.lines.empty() || !dl.lines_blend.empty()) {
     gl->UseProgram(programs.solid);
     // Lines are depth-tested (boxes hide what lies under them) but write no depth, so crossing
     // lines simply paint in list order.
     gl->DepthMask(GL_FALSE);
-    upload(overlay_vao, overlay_vbo, dl.lines, dl.lines_blend);
-    drawRange(0, dl.lines.size(), false);
-    drawRange(dl.lines.size(), dl.lines_blend.size(), true);
+    drawRange(first, dl.lines.size(), false);
+    drawRange(first + dl.lines.size(), dl.lines_blend.size(), true);
   }
+  first += dl.lines.size() + dl.lines_blend.size();
   gl->Disable(GL_DEPTH_TEST);
   if (!dl.text_boxes.empty()) {
     gl->UseProgram(programs.solid);
-    upload(overlay_vao, overlay_vbo, dl.text_boxes, std::vector<OverlayVertex>{});
-    drawRange(0, dl.text_boxes.size(), true);
+    drawRange(first, dl.text_boxes.size(), true);
   }
+  first += dl.text_boxes.size();
   if (!dl.glyphs.empty()) {
     gl->UseProgram(programs.text);
     gl->ActiveTexture(GL_TEXTURE0);
-    gl->BindVertexArray(overlay_vao);
-    gl->BindBuffer(GL_ARRAY_BUFFER, overlay_vbo);
     for (const GlyphBatch& batch : dl.glyphs) {
       gl->BindTexture(GL_TEXTURE_2D, fontTexture(batch.font_px));
-      gl->BufferData(GL_ARRAY_BUFFER,
-                     static_cast<GLsizeiptr>(batch.vertices.size() * sizeof(OverlayVertex)),
-                     batch.vertices.data(), GL_STREAM_DRAW);
-      drawRange(0, batch.vertices.size(), true);
+      drawRange(first, batch.vertices.size(), true);
+      first += batch.vertices.size();
     }
   }
   gl->DepthMask(GL_TRUE);
