@@ -71,8 +71,8 @@ void PngEncoder::Impl::begin(const RgbImage& image, std::size_t idat_bound) {
   std::memcpy(o + 12, "IHDR", 4);
   put32(o + 16, static_cast<std::uint32_t>(image.width));
   put32(o + 20, static_cast<std::uint32_t>(image.height));
-  const unsigned char format[5] = {8, 2, 0, 0,
-                                   0};  // 8 bits, RGB, deflate, filter set 0, no interlace
+  // 8 bits a channel, RGB, deflate, filter method 0, no interlace.
+  const unsigned char format[5] = {8, 2, 0, 0, 0};
   std::memcpy(o + 24, format, 5);
   put32(o + 29, static_cast<std::uint32_t>(crc32(0, o + 12, 17)));
   std::memcpy(o + 37, "IDAT", 4);
@@ -80,7 +80,7 @@ void PngEncoder::Impl::begin(const RgbImage& image, std::size_t idat_bound) {
   o[kIdatStart + 1] = kZlibHeader[1];
 }
 
-// Level 1 and up: raw deflate of the rows, fed one by one.
+// kDefault: the rows fed one by one to the raw deflate state (zlib level 1).
 std::size_t PngEncoder::Impl::deflateRows(const RgbImage& image) {
   if (deflateReset(&zs) != Z_OK) throw Error("PNG: zlib cannot reset its state");
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
@@ -107,7 +107,7 @@ std::size_t PngEncoder::Impl::deflateRows(const RgbImage& image) {
   return static_cast<std::size_t>(zs.next_out - start);
 }
 
-// Level 0: stored blocks of at most 65535 bytes (RFC 1951 3.2.4), copied straight from the rows.
+// kStored: blocks of at most 65535 bytes (RFC 1951 3.2.4), copied straight from the rows.
 std::size_t PngEncoder::Impl::storeRows(const RgbImage& image) {
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
   const std::size_t total = (row_bytes + 1) * static_cast<std::size_t>(image.height);
