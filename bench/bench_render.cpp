@@ -1,10 +1,13 @@
 // Frames per second of parksim's off-screen rendering on the study's head-in lot, with the robot
 // driving along an arc and its executed path growing:
 //   BM_Render/<view>/W/H      render and read back one frame (no file)
-//   BM_Png/<deflate>/W/H      encode one rendered frame: stb's deflate vs. routed to zlib
+//   BM_Png/<png>/W/H          encode one rendered frame: stb's deflate (png 3) against the
+//                             frames' PngCompression: default (0, zlib level 1), fast (1), stored
+//                             (2)
 //   BM_Record/<view>/W/H/...  FrameRecorder end to end: render, encode on workers, write files
 //                             (enc: encoder threads; fresh: new files, or rewriting the last
-//                             iteration's, which this machine's ext4 does ten times faster)
+//                             iteration's, which this machine's ext4 does ten times faster;
+//                             png: PngCompression, as in BM_Png)
 // Run: build/bench/bench_render --benchmark_counters_tabular=true
 // fps is frames per wall-clock second (llvmpipe and the encoder use threads); CPU is the whole
 // process's CPU time, all threads, per iteration: on a busy machine fps drops, CPU time barely.
@@ -80,8 +83,14 @@ void BM_Render(benchmark::State& state) {
                  (def.msaa_samples > 1 ? " msaa" : ""));
 }
 
+constexpr int kStbPng = 3;  // BM_Png's stb_image_write with its own deflate, beside PngCompression
+
+const char* pngLabel(int png) {
+  return png == kStbPng ? "stb-default" : toString(static_cast<PngCompression>(png));
+}
+
 void BM_Png(benchmark::State& state) {
-  const auto deflate = static_cast<PngDeflate>(state.range(0));
+  const int png = static_cast<int>(state.range(0));
   RenderDef def;
   def.width_px = static_cast<int>(state.range(1));
   def.height_px = static_cast<int>(state.range(2));
@@ -90,15 +99,22 @@ void BM_Png(benchmark::State& state) {
   RgbImage image;
   renderer.render(episode.next(100), CameraDef{}, image);
   std::size_t bytes = 0;
+  PngEncoder encoder(png == kStbPng ? PngCompression::kDefault : static_cast<PngCompression>(png));
   for (auto _ : state) {
-    const std::vector<unsigned char> png = encodePng(image, deflate);
-    bytes = png.size();
-    benchmark::DoNotOptimize(png.data());
+    if (png == kStbPng) {
+      const std::vector<unsigned char> out = encodePng(image, PngDeflate::kStbDefault);
+      bytes = out.size();
+      benchmark::DoNotOptimize(out.data());
+    } else {
+      const std::vector<unsigned char>& out = encoder.encode(image);
+      bytes = out.size();
+      benchmark::DoNotOptimize(out.data());
+    }
   }
   state.counters["fps"] =
       benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["kB"] = static_cast<double>(bytes) / 1000.0;
-  state.SetLabel(deflate == PngDeflate::kZlibFast ? "zlib-level1-filter0" : "stb-default");
+  state.SetLabel(pngLabel(png));
 }
 
 void BM_Record(benchmark::State& state) {
@@ -111,6 +127,7 @@ void BM_Record(benchmark::State& state) {
   def.msaa_samples = static_cast<int>(state.range(3));
   def.encode_threads = static_cast<int>(state.range(4));
   const bool fresh = state.range(5) != 0;
+  def.png_compression = static_cast<PngCompression>(state.range(6));
   def.fps = 30.0;
   def.out_dir = (std::filesystem::temp_directory_path() / "parksim_bench_render").string();
   Trajectory plan;
@@ -140,7 +157,7 @@ void BM_Record(benchmark::State& state) {
   state.counters["fps"] = benchmark::Counter(
       static_cast<double>(state.iterations()) * kFramesPerIteration, benchmark::Counter::kIsRate);
   state.SetLabel(std::string(toString(view)) + (def.msaa_samples > 1 ? " msaa" : "") +
-                 (fresh ? " new-files" : " rewrite"));
+                 (fresh ? " new-files " : " rewrite ") + toString(def.png_compression));
   std::filesystem::remove_all(def.out_dir);
 }
 
@@ -171,26 +188,27 @@ BENCHMARK(BM_Render)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Png)
-    ->ArgNames({"deflate", "w", "h"})
-    ->Args({static_cast<int>(PngDeflate::kStbDefault), 640, 480})
-    ->Args({static_cast<int>(PngDeflate::kZlibFast), 640, 480})
-    ->Args({static_cast<int>(PngDeflate::kStbDefault), 1280, 720})
-    ->Args({static_cast<int>(PngDeflate::kZlibFast), 1280, 720})
+    ->ArgNames({"png", "w", "h"})
+    ->ArgsProduct({{kStbPng, 0, 1, 2}, {640}, {480}})
+    ->ArgsProduct({{kStbPng, 0, 1, 2}, {1280}, {720}})
     ->MeasureProcessCPUTime()
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FirstFrame)->MeasureProcessCPUTime()->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Record)
-    ->ArgNames({"view", "w", "h", "msaa", "enc", "fresh"})
-    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1, 1, 1})
-    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1, 2, 1})
-    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1, 1, 0})
-    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1, 2, 0})
-    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 4, 1, 1})
-    ->Args({static_cast<int>(FrameView::kTop), 1280, 720, 1, 1, 1})
-    ->Args({static_cast<int>(FrameView::kTop), 1280, 720, 4, 1, 1})
-    ->Args({static_cast<int>(FrameView::k3d), 640, 480, 1, 1, 1})
-    ->Args({static_cast<int>(FrameView::kBoth), 640, 480, 1, 1, 1})
+    ->ArgNames({"view", "w", "h", "msaa", "enc", "fresh", "png"})
+    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1, 1, 1, 0})
+    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1, 1, 1, 1})
+    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1, 1, 1, 2})
+    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1, 2, 1, 0})
+    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1, 1, 0, 0})
+    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 1, 2, 0, 0})
+    ->Args({static_cast<int>(FrameView::kTop), 640, 480, 4, 1, 1, 0})
+    ->Args({static_cast<int>(FrameView::kTop), 1280, 720, 1, 1, 1, 0})
+    ->Args({static_cast<int>(FrameView::kTop), 1280, 720, 4, 1, 1, 0})
+    ->Args({static_cast<int>(FrameView::k3d), 640, 480, 1, 1, 1, 0})
+    ->Args({static_cast<int>(FrameView::kBoth), 640, 480, 1, 1, 1, 0})
+    ->Args({static_cast<int>(FrameView::kBoth), 640, 480, 1, 1, 1, 1})
     ->MeasureProcessCPUTime()
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);

@@ -1,5 +1,8 @@
 #include "parksim/renders/EglContext.h"
 
+// No prototypes: every EGL function is called through the library loaded at run time (EglApi),
+// so a direct eglFoo() call does not compile.
+#define EGL_EGL_PROTOTYPES 0
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
@@ -11,10 +14,36 @@
 
 #include "parksim/core/Error.h"
 #include "parksim/renders/GlFunctions.h"
+#include "parksim/renders/SharedLibrary.h"
 
 namespace parksim::detail {
 
 namespace {
+
+// X(Name, NAME): eglName, typed by <EGL/egl.h>'s PFNEGLNAMEPROC. Exactly the functions used here.
+#define PARKSIM_EGL_FUNCTIONS(X)            \
+  X(BindAPI, BINDAPI)                       \
+  X(CreateContext, CREATECONTEXT)           \
+  X(DestroyContext, DESTROYCONTEXT)         \
+  X(GetCurrentContext, GETCURRENTCONTEXT)   \
+  X(GetError, GETERROR)                     \
+  X(GetPlatformDisplay, GETPLATFORMDISPLAY) \
+  X(GetProcAddress, GETPROCADDRESS)         \
+  X(Initialize, INITIALIZE)                 \
+  X(MakeCurrent, MAKECURRENT)               \
+  X(QueryAPI, QUERYAPI)                     \
+  X(QueryString, QUERYSTRING)
+
+// libEGL (glvnd's), loaded when the first EGL context is made: a process that never renders
+// does not map it, nor Mesa behind it.
+struct EglApi {
+  SharedLibrary library{PARKSIM_EGL_LIBRARY, "EGL",
+                        "install the Debian packages libegl1 and libegl-mesa0"};
+#define PARKSIM_EGL_MEMBER(name, NAME) \
+  PFNEGL##NAME##PROC name = library.function<PFNEGL##NAME##PROC>("egl" #name);
+  PARKSIM_EGL_FUNCTIONS(PARKSIM_EGL_MEMBER)
+#undef PARKSIM_EGL_MEMBER
+};
 
 const char* eglErrorName(EGLint code) {
   switch (code) {
@@ -40,8 +69,8 @@ const char* eglErrorName(EGLint code) {
 }
 
 /// "EGL: WHAT (EGL_BAD_MATCH, 0x3009)", with the calling thread's last EGL error.
-EnvironmentError eglFailure(const std::string& what) {
-  const EGLint code = eglGetError();
+EnvironmentError eglFailure(const EglApi& egl, const std::string& what) {
+  const EGLint code = egl.GetError();
   char hex[16];
   std::snprintf(hex, sizeof hex, "0x%04x", static_cast<unsigned>(code));
   return EnvironmentError("EGL: " + what + " (" + eglErrorName(code) + ", " + hex + ")");
@@ -66,14 +95,14 @@ struct Display {
 
 // Mesa's software device when EGL lists it: llvmpipe, whatever GPUs the machine has, so images
 // do not depend on the machine. Else Mesa's surfaceless platform (which may pick a GPU).
-Display openDisplay() {
-  const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+Display openDisplay(const EglApi& egl) {
+  const char* client = egl.QueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   if (hasExtension(client, "EGL_EXT_device_enumeration") &&
       hasExtension(client, "EGL_EXT_platform_device")) {
     const auto query_devices =
-        reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+        reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(egl.GetProcAddress("eglQueryDevicesEXT"));
     const auto query_string = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
-        eglGetProcAddress("eglQueryDeviceStringEXT"));
+        egl.GetProcAddress("eglQueryDeviceStringEXT"));
     EGLint count = 0;
     if (query_devices != nullptr && query_string != nullptr && query_devices(0, nullptr, &count) &&
         count > 0) {
@@ -84,7 +113,7 @@ Display openDisplay() {
           if (!hasExtension(query_string(device, EGL_EXTENSIONS), "EGL_MESA_device_software")) {
             continue;
           }
-          const EGLDisplay d = eglGetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
+          const EGLDisplay d = egl.GetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
           if (d != EGL_NO_DISPLAY) return {d, "device: software"};
         }
       }
@@ -92,7 +121,7 @@ Display openDisplay() {
   }
   if (hasExtension(client, "EGL_MESA_platform_surfaceless")) {
     const EGLDisplay d =
-        eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        egl.GetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (d != EGL_NO_DISPLAY) return {d, "surfaceless"};
   }
   throw EnvironmentError(
@@ -104,7 +133,7 @@ Display openDisplay() {
 class EglContext final : public OffscreenContext {
  public:
   explicit EglContext(const ContextDef& def) {
-    const Display d = openDisplay();
+    const Display d = openDisplay(egl_);
     display_ = d.display;
     // A display is shared by the whole process (eglGetPlatformDisplay returns the same handle
     // for the same device), and eglTerminate would end every context on it, other renderers'
@@ -112,18 +141,20 @@ class EglContext final : public OffscreenContext {
     // initialized display does nothing.
     EGLint major = 0;
     EGLint minor = 0;
-    if (!eglInitialize(display_, &major, &minor)) throw eglFailure("cannot initialize the display");
+    if (!egl_.Initialize(display_, &major, &minor)) {
+      throw eglFailure(egl_, "cannot initialize the display");
+    }
     if (major < 1 || (major == 1 && minor < 5)) {
       throw EnvironmentError("EGL: version " + std::to_string(major) + "." + std::to_string(minor) +
                              ", 1.5 is needed");
     }
-    const char* extensions = eglQueryString(display_, EGL_EXTENSIONS);
+    const char* extensions = egl_.QueryString(display_, EGL_EXTENSIONS);
     for (const char* needed : {"EGL_KHR_surfaceless_context", "EGL_KHR_no_config_context"}) {
       if (!hasExtension(extensions, needed)) {
         throw EnvironmentError(std::string("EGL: the display lacks ") + needed);
       }
     }
-    if (!eglBindAPI(EGL_OPENGL_API)) throw eglFailure("no desktop OpenGL");
+    if (!egl_.BindAPI(EGL_OPENGL_API)) throw eglFailure(egl_, "no desktop OpenGL");
     const std::array<EGLint, 7> attribs = {EGL_CONTEXT_MAJOR_VERSION,
                                            def.gl_major,
                                            EGL_CONTEXT_MINOR_VERSION,
@@ -131,14 +162,14 @@ class EglContext final : public OffscreenContext {
                                            EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                            EGL_NONE};
-    ctx_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs.data());
+    ctx_ = egl_.CreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs.data());
     if (ctx_ == EGL_NO_CONTEXT) {
-      throw eglFailure("cannot create an OpenGL " + std::to_string(def.gl_major) + "." +
-                       std::to_string(def.gl_minor) + " core context");
+      throw eglFailure(egl_, "cannot create an OpenGL " + std::to_string(def.gl_major) + "." +
+                                 std::to_string(def.gl_minor) + " core context");
     }
     try {
       makeCurrent();
-      setGlFunctions(loadGlFunctions(&eglGetProcAddress, "EGL"));
+      setGlFunctions(loadGlFunctions(egl_.GetProcAddress, "EGL"));
       description_ = std::string("EGL (") + d.kind + "): " + glVersionAndRenderer(gl());
     } catch (...) {
       release();
@@ -153,18 +184,18 @@ class EglContext final : public OffscreenContext {
 
   void makeCurrent() override {
     // The bound API is per thread, and the current context EGL reports is the one of that API.
-    if (!eglBindAPI(EGL_OPENGL_API)) throw eglFailure("no desktop OpenGL");
-    if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx_)) {
-      throw eglFailure("cannot make the context current");
+    if (!egl_.BindAPI(EGL_OPENGL_API)) throw eglFailure(egl_, "no desktop OpenGL");
+    if (!egl_.MakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx_)) {
+      throw eglFailure(egl_, "cannot make the context current");
     }
   }
 
   bool isCurrent() const override {
-    return eglQueryAPI() == EGL_OPENGL_API && eglGetCurrentContext() == ctx_;
+    return egl_.QueryAPI() == EGL_OPENGL_API && egl_.GetCurrentContext() == ctx_;
   }
 
   void releaseCurrent() override {
-    if (isCurrent()) eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (isCurrent()) egl_.MakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   }
 
   std::string description() const override { return description_; }
@@ -174,9 +205,10 @@ class EglContext final : public OffscreenContext {
  private:
   void release() {
     releaseCurrent();
-    eglDestroyContext(display_, ctx_);
+    egl_.DestroyContext(display_, ctx_);
   }
 
+  EglApi egl_;  // first: loaded before anything else is done
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext ctx_ = EGL_NO_CONTEXT;
   std::string description_;

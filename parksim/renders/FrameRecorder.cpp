@@ -124,9 +124,9 @@ void removeFramesFrom(const std::string& dir, int first) {
 // recording allocates nothing per frame and never runs more than queue_depth frames ahead.
 class EncodeQueue {
  public:
-  EncodeQueue(int threads, int depth, int width, int height) {
+  EncodeQueue(int threads, int depth, int width, int height, PngCompression png) {
     for (int i = 0; i < depth; ++i) free_.push_back(std::make_unique<RgbImage>(width, height));
-    for (int i = 0; i < threads; ++i) workers_.emplace_back([this] { work(); });
+    for (int i = 0; i < threads; ++i) workers_.emplace_back([this, png] { work(png); });
   }
 
   ~EncodeQueue() { stop(); }
@@ -184,7 +184,9 @@ class EncodeQueue {
     std::unique_ptr<RgbImage> image;
   };
 
-  void work() {
+  void work(PngCompression png) {
+    // One encoder per thread: its zlib state and buffers serve every frame.
+    PngEncoder encoder(png);
     while (true) {
       Job job;
       {
@@ -197,7 +199,7 @@ class EncodeQueue {
       }
       std::string failure;
       try {
-        writeFrame(job.path, encodePng(*job.image));
+        writeFrame(job.path, encoder.encode(*job.image));
       } catch (const std::exception& e) {
         failure = e.what();
       }
@@ -366,8 +368,9 @@ FrameRecorder::FrameRecorder(const Scenario& scenario, const FrameDef& def)
   render_def.context = def.context;
   impl_->renderer = std::make_unique<Renderer>(render_def);
   const int image_width = def.view == FrameView::kBoth ? 2 * def.width_px : def.width_px;
-  impl_->queue = std::make_unique<EncodeQueue>(
-      def.encode_threads, def.queue_depth + def.encode_threads, image_width, def.height_px);
+  impl_->queue =
+      std::make_unique<EncodeQueue>(def.encode_threads, def.queue_depth + def.encode_threads,
+                                    image_width, def.height_px, def.png_compression);
 }
 
 FrameRecorder::~FrameRecorder() {

@@ -24,6 +24,7 @@
 #include "parksim/core/Trajectory.h"
 #include "parksim/renders/Camera.h"
 #include "parksim/renders/OffscreenContext.h"
+#include "parksim/renders/PngEncoder.h"
 #include "parksim/renders/SceneStyle.h"
 
 namespace parksim {
@@ -74,6 +75,12 @@ struct FrameDef {
   /// from contention with llvmpipe's threads).
   int encode_threads = 1;
   int queue_depth = 3;  ///< frames rendered ahead of the encoders (>= 1)
+  /// PNG compression of the frames. kDefault (zlib level 1, chosen by measurement) is small
+  /// (~25 kB a 640x480 frame); kFast trades size for speed (a run-length deflate: files about
+  /// twice as large, encoded several times faster); kStored writes the pixels uncompressed
+  /// (0.92 MB a frame: on a disk, slower to write than to compress). The bytes depend on this
+  /// setting, never on the threads. Numbers: docs/rendering.md.
+  PngCompression png_compression = PngCompression::kDefault;
   /// Most frames one recording may write (docs/limits.md): 50,000 frames are ~28 min of
   /// simulated time at 30 fps and ~1.5 min of rendering at 640x480.
   int max_frames = 50'000;

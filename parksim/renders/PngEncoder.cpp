@@ -1,73 +1,244 @@
-// This file holds its own copy of stb_image_write with the deflate routed to zlib; the copy in
-// PngEncoderStb.cpp keeps stb's. Both are static, so they coexist with each other and libstb.
 #include "parksim/renders/PngEncoder.h"
 
 #include <zlib.h>
 
-#include <cstdlib>
+#include <algorithm>
 #include <cstring>
 #include <string_view>
 
+#include <stb/stb_image.h>  // implementation linked from libstb
+
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
-
-namespace {
-
-// stb frees the result with STBIW_FREE (free), so it is allocated with malloc. `quality` is
-// stb's compression level, set to 1 below.
-unsigned char* zlibCompress(unsigned char* data, int data_len, int* out_len, int quality) {
-  uLongf size = compressBound(static_cast<uLong>(data_len));
-  auto* out = static_cast<unsigned char*>(std::malloc(size));
-  if (out == nullptr) return nullptr;
-  if (compress2(out, &size, data, static_cast<uLong>(data_len), quality) != Z_OK) {
-    std::free(out);
-    return nullptr;
-  }
-  *out_len = static_cast<int>(size);
-  return out;
-}
-
-}  // namespace
-
-#define STB_IMAGE_WRITE_STATIC
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#define STBI_WRITE_NO_STDIO
-#define STBIW_ZLIB_COMPRESS zlibCompress
-#include <stb/stb_image_write.h>
-
-#include <stb/stb_image.h>  // implementation linked from libstb
+#include "parksim/renders/Adler32.h"
+#include "parksim/renders/RunLengthDeflate.h"
 
 namespace parksim {
 
 namespace {
 
-// stb reads its settings from file-scope variables; this copy's are set once, before any
-// encoding, and never changed again, so concurrent encoders only read them.
-void configureStb() {
-  static const bool configured = [] {
-    stbi_write_png_compression_level = 1;
-    stbi_write_force_png_filter = 0;
-    return true;
-  }();
-  (void)configured;
+void put32(unsigned char* p, std::uint32_t v) {
+  p[0] = static_cast<unsigned char>(v >> 24);
+  p[1] = static_cast<unsigned char>(v >> 16);
+  p[2] = static_cast<unsigned char>(v >> 8);
+  p[3] = static_cast<unsigned char>(v);
 }
 
-}  // namespace
-
-std::vector<unsigned char> encodePng(const RgbImage& image, PngDeflate deflate) {
-  if (deflate == PngDeflate::kStbDefault) return detail::encodePngStbDefault(image);
+void checkImage(const RgbImage& image) {
   if (image.width <= 0 || image.height <= 0 ||
       image.pixels.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
     throw Error("PNG: image has no pixels or a wrong buffer size");
   }
-  configureStb();
-  int len = 0;
-  unsigned char* png = stbi_write_png_to_mem(image.pixels.data(), image.width * 3, image.width,
-                                             image.height, 3, &len);
-  if (png == nullptr) throw Error("PNG: encoding failed (out of memory?)");
-  std::vector<unsigned char> bytes(png, png + len);
-  STBIW_FREE(png);
-  return bytes;
+}
+
+constexpr unsigned char kSignature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
+constexpr std::size_t kIdatStart = 8 + 12 + 13 + 8;  // signature, IHDR chunk, IDAT length and tag
+
+constexpr int kZlibLevel = 1;  // PngCompression::kDefault
+// The zlib stream header (RFC 1950) zlib writes at level 1: deflate with a 32 kB window, level
+// field 0 ("fastest"; advisory, readers ignore it), check bits.
+constexpr unsigned char kZlibHeader[2] = {0x78, 0x01};
+
+}  // namespace
+
+// The PNG is built in place in `out`: signature, IHDR, one IDAT chunk holding the zlib stream
+// (header, raw deflate, Adler-32), IEND. The filtered image (each row a 0 byte, filter "none",
+// then its pixels) is never assembled: rows go to deflate, or into stored blocks, as they are.
+struct PngEncoder::Impl {
+  PngCompression compression = PngCompression::kDefault;
+  z_stream zs{};
+  bool deflating = false;  // zs initialized (kDefault)
+  std::vector<unsigned char> out;
+  std::vector<unsigned char> filtered;  // kFast: the rows, each after its filter byte
+  std::uint32_t adler = 1;              // of the filtered rows, taken while they are in the cache
+
+  void begin(const RgbImage& image, std::size_t idat_bound);
+  std::size_t deflateRows(const RgbImage& image);
+  std::size_t storeRows(const RgbImage& image);
+  std::size_t runLengthRows(const RgbImage& image);
+  void checksumRow(const unsigned char* row, std::size_t row_bytes) {
+    static constexpr unsigned char kFilterNone = 0;
+    adler = adler32(adler32(adler, &kFilterNone, 1), row, row_bytes);
+  }
+  void finish(std::size_t deflated);
+};
+
+void PngEncoder::Impl::begin(const RgbImage& image, std::size_t idat_bound) {
+  out.resize(kIdatStart + idat_bound + 4 + 12);
+  unsigned char* o = out.data();
+  std::memcpy(o, kSignature, 8);
+  put32(o + 8, 13);
+  std::memcpy(o + 12, "IHDR", 4);
+  put32(o + 16, static_cast<std::uint32_t>(image.width));
+  put32(o + 20, static_cast<std::uint32_t>(image.height));
+  // 8 bits a channel, RGB, deflate, filter method 0, no interlace.
+  const unsigned char format[5] = {8, 2, 0, 0, 0};
+  std::memcpy(o + 24, format, 5);
+  put32(o + 29, static_cast<std::uint32_t>(crc32(0, o + 12, 17)));
+  std::memcpy(o + 37, "IDAT", 4);
+  o[kIdatStart] = kZlibHeader[0];
+  o[kIdatStart + 1] = kZlibHeader[1];
+}
+
+// kDefault: the rows fed one by one to the raw deflate state (zlib level 1).
+std::size_t PngEncoder::Impl::deflateRows(const RgbImage& image) {
+  if (deflateReset(&zs) != Z_OK) throw Error("PNG: zlib cannot reset its state");
+  const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
+  unsigned char* start = out.data() + kIdatStart + 2;
+  zs.next_out = start;
+  zs.avail_out = static_cast<uInt>(out.size() - kIdatStart - 2 - 4 - 12);
+  unsigned char filter = 0;
+  auto feed = [this](unsigned char* data, std::size_t n) {
+    zs.next_in = data;
+    zs.avail_in = static_cast<uInt>(n);
+    // The output has room for the bound of the whole image: all input is taken.
+    if (deflate(&zs, Z_NO_FLUSH) != Z_OK || zs.avail_in != 0) {
+      throw Error("PNG: zlib failed to compress");
+    }
+  };
+  for (int y = 0; y < image.height; ++y) {
+    // zlib does not write through next_in; its interface is not const.
+    unsigned char* row = const_cast<unsigned char*>(image.pixels.data() + y * row_bytes);
+    feed(&filter, 1);
+    feed(row, row_bytes);
+    checksumRow(row, row_bytes);
+  }
+  if (deflate(&zs, Z_FINISH) != Z_STREAM_END) throw Error("PNG: zlib failed to compress");
+  return static_cast<std::size_t>(zs.next_out - start);
+}
+
+// kStored: blocks of at most 65535 bytes (RFC 1951 3.2.4), copied straight from the rows.
+std::size_t PngEncoder::Impl::storeRows(const RgbImage& image) {
+  const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
+  const std::size_t total = (row_bytes + 1) * static_cast<std::size_t>(image.height);
+  unsigned char* o = out.data() + kIdatStart + 2;
+  unsigned char* const start = o;
+  std::size_t row = 0;
+  std::size_t in_row = 0;  // position in the current row, its filter byte counted
+  for (std::size_t done = 0; done < total;) {
+    const std::size_t block = std::min<std::size_t>(65535, total - done);
+    *o++ = done + block == total ? 1 : 0;  // BFINAL on the last, BTYPE 00
+    o[0] = static_cast<unsigned char>(block);
+    o[1] = static_cast<unsigned char>(block >> 8);
+    o[2] = static_cast<unsigned char>(~block);
+    o[3] = static_cast<unsigned char>(~block >> 8);
+    o += 4;
+    for (std::size_t left = block; left > 0;) {
+      if (in_row == 0) {
+        *o++ = 0;  // filter: none
+        ++in_row;
+        --left;
+        continue;
+      }
+      const std::size_t n = std::min(left, row_bytes + 1 - in_row);
+      std::memcpy(o, image.pixels.data() + row * row_bytes + (in_row - 1), n);
+      o += n;
+      left -= n;
+      in_row += n;
+      if (in_row == row_bytes + 1) {
+        checksumRow(image.pixels.data() + row * row_bytes, row_bytes);
+        in_row = 0;
+        ++row;
+      }
+    }
+    done += block;
+  }
+  return static_cast<std::size_t>(o - start);
+}
+
+// kFast: the filtered image assembled (the encoder looks back across rows), then one block.
+std::size_t PngEncoder::Impl::runLengthRows(const RgbImage& image) {
+  const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
+  filtered.resize((row_bytes + 1) * static_cast<std::size_t>(image.height));
+  for (int y = 0; y < image.height; ++y) {
+    const unsigned char* row = image.pixels.data() + y * row_bytes;
+    unsigned char* dst = filtered.data() + y * (row_bytes + 1);
+    dst[0] = 0;
+    std::memcpy(dst + 1, row, row_bytes);
+    checksumRow(row, row_bytes);
+  }
+  const std::size_t start = kIdatStart + 2;
+  out.resize(start);
+  runLengthDeflate(filtered.data(), filtered.size(), 3, row_bytes + 1, out);
+  const std::size_t deflated = out.size() - start;
+  out.resize(out.size() + 4 + 4 + 12);  // Adler-32, CRC, IEND
+  return deflated;
+}
+
+// Adler-32 after the deflate data, then the IDAT length and CRC, then IEND.
+void PngEncoder::Impl::finish(std::size_t deflated) {
+  const std::size_t zlen = 2 + deflated + 4;
+  unsigned char* o = out.data();
+  put32(o + kIdatStart + 2 + deflated, adler);
+  put32(o + kIdatStart - 8, static_cast<std::uint32_t>(zlen));
+  const std::size_t crc_at = kIdatStart + zlen;
+  put32(o + crc_at, static_cast<std::uint32_t>(crc32(0, o + kIdatStart - 4, zlen + 4)));
+  static constexpr unsigned char kEnd[12] = {0,   0,   0,    0,    'I',  'E',
+                                             'N', 'D', 0xAE, 0x42, 0x60, 0x82};
+  std::memcpy(o + crc_at + 4, kEnd, 12);
+  out.resize(crc_at + 4 + 12);
+}
+
+const char* toString(PngCompression compression) {
+  switch (compression) {
+    case PngCompression::kDefault: return "default";
+    case PngCompression::kFast: return "fast";
+    case PngCompression::kStored: return "stored";
+  }
+  return "?";
+}
+
+PngCompression pngCompressionFromString(const std::string& name) {
+  for (PngCompression c :
+       {PngCompression::kDefault, PngCompression::kFast, PngCompression::kStored}) {
+    if (name == toString(c)) return c;
+  }
+  throw Error("PNG compression must be default, fast or stored, got '" + name + "'");
+}
+
+PngEncoder::PngEncoder(PngCompression compression) : impl_(std::make_unique<Impl>()) {
+  impl_->compression = compression;
+  if (compression == PngCompression::kDefault) {
+    // As compress2 at level 1: a 32 kB window, memory level 8, the default strategy; raw (the
+    // zlib header and checksum are written here, the checksum faster).
+    if (deflateInit2(&impl_->zs, kZlibLevel, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK) {
+      throw Error("PNG: zlib cannot start (out of memory?)");
+    }
+    impl_->deflating = true;
+  }
+}
+
+PngEncoder::~PngEncoder() {
+  if (impl_->deflating) deflateEnd(&impl_->zs);
+}
+
+PngCompression PngEncoder::compression() const { return impl_->compression; }
+
+const std::vector<unsigned char>& PngEncoder::encode(const RgbImage& image) {
+  checkImage(image);
+  Impl& m = *impl_;
+  const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
+  const std::size_t filtered = (row_bytes + 1) * static_cast<std::size_t>(image.height);
+  const std::size_t bound = m.deflating ? deflateBound(&m.zs, static_cast<uLong>(filtered))
+                                        : filtered + 5 * (filtered / 65535 + 1);
+  m.begin(image, 2 + bound + 4);
+  m.adler = 1;
+  switch (m.compression) {
+    case PngCompression::kDefault: m.finish(m.deflateRows(image)); break;
+    case PngCompression::kFast: m.finish(m.runLengthRows(image)); break;
+    case PngCompression::kStored: m.finish(m.storeRows(image)); break;
+  }
+  return m.out;
+}
+
+std::vector<unsigned char> encodePng(const RgbImage& image, PngCompression compression) {
+  PngEncoder encoder(compression);
+  return encoder.encode(image);
+}
+
+std::vector<unsigned char> encodePng(const RgbImage& image, PngDeflate deflate) {
+  if (deflate == PngDeflate::kStbDefault) return detail::encodePngStbDefault(image);
+  return encodePng(image, PngCompression::kDefault);
 }
 
 void writePng(const std::string& path, const RgbImage& image, PngDeflate deflate) {

@@ -1,9 +1,12 @@
 #pragma once
-// PNG files through stb_image_write. stb's own deflate is slow (~11 ms for a 640x480 frame), so
-// by default its compression is routed to zlib's compress2 at level 1 with PNG filter 0 (none),
-// about ten times faster for a few percent larger files. Both are kept so the benchmark can put
-// them side by side. Encoding is thread-safe.
+// PNG files of 8-bit RGB images. Frames (and by default every encodePng) are written with PNG
+// filter 0 (none) and zlib level 1, ten times faster than stb_image_write's own deflate for
+// files 15 % larger; for speed over size, a run-length deflate or no compression at all
+// (PngCompression, docs/rendering.md). stb's deflate (level 8, best filter per row: small and
+// slow) is kept for the figures and so the benchmark can put them side by side. Encoding is
+// thread-safe; a PngEncoder keeps its zlib state and buffers for the next image.
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -11,14 +14,56 @@
 
 namespace parksim {
 
+/// How PNG frames are compressed (FrameDef::png_compression). All use PNG filter 0 (none).
+enum class PngCompression {
+  /// zlib level 1: fast and small (~25 kB a 640x480 frame), chosen by measurement.
+  kDefault,
+  /// Speed over size: repeats of the pixel before and the row above only, fixed Huffman codes
+  /// (RunLengthDeflate.h). Several times faster to encode than kDefault; files about twice
+  /// the size.
+  kFast,
+  /// No compression: 3 bytes a pixel (0.92 MB a 640x480 frame). Encoding costs only a copy,
+  /// but on a disk, writing such files costs more than compressing them (docs/rendering.md).
+  kStored,
+};
+
+/// "default", "fast", "stored".
+const char* toString(PngCompression compression);
+/// Parses "default", "fast" or "stored"; throws Error naming them otherwise.
+PngCompression pngCompressionFromString(const std::string& name);
+
 enum class PngDeflate {
-  kZlibFast,    ///< zlib compress2 level 1, filter 0: fast; the default
+  kZlibFast,    ///< PngCompression::kDefault: zlib level 1, filter 0
   kStbDefault,  ///< stb's built-in deflate, level 8, best filter per row: small and slow
+};
+
+/// Encodes PNGs (8-bit RGB, filter 0), reusing its zlib state and buffers from one image to the
+/// next: for a thread that writes many frames. The bytes depend only on the image and the
+/// compression (kDefault gives exactly the bytes stb_image_write gives with its deflate routed
+/// to zlib's compress2 at level 1 and filter 0, as parksim wrote frames before).
+class PngEncoder {
+ public:
+  explicit PngEncoder(PngCompression compression = PngCompression::kDefault);
+  ~PngEncoder();
+  PngEncoder(const PngEncoder&) = delete;
+  PngEncoder& operator=(const PngEncoder&) = delete;
+
+  PngCompression compression() const;
+
+  /// The PNG file bytes of `image`, valid until the next call. Throws Error when the image has
+  /// no pixels or a wrong buffer size.
+  const std::vector<unsigned char>& encode(const RgbImage& image);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
 };
 
 /// PNG file bytes of `image` (8-bit RGB). Throws Error when encoding fails.
 std::vector<unsigned char> encodePng(const RgbImage& image,
                                      PngDeflate deflate = PngDeflate::kZlibFast);
+/// PNG file bytes of `image` (8-bit RGB, filter 0) compressed as `compression` says.
+std::vector<unsigned char> encodePng(const RgbImage& image, PngCompression compression);
 
 /// Writes `image` to `path` as PNG, atomically (the file appears complete or not at all).
 /// Throws Error naming the path.

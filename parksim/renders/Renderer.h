@@ -1,7 +1,8 @@
 #pragma once
 // Draws a Scene through a camera into an RGB image, off screen. One renderer owns one GL
 // context and its framebuffers, vertex buffers and font textures, and reuses them for every
-// image it draws: per frame it only uploads vertices, draws and reads back.
+// image it draws: per frame it tessellates the scene into a DrawList without GL
+// (SceneTessellator.h), uploads the vertices, draws and reads back.
 //
 // Anti-aliasing is multisampling (an MSAA framebuffer resolved by a blit). With multisampling
 // off, lines and text are still anti-aliased (coverage fades over their outermost pixel) and a
@@ -23,6 +24,7 @@
 #include "parksim/renders/Image.h"
 #include "parksim/renders/OffscreenContext.h"
 #include "parksim/renders/Scene.h"
+#include "parksim/renders/SceneTessellator.h"
 
 namespace parksim {
 
@@ -69,6 +71,10 @@ class Renderer {
 
   /// The camera render() uses for `scene` at the current size.
   Camera camera(const Scene& scene, const CameraDef& camera_def) const;
+
+  /// The tessellation render() uses at the current size: the samples actually used, and
+  /// RenderDef's light. With camera(), SceneTessellator gives the DrawList this renderer draws.
+  TessellationDef tessellationDef() const;
 
   /// Draws `scene` and reads it back into `out`, resized to width() x height().
   void render(const Scene& scene, const CameraDef& camera_def, RgbImage& out);

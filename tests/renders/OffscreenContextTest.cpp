@@ -1,8 +1,11 @@
 #include "parksim/renders/OffscreenContext.h"
 
 #include <gtest/gtest.h>
+#include <link.h>
 
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <optional>
 #include <set>
 #include <string>
@@ -11,10 +14,12 @@
 #include "RenderTestUtil.h"
 #include "parksim/core/Error.h"
 #include "parksim/renders/Figures.h"
+#include "parksim/renders/FontLookup.h"
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/renders/GlFunctions.h"
 #include "parksim/renders/Renderer.h"
 #include "parksim/renders/SceneBuilder.h"
+#include "parksim/renders/SceneTessellator.h"
 
 namespace parksim {
 namespace {
@@ -225,6 +230,73 @@ TEST(OffscreenContextTest, CallsReachTheirOwnContextAcrossBackends) {
   EXPECT_FALSE(osmesa->isCurrent());
   const GLuint in_egl = nextBufferName(egl->gl());
   EXPECT_EQ(in_egl, in_osmesa + 10);
+}
+
+// Whether the process has mapped a shared object whose path contains `fragment`.
+bool mapped(const char* fragment) {
+  struct Search {
+    const char* fragment;
+    bool found;
+  } search{fragment, false};
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, std::size_t, void* data) {
+        auto* s = static_cast<Search*>(data);
+        if (info->dlpi_name != nullptr && std::strstr(info->dlpi_name, s->fragment) != nullptr) {
+          s->found = true;
+        }
+        return 0;
+      },
+      &search);
+  return search.found;
+}
+
+// What BackendsLoadTheirLibrariesOnFirstUse checks, in a process of its own; returns the
+// first broken expectation, or empty.
+std::string firstUseProblem() {
+  if (mapped("libEGL.so") || mapped("libOSMesa") || mapped("libLLVM")) {
+    return "a GL library is mapped at start-up";
+  }
+  // Building and tessellating scenes needs no GL.
+  const Scenario lot = lotWithPrisms();
+  SceneTessellator tessellator;
+  FontCache fonts(readFontFile(findFontFile()));
+  DrawList list;
+  const Scene scene = lotFrame(lot);
+  tessellator.tessellate(scene, makeCamera({}, scene, 640, 480), {}, fonts, list);
+  if (list.triangleCount() == 0) return "nothing tessellated";
+  if (mapped("libEGL.so") || mapped("libOSMesa")) return "tessellating loaded a GL library";
+  ContextDef def;
+  std::unique_ptr<OffscreenContext> osmesa;
+  if (contextBackendBuilt(ContextBackend::kOsMesa)) {
+    // OSMesa first, EGL after it: OSMesa must still release the EGL context it finds current.
+    def.backend = ContextBackend::kOsMesa;
+    osmesa = createOffscreenContext(def);
+    if (!mapped("libOSMesa") || mapped("libEGL.so")) return "OSMesa loaded the wrong libraries";
+  }
+  def.backend = ContextBackend::kEgl;
+  const auto egl = createOffscreenContext(def);
+  if (!mapped("libEGL.so")) return "EGL did not load libEGL";
+  if (!osmesa) return mapped("libOSMesa") ? "EGL loaded libOSMesa" : "";
+  for (int i = 0; i < 10; ++i) nextBufferName(egl->gl());
+  osmesa->makeCurrent();
+  if (egl->isCurrent()) return "the EGL context stayed current under OSMesa";
+  const GLuint in_osmesa = nextBufferName(osmesa->gl());
+  egl->makeCurrent();
+  if (nextBufferName(egl->gl()) != in_osmesa + 10) return "calls reached the wrong context";
+  return "";
+}
+
+// The GL backends' libraries (libEGL; libOSMesa with LLVM) are loaded when a context of theirs
+// is first made, not at start-up: a death test runs this in a fresh process.
+TEST(OffscreenContextDeathTest, BackendsLoadTheirLibrariesOnFirstUse) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(
+      {
+        const std::string problem = firstUseProblem();
+        std::fprintf(stderr, "%s\n", problem.empty() ? "ok" : problem.c_str());
+        std::exit(problem.empty() ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "ok");
 }
 
 }  // namespace

@@ -1,0 +1,19 @@
+#pragma once
+// A deflate encoder (RFC 1951) for rendered images, an order of magnitude faster than zlib's
+// fastest level: it looks for two kinds of repeats only, the pixel before (flat areas) and the
+// row above (what continues down the image), and writes them and the remaining bytes with the
+// fixed Huffman codes, so there are no tables to build. Files are larger than zlib's (no
+// entropy coding of literals, no other matches), far smaller than stored pixels. Any inflater
+// reads them (tested against zlib's).
+
+#include <cstddef>
+#include <vector>
+
+namespace parksim {
+
+/// Appends to `out` one final fixed-Huffman deflate block of `data` (`n` bytes), matching each
+/// position against `pixel_bytes` and `row_bytes` before it (each at most 32768; 0: not used).
+void runLengthDeflate(const unsigned char* data, std::size_t n, std::size_t pixel_bytes,
+                      std::size_t row_bytes, std::vector<unsigned char>& out);
+
+}  // namespace parksim
