@@ -24,10 +24,13 @@ option(PARKSIM_UNITY "Compile each target's sources in batches (unity build; doc
 set(PARKSIM_UNITY_BATCH_SIZE 6 CACHE STRING
     "Sources per unity batch: larger builds faster cold, smaller rebuilds less after an edit")
 # Sources compiled on their own in a unity build (paths relative to the top folder), each with the
-# name it shares with another file of its target.
+# reason: mostly a name it shares with another file of its target.
 set(PARKSIM_UNITY_SKIP
   parksim/planner/ShortcutSmoother.cpp  # kCostEpsilonM, also in TreePlanner.cpp
   parksim/renders/PngEncoderStb.cpp     # stb_image_write's statics, also in PngEncoder.cpp
+  # Not a name: it includes ProvenanceGit.h, which a commit or a first edit rewrites; alone,
+  # only this file is compiled again then, not its batch.
+  parksim/core/Provenance.cpp
 )
 
 if(PARKSIM_SANITIZE)
