@@ -42,8 +42,8 @@ if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   scripts/build.sh build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPARKSIM_SANITIZE=ON \
     -DPARKSIM_BUILD_BENCH=OFF -DPARKSIM_PYTHON=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
     --target parksim_tests
-  # Leaks are checked; tests/lsan.supp names the third-party allocations (Mesa's drivers,
-  # fontconfig) that live until exit by design.
+  # Leaks are checked; tests/lsan.supp names the third-party allocations that live until exit
+  # by design (Mesa's OSMesa).
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
   LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0" \
   UBSAN_OPTIONS=print_stacktrace=1 \
