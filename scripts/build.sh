@@ -1,21 +1,45 @@
 #!/usr/bin/env bash
-# Configures and builds parksim. Usage: scripts/build.sh [BUILD_DIR] [extra cmake arguments...]
+# Configures and builds parksim.
+#   scripts/build.sh [BUILD_DIR] [cmake arguments...] [--target TARGET...]
+# BUILD_DIR defaults to build. The cmake arguments apply when the directory is configured (and
+# again on a later call that passes them); --target builds only those targets and what they need,
+# otherwise everything the configuration enables. Examples:
+#   scripts/build.sh build                                      everything (Release)
+#   scripts/build.sh build --target parksim                     the command line and its libraries
+#   scripts/build.sh build-asan -DPARKSIM_SANITIZE=ON --target parksim_tests
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${1:-build}
 shift || true
+cmake_args=()
+targets=()
+while [ $# -gt 0 ]; do
+  if [ "$1" = --target ]; then
+    shift
+    targets=("$@")
+    break
+  fi
+  cmake_args+=("$1")
+  shift
+done
+
 generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)
-# A compiler cache where one is installed (not required): repeated builds of the same sources
-# on one machine, CI's clean clones included, then cost seconds instead of minutes.
+# A compiler cache where one is installed (not required; PARKSIM_CCACHE=0 turns it off): repeated
+# builds of the same sources on one machine then cost seconds instead of minutes. Its settings
+# go into the launcher, so that `cmake --build` without this script gets them too: paths relative
+# to the source tree (clones share entries) and the sloppiness precompiled headers need.
 launcher=()
-if command -v ccache >/dev/null; then
-  launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-  export CCACHE_BASEDIR="$PWD"
+if [ "${PARKSIM_CCACHE:-1}" != 0 ] && command -v ccache >/dev/null; then
+  ccache_launcher="/usr/bin/env;CCACHE_BASEDIR=$PWD;CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime;ccache"
+  launcher=("-DCMAKE_C_COMPILER_LAUNCHER=$ccache_launcher" "-DCMAKE_CXX_COMPILER_LAUNCHER=$ccache_launcher")
 fi
 if [ ! -f "$build_dir/CMakeCache.txt" ]; then
-  cmake -S . -B "$build_dir" "${generator[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Release "$@"
-else
-  cmake -S . -B "$build_dir" "$@" >/dev/null
+  cmake -S . -B "$build_dir" "${generator[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Release \
+    "${cmake_args[@]}"
+elif [ ${#cmake_args[@]} -gt 0 ]; then
+  cmake -S . -B "$build_dir" "${cmake_args[@]}" >/dev/null
 fi
-cmake --build "$build_dir" --parallel "$(nproc)"
+build=(cmake --build "$build_dir" --parallel "$(nproc)")
+[ ${#targets[@]} -gt 0 ] && build+=(--target "${targets[@]}")
+"${build[@]}"

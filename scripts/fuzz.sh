@@ -25,24 +25,40 @@ for f in parksim/core/*.cpp; do
   [ "$f" = parksim/core/Provenance.cpp ] || core+=("$f")
 done
 
-build() {  # build NAME SOURCES... LIBS...
+# Each source is compiled once into build-fuzz/obj/ (the readers share the core library's
+# sources), on all cores, and again only when it or a parksim header changed since.
+compile() {  # compile SOURCE into build-fuzz/obj/SOURCE.o
+  local object=$out/obj/${1%.cpp}.o
+  if [ ! -f "$object" ] || [ "$1" -nt "$object" ] ||
+     [ -n "$(find parksim tests/fuzz -name '*.h' -newer "$object" | head -1)" ]; then
+    mkdir -p "$(dirname "$object")"
+    "$cxx" "${flags[@]}" -c "$1" -o "$object"
+  fi
+}
+export -f compile
+export out cxx
+flags_line=$(printf '%q ' "${flags[@]}")
+
+link() {  # link NAME OBJECTS... LIBS...
   local name=$1
   shift
-  local target=$out/fuzz_$name
-  # Rebuild only when a source changed (the harness is small; no need for a build system).
-  if [ -x "$target" ] && [ -z "$(find parksim tests/fuzz -newer "$target" -name '*.[ch]*' | head -1)" ]; then
-    return
-  fi
-  echo "== building $target"
-  "$cxx" "${flags[@]}" "$@" -o "$target"
+  echo "== linking $out/fuzz_$name"
+  "$cxx" "${flags[@]}" "$@" -o "$out/fuzz_$name"
 }
 
 # The reader's realism: section is checked by the Bullet-free parksim_realism library
 # (parksim/realism/, all of it).
 realism=(parksim/realism/*.cpp)
-build world tests/fuzz/WorldReaderFuzz.cpp parksim/scenario/*.cpp "${realism[@]}" \
-  "${core[@]}" -lyaml-cpp
-build plan tests/fuzz/PlanReaderFuzz.cpp parksim/results/TrajectoryFile.cpp "${core[@]}"
+world_sources=(tests/fuzz/WorldReaderFuzz.cpp parksim/scenario/*.cpp "${realism[@]}" "${core[@]}")
+plan_sources=(tests/fuzz/PlanReaderFuzz.cpp parksim/results/TrajectoryFile.cpp "${core[@]}")
+echo "== compiling the readers for fuzzing (build-fuzz/obj/)"
+printf '%s\n' "${world_sources[@]}" tests/fuzz/PlanReaderFuzz.cpp parksim/results/TrajectoryFile.cpp |
+  FLAGS="$flags_line" xargs -P "$(nproc)" -I{} bash -c 'eval "flags=($FLAGS)"; compile "$1"' _ {}
+objects() { for f in "$@"; do printf '%s\n' "$out/obj/${f%.cpp}.o"; done; }
+mapfile -t world_objects < <(objects "${world_sources[@]}")
+mapfile -t plan_objects < <(objects "${plan_sources[@]}")
+link world "${world_objects[@]}" -lyaml-cpp
+link plan "${plan_objects[@]}"
 
 timeout_s=${FUZZ_TIMEOUT:-10}
 common=(-timeout="$timeout_s" -rss_limit_mb=2048 -malloc_limit_mb=2048 -max_len=65536

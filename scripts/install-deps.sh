@@ -1,20 +1,48 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages parksim needs, only those missing. Run as root.
+# Installs the Debian 12 packages parksim needs, only those missing (apt-get update first when
+# something is missing). Run as root.
+#
+#   scripts/install-deps.sh demo   what `scripts/demo.sh` builds and runs: the compiler, the
+#                                  libraries the parksim program links, ffmpeg for the video
+#   scripts/install-deps.sh test   (the default) the above, and what the tests, benchmarks, the
+#                                  Python module, fuzzing and the Slurm test use
 set -euo pipefail
 
-packages=(
+set_name=${1:-test}
+
+# The parksim program and the libraries it links (scripts/demo.sh).
+demo_packages=(
   build-essential cmake pkg-config ninja-build
   libbullet-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
-  libnanoflann-dev libstb-dev zlib1g-dev
-  libegl-dev libgl1-mesa-dri libosmesa6-dev libfontconfig-dev fonts-dejavu-core
-  libgtest-dev libgmock-dev libbenchmark-dev libompl-dev ffmpeg locales
-  slurm-wlm munge python3
-  pybind11-dev python3-dev python3-numpy python3-pytest python3-yaml python3-pandas
-  jupyter-nbconvert python3-nbformat python3-ipykernel
+  libnanoflann-dev libstb-dev zlib1g-dev libompl-dev
+  libegl-dev libgl1-mesa-dri libfontconfig-dev fonts-dejavu-core ffmpeg
 )
+
+# Only the tests, benchmarks and the Python module (scripts/test.sh).
+test_packages=(
+  # OSMesa: the tests compare its images with EGL's, byte for byte.
+  libosmesa6-dev
+  libgtest-dev libgmock-dev libbenchmark-dev locales
+  # The sweep's Slurm path, tested on a one-node cluster (scripts/slurm-local.sh).
+  slurm-wlm munge
+  pybind11-dev python3 python3-dev python3-numpy python3-pytest python3-yaml python3-pandas
+  jupyter-nbconvert python3-nbformat python3-ipykernel
+  # scripts/fuzz.sh: clang's libFuzzer runtime comes with libclang-rt-14-dev (Debian 12's clang).
+  clang libclang-rt-14-dev
+  # scripts/test.sh builds the shared-library pass from the Release pass's objects through a
+  # compiler cache of its own.
+  ccache
+)
+
+case "$set_name" in
+  demo) packages=("${demo_packages[@]}") ;;
+  test) packages=("${demo_packages[@]}" "${test_packages[@]}") ;;
+  *) echo "usage: scripts/install-deps.sh [demo|test]" >&2; exit 2 ;;
+esac
 
 # The locale tests run parksim inside a decimal-comma locale (tests/app/LocaleRoundTripTest.cpp).
 ensure_test_locale() {
+  [ "$set_name" = test ] || return 0
   if locale -a 2>/dev/null | grep -qix 'de_DE.utf8'; then return 0; fi
   if [ "$(id -u)" -ne 0 ]; then
     echo "install-deps: locale de_DE.UTF-8 missing (its tests will be skipped); as root: localedef -i de_DE -f UTF-8 de_DE.UTF-8" >&2
@@ -30,7 +58,7 @@ for p in "${packages[@]}"; do
 done
 
 if [ ${#missing[@]} -eq 0 ]; then
-  echo "install-deps: all ${#packages[@]} packages present"
+  echo "install-deps: all ${#packages[@]} packages for '$set_name' present"
   ensure_test_locale
   exit 0
 fi

@@ -13,8 +13,49 @@ See docs/python.md.
 
 import json as _json
 import os as _os
+import sys as _sys
 
-from ._parksim import (  # noqa: F401  (re-exported)
+
+def _interpreter_problem():
+    """Why the compiled module cannot load in this interpreter, as one line, or None."""
+    try:
+        from . import _build_info as built  # written by the build beside the module
+    except ImportError:
+        return None
+    import importlib.machinery
+
+    here = _sys.executable or "this interpreter"
+    if built.MODULE_FILE[len("_parksim"):] not in importlib.machinery.EXTENSION_SUFFIXES:
+        return (f"parksim: the compiled module is for {built.PYTHON} (Python {built.PYTHON_VERSION}),"
+                f" not {here} (Python {_sys.version_info[0]}.{_sys.version_info[1]}): run it with"
+                f" {built.PYTHON}, or build for this one (cmake -DPython_EXECUTABLE={here})")
+    try:
+        import numpy  # noqa: F401
+    except ImportError:
+        return (f"parksim: NumPy is missing for {here}; the module was built for {built.PYTHON},"
+                f" which has it: run it with {built.PYTHON} (or install NumPy for {here})")
+    return None
+
+
+def _fail_in_one_line(message):
+    """ImportError(message); uncaught, it prints as that one line, not as a traceback."""
+    error = ImportError(message)
+    previous = _sys.excepthook
+
+    def hook(kind, value, traceback):
+        if value is error:
+            print(f"ImportError: {message}", file=_sys.stderr)
+        else:
+            previous(kind, value, traceback)
+
+    _sys.excepthook = hook
+    raise error from None
+
+
+if (_problem := _interpreter_problem()) is not None:
+    _fail_in_one_line(_problem)
+
+from ._parksim import (  # noqa: F401,E402  (re-exported)
     CollisionChecker,
     DynamicsWorld,
     Episode,
@@ -46,7 +87,7 @@ from ._parksim import (  # noqa: F401  (re-exported)
     write_figures,
     write_png,
 )
-from . import _parksim
+from . import _parksim  # noqa: E402
 
 __version__ = "0.3.0"
 

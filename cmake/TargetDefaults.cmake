@@ -1,0 +1,136 @@
+# What every parksim target gets: call parksim_target_defaults(<target>) once in the CMakeLists
+# that defines it. Warnings, and the two things that make a cold build fast on 2 cores
+# (measurements and commands in docs/building.md):
+#
+# - Precompiled headers. Most of a parksim translation unit's compile time is spent parsing the
+#   same third-party headers (the standard library, Eigen, nlohmann/json, yaml-cpp, GoogleTest,
+#   CLI11, pybind11). They are parsed once per build into a precompiled header that the
+#   targets share (REUSE_FROM): one for libraries (-fPIC), one for test programs (-fPIE, with
+#   GoogleTest); programs that use CLI11 and the Python module get their own, with CLI11 and
+#   pybind11. GCC rejects a precompiled header made with other code-generation flags
+#   (-Winvalid-pch warns) and then parses the headers as usual: a build is never wrong, only slower.
+# - Unity builds: the sources of a library or program are compiled in batches of
+#   PARKSIM_UNITY_BATCH_SIZE, so the headers and the templates many files of a target use are
+#   compiled and optimised once per batch, not once per file. Names at file scope (anonymous
+#   namespaces, static functions) must then be unique within a target: a second definition of one
+#   is a compile error ("redefinition of ...") naming both files. Rename one, or add the file to
+#   PARKSIM_UNITY_SKIP below. Test programs are not batched (their files share helper names).
+#
+# Both are on by default and off with -DPARKSIM_PCH=OFF / -DPARKSIM_UNITY=OFF (e.g. to check that
+# every file includes what it uses, which a precompiled header can hide).
+
+option(PARKSIM_PCH "Precompile the heavy third-party headers (docs/building.md)" ON)
+option(PARKSIM_UNITY "Compile each target's sources in batches (unity build; docs/building.md)" ON)
+set(PARKSIM_UNITY_BATCH_SIZE 6 CACHE STRING
+    "Sources per unity batch: larger builds faster cold, smaller rebuilds less after an edit")
+# Sources compiled on their own in a unity build (paths relative to the top folder), each with the
+# reason: mostly a name it shares with another file of its target.
+set(PARKSIM_UNITY_SKIP
+  parksim/planner/ShortcutSmoother.cpp  # kCostEpsilonM, also in TreePlanner.cpp
+  parksim/renders/PngEncoderStb.cpp     # stb_image_write's statics, also in PngEncoder.cpp
+  # Not a name: it includes ProvenanceGit.h, which a commit or a first edit rewrites; alone,
+  # only this file is compiled again then, not its batch.
+  parksim/core/Provenance.cpp
+)
+
+if(PARKSIM_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
+  add_link_options(-fsanitize=address,undefined)
+endif()
+
+# The standard headers that parksim's sources include most (counted over parksim/, app/, tests/).
+set(PARKSIM_PCH_STD
+  <algorithm> <array> <charconv> <chrono> <cmath> <cstddef> <cstdint> <cstdio> <cstdlib>
+  <cstring> <filesystem> <fstream> <functional> <limits> <map> <memory> <optional> <random>
+  <set> <sstream> <string> <string_view> <thread> <utility> <vector>)
+# Every library may include these (Eigen comes with parksim_core). Bullet (5 files, ~1 s to
+# parse) and OMPL stay out: their include directories belong to a few targets only, and Bullet
+# types must not become visible outside parksim/sim and parksim/collision.
+set(PARKSIM_PCH_COMMON ${PARKSIM_PCH_STD} <Eigen/Core> <nlohmann/json.hpp> <yaml-cpp/yaml.h>)
+
+# A target whose precompiled header others reuse: its flags are those of the targets that reuse
+# it (C++20, the warnings: -Wpedantic changes predefined macros the header checks).
+function(_parksim_pch_host name kind)
+  if(kind STREQUAL "exe")
+    # -fPIE: a program (linked, never run). No compile definitions of its own: GCC rejects a
+    # precompiled header made with a macro that the file using it does not define.
+    add_executable(${name} EXCLUDE_FROM_ALL ${PROJECT_SOURCE_DIR}/cmake/PchHostMain.cpp)
+  else()
+    add_library(${name} OBJECT EXCLUDE_FROM_ALL ${PROJECT_SOURCE_DIR}/cmake/PchHost.cpp)
+  endif()
+  target_compile_options(${name} PRIVATE -Wall -Wextra -Wpedantic -Wshadow)
+  target_link_libraries(${name} PRIVATE ${ARGN})
+  set_target_properties(${name} PROPERTIES UNITY_BUILD OFF)
+endfunction()
+
+# Called once from the top-level CMakeLists, after the dependencies are found.
+function(parksim_define_pch_hosts)
+  if(NOT PARKSIM_PCH)
+    return()
+  endif()
+  _parksim_pch_host(parksim_pch_lib lib Eigen3::Eigen nlohmann_json::nlohmann_json yaml-cpp)
+  target_precompile_headers(parksim_pch_lib PRIVATE ${PARKSIM_PCH_COMMON})
+  if(TARGET GTest::gtest_main)
+    _parksim_pch_host(parksim_pch_test exe Eigen3::Eigen nlohmann_json::nlohmann_json yaml-cpp
+                      GTest::gtest_main GTest::gmock)
+    target_precompile_headers(parksim_pch_test PRIVATE
+      ${PARKSIM_PCH_COMMON} <gtest/gtest.h> <gmock/gmock.h>)
+  endif()
+endfunction()
+
+# The precompiled header of one target, chosen when its directory is done (its
+# target_link_libraries may come after parksim_target_defaults).
+function(_parksim_apply_pch target)
+  get_target_property(type ${target} TYPE)
+  get_target_property(libs ${target} LINK_LIBRARIES)
+  if(NOT libs)
+    set(libs "")
+  endif()
+  get_target_property(kind ${target} PARKSIM_PCH_KIND)
+  if(kind STREQUAL "test" AND TARGET parksim_pch_test)
+    target_precompile_headers(${target} REUSE_FROM parksim_pch_test)
+  elseif(type STREQUAL "MODULE_LIBRARY")
+    # The Python module: Python.h must come before the standard headers; -fvisibility=hidden.
+    set(headers <pybind11/pybind11.h> <pybind11/numpy.h> <pybind11/stl.h> ${PARKSIM_PCH_COMMON})
+    if("CLI11::CLI11" IN_LIST libs)
+      list(APPEND headers <CLI/CLI.hpp>)
+    endif()
+    target_precompile_headers(${target} PRIVATE ${headers})
+  elseif("CLI11::CLI11" IN_LIST libs)
+    # The command line: CLI11 is header-only and its headers take ~8 s to parse per file.
+    target_precompile_headers(${target} PRIVATE ${PARKSIM_PCH_COMMON} <CLI/CLI.hpp>)
+  elseif(type MATCHES "^(STATIC|SHARED|OBJECT)_LIBRARY$")
+    target_precompile_headers(${target} REUSE_FROM parksim_pch_lib)
+  endif()
+  # Other programs (benchmarks, examples) are a file or two: nothing to share.
+endfunction()
+
+function(parksim_target_defaults target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow)
+  if(PARKSIM_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+  # Shared and static libraries compile alike (no <target>_EXPORTS definition; parksim has no
+  # export macros), so a compiler cache serves one from the other (scripts/test.sh).
+  set_target_properties(${target} PROPERTIES DEFINE_SYMBOL "")
+  get_target_property(kind ${target} PARKSIM_PCH_KIND)
+  if(PARKSIM_UNITY AND NOT kind STREQUAL "test")
+    set_target_properties(${target} PROPERTIES
+      UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${PARKSIM_UNITY_BATCH_SIZE})
+    # A batch includes its sources like headers, and GCC then warns that a class of one (a
+    # parksim type with a member from the file's anonymous namespace) could be seen elsewhere.
+    target_compile_options(${target} PRIVATE -Wno-subobject-linkage)
+    get_target_property(sources ${target} SOURCES)
+    foreach(source IN LISTS sources)
+      get_filename_component(path ${source} ABSOLUTE)
+      file(RELATIVE_PATH path ${PROJECT_SOURCE_DIR} ${path})
+      if(path IN_LIST PARKSIM_UNITY_SKIP)
+        set_source_files_properties(${source} PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
+      endif()
+    endforeach()
+  endif()
+  if(PARKSIM_PCH)
+    # Deferred to the end of the calling directory; the argument is expanded now.
+    cmake_language(EVAL CODE "cmake_language(DEFER CALL _parksim_apply_pch [[${target}]])")
+  endif()
+endfunction()
