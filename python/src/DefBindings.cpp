@@ -9,6 +9,7 @@
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/renders/FrameRecorder.h"
+#include "parksim/renders/PngEncoder.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/ExecutionDef.h"
 #include "python/src/Bindings.h"
@@ -230,6 +231,12 @@ void bindEpisodeDefs(py::module_& m) {
       .def_property(
           "view", [](const FrameDef& d) { return std::string(toString(d.view)); },
           [](FrameDef& d, const std::string& s) { d.view = frameViewFromString(s); })
+      .def_property(
+          "png_compression",
+          [](const FrameDef& d) { return std::string(toString(d.png_compression)); },
+          [](FrameDef& d, const std::string& s) {
+            d.png_compression = pngCompressionFromString(s);
+          })
       .def_readwrite("out_dir", &FrameDef::out_dir)
       .def_readwrite("video", &FrameDef::video)
       .def_readwrite("gif", &FrameDef::gif)

@@ -19,6 +19,7 @@
 #include "parksim/core/Provenance.h"
 #include "parksim/core/Trajectory.h"
 #include "parksim/renders/FigureSelection.h"
+#include "parksim/renders/PngEncoder.h"
 #include "parksim/results/TrajectoryFile.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "tests/support/TestPaths.h"
@@ -153,6 +154,27 @@ TEST_F(Cli, RunWithFramesFilmsTheEpisodeAndDrawsTheFigures) {
   EXPECT_EQ(figures, static_cast<int>(kFigureNames.size()));  // --frames alone: all of them
   EXPECT_TRUE(fs::exists(out / "figures" / "tracking_error.png"));
   EXPECT_TRUE(fs::exists(out / "figures" / "plan_hybrid-a-star.png"));  // the default planner
+}
+
+TEST_F(Cli, PngCompressionChangesTheFilesNotThePixels) {
+  const std::string args = " --frames --figures none --fps 1 --size 160x120 --seed 1";
+  const fs::path a = dir_ / "default";
+  const fs::path b = dir_ / "stored";
+  ASSERT_EQ(parksim("run " + world("head_in.yaml") + args + " --out " + a.string()).exit_code, 0);
+  ASSERT_EQ(parksim("run " + world("head_in.yaml") + args + " --png-compression stored --out " +
+                    b.string())
+                .exit_code,
+            0);
+  const fs::path first = fs::path("frames") / "000000.png";
+  EXPECT_GT(fs::file_size(b / first), fs::file_size(a / first));  // 3 bytes a pixel
+  const RgbImage pa = readPng((a / first).string());
+  const RgbImage pb = readPng((b / first).string());
+  EXPECT_EQ(pa.width, pb.width);
+  EXPECT_EQ(pa.pixels, pb.pixels);
+  EXPECT_EQ(parksim("run " + world("head_in.yaml") + args + " --png-compression best --out " +
+                    (dir_ / "never").string())
+                .exit_code,
+            2);
 }
 
 // The file names in OUT/figures, sorted; empty when there is no such directory.
@@ -293,9 +315,8 @@ TEST_F(Cli, QuietPrintsNothingAndVerboseTellsTheBuild) {
 TEST_F(Cli, MessagesSayWhatIsWrongInFewWords) {
   CliRun r = parksim("foo");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(
-      r.out,
-      "parksim: unknown command 'foo'; commands: plan, run, render, sweep, merge, report\n");
+  EXPECT_EQ(r.out,
+            "parksim: unknown command 'foo'; commands: plan, run, render, sweep, merge, report\n");
   // Bounds are stated, not printed as the 309-digit largest double.
   r = parksim("plan " + world("head_in.yaml") + " --seed -1");
   EXPECT_EQ(r.exit_code, 2);

@@ -1,9 +1,6 @@
 // The planning benchmark program end to end (bench/parksim_bench.cpp).
 
-#include <sys/wait.h>
-
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -21,14 +18,7 @@ using testing::slurp;
 
 // Runs `parksim-bench ARGS` (beside the other benchmark programs in the build tree).
 CliRun runBench(const std::string& args) {
-  const std::string cmd = testing::binaryDir() + "/bench/parksim-bench " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return {-1, "popen failed"};
-  std::string out;
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, pipe)) out += buf;
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  return testing::runProgram(testing::binaryDir() + "/bench/parksim-bench", args);
 }
 
 TEST(ParksimBench, WritesTheCsvWithItsRequiredColumns) {

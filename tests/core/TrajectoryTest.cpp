@@ -2,21 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/SampleTrajectory.h"
+
 namespace parksim {
 namespace {
 
-Trajectory sample() {
-  const RobotDef robot;
-  Trajectory t;
-  Pose2 p{0.1, 0.1, kPi / 2};
-  for (int i = 0; i < 10; ++i) {
-    const WheelSpeeds w{3.0 + 0.1 * i, 4.0 - 0.2 * i};
-    t.points.push_back({0.1 * i, p, w});
-    p = integrateExact(p, toTwist(w, robot), 0.1);
-  }
-  t.points.push_back({1.0, p, {}});
-  return t;
-}
+Trajectory sample() { return testing::sampleTrajectory(); }
 
 TEST(Trajectory, AppendJoinsAtTheSharedPose) {
   const RobotDef robot;

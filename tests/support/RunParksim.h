@@ -17,9 +17,9 @@ struct CliRun {
   std::string out;  ///< stdout and stderr, interleaved
 };
 
-/// Runs `parksim ARGS` through the shell and waits for it.
-inline CliRun runParksim(const std::string& args) {
-  const std::string cmd = parksim::testing::parksimExe() + " " + args + " 2>&1";
+/// Runs `PROGRAM ARGS` through the shell and waits for it.
+inline CliRun runProgram(const std::string& program, const std::string& args) {
+  const std::string cmd = program + " " + args + " 2>&1";
   FILE* pipe = popen(cmd.c_str(), "r");
   if (pipe == nullptr) return {-1, "popen failed"};
   std::string out;
@@ -27,6 +27,11 @@ inline CliRun runParksim(const std::string& args) {
   while (std::fgets(buf, sizeof buf, pipe)) out += buf;
   const int status = pclose(pipe);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+/// Runs `parksim ARGS` through the shell and waits for it.
+inline CliRun runParksim(const std::string& args) {
+  return runProgram(parksim::testing::parksimExe(), args);
 }
 
 /// The whole file as bytes ("" when it cannot be read).
