@@ -5,18 +5,20 @@
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
-#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 #include "parksim/sim/BulletFrames.h"
 #include "parksim/sim/CollisionGroups.h"
+#include "parksim/sim/MultiBodyInverseMass.h"
+#include "parksim/sim/WheelMotor.h"
 
 namespace parksim {
 
 RobotBody::RobotBody(btMultiBodyDynamicsWorld& world, const RobotDef& robot,
                      const PhysicsDef& physics, const SimModelDef& model, const Pose2& start,
-                     const Eigen::Vector2d& origin)
+                     const Eigen::Vector2d& origin, MultiBodyInverseMass* inverse_mass)
     : world_(world),
       robot_(robot),
       physics_(physics),
@@ -103,7 +105,8 @@ RobotBody::RobotBody(btMultiBodyDynamicsWorld& world, const RobotDef& robot,
   btAlignedObjectArray<btVector3> scratch_v;
   body_->forwardKinematics(scratch_q, scratch_v);
   body_->updateCollisionObjectWorldTransforms(scratch_q, scratch_v);
-  addMotors();
+  if (inverse_mass != nullptr) inverse_mass->add(body_.get());
+  addMotors(inverse_mass);
 }
 
 RobotBody::~RobotBody() {
@@ -145,23 +148,22 @@ void RobotBody::addColliders(btCollisionShape* chassis_shape, btCollisionShape* 
 
 // Motor limits are impulses per step: torque x dt. Driven by torque, the "motor" is the drive
 // train's Coulomb friction: a target of zero speed that at most that torque holds.
-void RobotBody::addMotors() {
+void RobotBody::addMotors(MultiBodyInverseMass* inverse_mass) {
   const bool torque_drive = model_.body.drive == WheelDrive::kTorque;
   if (torque_drive && !(model_.body.joint_friction_nm > 0.0)) return;
-  const btScalar max_impulse =
-      btScalar((torque_drive ? model_.body.joint_friction_nm : physics_.max_wheel_torque_nm) *
-               physics_.time_step_s);
+  const double max_impulse =
+      (torque_drive ? model_.body.joint_friction_nm : physics_.max_wheel_torque_nm) *
+      physics_.time_step_s;
   for (int link : {kLeftWheel, kRightWheel}) {
-    auto motor = std::make_unique<btMultiBodyJointMotor>(body_.get(), link, 0, max_impulse);
-    world_.addMultiBodyConstraint(motor.get());
-    motors_.push_back(std::move(motor));
+    motors_.push_back(makeWheelMotor(*body_, link, max_impulse, inverse_mass));
+    world_.addMultiBodyConstraint(motors_.back().get());
   }
 }
 
 void RobotBody::setWheelTargets(const WheelSpeeds& targets) {
   if (model_.body.drive != WheelDrive::kVelocityMotor) return;
-  motors_[kLeftWheel]->setVelocityTarget(btScalar(targets.left_radps));
-  motors_[kRightWheel]->setVelocityTarget(btScalar(targets.right_radps));
+  setWheelMotorTarget(*motors_[kLeftWheel], targets.left_radps);
+  setWheelMotorTarget(*motors_[kRightWheel], targets.right_radps);
 }
 
 void RobotBody::addWheelTorques(const WheelSpeeds& torques_nm) {

@@ -20,10 +20,12 @@ class btCollisionObject;
 class btCollisionShape;
 class btMultiBody;
 class btMultiBodyDynamicsWorld;
-class btMultiBodyJointMotor;
+class btMultiBodyConstraint;
 class btMultiBodyLinkCollider;
 
 namespace parksim {
+
+class MultiBodyInverseMass;
 
 class RobotBody {
  public:
@@ -34,9 +36,13 @@ class RobotBody {
 
   /// Builds the robot as `model.body` says (true radii and track, drive) with its reference
   /// point at `start` (lot frame), and adds it to `world`, whose frame has its origin at
-  /// `origin` in the lot frame. Keeps a reference to `world`.
+  /// `origin` in the lot frame. Keeps a reference to `world`. With `inverse_mass` (may be
+  /// null), the solver rows of its contacts and motors are set up from it: the robot's mass
+  /// matrix is constant in its base frame (sphere wheels turn about their axles, the slider is
+  /// fixed), as MultiBodyInverseMass requires.
   RobotBody(btMultiBodyDynamicsWorld& world, const RobotDef& robot, const PhysicsDef& physics,
-            const SimModelDef& model, const Pose2& start, const Eigen::Vector2d& origin);
+            const SimModelDef& model, const Pose2& start, const Eigen::Vector2d& origin,
+            MultiBodyInverseMass* inverse_mass = nullptr);
   /// Removes the robot from the world.
   ~RobotBody();
 
@@ -61,7 +67,7 @@ class RobotBody {
  private:
   void addColliders(btCollisionShape* chassis_shape, btCollisionShape* left_shape,
                     btCollisionShape* right_shape, btCollisionShape* support_shape);
-  void addMotors();
+  void addMotors(MultiBodyInverseMass* inverse_mass);
   btCollisionShape* own(std::unique_ptr<btCollisionShape> shape);
 
   btMultiBodyDynamicsWorld& world_;
@@ -79,7 +85,7 @@ class RobotBody {
   std::vector<std::unique_ptr<btCollisionShape>> shapes_;
   std::unique_ptr<btMultiBody> body_;
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;  // chassis, wheels, slider
-  std::vector<std::unique_ptr<btMultiBodyJointMotor>> motors_;       // left, right
+  std::vector<std::unique_ptr<btMultiBodyConstraint>> motors_;       // left, right
 };
 
 }  // namespace parksim
