@@ -13,6 +13,12 @@ packages=(
   jupyter-nbconvert python3-nbformat python3-ipykernel
 )
 
+# Only the benchmarks need these; bench/ builds without them (bench/mujoco.cmake).
+bench_packages=(
+  libmujoco-dev
+)
+packages+=("${bench_packages[@]}")
+
 # The locale tests run parksim inside a decimal-comma locale (tests/app/LocaleRoundTripTest.cpp).
 ensure_test_locale() {
   if locale -a 2>/dev/null | grep -qix 'de_DE.utf8'; then return 0; fi
