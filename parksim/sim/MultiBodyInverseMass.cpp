@@ -15,12 +15,12 @@ void worldToBase(const btMultiBody& body, double r[3][3]) {
   }
 }
 
-// out = T v or T^T v (T = diag(R, R, 1)) for a vector of n entries.
-void turn(const double r[3][3], bool transpose, const double* v, double* out, int n) {
+// out = T v (T = diag(R, R, 1)) for a vector of n entries.
+void turn(const double r[3][3], const double* v, double* out, int n) {
   for (int block = 0; block < 6; block += 3) {
     for (int i = 0; i < 3; ++i) {
       double sum = 0.0;
-      for (int j = 0; j < 3; ++j) sum += (transpose ? r[j][i] : r[i][j]) * v[block + j];
+      for (int j = 0; j < 3; ++j) sum += r[i][j] * v[block + j];
       out[block + i] = sum;
     }
   }
@@ -74,7 +74,7 @@ void MultiBodyInverseMass::measure(btMultiBody& body, Body& entry, btMultiBodyJa
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j)
       row[static_cast<std::size_t>(j)] = world[static_cast<std::size_t>(i * n + j)];
-    turn(r, false, row.data(), turned.data(), n);
+    turn(r, row.data(), turned.data(), n);
     for (int j = 0; j < n; ++j)
       world[static_cast<std::size_t>(i * n + j)] = turned[static_cast<std::size_t>(j)];
   }
@@ -83,7 +83,7 @@ void MultiBodyInverseMass::measure(btMultiBody& body, Body& entry, btMultiBodyJa
   for (int j = 0; j < n; ++j) {
     for (int i = 0; i < n; ++i)
       column[static_cast<std::size_t>(i)] = world[static_cast<std::size_t>(i * n + j)];
-    turn(r, false, column.data(), turned.data(), n);
+    turn(r, column.data(), turned.data(), n);
     for (int i = 0; i < n; ++i)
       entry.local[static_cast<std::size_t>(j * n + i)] = turned[static_cast<std::size_t>(i)];
   }
