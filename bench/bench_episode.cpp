@@ -4,7 +4,9 @@
 // - BM_Episode: what `parksim run` does after reading the world: plan, simulate, metrics.
 // Arguments: world (0 head_in, 1 parallel), tracking (0 closed, 1 open), solver iterations,
 // solver (0: parksim's default, SimModelDef{}; 1: Bullet's own solver running every iteration,
-// the model as it was before the solver work, for before/after ratios in one binary).
+// the model as it was before the solver work; 2: Bullet's own solver with the early exit; 3:
+// the model as it was before issue 21's speed work, Bullet's row setup and GJK contacts, cold
+// started (kExact); for before/after ratios in one binary).
 // - BM_SimulateRealism: BM_Simulate under a realism preset (0 ideal, 1 lab, 2 odometry), closed
 //   loop, noise seed 1: the real-time factors of the presets side by side (docs/realism.md).
 // - BM_SimulateCrowded: head_in with N more parked robots 20 m or more away (ideal, closed):
@@ -47,7 +49,7 @@ const Trajectory& plannedOnce(long index) {
   static std::map<long, Trajectory> plans;
   auto it = plans.find(index);
   if (it == plans.end()) {
-    const Scenario s = world(index, 50);
+    const Scenario s = world(index, PhysicsDef{}.solver_iterations);
     const BulletCollisionWorld checker(s);
     it = plans.emplace(index, planScenario(s, checker, setup()).trajectory).first;
   }
@@ -83,20 +85,23 @@ void BM_Simulate(benchmark::State& state) {
   ExecutionDef def;
   def.tracking = state.range(1) == 0 ? TrackingMode::kClosed : TrackingMode::kOpen;
   SimModelDef model;
-  if (state.range(3) >= 1) model.solver = SolverKernel::kBullet;
+  if (state.range(3) >= 1) model.warm_start = false;
+  if (state.range(3) == 1 || state.range(3) == 2) model.solver = SolverKernel::kBullet;
   if (state.range(3) == 1) model.solver_residual_threshold = 0.0;
+  if (state.range(3) == 3) model.solver = SolverKernel::kExact;
   simulate(state, s, plan, def, model);
   state.SetLabel(std::string(kWorlds[state.range(0)]) +
                  (def.tracking == TrackingMode::kClosed ? " closed" : " open") +
                  (state.range(3) == 1   ? " bullet-reference"
                   : state.range(3) == 2 ? " bullet-solver-early-exit"
+                  : state.range(3) == 3 ? " before-issue-21"
                                         : ""));
 }
 
 const char* const kPresets[] = {"ideal", "lab", "odometry"};
 
 void BM_SimulateRealism(benchmark::State& state) {
-  const Scenario s = world(state.range(0), 50);
+  const Scenario s = world(state.range(0), PhysicsDef{}.solver_iterations);
   const Trajectory& plan = plannedOnce(state.range(0));
   ExecutionDef def;
   def.realism = presetRealism(kPresets[state.range(1)]);
@@ -106,7 +111,7 @@ void BM_SimulateRealism(benchmark::State& state) {
 }
 
 void BM_SimulateCrowded(benchmark::State& state) {
-  Scenario s = world(0, 50);
+  Scenario s = world(0, PhysicsDef{}.solver_iterations);
   const Trajectory& plan = plannedOnce(0);
   for (long i = 0; i < state.range(0); ++i) {
     Obstacle o;
@@ -142,15 +147,18 @@ void BM_Episode(benchmark::State& state) {
   state.SetLabel(kWorlds[state.range(0)]);
 }
 
+// PhysicsDef's default: at most 15 iterations, warm-started.
 BENCHMARK(BM_Simulate)
     ->ArgNames({"world", "open", "iters", "ref"})
-    ->ArgsProduct({{0, 1}, {0, 1}, {50}, {0}})
+    ->ArgsProduct({{0, 1}, {0, 1}, {15}, {0}})
     ->Args({0, 0, 50, 1})
     ->Args({1, 0, 50, 1})
     ->Args({0, 0, 50, 2})
     ->Args({1, 0, 50, 2})
-    ->Args({0, 0, 20, 0})
-    ->Args({1, 0, 20, 0})
+    ->Args({0, 0, 50, 3})
+    ->Args({1, 0, 50, 3})
+    ->Args({0, 0, 50, 0})
+    ->Args({1, 0, 50, 0})
     ->Args({0, 0, 10, 0})
     ->Args({1, 0, 10, 0})
     ->Unit(benchmark::kMillisecond);
@@ -167,8 +175,8 @@ BENCHMARK(BM_SimulateCrowded)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Episode)
     ->ArgNames({"world", "open", "iters"})
-    ->Args({0, 0, 50})
-    ->Args({1, 0, 50})
+    ->Args({0, 0, 15})
+    ->Args({1, 0, 15})
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

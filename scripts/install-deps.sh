@@ -29,6 +29,8 @@ test_packages=(
   jupyter-nbconvert python3-nbformat python3-ipykernel
   # scripts/fuzz.sh: clang's libFuzzer runtime comes with libclang-rt-14-dev (Debian 12's clang).
   clang libclang-rt-14-dev
+  # bench/bench_mujoco: MuJoCo side by side with parksim (optional at configure time).
+  libmujoco-dev
   # scripts/test.sh builds the shared-library pass from the Release pass's objects through a
   # compiler cache of its own.
   ccache

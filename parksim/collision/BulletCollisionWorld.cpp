@@ -7,10 +7,9 @@
 #include <utility>
 
 #include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
-#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
-#include <BulletCollision/CollisionShapes/btCylinderShape.h>
 #include <btBulletCollisionCommon.h>
 
+#include "parksim/collision/ObstacleShape.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
 
@@ -32,14 +31,6 @@ btMatrix3x3 yawBasis(double cos_yaw, double sin_yaw) {
   const auto c = static_cast<btScalar>(cos_yaw);
   const auto s = static_cast<btScalar>(sin_yaw);
   return btMatrix3x3(c, -s, 0, s, c, 0, 0, 0, 1);
-}
-
-// btBoxBoxDetector reads getHalfExtentsWithMargin(). A zero margin makes that equal to the
-// requested half extents bit for bit, instead of (h - m) + m with two roundings; margins play
-// no part in the box-box test, so nothing is lost.
-void setExactHalfExtents(btBoxShape& shape, const btVector3& half_extents) {
-  shape.setMargin(0);
-  shape.setImplicitShapeDimensions(half_extents);
 }
 
 // Records whether the detector reported any point at negative distance. The detector also
@@ -156,47 +147,19 @@ struct BulletCollisionWorld::Impl {
       box.sin_yaw = std::sin(obstacle.box.yaw);
       box.height_m = obstacle.height_m;
 
-      const auto hz = static_cast<btScalar>(0.5 * obstacle.height_m);
-      std::unique_ptr<btCollisionShape> shape;
+      // Circles and polygons: Bullet holds their true shape (and its broadphase bounds);
+      // penetrates() decides them exactly in double (core's separation), since Bullet's GJK
+      // for curved and hull shapes is only accurate to its float tolerances. Boxes: Bullet's
+      // box-box detector decides, on exact half extents.
+      std::unique_ptr<btCollisionShape> shape = makeObstacleShape(obstacle, kExactObstacleShapes);
       btTransform transform;
       transform.setIdentity();
-      switch (obstacle.shape) {
-        case ObstacleShape::kBox: {
-          const btVector3 half(static_cast<btScalar>(obstacle.box.half_extents.x()),
-                               static_cast<btScalar>(obstacle.box.half_extents.y()), hz);
-          auto b = std::make_unique<btBoxShape>(half);
-          setExactHalfExtents(*b, half);
-          shape = std::move(b);
-          transform.setBasis(yawBasis(box.cos_yaw, box.sin_yaw));
-          break;
-        }
-        // Circles and polygons: Bullet holds their true shape (and its broadphase bounds);
-        // penetrates() decides them exactly in double (core's separation), since Bullet's
-        // GJK for curved and hull shapes is only accurate to its float tolerances.
-        case ObstacleShape::kCircle: {
-          const auto r = static_cast<btScalar>(obstacle.radius_m);
-          auto c = std::make_unique<btCylinderShapeZ>(btVector3(r, r, hz));
-          c->setMargin(0);
-          shape = std::move(c);
-          break;
-        }
-        case ObstacleShape::kPolygon: {
-          auto hull = std::make_unique<btConvexHullShape>();
-          for (const Eigen::Vector2d& v : obstacle.vertices) {
-            const Eigen::Vector2d d = v - obstacle.box.center;
-            for (const btScalar z : {-hz, hz}) {
-              hull->addPoint(
-                  btVector3(static_cast<btScalar>(d.x()), static_cast<btScalar>(d.y()), z), false);
-            }
-          }
-          hull->recalcLocalAabb();
-          hull->setMargin(0);
-          shape = std::move(hull);
-          break;
-        }
+      if (obstacle.shape == ObstacleShape::kBox) {
+        transform.setBasis(yawBasis(box.cos_yaw, box.sin_yaw));
       }
       transform.setOrigin(btVector3(static_cast<btScalar>(obstacle.box.center.x()),
-                                    static_cast<btScalar>(obstacle.box.center.y()), hz));
+                                    static_cast<btScalar>(obstacle.box.center.y()),
+                                    static_cast<btScalar>(0.5 * obstacle.height_m)));
 
       auto object = std::make_unique<btCollisionObject>();
       object->setWorldTransform(transform);

@@ -101,7 +101,7 @@ struct GoalRegion {
 /// overridden under `physics:` in the world file.
 struct PhysicsDef {
   double time_step_s = 1.0 / 240.0;    ///< fixed simulation step, s
-  int solver_iterations = 50;          ///< constraint solver iterations per step
+  int solver_iterations = 15;          ///< most constraint solver iterations per step
   double gravity_mps2 = 9.81;          ///< m/s^2, pointing down
   double chassis_mass_kg = 0.20;       ///< ego chassis mass, kg
   double wheel_mass_kg = 0.02;         ///< each driven wheel, kg

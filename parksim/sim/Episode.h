@@ -18,28 +18,11 @@
 #include "parksim/core/Scenario.h"
 #include "parksim/core/Trajectory.h"
 #include "parksim/sim/DynamicsWorld.h"
+#include "parksim/sim/EpisodeMetrics.h"
+#include "parksim/sim/ExecutedRow.h"
 #include "parksim/sim/ExecutionDef.h"
 
 namespace parksim {
-
-/// One measured instant: a row of executed.csv.
-struct ExecutedRow {
-  double t_s = 0.0;              ///< s since the episode's start
-  Pose2 pose;                    ///< executed pose of the reference point
-  Pose2 reference;               ///< the plan's pose at the same time (exact interpolation)
-  WheelSpeeds wheels_cmd;        ///< motor targets applied during the step that ended here
-  WheelSpeeds wheels;            ///< measured wheel joint speeds
-  double pos_err_m = 0.0;        ///< |position - reference position|, m
-  double heading_err_rad = 0.0;  ///< heading - reference heading, wrapped to [-pi, pi), rad
-  // Realism (written to executed.csv only when the realism is not ideal):
-  Pose2 estimate;                    ///< the pose the controller believes (the true pose for truth)
-  double est_pos_err_m = 0.0;        ///< |estimate - pose| in position, m
-  double est_heading_err_rad = 0.0;  ///< estimate - pose heading, wrapped, rad
-  WheelSpeeds effort;                ///< motor effort (PWM duty), -1..1; 0 with ideal motors
-  WheelSpeeds torque_nm;             ///< motor drive torque at the wheel, N m; 0 with ideal motors
-  WheelSpeeds slip_mps;              ///< rim speed minus contact ground speed per wheel, m/s
-  WheelSpeeds encoder_rad;           ///< wheel angles as the encoders report them, rad
-};
 
 /// What an observer (a renderer, a logger) receives: the row plus the world's moving parts.
 /// Plain data, no Bullet types.
@@ -55,78 +38,6 @@ struct EpisodeSample {
 
 /// Called at a fixed rate of simulated time (see runEpisode).
 using EpisodeObserver = std::function<void(const EpisodeSample&)>;
-
-/// The chassis starting to penetrate an obstacle it had not penetrated for at least
-/// ExecutionDef::contact_merge_s.
-struct ContactEvent {
-  double t_s = 0.0;
-  int obstacle_index = -1;  ///< scenario order
-  std::string body;         ///< the obstacle's name
-};
-
-struct ParkedRobotDisplacement {
-  std::string name;
-  double max_m = 0.0;    ///< largest horizontal displacement of its centre during the episode, m
-  double final_m = 0.0;  ///< at the end, m
-};
-
-struct EpisodeMetrics {
-  TrackingMode tracking = TrackingMode::kClosed;
-  /// Tracking error against the plan's pose at the same time, over every step.
-  double max_pos_err_m = 0.0;
-  double rms_pos_err_m = 0.0;
-  double final_pos_err_m = 0.0;
-  double max_heading_err_deg = 0.0;
-  double rms_heading_err_deg = 0.0;
-  double final_heading_err_deg = 0.0;
-  /// Final pose against the scenario's goal (either heading when the goal allows it).
-  Pose2 final_pose;
-  double goal_pos_err_m = 0.0;
-  double goal_heading_err_deg = 0.0;
-  /// Within the scenario's goal tolerances at the end.
-  bool goal_reached = false;
-  /// Contact events between the chassis and anything but the ground.
-  int contacts = 0;
-  double first_contact_t_s = -1.0;  ///< -1 when there was none
-  std::string first_contact_body;   ///< empty when there was none
-  std::vector<ContactEvent> contact_events;
-  std::vector<ParkedRobotDisplacement> parked;  ///< every parked robot, scenario order
-  double max_parked_displacement_m = 0.0;
-  double plan_duration_s = 0.0;
-  double sim_time_s = 0.0;
-  long steps = 0;
-  double time_step_s = 0.0;
-  /// True when the episode ended because the robot came to rest, false at the time limit.
-  bool ended_at_rest = false;
-  /// Wall time spent stepping and measuring (observer calls excluded), s.
-  double wall_time_s = 0.0;
-
-  // Realism (realism/RealismDef.h).
-  std::string realism = "ideal";
-  std::uint64_t noise_seed = 0;
-  std::string estimator = "truth";
-  /// Error of the controller's estimate against the true pose, over every step.
-  double max_est_pos_err_m = 0.0;
-  double rms_est_pos_err_m = 0.0;
-  double max_est_heading_err_deg = 0.0;
-  double final_est_pos_err_m = 0.0;
-  /// Wheel slip (rim speed minus contact ground speed), both wheels, every step, m/s.
-  double max_slip_mps = 0.0;
-  double rms_slip_mps = 0.0;
-  /// Share of wheel-steps slipping by more than 1 mm/s.
-  double slip_fraction = 0.0;
-  double max_motor_torque_nm = 0.0;
-  double max_motor_effort = 0.0;
-  /// The robot as built this episode (drawn calibration and motor gains).
-  double true_left_radius_m = 0.0;
-  double true_right_radius_m = 0.0;
-  double true_track_m = 0.0;
-  double left_motor_gain = 1.0;
-  double right_motor_gain = 1.0;
-  long pose_samples_taken = 0;
-  long pose_samples_dropped = 0;
-  long pose_samples_received = 0;
-};
 
 /// Physics steps the episode of `plan` may take at most: (plan duration + max_stop_time_s) /
 /// the scenario's time step, rounded up. Throws Error, naming the values and the limit, when

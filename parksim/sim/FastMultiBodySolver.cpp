@@ -4,10 +4,15 @@
 #include <cstddef>
 #include <vector>
 
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletDynamics/ConstraintSolver/btSolverBody.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <BulletDynamics/Featherstone/btMultiBodySolverConstraint.h>
+
+#include "parksim/sim/MultiBodyContactRows.h"
+#include "parksim/sim/SolverWarmStart.h"
 
 namespace parksim {
 
@@ -22,7 +27,7 @@ namespace {
 // skipped (see solveConePair).
 class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
  public:
-  explicit FastMultiBodySolver(bool pairwise) : pairwise_(pairwise) {}
+  explicit FastMultiBodySolver(const FastSolverDef& def) : def_(def) {}
 
  protected:
   // Bullet's setup, then the one non-zero Jacobian entry of each non-contact row (a joint
@@ -35,6 +40,10 @@ class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
     const btScalar result = btMultiBodyConstraintSolver::solveGroupCacheFriendlySetup(
         bodies, numBodies, manifoldPtr, numManifolds, constraints, numConstraints, infoGlobal,
         debugDrawer);
+    if (warmStarting(infoGlobal)) {
+      warm_start_.apply(m_multiBodyNormalContactConstraints, m_multiBodyFrictionContactConstraints,
+                        m_multiBodyNonContactConstraints, m_data, m_tmpSolverBodyPool);
+    }
     single_entry_.resize(static_cast<std::size_t>(m_multiBodyNonContactConstraints.size()));
     for (int j = 0; j < m_multiBodyNonContactConstraints.size(); ++j) {
       single_entry_[static_cast<std::size_t>(j)] =
@@ -160,12 +169,73 @@ class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
     return leastSquaredResidual;
   }
 
+  // Bullet's convertContacts (3.24), with the rows of a covered multibody against a fixed object
+  // set up from the inverse mass (MultiBodyContactRows.h). Bullet's own articulated warm start
+  // is never on here (warmStarting() and addFixedContactRows refuse it): every non-contact row
+  // starts at zero, as Bullet's do without it.
+  void convertContacts(btPersistentManifold** manifoldPtr, int numManifolds,
+                       const btContactSolverInfo& infoGlobal) override {
+    if (def_.inverse_mass == nullptr ||
+        (infoGlobal.m_solverMode & SOLVER_USE_ARTICULATED_WARMSTARTING) != 0) {
+      btMultiBodyConstraintSolver::convertContacts(manifoldPtr, numManifolds, infoGlobal);
+      return;
+    }
+    ContactRowTarget target{m_multiBodyNormalContactConstraints,
+                            m_multiBodyFrictionContactConstraints, m_data, m_tmpSolverBodyPool,
+                            *def_.inverse_mass};
+    for (int i = 0; i < numManifolds; i++) {
+      btPersistentManifold* manifold = manifoldPtr[i];
+      auto* body0 = const_cast<btCollisionObject*>(manifold->getBody0());
+      auto* body1 = const_cast<btCollisionObject*>(manifold->getBody1());
+      const bool link0 = btMultiBodyLinkCollider::upcast(body0) != nullptr;
+      const bool link1 = btMultiBodyLinkCollider::upcast(body1) != nullptr;
+      if (!link0 && !link1) {
+        convertContact(manifold, infoGlobal);
+        continue;
+      }
+      // As convertMultiBodyContact asks for them, A first.
+      const int a = link0 ? -1 : getOrInitSolverBody(*body0, infoGlobal.m_timeStep);
+      const int b = link1 ? -1 : getOrInitSolverBody(*body1, infoGlobal.m_timeStep);
+      if (!addFixedContactRows(*manifold, a, b, infoGlobal, target)) {
+        convertMultiBodyContact(manifold, infoGlobal);
+      }
+    }
+    for (int i = 0; i < m_tmpNumMultiBodyConstraints; i++) {
+      m_data.m_solverBodyPool = &m_tmpSolverBodyPool;
+      m_data.m_fixedBodyId = m_fixedBodyId;
+      m_tmpMultiBodyConstraints[i]->createConstraintRows(m_multiBodyNonContactConstraints, m_data,
+                                                         infoGlobal);
+    }
+    for (int i = 0; i < m_multiBodyNonContactConstraints.size(); i++) {
+      m_multiBodyNonContactConstraints[i].m_appliedImpulse = 0;
+    }
+  }
+
+  // Remembers the impulses for the next step's warm start, then Bullet's write-back.
+  btScalar solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int numBodies,
+                                         const btContactSolverInfo& infoGlobal) override {
+    if (warmStarting(infoGlobal)) {
+      warm_start_.record(m_multiBodyNormalContactConstraints, m_multiBodyFrictionContactConstraints,
+                         m_tmpSolverBodyPool);
+    }
+    return btMultiBodyConstraintSolver::solveGroupCacheFriendlyFinish(bodies, numBodies,
+                                                                      infoGlobal);
+  }
+
  private:
+  // SolverWarmStart needs two friction rows per contact (2 friction directions), and must not
+  // run on top of Bullet's own articulated warm start (impulses would be applied twice).
+  bool warmStarting(const btContactSolverInfo& info) const {
+    return def_.warm_start && (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) != 0 &&
+           (info.m_solverMode & SOLVER_USE_ARTICULATED_WARMSTARTING) == 0;
+  }
+
   // Velocity components of the ego robot: 6 for the free base, one per wheel joint (the
   // slider's link is fixed). Other sizes take the general loops.
   static constexpr int kRobotDofs = 8;
 
-  bool pairwise_ = false;
+  FastSolverDef def_;
+  SolverWarmStart warm_start_;
   std::vector<int> single_entry_;  // per non-contact row: singleNonZero
 
   // Index of the only non-zero Jacobian entry of a row on one multibody (side A), or -1.
@@ -214,7 +284,7 @@ class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
     const btScalar* jac = &m_data.m_jacobians[jac_index];
     const btScalar* vel = &m_data.m_deltaVelocities[vel_index];
     if (ndof == kRobotDofs) {
-      return pairwise_ ? dotPairwise8(jac, vel) : dotFixed<kRobotDofs>(jac, vel);
+      return def_.pairwise_dots ? dotPairwise8(jac, vel) : dotFixed<kRobotDofs>(jac, vel);
     }
     btScalar sum = 0;
     for (int i = 0; i < ndof; ++i) sum += jac[i] * vel[i];
@@ -374,8 +444,8 @@ class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
 
 }  // namespace
 
-std::unique_ptr<btMultiBodyConstraintSolver> makeFastMultiBodySolver(bool pairwise_dots) {
-  return std::make_unique<FastMultiBodySolver>(pairwise_dots);
+std::unique_ptr<btMultiBodyConstraintSolver> makeFastMultiBodySolver(const FastSolverDef& def) {
+  return std::make_unique<FastMultiBodySolver>(def);
 }
 
 }  // namespace parksim

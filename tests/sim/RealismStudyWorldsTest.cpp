@@ -214,7 +214,10 @@ TEST(LazyParkedRobots, ARobotInThePathIsStillHitAndPushedAmongMany) {
   const EpisodeMetrics m = runEpisode(s, plan).metrics;
   ASSERT_GE(m.contacts, 1);
   EXPECT_EQ(m.first_contact_body, "robot_ahead");
-  EXPECT_GT(m.max_parked_displacement_m, 0.002);
+  // Pushed: how far is chaotic (docs/simulation.md), and marginal here: the robot's wheels carry
+  // 0.14 kg (1.37 N of traction) against the 1.23 N that slides a 0.25 kg parked robot at
+  // friction 0.5 (1.6 mm with the warm-started solver); untouched ones stay below 0.1 mm.
+  EXPECT_GT(m.max_parked_displacement_m, 0.001);
   for (const ParkedRobotDisplacement& p : m.parked) {
     if (p.name != "robot_ahead") {
       EXPECT_EQ(p.max_m, 0.0) << p.name;
