@@ -24,6 +24,36 @@ double maxAbs(const WheelSpeeds& w) {
 
 WheelSpeeds scaled(const WheelSpeeds& w, double s) { return {w.left_radps * s, w.right_radps * s}; }
 
+// sum_{k < count} min(c + k step, cap), in O(1).
+double rampUpSum(double c, double step, double cap, long count) {
+  if (count <= 0) return 0.0;
+  const long below = std::clamp(static_cast<long>(std::ceil((cap - c) / step)), 0L, count);
+  const double b = static_cast<double>(below);
+  return b * c + step * b * (b - 1.0) / 2.0 + static_cast<double>(count - below) * cap;
+}
+
+// sum_{k < count} max(c - k step, 0), in O(1).
+double rampDownSum(double c, double step, long count) {
+  if (count <= 0) return 0.0;
+  const long above = std::clamp(static_cast<long>(std::ceil(c / step)), 0L, count);
+  const double a = static_cast<double>(above);
+  return a * c - step * a * (a - 1.0) / 2.0;
+}
+
+// The fastest and slowest n-period sequences from e_in to e_out (see profile), as the sums of
+// their speeds: hi = sum_i min(e_in + i step, e_out + (n-1-i) step, v_max) and
+// lo = sum_i max(e_in - i step, e_out - (n-1-i) step, 0), each split where its two ramps cross.
+void bounds(double e_in, double e_out, double v_max, double step, int n, double* lo, double* hi) {
+  const double cross_up = 0.5 * ((e_out - e_in) / step + (n - 1));
+  const long m_up =
+      std::clamp(static_cast<long>(std::floor(cross_up)) + 1, 0L, static_cast<long>(n));
+  *hi = rampUpSum(e_in, step, v_max, m_up) + rampUpSum(e_out, step, v_max, n - m_up);
+  const double cross_down = 0.5 * ((e_in - e_out) / step + (n - 1));
+  const long m_down =
+      std::clamp(static_cast<long>(std::floor(cross_down)) + 1, 0L, static_cast<long>(n));
+  *lo = rampDownSum(e_in, step, m_down) + rampDownSum(e_out, step, n - m_down);
+}
+
 // Speed profile of one piece: `n` periods, first at e_in, last at e_out, steps of at most
 // `step`, speeds in [0, v_max], summing to `area` (travel / period). The bounds L_i <= u_i <=
 // U_i are the slowest and fastest such sequences; their blend hits the area exactly and keeps
@@ -41,10 +71,7 @@ bool profile(double e_in, double e_out, double area, double v_max, double step, 
   if (std::abs(e_in - e_out) > (n - 1) * step * (1.0 + 1e-12)) return false;
   double lo = 0.0;
   double hi = 0.0;
-  for (int i = 0; i < n; ++i) {
-    hi += std::min({e_in + i * step, e_out + (n - 1 - i) * step, v_max});
-    lo += std::max({e_in - i * step, e_out - (n - 1 - i) * step, 0.0});
-  }
+  bounds(e_in, e_out, v_max, step, n, &lo, &hi);
   // Endpoint speeds are part of both bounds (clamped above, so they must be within v_max).
   const double tol = 1e-12 * std::max(1.0, area);
   if (area < lo - tol || area > hi + tol) return false;
@@ -63,9 +90,27 @@ bool profile(double e_in, double e_out, double area, double v_max, double step, 
 int periodsFor(double e_in, double e_out, double area, double v_max, double step) {
   // n * v_max >= area is necessary; past ramps of 2 v_max / step and the endpoints' own ramps
   // no new count becomes possible.
-  const int first = std::max(1, static_cast<int>(std::floor(area / v_max)));
+  int first = std::max(1, static_cast<int>(std::floor(area / v_max)));
   const int last =
       static_cast<int>(std::ceil(area / v_max)) + 4 * static_cast<int>(std::ceil(v_max / step)) + 8;
+  // The fastest profile's area grows with n: no count below the first whose fastest profile
+  // reaches the area works, so bisect for it before trying counts in order.
+  const double tol = 1e-12 * std::max(1.0, area);
+  int lo = first;
+  int hi = last;
+  while (lo < hi) {
+    const int mid = lo + (hi - lo) / 2;
+    double lo_sum = 0.0;
+    double hi_sum = 0.0;
+    bounds(e_in, e_out, v_max, step, mid, &lo_sum, &hi_sum);
+    if (mid > 1 && hi_sum >= area - tol) {
+      hi = mid;
+    } else {
+      lo = mid + 1;
+    }
+  }
+  if (first > 1 || !profile(e_in, e_out, area, v_max, step, 1, nullptr))
+    first = std::max(first, lo);
   for (int n = first; n <= last; ++n) {
     if (profile(e_in, e_out, area, v_max, step, n, nullptr)) return n;
   }
@@ -115,8 +160,17 @@ std::vector<PathPiece> pathPieces(const Trajectory& traj) {
   return pieces;
 }
 
-Trajectory timePieces(const Pose2& start, const std::vector<PathPiece>& pieces,
-                      const RobotDef& robot, const TimingLimits& limits) {
+namespace {
+
+// The junction speeds of the fastest profile along `pieces` and each piece's period count
+// (file comment in the header): junction j joins piece j - 1 and piece j, rest before the first
+// and after the last. Throws Error on limits that are not positive.
+struct Plan {
+  std::vector<double> junction;
+  std::vector<int> periods;
+};
+
+Plan planProfile(const std::vector<PathPiece>& pieces, const TimingLimits& limits) {
   const double v_max = limits.max_wheel_speed_radps;
   const double step = limits.max_wheel_accel_radps2 * limits.period_s;
   const double dt = limits.period_s;
@@ -124,8 +178,9 @@ Trajectory timePieces(const Pose2& start, const std::vector<PathPiece>& pieces,
     throw Error("timing: speed, acceleration and period must be positive");
   }
   const std::size_t k = pieces.size();
-  // Junction j joins piece j - 1 and piece j; rest before the first and after the last.
-  std::vector<double> e(k + 1);
+  Plan plan;
+  std::vector<double>& e = plan.junction;
+  e.resize(k + 1);
   for (std::size_t j = 0; j <= k; ++j) {
     const WheelSpeeds before = j > 0 ? pieces[j - 1].direction : WheelSpeeds{};
     const WheelSpeeds after = j < k ? pieces[j].direction : WheelSpeeds{};
@@ -152,12 +207,29 @@ Trajectory timePieces(const Pose2& start, const std::vector<PathPiece>& pieces,
     }
     if (!lowered) break;
   }
+  plan.periods.resize(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    plan.periods[i] = periodsFor(e[i], e[i + 1], area[i], v_max, step);
+    if (plan.periods[i] == 0) throw Error("timing: no profile for a piece (internal)");
+  }
+  return plan;
+}
+
+}  // namespace
+
+Trajectory timePieces(const Pose2& start, const std::vector<PathPiece>& pieces,
+                      const RobotDef& robot, const TimingLimits& limits) {
+  const Plan plan = planProfile(pieces, limits);
+  const double v_max = limits.max_wheel_speed_radps;
+  const double step = limits.max_wheel_accel_radps2 * limits.period_s;
+  const double dt = limits.period_s;
+  const std::vector<double>& e = plan.junction;
   Trajectory traj;
   Pose2 pose = start;
   std::vector<double> speeds;
-  for (std::size_t i = 0; i < k; ++i) {
-    const int n = periodsFor(e[i], e[i + 1], area[i], v_max, step);
-    if (n == 0 || !profile(e[i], e[i + 1], area[i], v_max, step, n, &speeds)) {
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    if (!profile(e[i], e[i + 1], pieces[i].travel_rad / dt, v_max, step, plan.periods[i],
+                 &speeds)) {
       throw Error("timing: no profile for a piece (internal)");
     }
     for (double u : speeds) {
@@ -168,6 +240,12 @@ Trajectory timePieces(const Pose2& start, const std::vector<PathPiece>& pieces,
   }
   traj.points.push_back({static_cast<double>(traj.points.size()) * dt, pose, {}});
   return traj;
+}
+
+double timedDuration(const std::vector<PathPiece>& pieces, const TimingLimits& limits) {
+  long periods = 0;
+  for (int n : planProfile(pieces, limits).periods) periods += n;
+  return static_cast<double>(periods) * limits.period_s;
 }
 
 Trajectory retime(const Trajectory& traj, const RobotDef& robot, const TimingLimits& limits) {

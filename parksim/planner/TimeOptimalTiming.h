@@ -57,6 +57,10 @@ std::vector<PathPiece> pathPieces(const Trajectory& traj);
 Trajectory timePieces(const Pose2& start, const std::vector<PathPiece>& pieces,
                       const RobotDef& robot, const TimingLimits& limits);
 
+/// The duration of timePieces(start, pieces, ...), s, without building its rows: the number of
+/// periods the profile takes times the period. O(pieces) per lowering pass.
+double timedDuration(const std::vector<PathPiece>& pieces, const TimingLimits& limits);
+
 /// timePieces along the geometry of `traj`, from its first pose. The end pose agrees with the
 /// input's up to rounding.
 Trajectory retime(const Trajectory& traj, const RobotDef& robot, const TimingLimits& limits);
