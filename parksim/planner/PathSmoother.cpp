@@ -15,8 +15,11 @@ namespace {
 
 // A candidate must be faster by more than this to be kept, s.
 constexpr double kImprovementS = 1e-9;
-// The bisection pass starts shortcuts from about this many junctions at most.
+// The bisection pass starts shortcuts from about this many junctions at most, on the path
+// split into parts of about this length (m), and runs at most this many times.
 constexpr std::size_t kBisectionStarts = 48;
+constexpr double kDensifyM = 0.05;
+constexpr int kBisectionPasses = 3;
 // Pieces that turn or drive less than this are not corners' parts, m or rad.
 constexpr double kTinyMotion = 1e-9;
 
@@ -87,9 +90,28 @@ class Path {
     return j;
   }
 
+  // Splits every piece into equal parts whose faster wheel turns at most `travel_rad`, so that
+  // shortcuts may start and end along long pieces too. Times exactly as before.
+  void densify(double travel_rad) {
+    std::vector<PathPiece> out;
+    for (const PathPiece& p : pieces_) {
+      const int n = std::max(1, static_cast<int>(std::ceil(p.travel_rad / travel_rad)));
+      for (int k = 0; k < n; ++k) out.push_back({p.direction, p.travel_rad / n});
+    }
+    pieces_ = std::move(out);
+    update();
+  }
+
   void replace(std::vector<PathPiece> pieces) {
     pieces_ = std::move(pieces);
     update();
+  }
+
+  // Joins consecutive pieces of one direction again.
+  void join() {
+    std::vector<PathPiece> joined;
+    for (const PathPiece& p : pieces_) appendPiece(joined, p);
+    replace(std::move(joined));
   }
 
  private:
@@ -175,15 +197,22 @@ class Run {
     return t + cost_.junctionTime(last, after);
   }
 
-  // From each junction in turn, the farthest shortcut among junctions at halving distances. On
-  // paths of many short pieces (a controller's, one per period) only about kBisectionStarts
-  // evenly spread junctions start shortcuts, bounding the pass.
+  // From each junction in turn, the farthest shortcut among junctions at halving distances,
+  // on the path split into parts of about kDensifyM (so that shortcuts may leave from and land
+  // on long pieces), until a pass keeps none. On paths of many pieces only about
+  // kBisectionStarts evenly spread junctions start shortcuts, bounding a pass.
   void bisectionShortcuts() {
-    const std::size_t stride = std::max<std::size_t>(1, path_.size() / kBisectionStarts);
-    for (std::size_t i = 0; i + 1 < path_.size(); i += stride) {
-      for (std::size_t gap = path_.size() - i; gap >= 2; gap /= 2) {
-        if (tryShortcut(i, i + gap)) break;
+    for (int pass = 0; pass < kBisectionPasses; ++pass) {
+      path_.densify(kDensifyM / robot_.wheel_radius_m);
+      const int before = stats_.shortcuts;
+      const std::size_t stride = std::max<std::size_t>(1, path_.size() / kBisectionStarts);
+      for (std::size_t i = 0; i + 1 < path_.size(); i += stride) {
+        for (std::size_t gap = path_.size() - i; gap >= 2; gap /= 2) {
+          if (tryShortcut(i, i + gap)) break;
+        }
       }
+      path_.join();
+      if (stats_.shortcuts == before) break;
     }
   }
 

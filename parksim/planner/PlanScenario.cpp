@@ -247,8 +247,8 @@ PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checke
   if (!(setup.timing_period_s > 0.0)) throw Error("planScenario: timing_period_s must be > 0");
   if (std::optional<PlanResult> failed = placementFailure(scenario, setup)) return *failed;
   const MotionValidator validator(checker, scenario.robot, scenario.lot, setup.validation);
-  const TimingLimits limits =
-      timingLimits(scenario.robot, setup.feedback_headroom, setup.timing_period_s);
+  const TimingLimits limits = timingLimits(scenario.robot, setup.feedback_headroom,
+                                           setup.timing_period_s, setup.start_jerk_radps3);
   const bool time_optimal = setup.timing == TimingKind::kTimeOptimal;
   PlanResult result;
   if (setup.planner.kind == PlannerKind::kTimeAStar) {

@@ -92,6 +92,10 @@ struct PlanSetup {
   /// speed by one acceleration step (limit x period): 0.02 s keeps the steps at 0.8 rad/s,
   /// which the motors' speed loops follow (docs/planning.md).
   double timing_period_s = 0.02;
+  /// Jerk limit of the first speed-up from rest of a time-optimal plan, rad/s^3 (>= 0, 0:
+  /// none): from standstill the drive train's static friction and the speed loop's lag let the
+  /// robot fall behind a plan that starts at full acceleration (TimeOptimalTiming.h).
+  double start_jerk_radps3 = 100.0;
 };
 
 /// Area of the study's lot (1.8 x 1.2 m), the unit of the default budget's scaling, m^2.

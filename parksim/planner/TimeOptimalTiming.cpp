@@ -54,12 +54,21 @@ void bounds(double e_in, double e_out, double v_max, double step, int n, double*
   *lo = rampDownSum(e_in, step, m_down) + rampDownSum(e_out, step, n - m_down);
 }
 
+// The fastest speed `i` periods into a soft start from rest: the speed grows by `jstep` more
+// each period (a jerk limit), up to `step` per period.
+double softRamp(int i, double step, double jstep) {
+  // Increments jstep, 2 jstep, ... while below step, then step.
+  const int k = std::min(i + 1, static_cast<int>(std::floor(step / jstep)));
+  return jstep * k * (k + 1) / 2.0 + (i + 1 - k) * step;
+}
+
 // Speed profile of one piece: `n` periods, first at e_in, last at e_out, steps of at most
 // `step`, speeds in [0, v_max], summing to `area` (travel / period). The bounds L_i <= u_i <=
 // U_i are the slowest and fastest such sequences; their blend hits the area exactly and keeps
-// every bound (both have steps within `step`). False when no such profile has n periods.
+// every bound (both have steps within `step`). With `jstep` > 0 the piece starts from rest
+// softly: U_i rises as softRamp (and e_in is jstep). False when no such profile has n periods.
 bool profile(double e_in, double e_out, double area, double v_max, double step, int n,
-             std::vector<double>* out) {
+             std::vector<double>* out, double jstep = 0.0) {
   if (n == 1) {
     if (std::abs(e_in - e_out) > 1e-12 * std::max(1.0, e_in) ||
         std::abs(e_in - area) > 1e-12 * std::max(1.0, area)) {
@@ -69,9 +78,17 @@ bool profile(double e_in, double e_out, double area, double v_max, double step, 
     return true;
   }
   if (std::abs(e_in - e_out) > (n - 1) * step * (1.0 + 1e-12)) return false;
+  auto upper = [&](int i) {
+    const double rise = jstep > 0.0 ? softRamp(i, step, jstep) : e_in + i * step;
+    return std::min({rise, e_out + (n - 1 - i) * step, v_max});
+  };
   double lo = 0.0;
   double hi = 0.0;
   bounds(e_in, e_out, v_max, step, n, &lo, &hi);
+  if (jstep > 0.0) {
+    hi = 0.0;
+    for (int i = 0; i < n; ++i) hi += upper(i);
+  }
   // Endpoint speeds are part of both bounds (clamped above, so they must be within v_max).
   const double tol = 1e-12 * std::max(1.0, area);
   if (area < lo - tol || area > hi + tol) return false;
@@ -79,20 +96,21 @@ bool profile(double e_in, double e_out, double area, double v_max, double step, 
   const double f = hi - lo > 0.0 ? std::clamp((area - lo) / (hi - lo), 0.0, 1.0) : 0.0;
   out->resize(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
-    const double u_hi = std::min({e_in + i * step, e_out + (n - 1 - i) * step, v_max});
     const double u_lo = std::max({e_in - i * step, e_out - (n - 1 - i) * step, 0.0});
-    (*out)[i] = u_lo + f * (u_hi - u_lo);
+    (*out)[i] = u_lo + f * (upper(i) - u_lo);
   }
   return true;
 }
 
 // Smallest period count with a profile, 0 when none exists.
-int periodsFor(double e_in, double e_out, double area, double v_max, double step) {
+int periodsFor(double e_in, double e_out, double area, double v_max, double step,
+               double jstep = 0.0) {
   // n * v_max >= area is necessary; past ramps of 2 v_max / step and the endpoints' own ramps
-  // no new count becomes possible.
+  // (a soft start's longer one too) no new count becomes possible.
   int first = std::max(1, static_cast<int>(std::floor(area / v_max)));
-  const int last =
-      static_cast<int>(std::ceil(area / v_max)) + 4 * static_cast<int>(std::ceil(v_max / step)) + 8;
+  const int soft = jstep > 0.0 ? static_cast<int>(std::ceil(step / jstep)) : 0;
+  const int last = static_cast<int>(std::ceil(area / v_max)) +
+                   4 * static_cast<int>(std::ceil(v_max / step)) + 2 * soft + 8;
   // The fastest profile's area grows with n: no count below the first whose fastest profile
   // reaches the area works, so bisect for it before trying counts in order.
   const double tol = 1e-12 * std::max(1.0, area);
@@ -102,17 +120,23 @@ int periodsFor(double e_in, double e_out, double area, double v_max, double step
     const int mid = lo + (hi - lo) / 2;
     double lo_sum = 0.0;
     double hi_sum = 0.0;
-    bounds(e_in, e_out, v_max, step, mid, &lo_sum, &hi_sum);
+    if (jstep > 0.0) {
+      for (int i = 0; i < mid; ++i) {
+        hi_sum += std::min({softRamp(i, step, jstep), e_out + (mid - 1 - i) * step, v_max});
+      }
+    } else {
+      bounds(e_in, e_out, v_max, step, mid, &lo_sum, &hi_sum);
+    }
     if (mid > 1 && hi_sum >= area - tol) {
       hi = mid;
     } else {
       lo = mid + 1;
     }
   }
-  if (first > 1 || !profile(e_in, e_out, area, v_max, step, 1, nullptr))
+  if (first > 1 || !profile(e_in, e_out, area, v_max, step, 1, nullptr, jstep))
     first = std::max(first, lo);
   for (int n = first; n <= last; ++n) {
-    if (profile(e_in, e_out, area, v_max, step, n, nullptr)) return n;
+    if (profile(e_in, e_out, area, v_max, step, n, nullptr, jstep)) return n;
   }
   return 0;
 }
@@ -128,10 +152,13 @@ double restToRestBound(double travel, const TimingLimits& l) {
 
 }  // namespace
 
-TimingLimits timingLimits(const RobotDef& robot, double headroom, double period_s) {
+TimingLimits timingLimits(const RobotDef& robot, double headroom, double period_s,
+                          double start_jerk_radps3) {
   if (!(headroom >= 0.0 && headroom < 1.0)) throw Error("timing: headroom must be in [0, 1)");
   if (!(period_s > 0.0)) throw Error("timing: period must be positive");
-  return {(1.0 - headroom) * robot.max_wheel_speed_radps, robot.max_wheel_accel_radps2, period_s};
+  if (!(start_jerk_radps3 >= 0.0)) throw Error("timing: start jerk must be >= 0");
+  return {(1.0 - headroom) * robot.max_wheel_speed_radps, robot.max_wheel_accel_radps2, period_s,
+          start_jerk_radps3};
 }
 
 PathPiece pieceOf(const WheelSpeeds& wheels, double duration_s) {
@@ -168,6 +195,7 @@ namespace {
 struct Plan {
   std::vector<double> junction;
   std::vector<int> periods;
+  double start_jstep = 0.0;  // the first piece's soft start (0: none)
 };
 
 Plan planProfile(const std::vector<PathPiece>& pieces, const TimingLimits& limits) {
@@ -179,6 +207,7 @@ Plan planProfile(const std::vector<PathPiece>& pieces, const TimingLimits& limit
   }
   const std::size_t k = pieces.size();
   Plan plan;
+  plan.start_jstep = limits.start_jerk_radps3 * dt * dt;
   std::vector<double>& e = plan.junction;
   e.resize(k + 1);
   for (std::size_t j = 0; j <= k; ++j) {
@@ -188,6 +217,10 @@ Plan planProfile(const std::vector<PathPiece>& pieces, const TimingLimits& limit
         maxAbs({before.left_radps - after.left_radps, before.right_radps - after.right_radps});
     e[j] = jump > 0.0 ? std::min(v_max, step / jump) : v_max;
   }
+  // A soft start begins one jerk step above rest.
+  const double jstep = limits.start_jerk_radps3 * dt * dt;
+  if (jstep > 0.0 && k > 0) e[0] = std::min(e[0], jstep);
+  auto soft = [&](std::size_t i) { return i == 0 ? jstep : 0.0; };
   std::vector<double> area(k);
   for (std::size_t i = 0; i < k; ++i) area[i] = pieces[i].travel_rad / dt;
   // Only pieces next to a lowered junction need checking again.
@@ -197,8 +230,9 @@ Plan planProfile(const std::vector<PathPiece>& pieces, const TimingLimits& limit
     for (std::size_t i = 0; i < k; ++i) {
       if (!check[i]) continue;
       check[i] = 0;
-      if (periodsFor(e[i], e[i + 1], area[i], v_max, step) > 0) continue;
-      const std::size_t j = e[i] >= e[i + 1] ? i : i + 1;
+      if (periodsFor(e[i], e[i + 1], area[i], v_max, step, soft(i)) > 0) continue;
+      // The soft start's own speed stays: it is already the lowest a start can have.
+      const std::size_t j = (e[i] >= e[i + 1] && !(i == 0 && soft(0) > 0.0)) ? i : i + 1;
       e[j] = e[j] > kZeroSpeed * step ? kLowering * e[j] : 0.0;
       check[i] = 1;
       if (j > 0) check[j - 1] = 1;
@@ -209,7 +243,7 @@ Plan planProfile(const std::vector<PathPiece>& pieces, const TimingLimits& limit
   }
   plan.periods.resize(k);
   for (std::size_t i = 0; i < k; ++i) {
-    plan.periods[i] = periodsFor(e[i], e[i + 1], area[i], v_max, step);
+    plan.periods[i] = periodsFor(e[i], e[i + 1], area[i], v_max, step, soft(i));
     if (plan.periods[i] == 0) throw Error("timing: no profile for a piece (internal)");
   }
   return plan;
@@ -228,8 +262,8 @@ Trajectory timePieces(const Pose2& start, const std::vector<PathPiece>& pieces,
   Pose2 pose = start;
   std::vector<double> speeds;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
-    if (!profile(e[i], e[i + 1], pieces[i].travel_rad / dt, v_max, step, plan.periods[i],
-                 &speeds)) {
+    if (!profile(e[i], e[i + 1], pieces[i].travel_rad / dt, v_max, step, plan.periods[i], &speeds,
+                 i == 0 ? plan.start_jstep : 0.0)) {
       throw Error("timing: no profile for a piece (internal)");
     }
     for (double u : speeds) {
