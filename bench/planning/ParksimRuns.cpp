@@ -60,7 +60,8 @@ BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& wor
   }
   r.scenario = scenario.name;
   r.seed = def.setup.planner.seed;
-  r.budget = budgetName(def.setup.planner);
+  // The budget as planned: an automatic one resolved for this lot.
+  r.budget = budgetName(resolvedPlanSetup(def.setup, scenario).planner);
   r.solved = result.solved();
   r.status = toString(result.status);
   r.time_total_s = result.stats.times.total_s;

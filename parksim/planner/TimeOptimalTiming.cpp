@@ -78,6 +78,8 @@ bool profile(double e_in, double e_out, double area, double v_max, double step, 
     return true;
   }
   if (std::abs(e_in - e_out) > (n - 1) * step * (1.0 + 1e-12)) return false;
+  // A soft start must reach the speed it leaves with, as a hard one always can.
+  if (jstep > 0.0 && softRamp(n - 1, step, jstep) < e_out * (1.0 - 1e-12)) return false;
   auto upper = [&](int i) {
     const double rise = jstep > 0.0 ? softRamp(i, step, jstep) : e_in + i * step;
     return std::min({rise, e_out + (n - 1 - i) * step, v_max});

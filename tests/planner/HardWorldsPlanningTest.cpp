@@ -55,7 +55,10 @@ TEST_P(DefaultPlanning, SolvesWithAValidPlanWithinTheHeadroom) {
 
 INSTANTIATE_TEST_SUITE_P(Worlds, DefaultPlanning,
                          ::testing::Values("head_in", "parallel", "tight_parallel",
-                                           "garage_reverse", "clutter", "corridor", "big_lot"));
+                                           "garage_reverse", "clutter", "corridor", "big_lot",
+                                           // issue 18's lots the planner was not tuned on
+                                           "narrow_gate", "dead_end", "slalom", "angled_bays",
+                                           "far_lot_200m", "far_lot_1000m"));
 
 TEST(DefaultPlanning, HybridAStarIgnoresTheSeed) {
   const Scenario s = world("garage_reverse");
