@@ -59,8 +59,10 @@ inline constexpr int kAutoIterations = 0;
 struct PlanSetup {
   /// max_iterations kAutoIterations (the default): defaultIterationBudget(kind, lot). smooth:
   /// PathSmoother.h after every planner (time-a-star smooths each path it finds itself).
-  PlannerDef planner{
-      .kind = PlannerKind::kTimeAStar, .max_iterations = kAutoIterations, .smooth = true};
+  PlannerDef planner{.kind = PlannerKind::kTimeAStar,
+                     .max_iterations = kAutoIterations,
+                     .smooth = true,
+                     .smoothing_attempts = 300};
   SteeringKind steering_kind = SteeringKind::kBalkcomMason;
   /// Move-to-pose parameters; its to-goal tolerance is taken from the scenario's goal region,
   /// scaled by goal_tolerance_fraction.
