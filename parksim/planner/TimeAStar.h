@@ -61,7 +61,9 @@ struct TimeAStarDef {
   bool from_goal = true;
   /// When the coarse search expands every reachable cell of its window, it starts again with a
   /// fine zone around the poses it grows from: finer cells, heading bins, moves and turns within
-  /// fine_zone_m (a negative value selects twice the footprint radius; 0 disables the zone).
+  /// fine_zone_m (a negative value selects twice the footprint radius; 0 disables the zone). If
+  /// that runs dry too, once more with the zone's cells, moves and turns halved and its heading
+  /// bins doubled.
   double fine_zone_m = -1.0;
   double fine_cell_m = 0.002;   ///< (x, y) cell side in the fine zone, m
   int fine_heading_bins = 180;  ///< heading cells in the fine zone (2 degrees)

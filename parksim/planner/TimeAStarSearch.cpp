@@ -60,8 +60,7 @@ class Search {
     cell_ = def_.cell_m > 0.0 ? def_.cell_m : 0.25 * radius;
     const double step = def_.step_m > 0.0 ? def_.step_m : 1.5 * cell_;
     coarse_ = movesOf(makePrimitives(step, def_.arc_radii_m, def_.spin_angles_rad), c.robot, cost_);
-    fine_ = movesOf(makePrimitives(def_.fine_step_m, def_.arc_radii_m, def_.fine_spin_angles_rad),
-                    c.robot, cost_);
+    setFineLevel(1);
     fine_zone_ = def_.fine_zone_m < 0.0 ? 2.0 * radius : def_.fine_zone_m;
     width_ = c.window.x_max_m - c.window.x_min_m;
     height_ = c.window.y_max_m - c.window.y_min_m;
@@ -89,6 +88,7 @@ class Search {
   static std::int64_t cellsAlong(double length, double cell) {
     return static_cast<std::int64_t>(std::ceil(length / cell));
   }
+  void setFineLevel(int level);
   bool inFineZone(const Pose2& p) const;
   std::int64_t key(const Pose2& p) const;
   double heuristic(const Pose2& p) const;
@@ -115,6 +115,8 @@ class Search {
   std::int64_t coarse_cells_ = 0;
   std::vector<Move> coarse_;
   std::vector<Move> fine_;
+  double fine_cell_ = 0.0;  // the fine zone's cell side and heading bins at the current level
+  int fine_bins_ = 0;
   bool fine_on_ = false;
   std::unique_ptr<ObstacleHeuristic> grid_;
   double grid_slack_m_ = 0.0;
@@ -127,6 +129,18 @@ class Search {
   TimeSearchOutcome out_;
 };
 
+// The fine zone at `level` (1, 2, ...): TimeAStarDef's fine cells, moves and turns at level 1,
+// each level halving cells, moves and turns and doubling the heading bins.
+void Search::setFineLevel(int level) {
+  const double scale = std::ldexp(1.0, 1 - level);
+  fine_cell_ = scale * def_.fine_cell_m;
+  fine_bins_ = static_cast<int>(std::lround(def_.fine_heading_bins / scale));
+  std::vector<double> spins;
+  for (double a : def_.fine_spin_angles_rad) spins.push_back(scale * a);
+  fine_ =
+      movesOf(makePrimitives(scale * def_.fine_step_m, def_.arc_radii_m, spins), c_.robot, cost_);
+}
+
 bool Search::inFineZone(const Pose2& p) const {
   if (!fine_on_) return false;
   for (const Pose2& q : sources_) {
@@ -137,8 +151,8 @@ bool Search::inFineZone(const Pose2& p) const {
 
 std::int64_t Search::key(const Pose2& p) const {
   const bool fine = inFineZone(p);
-  const double c = fine ? def_.fine_cell_m : cell_;
-  const int bins = fine ? def_.fine_heading_bins : def_.heading_bins;
+  const double c = fine ? fine_cell_ : cell_;
+  const int bins = fine ? fine_bins_ : def_.heading_bins;
   const std::int64_t nx = cellsAlong(width_, c) + 1;
   const std::int64_t ny = cellsAlong(height_, c) + 1;
   const auto i = static_cast<std::int64_t>(std::floor((p.x - c_.window.x_min_m) / c));
@@ -289,10 +303,13 @@ std::vector<PathPiece> Search::pathTo(int id) const {
 
 TimeSearchOutcome Search::run(bool backward) {
   buildHeuristic();
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    if (attempt == 1) {
+  // Coarse, then the fine zone, then once more at half its cells and moves: a slot tighter
+  // than the fine zone's resolution is searched finer before the search gives up.
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    if (attempt >= 1) {
       if (fine_zone_ <= 0.0) break;
       fine_on_ = true;
+      setFineLevel(attempt);
     }
     reset();
     while (expandNext()) {

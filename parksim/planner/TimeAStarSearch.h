@@ -1,7 +1,7 @@
 #pragma once
 // Internal to TimeAStar: one weighted A* search in time over one window (TimeAStar.h explains
 // the search). Coarse first; when that expands every reachable cell of the window, once more
-// with the fine zone around the poses it grows from.
+// with the fine zone around the poses it grows from, and once more with that zone twice as fine.
 
 #include <chrono>
 #include <vector>
