@@ -1,9 +1,11 @@
 // bench_planning: plan quality and planning time against the best known (issue 18).
 //
-//   bench_planning [--configs default|portfolio] [--seeds N] [--first-seed S]
+//   bench_planning [--configs default|previous|portfolio] [--seeds N] [--first-seed S]
 //                  [--budget-scale K] [--anytime-s T] [--best FILE] [--out DIR] WORLD...
 //
 // default:   the library's defaults (PlanSetup{}), as every front-end plans.
+// previous:  the defaults before issue 18 (hybrid-a-star, no smoothing, rows every 0.1 s, no
+//            soft start), for before-and-after tables.
 // portfolio: every planner, the tree planners with every exact steering, all smoothed, with K
 //            times their default iteration budget and smoothing attempts (default K = 10), and
 //            time-a-star anytime for T s (default 2): the "best known" of docs/benchmarks.md.
@@ -57,8 +59,8 @@ Options parse(int argc, char** argv) {
     };
     if (a == "--configs") {
       o.configs = value();
-      if (o.configs != "default" && o.configs != "portfolio") {
-        throw Error("--configs: expected default or portfolio, got '" + o.configs + "'");
+      if (o.configs != "default" && o.configs != "previous" && o.configs != "portfolio") {
+        throw Error("--configs: expected default, previous or portfolio, got '" + o.configs + "'");
       }
     } else if (a == "--seeds") {
       o.seeds = std::stoi(value());
@@ -90,6 +92,16 @@ std::vector<PlanSetup> configurations(const Options& o, const Scenario& scenario
   PlanSetup base;
   base.planner.record_tree = false;
   if (o.configs == "default") return {base};
+  if (o.configs == "previous") {
+    PlanSetup previous = base;
+    previous.planner.kind = PlannerKind::kHybridAStar;
+    previous.planner.smooth = false;
+    previous.planner.smoothing_attempts = 100;
+    previous.steering_kind = SteeringKind::kReedsShepp;
+    previous.timing_period_s = 0.1;
+    previous.start_jerk_radps3 = 0.0;
+    return {previous};
+  }
   std::vector<PlanSetup> out;
   for (PlannerKind kind : allPlannerKinds()) {
     PlanSetup s = base;

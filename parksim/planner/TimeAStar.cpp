@@ -71,7 +71,8 @@ class Solve {
   long queries_before_ = 0;
   double margin_m_ = 0.0;
 
-  std::vector<PathPiece> best_;  // driven from the start
+  std::vector<PathPiece> best_;         // driven from the start
+  std::vector<PathPiece> first_found_;  // the first search's path, as found
   double best_s_ = std::numeric_limits<double>::infinity();
   PlanResult result_;
 };
@@ -128,6 +129,7 @@ TimeSearchOutcome Solve::search(const Pose2& start, const Pose2& goal,
 
 // Smooths a path found and keeps it when it is the fastest so far.
 void Solve::offer(const Pose2& start, std::vector<PathPiece> pieces) {
+  if (first_found_.empty()) first_found_ = pieces;
   if (def_.smooth) {
     const Clock::time_point t0 = Clock::now();
     PathSmoothingStats s;
@@ -201,8 +203,15 @@ PlanResult Solve::run(const Pose2& start, const GoalRegion& goal) {
   }
   Trajectory traj = timePieces(start, best_, robot_, limits_);
   if (!validator_.isValid(traj)) {
-    return finish(PlanStatus::kIterationLimit,
-                  "the joined plan failed its whole-path check (rounding); no plan");
+    // Only rounding can make a path of validated stretches fail as a whole: fall back to the
+    // path as the search found it.
+    best_ = first_found_;
+    traj = timePieces(start, best_, robot_, limits_);
+    result_.cost_history.push_back({seconds(t_begin_), result_.stats.iterations, 0.0});
+    if (!validator_.isValid(traj)) {
+      return finish(PlanStatus::kIterationLimit,
+                    "the joined plan failed its whole-path check (rounding); no plan");
+    }
   }
   result_.cost = traj.duration();
   result_.cost_history.back().cost = result_.cost;
