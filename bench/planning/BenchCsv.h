@@ -1,7 +1,8 @@
 #pragma once
 // bench.csv: one row per benchmark run. The fixed columns come first, in this order:
 //   library,planner,space,scenario,seed,budget,solved,status,valid,time_first_s,time_total_s,
-//   cpu_total_s,length_m,cusps,min_clearance_m,cost,iterations,iterations_first,tree_size,
+//   cpu_total_s,length_m,cusps,duration_s,duration_lower_bound_s,free_space_bound_s,
+//   min_clearance_m,steering_reversals_per_m,cost,iterations,iterations_first,tree_size,
 //   collision_queries
 // then the provenance of the build that ran them (parksim/core/Provenance.h):
 //   parksim_version,git_commit,git_dirty,build_type,compiler,bullet_precision

@@ -1,4 +1,5 @@
 #include "bench/planning/ParksimRuns.h"
+#include "bench/planning/PlanShape.h"
 #include "parksim/core/NumberFormat.h"
 
 #include <time.h>
@@ -50,12 +51,17 @@ BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& wor
   r.library = "parksim";
   r.planner = toString(def.setup.planner.kind);
   if (def.setup.planner.smooth) r.planner += "+smooth";
-  // Hybrid A* drives its own motion primitives and Reeds-Shepp curves, whatever the steering.
-  r.space = def.setup.planner.kind == PlannerKind::kHybridAStar ? "primitives+reeds-shepp"
-                                                                : toString(def.setup.steering_kind);
+  // The A* planners drive their own motion primitives and analytic curves, whatever the
+  // steering.
+  switch (def.setup.planner.kind) {
+    case PlannerKind::kHybridAStar: r.space = "primitives+reeds-shepp"; break;
+    case PlannerKind::kTimeAStar: r.space = "primitives+balkcom-mason"; break;
+    default: r.space = toString(def.setup.steering_kind); break;
+  }
   r.scenario = scenario.name;
   r.seed = def.setup.planner.seed;
-  r.budget = budgetName(def.setup.planner);
+  // The budget as planned: an automatic one resolved for this lot.
+  r.budget = budgetName(resolvedPlanSetup(def.setup, scenario).planner);
   r.solved = result.solved();
   r.status = toString(result.status);
   r.time_total_s = result.stats.times.total_s;
@@ -76,6 +82,8 @@ BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& wor
     r.cusps = result.trajectory.cusps(scenario.robot);
     r.duration_s = result.trajectory.duration();
     r.duration_lower_bound_s = result.duration_lower_bound_s;
+    r.free_space_bound_s = result.free_space_bound_s;
+    r.steering_reversals_per_m = planShape(result.trajectory, scenario.robot).reversals_per_m;
     r.cost = result.cost;
   }
   return r;

@@ -99,7 +99,7 @@ struct EpisodeRequest {
   /// The world (loadWorld). Required.
   std::shared_ptr<const World> world;
 
-  /// How to plan. Its defaults are parksim's: hybrid-a-star with the lot's budget, time-optimal
+  /// How to plan. Its defaults are parksim's: time-a-star with smoothing, time-optimal
   /// timing (PlanScenario.h).
   PlanSetup plan;
   /// Drive this plan instead of planning (a plan file, a Python array). It must start at the

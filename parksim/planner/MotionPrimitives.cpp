@@ -7,9 +7,17 @@ namespace parksim {
 
 std::vector<MotionPrimitive> makePrimitives(double step_m, const std::vector<double>& radii_m,
                                             double turn_in_place_rad) {
-  if (!(step_m > 0.0) || !(turn_in_place_rad >= 0.0)) {
+  if (!(turn_in_place_rad >= 0.0)) {
     throw Error("motion primitives: step must be positive, in-place turn >= 0");
   }
+  return makePrimitives(
+      step_m, radii_m,
+      turn_in_place_rad > 0.0 ? std::vector<double>{turn_in_place_rad} : std::vector<double>{});
+}
+
+std::vector<MotionPrimitive> makePrimitives(double step_m, const std::vector<double>& radii_m,
+                                            const std::vector<double>& spin_angles_rad) {
+  if (!(step_m > 0.0)) throw Error("motion primitives: step must be positive, in-place turn >= 0");
   std::vector<double> curvatures{0.0};
   for (double r : radii_m) {
     if (!(r > 0.0)) throw Error("motion primitives: radii must be positive");
@@ -23,9 +31,10 @@ std::vector<MotionPrimitive> makePrimitives(double step_m, const std::vector<dou
       out.push_back({{d, d * kappa}, dir, step_m, std::abs(step_m * kappa)});
     }
   }
-  if (turn_in_place_rad > 0.0) {
+  for (double angle : spin_angles_rad) {
+    if (!(angle > 0.0)) throw Error("motion primitives: in-place turns must be positive");
     for (double sign : {1.0, -1.0}) {
-      out.push_back({{0.0, sign * turn_in_place_rad}, 0, 0.0, turn_in_place_rad});
+      out.push_back({{0.0, sign * angle}, 0, 0.0, angle});
     }
   }
   return out;

@@ -26,6 +26,10 @@ struct MotionPrimitive {
 std::vector<MotionPrimitive> makePrimitives(double step_m, const std::vector<double>& radii_m,
                                             double turn_in_place_rad);
 
+/// As above with in-place turns by each of `spin_angles_rad` (each > 0), both ways.
+std::vector<MotionPrimitive> makePrimitives(double step_m, const std::vector<double>& radii_m,
+                                            const std::vector<double>& spin_angles_rad);
+
 /// Where `m` takes the robot from `from`.
 Pose2 applyPrimitive(const Pose2& from, const MotionPrimitive& m);
 

@@ -13,6 +13,25 @@ namespace parksim {
 ObstacleHeuristic::ObstacleHeuristic(const MotionValidator& validator, const LotBounds& lot,
                                      double cell_m, const Pose2& goal)
     : lot_(lot), cell_(cell_m) {
+  build(
+      [&](double x, double y) {
+        for (int h = 0; h < 8; ++h) {
+          if (validator.isValid(Pose2{x, y, h * kPi / 4.0})) return true;
+        }
+        return false;
+      },
+      goal);
+}
+
+ObstacleHeuristic::ObstacleHeuristic(const std::function<bool(double, double)>& fits,
+                                     const LotBounds& lot, double cell_m, const Pose2& goal)
+    : lot_(lot), cell_(cell_m) {
+  build(fits, goal);
+}
+
+void ObstacleHeuristic::build(const std::function<bool(double, double)>& fits, const Pose2& goal) {
+  const LotBounds& lot = lot_;
+  const double cell_m = cell_;
   if (!(cell_m > 0.0)) throw Error("obstacle heuristic: cell size must be positive");
   nx_ = std::max(1, static_cast<int>(std::ceil((lot.x_max_m - lot.x_min_m) / cell_m)));
   ny_ = std::max(1, static_cast<int>(std::ceil((lot.y_max_m - lot.y_min_m) / cell_m)));
@@ -22,12 +41,9 @@ ObstacleHeuristic::ObstacleHeuristic(const MotionValidator& validator, const Lot
     for (int i = 0; i < nx_; ++i) {
       const double x = std::min(lot.x_min_m + (i + 0.5) * cell_m, lot.x_max_m);
       const double y = std::min(lot.y_min_m + (j + 0.5) * cell_m, lot.y_max_m);
-      for (int h = 0; h < 8; ++h) {
-        if (validator.isValid(Pose2{x, y, h * kPi / 4.0})) {
-          free[static_cast<std::size_t>(j) * nx_ + i] = 1;
-          ++free_cells_;
-          break;
-        }
+      if (fits(x, y)) {
+        free[static_cast<std::size_t>(j) * nx_ + i] = 1;
+        ++free_cells_;
       }
     }
   }

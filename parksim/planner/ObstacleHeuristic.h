@@ -5,6 +5,7 @@
 // is Bullet's exact one, with the validator's margin and lot bounds). Blocked cells receive a
 // distance from their neighbours but pass none on, so poses near obstacles still get a value.
 
+#include <functional>
 #include <vector>
 
 #include "parksim/core/Pose2.h"
@@ -18,6 +19,10 @@ class ObstacleHeuristic {
   /// Builds the distance field over `lot` with square cells of `cell_m`, from `goal`.
   ObstacleHeuristic(const MotionValidator& validator, const LotBounds& lot, double cell_m,
                     const Pose2& goal);
+  /// As above with `fits(x, y)` saying whether a cell centre is free (FootprintFit.h) instead of
+  /// the validator's eight footprint queries.
+  ObstacleHeuristic(const std::function<bool(double, double)>& fits, const LotBounds& lot,
+                    double cell_m, const Pose2& goal);
 
   /// Grid distance from the cell of (x, y) to the goal, m; infinity where the goal is
   /// unreachable.
@@ -26,6 +31,7 @@ class ObstacleHeuristic {
   int freeCells() const { return free_cells_; }
 
  private:
+  void build(const std::function<bool(double, double)>& fits, const Pose2& goal);
   int index(double x, double y) const;
 
   LotBounds lot_;

@@ -13,4 +13,12 @@ const char* toString(PlanStatus status) {
   return "?";
 }
 
+const char* toString(PlanObjective objective) {
+  switch (objective) {
+    case PlanObjective::kPathCost: return "path_cost";
+    case PlanObjective::kDuration: return "duration";
+  }
+  return "?";
+}
+
 }  // namespace parksim

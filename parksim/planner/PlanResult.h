@@ -37,11 +37,19 @@ struct PhaseTimes {
   double total_s = 0.0;
 };
 
+/// What a plan's cost measures.
+enum class PlanObjective {
+  kPathCost,  ///< length plus reverse and cusp penalties (PathCost.h), m: "path_cost"
+  kDuration,  ///< the plan's duration as timed, s: "duration"
+};
+
+const char* toString(PlanObjective objective);
+
 /// One point of the solution cost history.
 struct CostSample {
   double time_s = 0.0;  ///< wall time since the search started, s
   int iteration = 0;    ///< iterations completed when the solution was found
-  double cost = 0.0;    ///< cost of the best solution from then on, m
+  double cost = 0.0;    ///< cost of the best solution from then on (m or s: PlanResult::objective)
 };
 
 struct PlanStats {
@@ -52,6 +60,7 @@ struct PlanStats {
   int connection_attempts = 0;        ///< kRrtConnect: tree-to-tree connections tried
   int rewires = 0;                    ///< kRrtStar: nodes given a cheaper parent
   int smoothing_shortcuts = 0;        ///< shortcuts smoothing kept
+  int smoothing_fillets = 0;          ///< corners smoothing turned into arcs (PathSmoother.h)
   long collision_queries = 0;         ///< footprint queries
   double first_solution_s = -1.0;     ///< wall time to the first solution, s; -1 if none
   int first_solution_iteration = -1;  ///< iterations completed at the first solution; -1 if none
@@ -64,13 +73,21 @@ struct PlanResult {
   Trajectory trajectory;               ///< start to goal, exactly as validated; empty unless solved
   std::vector<Pose2> waypoints;        ///< poses where the solution's edges join, start first
   std::vector<Trajectory> tree_edges;  ///< the trees' edges at the end, if recorded
-  /// Cost of `trajectory` (PlannerDef's weights), m; 0 unless solved.
+  /// Cost of `trajectory`, 0 unless solved: its path cost with PlannerDef's weights (m), or its
+  /// duration (s) for planners that minimise duration (`objective`).
   double cost = 0.0;
+  PlanObjective objective = PlanObjective::kPathCost;
   /// Set by planScenario: no timing of the trajectory's geometry within the timing limits is
   /// faster than this (durationLowerBound in TimeOptimalTiming.h), s; 0 unless solved.
   double duration_lower_bound_s = 0.0;
-  /// Every improvement of the best solution, in order; costs never increase and the last equals
-  /// `cost`. Non-optimising planners record their one solution (and smoothing's result).
+  /// Set by planScenario: no plan from the start to the goal within the timing limits, around
+  /// any obstacles, is faster than this (freeSpaceDurationBound in FreeSpaceBound.h: the
+  /// Balkcom-Mason optimum with the acceleration ramps from and to rest), s; 0 unless solved.
+  double free_space_bound_s = 0.0;
+  /// Every improvement of the best solution, in order; the last equals `cost`. Costs never
+  /// increase, except that smoothing, which makes a plan faster, may lengthen a path cost (m):
+  /// its result is recorded as it is. Non-optimising planners record their one solution (and
+  /// smoothing's result).
   std::vector<CostSample> cost_history;
   PlanStats stats;
 

@@ -5,10 +5,12 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <random>
 #include <string>
 
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
+#include "parksim/planner/FreeSpaceBound.h"
 #include "parksim/planner/SpeedProfile.h"
 
 namespace parksim {
@@ -18,13 +20,14 @@ const char* toString(SteeringKind kind) {
     case SteeringKind::kMoveToPose: return "move-to-pose";
     case SteeringKind::kRotateTranslateRotate: return "rotate-translate-rotate";
     case SteeringKind::kReedsShepp: return "reeds-shepp";
+    case SteeringKind::kBalkcomMason: return "balkcom-mason";
   }
   return "?";
 }
 
 std::vector<SteeringKind> allSteeringKinds() {
   return {SteeringKind::kMoveToPose, SteeringKind::kRotateTranslateRotate,
-          SteeringKind::kReedsShepp};
+          SteeringKind::kReedsShepp, SteeringKind::kBalkcomMason};
 }
 
 SteeringKind steeringKindFromString(const std::string& name) {
@@ -67,10 +70,15 @@ void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup) {
       period_s = setup.reeds_shepp.period_s;
       name = "reeds-shepp steering";
       break;
+    case SteeringKind::kBalkcomMason:
+      speed_fraction = setup.balkcom_mason.speed_fraction;
+      period_s = setup.balkcom_mason.period_s;
+      name = "balkcom-mason steering";
+      break;
   }
-  // Both build rest-to-rest speed profiles at the wheel limits: braking from full speed, then
-  // moves as long as the lot (the diagonal; Reeds-Shepp curves are a few times longer at most)
-  // and, for rotate-translate-rotate, half turns in place.
+  // All build rest-to-rest speed profiles at the wheel limits: braking from full speed, then
+  // moves as long as the lot (the diagonal; Reeds-Shepp and Balkcom-Mason paths are a few times
+  // longer at most) and, for rotate-translate-rotate, half turns in place.
   const double wheel_max = speed_fraction * robot.max_wheel_speed_radps;
   const double wheel_step = accel_fraction * robot.max_wheel_accel_radps2 * period_s;
   if (!(wheel_max > 0.0) || !(wheel_step > 0.0) || !(period_s > 0.0)) {
@@ -119,6 +127,8 @@ TimingKind timingKindFromString(const std::string& name) {
 }
 
 int defaultIterationBudget(PlannerKind kind, const LotBounds& lot) {
+  // Its window, not the lot, sets the size of its search.
+  if (kind == PlannerKind::kTimeAStar) return 200000;
   const double base = kind == PlannerKind::kHybridAStar ? 20000.0 : 2000.0;
   const double area = (lot.x_max_m - lot.x_min_m) * (lot.y_max_m - lot.y_min_m);
   // Capped so that a lot of kilometres still gets a bounded search (and no int overflow).
@@ -135,11 +145,13 @@ PlanSetup resolvedPlanSetup(const PlanSetup& setup, const Scenario& scenario) {
   return resolved;
 }
 
-PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
-                        const PlanSetup& requested, const PlanProgress& progress) {
-  const PlanSetup setup = resolvedPlanSetup(requested, scenario);
-  checkPlanningLimits(scenario, setup);
-  std::unique_ptr<SteeringFunction> steering;
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::unique_ptr<SteeringFunction> makeSteering(const Scenario& scenario, const PlanSetup& setup) {
   switch (setup.steering_kind) {
     case SteeringKind::kMoveToPose: {
       MoveToPoseDef def = setup.steering;
@@ -151,23 +163,23 @@ PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checke
           setup.goal_tolerance_fraction * scenario.goal.heading_tolerance_rad;
       def.turn_in_place_radius_m =
           std::min(def.turn_in_place_radius_m, 0.8 * def.position_tolerance_m);
-      steering = std::make_unique<MoveToPoseSteering>(scenario.robot, def);
-      break;
+      return std::make_unique<MoveToPoseSteering>(scenario.robot, def);
     }
     case SteeringKind::kRotateTranslateRotate:
-      steering = std::make_unique<RotateTranslateRotateSteering>(scenario.robot,
-                                                                 setup.rotate_translate_rotate);
-      break;
+      return std::make_unique<RotateTranslateRotateSteering>(scenario.robot,
+                                                             setup.rotate_translate_rotate);
     case SteeringKind::kReedsShepp:
-      steering = std::make_unique<ReedsSheppSteering>(scenario.robot, setup.reeds_shepp);
-      break;
+      return std::make_unique<ReedsSheppSteering>(scenario.robot, setup.reeds_shepp);
+    case SteeringKind::kBalkcomMason:
+      return std::make_unique<BalkcomMasonSteering>(scenario.robot, setup.balkcom_mason);
   }
-  if (!(setup.feedback_headroom >= 0.0 && setup.feedback_headroom < 1.0)) {
-    throw Error("planScenario: feedback_headroom must be in [0, 1)");
-  }
-  if (!steering) throw Error("planScenario: unknown steering kind");
+  throw Error("planScenario: unknown steering kind");
+}
+
+// A failed result when the start or the goal is not a valid placement.
+std::optional<PlanResult> placementFailure(const Scenario& scenario, const PlanSetup& setup) {
   // The same rule as the world reader's, so a world the reader accepts never fails here for
-  // its start or goal (the tree planner's own checks then agree up to Bullet's rounding).
+  // its start or goal (the planners' own checks then agree up to Bullet's rounding).
   const double margin = 0.5 * setup.validation.resolution_m;
   if (const std::optional<std::string> problem =
           placementProblem(scenario, scenario.start, margin)) {
@@ -182,35 +194,114 @@ PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checke
     r.message = "goal: " + *problem;
     return r;
   }
+  return std::nullopt;
+}
+
+// Smooths a tree planner's or Hybrid A*'s plan along its exact geometry (PathSmoother.h) and
+// times it at `limits`; keeps the plan as it was unless the result validates as a whole.
+void smoothPlan(const Scenario& scenario, const MotionValidator& validator, const PlanSetup& setup,
+                const TimingLimits& limits, PlanResult& result) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const long before = validator.queries();
+  const PathSmoother smoother(scenario.robot, validator, limits, setup.smoothing);
+  // Its own stream, seeded by the planner's seed: the planner's draws stay as they were.
+  std::mt19937_64 rng(setup.planner.seed ^ 0x5e1ec7edULL);
+  PathSmoothingStats stats;
+  const Pose2 start = result.trajectory.points.front().pose;
+  const std::vector<PathPiece> pieces = smoother.smooth(
+      start, pathPieces(result.trajectory), setup.planner.smoothing_attempts, rng, &stats);
+  Trajectory timed = timePieces(start, pieces, scenario.robot, limits);
+  if (validator.isValid(timed)) {
+    result.trajectory = std::move(timed);
+    result.stats.smoothing_shortcuts += stats.shortcuts;
+    result.stats.smoothing_fillets += stats.fillets;
+  }
+  result.stats.collision_queries += validator.queries() - before;
+  result.stats.times.smoothing_s += secondsSince(t0);
+  result.stats.times.total_s += secondsSince(t0);
+}
+
+// The plan's bounds: its own geometry's (durationLowerBound) and the free-space optimum's.
+void setBounds(const Scenario& scenario, const TimingLimits& limits, PlanResult& result) {
+  result.duration_lower_bound_s = durationLowerBound(pathPieces(result.trajectory), limits);
+  double free_space =
+      freeSpaceDurationBound(scenario.start, scenario.goal.pose, scenario.robot, limits);
+  if (scenario.goal.either_heading) {
+    const Pose2 turned{scenario.goal.pose.x, scenario.goal.pose.y, scenario.goal.pose.theta + kPi};
+    free_space = std::min(free_space,
+                          freeSpaceDurationBound(scenario.start, turned, scenario.robot, limits));
+  }
+  result.free_space_bound_s = free_space;
+}
+
+}  // namespace
+
+PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
+                        const PlanSetup& requested, const PlanProgress& progress) {
+  const PlanSetup setup = resolvedPlanSetup(requested, scenario);
+  checkPlanningLimits(scenario, setup);
+  const std::unique_ptr<SteeringFunction> steering = makeSteering(scenario, setup);
+  if (!(setup.feedback_headroom >= 0.0 && setup.feedback_headroom < 1.0)) {
+    throw Error("planScenario: feedback_headroom must be in [0, 1)");
+  }
+  if (!(setup.timing_period_s > 0.0)) throw Error("planScenario: timing_period_s must be > 0");
+  if (std::optional<PlanResult> failed = placementFailure(scenario, setup)) return *failed;
   const MotionValidator validator(checker, scenario.robot, scenario.lot, setup.validation);
-  const TimingLimits limits = timingLimits(scenario.robot, setup.feedback_headroom);
+  const TimingLimits limits = timingLimits(scenario.robot, setup.feedback_headroom,
+                                           setup.timing_period_s, setup.start_jerk_radps3);
+  const bool time_optimal = setup.timing == TimingKind::kTimeOptimal;
   PlanResult result;
+  if (setup.planner.kind == PlannerKind::kTimeAStar) {
+    // Smooths and times its plans itself, at the limits.
+    const TimeAStar planner(scenario.robot, scenario.lot, validator, setup.planner,
+                            setup.time_a_star, limits, setup.smoothing, &scenario.obstacles);
+    result = planner.solve(scenario.start, scenario.goal, progress);
+    if (result.solved()) setBounds(scenario, limits, result);
+    return result;
+  }
   if (setup.planner.kind == PlannerKind::kHybridAStar) {
     const ReedsSheppSteering curves(scenario.robot, setup.reeds_shepp);
     const HybridAStar planner(scenario.robot, scenario.lot, curves, validator, setup.planner,
                               setup.hybrid_a_star);
     result = planner.solve(scenario.start, scenario.goal, progress);
   } else {
-    const TreePlanner planner(scenario.robot, scenario.lot, *steering, validator, setup.planner);
+    // With time-optimal timing, smoothing follows the plan's geometry (smoothPlan below); with
+    // the study's timing the tree planner smooths with its own steering.
+    PlannerDef def = setup.planner;
+    if (time_optimal) def.smooth = false;
+    const TreePlanner planner(scenario.robot, scenario.lot, *steering, validator, def);
     result = planner.solve(scenario.start, scenario.goal, progress);
   }
   if (!result.solved()) return result;
+  const CostWeights w{setup.planner.reverse_penalty, setup.planner.cusp_penalty_m};
+  // Hybrid A* times its own plan; smoothed under study timing, it keeps that timing's limits.
+  const bool smooth_geometry =
+      setup.planner.smooth && (time_optimal || setup.planner.kind == PlannerKind::kHybridAStar);
+  if (smooth_geometry) {
+    const TimingLimits own = time_optimal
+                                 ? limits
+                                 : TimingLimits{scenario.robot.max_wheel_speed_radps,
+                                                scenario.robot.max_wheel_accel_radps2, 0.1};
+    smoothPlan(scenario, validator, setup, own, result);
+  }
   const auto t0 = std::chrono::steady_clock::now();
-  const std::vector<PathPiece> pieces = pathPieces(result.trajectory);
-  if (setup.timing == TimingKind::kTimeOptimal) {
+  if (time_optimal) {
     const long before = validator.queries();
-    Trajectory timed =
-        timePieces(result.trajectory.points.front().pose, pieces, scenario.robot, limits);
-    if (validator.isValid(timed)) {
-      result.trajectory = std::move(timed);
-      const CostWeights w{setup.planner.reverse_penalty, setup.planner.cusp_penalty_m};
-      result.cost = trajectoryCost(result.trajectory, scenario.robot, w);
-    }
+    Trajectory timed = retime(result.trajectory, scenario.robot, limits);
+    if (validator.isValid(timed)) result.trajectory = std::move(timed);
     result.stats.collision_queries += validator.queries() - before;
   }
-  result.duration_lower_bound_s = durationLowerBound(pieces, limits);
-  result.stats.times.timing_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  result.cost = trajectoryCost(result.trajectory, scenario.robot, w);
+  // Re-timing keeps the geometry (the cost moves by rounding only); smoothing changes it.
+  if (!result.cost_history.empty() &&
+      std::abs(result.cost - result.cost_history.back().cost) > 1e-9) {
+    result.cost_history.push_back(
+        {result.stats.times.total_s, result.stats.iterations, result.cost});
+  } else if (!result.cost_history.empty()) {
+    result.cost_history.back().cost = result.cost;
+  }
+  setBounds(scenario, limits, result);
+  result.stats.times.timing_s = secondsSince(t0);
   result.stats.times.total_s += result.stats.times.timing_s;
   return result;
 }

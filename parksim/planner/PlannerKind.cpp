@@ -11,13 +11,14 @@ const char* toString(PlannerKind kind) {
     case PlannerKind::kRrtStar: return "rrt-star";
     case PlannerKind::kRrtConnect: return "rrt-connect";
     case PlannerKind::kHybridAStar: return "hybrid-a-star";
+    case PlannerKind::kTimeAStar: return "time-a-star";
   }
   return "?";
 }
 
 std::vector<PlannerKind> allPlannerKinds() {
-  return {PlannerKind::kRrt, PlannerKind::kRrtGoalConnect, PlannerKind::kRrtStar,
-          PlannerKind::kRrtConnect, PlannerKind::kHybridAStar};
+  return {PlannerKind::kRrt,        PlannerKind::kRrtGoalConnect, PlannerKind::kRrtStar,
+          PlannerKind::kRrtConnect, PlannerKind::kHybridAStar,    PlannerKind::kTimeAStar};
 }
 
 PlannerKind plannerKindFromString(const std::string& name) {

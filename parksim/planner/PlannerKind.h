@@ -7,14 +7,15 @@
 namespace parksim {
 
 /// The planner list: every planner `plan`, `run` and `bench` accept (the tree planner's
-/// variants and Hybrid A*, HybridAStar.h).
-enum class PlannerKind { kRrt, kRrtGoalConnect, kRrtStar, kRrtConnect, kHybridAStar };
+/// variants, Hybrid A* with Reeds-Shepp curves, HybridAStar.h, and Hybrid A* in time, the
+/// default, TimeAStar.h).
+enum class PlannerKind { kRrt, kRrtGoalConnect, kRrtStar, kRrtConnect, kHybridAStar, kTimeAStar };
 
 const char* toString(PlannerKind kind);
 /// Every planner kind, in a fixed order (for benchmarks and help texts).
 std::vector<PlannerKind> allPlannerKinds();
-/// Parses "rrt", "rrt-goal-connect", "rrt-star", "rrt-connect" or "hybrid-a-star"; throws
-/// Error otherwise.
+/// Parses "rrt", "rrt-goal-connect", "rrt-star", "rrt-connect", "hybrid-a-star" or
+/// "time-a-star"; throws Error otherwise.
 PlannerKind plannerKindFromString(const std::string& name);
 
 }  // namespace parksim

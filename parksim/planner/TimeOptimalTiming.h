@@ -35,10 +35,16 @@ struct TimingLimits {
   double max_wheel_speed_radps = 8.0;    ///< largest wheel speed the timing may use, rad/s
   double max_wheel_accel_radps2 = 40.0;  ///< largest wheel acceleration, rad/s^2
   double period_s = 0.1;                 ///< control period: rows this far apart, s
+  /// Jerk limit of the plan's first speed-up from rest, rad/s^3 (0: none). From standstill a
+  /// wheel first has to break its drive train's static friction, and the speed loop lags while
+  /// it does: a plan that starts at full acceleration runs ahead of the robot. The first piece's
+  /// speed then grows by one more J dt^2 each period, up to the acceleration limit.
+  double start_jerk_radps3 = 0.0;
 };
 
 /// Limits for `robot` leaving `headroom` (in [0, 1)) of its wheel-speed limit to feedback.
-TimingLimits timingLimits(const RobotDef& robot, double headroom, double period_s = 0.1);
+TimingLimits timingLimits(const RobotDef& robot, double headroom, double period_s = 0.1,
+                          double start_jerk_radps3 = 0.0);
 
 /// The piece `wheels` drive when held for `duration_s`; travel 0 when they stand still.
 PathPiece pieceOf(const WheelSpeeds& wheels, double duration_s);
@@ -56,6 +62,10 @@ std::vector<PathPiece> pathPieces(const Trajectory& traj);
 /// (steps of at most max_wheel_accel * period between periods, from and to rest) hold.
 Trajectory timePieces(const Pose2& start, const std::vector<PathPiece>& pieces,
                       const RobotDef& robot, const TimingLimits& limits);
+
+/// The duration of timePieces(start, pieces, ...), s, without building its rows: the number of
+/// periods the profile takes times the period. O(pieces) per lowering pass.
+double timedDuration(const std::vector<PathPiece>& pieces, const TimingLimits& limits);
 
 /// timePieces along the geometry of `traj`, from its first pose. The end pose agrees with the
 /// input's up to rounding.

@@ -37,9 +37,15 @@ struct BenchRecord {
   double duration_s = kNotMeasured;
   /// parksim: lower bound on any timing of the path's geometry (TimeOptimalTiming.h), s.
   double duration_lower_bound_s = kNotMeasured;
-  /// parksim: the planner's path cost (length + reverse and cusp penalties, PathCost.h), m.
+  /// parksim: lower bound on any plan from the start to the goal at the same limits, around any
+  /// obstacles (FreeSpaceBound.h), s.
+  double free_space_bound_s = kNotMeasured;
+  /// parksim: the planner's cost: path cost (length + reverse and cusp penalties, PathCost.h), m,
+  /// or the plan's duration, s, for planners that minimise it (time-a-star).
   double cost = kNotMeasured;
   double min_clearance_m = kNotMeasured;  ///< smallest footprint-obstacle distance along the path
+  /// parksim: changes of turning direction per metre of path (PlanShape.h), 1/m.
+  double steering_reversals_per_m = kNotMeasured;
 
   long iterations = -1;         ///< parksim: iterations of the tree loop
   long iterations_first = -1;   ///< parksim: iterations completed at the first solution

@@ -88,8 +88,9 @@ void bindPlan(py::module_& m) {
       R"(Plans the world's parking manoeuvre, as `parksim plan` does.
 
 Options (keywords; the defaults are the library's, the same as `parksim plan`'s and a sweep's):
-  planner (a name: hybrid-a-star, rrt, rrt-goal-connect, rrt-star, rrt-connect; or a
-  PlannerDef), steering (reeds-shepp, rotate-translate-rotate, move-to-pose), any PlannerDef
+  planner (a name: time-a-star, hybrid-a-star, rrt, rrt-goal-connect, rrt-star, rrt-connect;
+  or a PlannerDef), steering (balkcom-mason, reeds-shepp, rotate-translate-rotate,
+  move-to-pose), any PlannerDef
   field (seed, max_iterations: 0 for the lot's budget, smooth, smoothing_attempts, goal_bias,
   ...), and any PlanSetup field (timing, feedback_headroom, goal_tolerance_fraction,
   move_to_pose={...}, reeds_shepp={...}, validation={...}). parksim.PlanSetup() shows every

@@ -66,7 +66,7 @@ TEST_F(Cli, PlanWritesAConsistentTrajectoryAndSummary) {
     const auto plan = nlohmann::json::parse(slurp(out / "plan.json"));
     EXPECT_EQ(plan["status"], "solved");
     EXPECT_EQ(plan["seed"], 3);
-    EXPECT_EQ(plan["planner"], "hybrid-a-star");  // the default since issue 9
+    EXPECT_EQ(plan["planner"], "time-a-star");  // the default since issue 18
     EXPECT_LE(plan["final_pos_err_m"].get<double>(), 0.001);
     EXPECT_LE(plan["final_heading_err_deg"].get<double>(), 0.5);
     EXPECT_NEAR(plan["path_length_m"].get<double>(), t.pathLength(s.robot), 1e-9);
@@ -153,7 +153,7 @@ TEST_F(Cli, RunWithFramesFilmsTheEpisodeAndDrawsTheFigures) {
   }
   EXPECT_EQ(figures, static_cast<int>(kFigureNames.size()));  // --frames alone: all of them
   EXPECT_TRUE(fs::exists(out / "figures" / "tracking_error.png"));
-  EXPECT_TRUE(fs::exists(out / "figures" / "plan_hybrid-a-star.png"));  // the default planner
+  EXPECT_TRUE(fs::exists(out / "figures" / "plan_time-a-star.png"));  // the default planner
 }
 
 TEST_F(Cli, PngCompressionChangesTheFilesNotThePixels) {
@@ -195,7 +195,7 @@ TEST_F(Cli, FiguresOptionChoosesTheFiguresOnRunAndRender) {
   CliRun r = parksim("run " + world("head_in.yaml") + " --figures plan,lot_map,plan --out " +
                      out.string());
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  EXPECT_EQ(figureFiles(out), (Names{"lot_map.png", "plan_hybrid-a-star.png"}));
+  EXPECT_EQ(figureFiles(out), (Names{"lot_map.png", "plan_time-a-star.png"}));
   EXPECT_FALSE(fs::exists(out / "frames"));
   // none: frames without figures.
   out = dir_ / "none";

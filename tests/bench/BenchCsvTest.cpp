@@ -63,7 +63,8 @@ TEST(BenchCsv, HeaderStartsWithTheRequiredColumns) {
   EXPECT_EQ(lines[0],
             "library,planner,space,scenario,seed,budget,solved,status,valid,time_first_s,"
             "time_total_s,cpu_total_s,length_m,cusps,duration_s,duration_lower_bound_s,"
-            "min_clearance_m,cost,iterations,"
+            "free_space_bound_s,"
+            "min_clearance_m,steering_reversals_per_m,cost,iterations,"
             "iterations_first,tree_size,collision_queries,parksim_version,git_commit,git_dirty,"
             "build_type,compiler,bullet_precision,phase_sampling_s,phase_total_s");
   // The required columns, in its order, are all there.
@@ -96,10 +97,10 @@ TEST(BenchCsv, RowsCarryValuesAndLeaveMissingOnesEmpty) {
       "9.8.7,0123456789abcdef0123456789abcdef01234567,true,Release,GNU 12.2.0,double";
   EXPECT_EQ(lines[1],
             "parksim,rrt-goal-connect,move-to-pose,head_in,7,iterations=2000,1,solved,1,0.25,0.25,"
-            "0.2,1.5,2,,,0.004,1.6,40,12,30,1000," +
+            "0.2,1.5,2,,,,0.004,,1.6,40,12,30,1000," +
                 build + ",0.01,0.25");
-  EXPECT_EQ(lines[2],
-            "ompl,RRT,reeds-shepp,head_in,7,time=1s,0,Timeout,0,,1,,,,,,,,,,5000,," + build + ",,");
+  EXPECT_EQ(lines[2], "ompl,RRT,reeds-shepp,head_in,7,time=1s,0,Timeout,0,,1,,,,,,,,,,,,5000,," +
+                          build + ",,");
 }
 
 TEST(BenchCsv, TextWithCommasIsQuoted) {

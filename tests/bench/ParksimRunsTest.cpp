@@ -26,12 +26,14 @@ TEST(ParksimRuns, EveryPlannerAndSteeringGivesACheckedRecord) {
       def.setup.planner.seed = 1;
       def.setup.planner.max_iterations = kind == PlannerKind::kRrtStar ? 300 : 2000;
       def.setup.planner.record_tree = false;
+      def.setup.planner.smooth = false;  // "+smooth" records: bench_planning's portfolio
       const BenchRecord r = runParksim(s, world, def);
       SCOPED_TRACE(std::string(toString(kind)) + " / " + toString(steering));
       EXPECT_EQ(r.library, "parksim");
       EXPECT_EQ(r.planner, toString(kind));
-      // Hybrid A* drives its own primitives and curves, whatever the steering.
+      // The A* planners drive their own primitives and curves, whatever the steering.
       EXPECT_EQ(r.space, kind == PlannerKind::kHybridAStar ? std::string("primitives+reeds-shepp")
+                         : kind == PlannerKind::kTimeAStar ? std::string("primitives+balkcom-mason")
                                                            : std::string(toString(steering)));
       EXPECT_EQ(r.scenario, "head_in");
       EXPECT_EQ(r.budget, "iterations=" + std::to_string(def.setup.planner.max_iterations));
@@ -41,7 +43,13 @@ TEST(ParksimRuns, EveryPlannerAndSteeringGivesACheckedRecord) {
       EXPECT_TRUE(r.valid);
       EXPECT_GT(r.length_m, 0.0);
       EXPECT_GE(r.min_clearance_m, 0.0);
-      EXPECT_GE(r.cost, r.length_m);
+      // time-a-star's cost is the plan's duration; the others' a path cost of at least its length.
+      if (kind == PlannerKind::kTimeAStar) {
+        EXPECT_EQ(r.cost, r.duration_s);
+        EXPECT_GE(r.duration_s, r.free_space_bound_s);
+      } else {
+        EXPECT_GE(r.cost, r.length_m);
+      }
       EXPECT_GE(r.iterations_first, 0);
     }
   }

@@ -98,5 +98,36 @@ TEST(TimeOptimalTiming, ManyShortPiecesStillFitTheLimits) {
   EXPECT_GE(t.duration(), durationLowerBound(pieces, l));
 }
 
+TEST(TimeOptimalTiming, SoftStartRaisesTheAccelerationStepByStep) {
+  const RobotDef robot;
+  const TimingLimits hard = timingLimits(robot, 0.2, 0.02);
+  const TimingLimits soft = timingLimits(robot, 0.2, 0.02, 100.0);  // J dt^2 = 0.04 rad/s
+  const std::vector<PathPiece> pieces{pieceOf({1.0, 1.0}, 40.0), pieceOf({0.5, 1.0}, 5.0)};
+  const Trajectory t = timePieces({}, pieces, robot, soft);
+  expectConsistentWithLimits(t, limitedRobot(soft));
+  // Speeds 0.04, 0.12, 0.24, ...: each period's increase one jerk step more than the last, up
+  // to the acceleration step of 0.8 rad/s.
+  double previous = 0.0;
+  double increase = 0.0;
+  for (int i = 0; i < 30; ++i) {
+    const double u = t.points[i].wheels.right_radps;
+    const double next = u - previous;
+    EXPECT_LE(next, std::min(0.8, increase + 0.04) + 1e-9) << "period " << i;
+    increase = next;
+    previous = u;
+  }
+  EXPECT_NEAR(t.points[0].wheels.right_radps, 0.04, 1e-12);
+  // Slower than the hard start by about the ramp's lag, never by more than its length.
+  const double lag = t.duration() - timePieces({}, pieces, robot, hard).duration();
+  EXPECT_GT(lag, 0.0);
+  EXPECT_LE(lag, 0.4 + 1e-9);
+  // The same geometry: timing only.
+  const Pose2 a = t.points.back().pose;
+  const Pose2 b = timePieces({}, pieces, robot, hard).points.back().pose;
+  EXPECT_NEAR(a.x, b.x, 1e-9);
+  EXPECT_NEAR(a.y, b.y, 1e-9);
+  EXPECT_NEAR(timedDuration(pieces, soft), t.duration(), 1e-12);
+}
+
 }  // namespace
 }  // namespace parksim

@@ -58,8 +58,8 @@ def test_write_figures_writes_the_chosen_figures(tmp_path, head_in, head_in_plan
     out = tmp_path / "some"
     written = parksim.write_figures(head_in, str(out), figures="plan, lot_map,plan",
                                     plans=[head_in_plan], width=240, height=160, msaa=1)
-    assert written == [str(out / "lot_map.png"), str(out / "plan_hybrid-a-star.png")]
-    assert sorted(p.name for p in out.iterdir()) == ["lot_map.png", "plan_hybrid-a-star.png"]
+    assert written == [str(out / "lot_map.png"), str(out / "plan_time-a-star.png")]
+    assert sorted(p.name for p in out.iterdir()) == ["lot_map.png", "plan_time-a-star.png"]
     assert parksim.read_png(written[0]).shape == (160, 240, 3)
     assert parksim.write_figures(head_in, str(tmp_path / "none"), figures="none") == []
     assert not (tmp_path / "none").exists()

@@ -84,7 +84,8 @@ inline void expectEndsInGoal(const GoalRegion& goal, const Trajectory& t) {
 /// Every invariant of a solved plan: (1) starts at the start pose, (2) consistent, (3) within
 /// the wheel limits from rest to the final stop, across every junction, (4) accepted as a whole
 /// by the motion validator (and free under the exact SAT check), (5) ends in the goal region;
-/// and its reported cost is the cost of the returned trajectory.
+/// and its reported cost is the cost of the returned trajectory (its path cost, or its duration
+/// for planners that minimise duration).
 inline void expectValidPlan(const Scenario& s, const FootprintChecker& checker,
                             const PlanSetup& setup, const PlanResult& r) {
   ASSERT_TRUE(r.solved()) << r.message;
@@ -97,7 +98,10 @@ inline void expectValidPlan(const Scenario& s, const FootprintChecker& checker,
   expectCollisionFree(s, r.trajectory);
   expectEndsInGoal(s.goal, r.trajectory);
   const CostWeights w{setup.planner.reverse_penalty, setup.planner.cusp_penalty_m};
-  EXPECT_NEAR(r.cost, trajectoryCost(r.trajectory, s.robot, w), 1e-9);
+  EXPECT_NEAR(r.cost,
+              r.objective == PlanObjective::kDuration ? r.trajectory.duration()
+                                                      : trajectoryCost(r.trajectory, s.robot, w),
+              1e-9);
   ASSERT_FALSE(r.cost_history.empty());
   EXPECT_NEAR(r.cost_history.back().cost, r.cost, 1e-9);
   EXPECT_GE(r.stats.first_solution_s, 0.0);

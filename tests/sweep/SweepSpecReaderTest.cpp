@@ -58,7 +58,7 @@ TEST(SweepSpecReader, ReadsEveryAxis) {
 TEST(SweepSpecReader, ErrorsNameFileLineAndField) {
   EXPECT_EQ(errorOf(studySpec("planners: [rrt, rrt*]\n")),
             "spec.yaml:4: planners[1]: unknown planner 'rrt*' (this build has: rrt, "
-            "rrt-goal-connect, rrt-star, rrt-connect, hybrid-a-star)");
+            "rrt-goal-connect, rrt-star, rrt-connect, hybrid-a-star, time-a-star)");
   EXPECT_EQ(errorOf(studySpec("seeds: [1, 2,\n  1]\n")), "spec.yaml:5: seeds[2]: repeats seeds[0]");
   EXPECT_EQ(errorOf(studySpec("seeds: {from: 5, to: 2}\n")),
             "spec.yaml:4: seeds.to: must be at least from (5)");

@@ -1,0 +1,55 @@
+#include "parksim/planner/BalkcomMasonSteering.h"
+
+#include <algorithm>
+
+#include "parksim/core/Error.h"
+#include "parksim/planner/BalkcomMason.h"
+
+namespace parksim {
+
+BalkcomMasonSteering::BalkcomMasonSteering(const RobotDef& robot, const BalkcomMasonDef& def)
+    : robot_(robot), def_(def) {
+  if (!(def.period_s > 0.0) || !(def.horizon_s > 0.0)) {
+    throw Error("balkcom-mason steering: period and horizon must be positive");
+  }
+  if (!(def.speed_fraction > 0.0 && def.speed_fraction <= 1.0)) {
+    throw Error("balkcom-mason steering: speed fraction must be in (0, 1]");
+  }
+  if (!(robot.max_wheel_speed_radps > 0.0) || !(robot.max_wheel_accel_radps2 > 0.0) ||
+      !(robot.wheel_base_m > 0.0)) {
+    throw Error("balkcom-mason steering: wheel base, speed and accel limits must be positive");
+  }
+}
+
+std::vector<PathPiece> BalkcomMasonSteering::pieces(const Pose2& from, const Pose2& to) const {
+  return piecesOf(balkcomMasonPath(from, to, 0.5 * robot_.wheel_base_m), robot_);
+}
+
+SteerResult BalkcomMasonSteering::steer(const Pose2& from, const WheelSpeeds& from_wheels,
+                                        const Pose2& to, SteerMode mode) const {
+  const double dt = def_.period_s;
+  const TimingLimits limits{def_.speed_fraction * robot_.max_wheel_speed_radps,
+                            robot_.max_wheel_accel_radps2, dt};
+  const double step = limits.max_wheel_accel_radps2 * dt;
+  SteerResult result;
+  Trajectory& traj = result.trajectory;
+  Pose2 pose = from;
+  // Brake to rest first (the last braking row stands still): the path starts from rest.
+  WheelSpeeds w = from_wheels;
+  while (!(w == WheelSpeeds{})) {
+    w.left_radps -= std::clamp(w.left_radps, -step, step);
+    w.right_radps -= std::clamp(w.right_radps, -step, step);
+    traj.points.push_back({static_cast<double>(traj.points.size()) * dt, pose, w});
+    pose = integrateExact(pose, toTwist(w, robot_), dt);
+  }
+  Trajectory path = timePieces(pose, pieces(pose, to), robot_, limits);
+  const double t0 = static_cast<double>(traj.points.size()) * dt;
+  for (TrajectoryPoint p : path.points) {
+    p.t_s += t0;
+    traj.points.push_back(p);
+  }
+  finishAtTarget(result, to, mode, def_.horizon_s, dt);
+  return result;
+}
+
+}  // namespace parksim
