@@ -121,111 +121,104 @@ struct OutputOptions {
   bool progress = false;
 };
 
-int runBench(const BenchOptions& o, const OutputOptions& output) {
-  if (o.seeds < 1) throw Error("--seeds must be at least 1");
+// What one bench runs: the option lists parsed, the worlds read, every budget checked.
+struct BenchPlan {
   std::vector<PlannerKind> kinds;
-  if (o.planners.empty()) {
-    kinds = allPlannerKinds();
-  } else if (o.planners == std::vector<std::string>{"none"}) {
-    // OMPL alone
-  } else {
-    for (const std::string& name : o.planners) kinds.push_back(plannerKindFromString(name));
-  }
   std::vector<SteeringKind> steerings;
-  if (o.steerings.empty()) {
-    steerings = allSteeringKinds();
-  } else {
-    for (const std::string& name : o.steerings) steerings.push_back(steeringKindFromString(name));
-  }
-  std::vector<bool> smoothing = {false};
-  if (o.smooth) smoothing.push_back(true);
+  std::vector<bool> smoothing;
   std::vector<OmplPlanner> ompl_planners;
   std::vector<OmplSpace> ompl_spaces;
-  if (o.ompl) {
-    for (const std::string& name : o.ompl_planners) {
-      ompl_planners.push_back(omplPlannerFromString(name));
-    }
-    for (const std::string& name : o.ompl_spaces) {
-      ompl_spaces.push_back(omplSpaceFromString(name));
+  std::vector<Scenario> scenarios;
+  int max_iterations = kAutoIterations;
+};
+
+// Parses and checks everything before anything runs: bad names, budgets or worlds fail first.
+BenchPlan benchPlanFrom(const BenchOptions& o) {
+  if (o.seeds < 1) throw Error("--seeds must be at least 1");
+  BenchPlan b;
+  if (o.planners.empty()) {
+    b.kinds = allPlannerKinds();
+  } else if (o.planners != std::vector<std::string>{"none"}) {  // "none": OMPL alone
+    for (const std::string& name : o.planners) b.kinds.push_back(plannerKindFromString(name));
+  }
+  if (o.steerings.empty()) {
+    b.steerings = allSteeringKinds();
+  } else {
+    for (const std::string& name : o.steerings) {
+      b.steerings.push_back(steeringKindFromString(name));
     }
   }
-  std::vector<Scenario> scenarios;
-  for (const std::string& path : o.worlds) scenarios.push_back(loadScenario(path));
-  // Bad budgets fail before anything runs.
-  for (const Scenario& s : scenarios) {
-    (void)s;
-    (void)cli::parseIterationBudget(o.max_iterations);
-    for (SteeringKind steering : steerings) {
+  b.smoothing = {false};
+  if (o.smooth) b.smoothing.push_back(true);
+  if (o.ompl) {
+    for (const std::string& name : o.ompl_planners) {
+      b.ompl_planners.push_back(omplPlannerFromString(name));
+    }
+    for (const std::string& name : o.ompl_spaces) {
+      b.ompl_spaces.push_back(omplSpaceFromString(name));
+    }
+  }
+  b.max_iterations = cli::parseIterationBudget(o.max_iterations);
+  for (const std::string& path : o.worlds) b.scenarios.push_back(loadScenario(path));
+  for (const Scenario& s : b.scenarios) {
+    for (SteeringKind steering : b.steerings) {
       PlanSetup setup;
       setup.steering_kind = steering;
       checkPlanningLimits(s, setup);
     }
   }
-  cli::OutputDir out(o.out);
+  return b;
+}
 
-  const double load_before = loadAverage();
-  std::printf("parksim bench: %zu world(s), seeds 1..%d, load average %.2f at start\n",
-              scenarios.size(), o.seeds, load_before);
-  std::printf("settings: %s\n", settingsText(o).c_str());
-  std::fflush(stdout);
-
-  std::vector<BenchRecord> all;
-  std::vector<double> world_seconds;
-  const std::string start_time = omplLogTimeNow();
-  const PathCheckDef check;  // 0.2 mm, margin 0, with clearance
-  for (const Scenario& scenario : scenarios) {
-    const BulletCollisionWorld world(scenario);
-    const Clock::time_point t0 = Clock::now();
-    cli::Progress progress(scenario.name + " seeds", o.seeds,
-                           cli::progressWanted(output.progress, output.quiet));
-    for (int seed = 1; seed <= o.seeds; ++seed) {
-      for (std::size_t si = 0; si < steerings.size(); ++si) {
-        const SteeringKind steering = steerings[si];
-        for (PlannerKind kind : kinds) {
-          // Hybrid A* has its own moves: run it once per seed, under the first steering listed.
-          if (kind == PlannerKind::kHybridAStar && si > 0) continue;
-          for (bool smooth : smoothing) {
-            if (kind == PlannerKind::kHybridAStar && smooth) continue;  // nothing to smooth
-            ParksimRunDef def;
-            def.setup.steering_kind = steering;
-            def.setup.planner.kind = kind;
-            def.setup.planner.seed = static_cast<std::uint64_t>(seed);
-            def.setup.planner.max_iterations = cli::parseIterationBudget(o.max_iterations);
-            def.setup.planner.max_time_s = o.time_limit_s;
-            def.setup.planner.record_tree = false;
-            def.setup.planner.smooth = smooth;
-            def.check = check;
-            all.push_back(runParksim(scenario, world, def));
-            if (isAnytime(kind)) {
-              def.setup.planner.max_iterations = INT_MAX;
-              def.setup.planner.max_time_s = o.anytime_s;
-              all.push_back(runParksim(scenario, world, def));
-            }
-          }
+// parksim's planners for one world and seed: every planner x steering x smoothing, the A*
+// planners once per smoothing (they ignore the steering), anytime planners also at full time.
+void runParksimPlanners(const BenchOptions& o, const BenchPlan& b, const Scenario& scenario,
+                        const BulletCollisionWorld& world, int seed, const PathCheckDef& check,
+                        std::vector<BenchRecord>& all) {
+  for (std::size_t si = 0; si < b.steerings.size(); ++si) {
+    for (PlannerKind kind : b.kinds) {
+      if (!plannerUsesSteering(kind) && si > 0) continue;
+      for (bool smooth : b.smoothing) {
+        ParksimRunDef def;
+        def.setup.steering_kind = b.steerings[si];
+        def.setup.planner.kind = kind;
+        def.setup.planner.seed = static_cast<std::uint64_t>(seed);
+        def.setup.planner.max_iterations = b.max_iterations;
+        def.setup.planner.max_time_s = o.time_limit_s;
+        def.setup.planner.record_tree = false;
+        def.setup.planner.smooth = smooth;
+        def.check = check;
+        all.push_back(runParksim(scenario, world, def));
+        if (isAnytime(kind)) {
+          def.setup.planner.max_iterations = INT_MAX;
+          def.setup.planner.max_time_s = o.anytime_s;
+          all.push_back(runParksim(scenario, world, def));
         }
       }
-      for (OmplSpace space : ompl_spaces) {
-        for (OmplPlanner planner : ompl_planners) {
-          OmplRunDef def;
-          def.planner = planner;
-          def.space = space;
-          def.seed = static_cast<std::uint32_t>(seed);
-          def.time_limit_s = o.budget_s;
-          def.turning_radius_m = o.turning_radius_m;
-          def.segment_m = o.segment_m;
-          all.push_back(runOmpl(scenario, world, def, check));
-        }
-      }
-      progress.update(seed);
     }
-    progress.finish();
-    world_seconds.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
   }
-  const double load_after = loadAverage();
+}
 
-  const std::string csv_path = o.out + "/bench.csv";
-  writeBenchCsv(out.path() + "/bench.csv", all);
+void runOmplPlanners(const BenchOptions& o, const BenchPlan& b, const Scenario& scenario,
+                     const BulletCollisionWorld& world, int seed, const PathCheckDef& check,
+                     std::vector<BenchRecord>& all) {
+  for (OmplSpace space : b.ompl_spaces) {
+    for (OmplPlanner planner : b.ompl_planners) {
+      OmplRunDef def;
+      def.planner = planner;
+      def.space = space;
+      def.seed = static_cast<std::uint32_t>(seed);
+      def.time_limit_s = o.budget_s;
+      def.turning_radius_m = o.turning_radius_m;
+      def.segment_m = o.segment_m;
+      all.push_back(runOmpl(scenario, world, def, check));
+    }
+  }
+}
 
+// summary.md: the run table, the phase table, parksim against OMPL, invalid paths and the load.
+std::string benchSummary(const std::vector<BenchRecord>& all, double load_before,
+                         double load_after) {
   const std::vector<GroupSummary> groups = summarize(all);
   std::string summary = "Built by " + versionLine(buildProvenance()) + ".\n\n## Runs\n\n" +
                         formatSummaryTable(groups);
@@ -245,32 +238,70 @@ int runBench(const BenchOptions& o, const OutputOptions& output) {
                  : "\n## Paths that failed parksim's exact path check\n\n" + invalid;
   summary += "\nLoad average " + formatFixed(load_before, 2) + " at start, " +
              formatFixed(load_after, 2) + " at end.\n";
+  return summary;
+}
+
+// One OMPL benchmark log per world (--ompl-log), for Planner Arena and ompl_benchmark_statistics.
+void writeOmplLogs(const BenchOptions& o, const std::vector<Scenario>& scenarios,
+                   const std::vector<BenchRecord>& all, const std::vector<double>& world_seconds,
+                   const std::string& start_time) {
+  for (std::size_t w = 0; w < scenarios.size(); ++w) {
+    std::vector<BenchRecord> mine;
+    for (const BenchRecord& r : all) {
+      if (r.scenario == scenarios[w].name) mine.push_back(r);
+    }
+    OmplLogInfo info;
+    info.experiment = "parksim_" + scenarios[w].name;
+    info.host = hostName();
+    info.start_time = start_time;
+    info.setup = "world " + scenarios[w].source_path + "\n" + settingsText(o) + "\n" +
+                 versionLine(buildProvenance()) + "\n";
+    info.cpu_info = cpuInfo();
+    info.time_limit_s = o.ompl ? std::max(o.budget_s, o.anytime_s) : o.anytime_s;
+    info.runs_per_planner = o.seeds;
+    info.total_s = world_seconds[w];
+    const std::string path = logPathFor(o.ompl_log, scenarios[w].name, scenarios.size() > 1);
+    writeFileAtomically(path, omplBenchmarkLog(info, mine));
+    std::printf("wrote %s\n", path.c_str());
+  }
+}
+
+int runBench(const BenchOptions& o, const OutputOptions& output) {
+  const BenchPlan plan = benchPlanFrom(o);
+  cli::OutputDir out(o.out);
+
+  const double load_before = loadAverage();
+  std::printf("parksim bench: %zu world(s), seeds 1..%d, load average %.2f at start\n",
+              plan.scenarios.size(), o.seeds, load_before);
+  std::printf("settings: %s\n", settingsText(o).c_str());
+  std::fflush(stdout);
+
+  std::vector<BenchRecord> all;
+  std::vector<double> world_seconds;
+  const std::string start_time = omplLogTimeNow();
+  const PathCheckDef check;  // 0.2 mm, margin 0, with clearance
+  for (const Scenario& scenario : plan.scenarios) {
+    const BulletCollisionWorld world(scenario);
+    const Clock::time_point t0 = Clock::now();
+    cli::Progress progress(scenario.name + " seeds", o.seeds,
+                           cli::progressWanted(output.progress, output.quiet));
+    for (int seed = 1; seed <= o.seeds; ++seed) {
+      runParksimPlanners(o, plan, scenario, world, seed, check, all);
+      runOmplPlanners(o, plan, scenario, world, seed, check, all);
+      progress.update(seed);
+    }
+    progress.finish();
+    world_seconds.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+  }
+  const std::string summary = benchSummary(all, load_before, loadAverage());
+
+  const std::string csv_path = o.out + "/bench.csv";
+  writeBenchCsv(out.path() + "/bench.csv", all);
   writeFileAtomically(out.path() + "/summary.md", summary);
   out.commit();
   std::printf("\n%s\nwrote %s and %s/summary.md\n", printableLines(summary).c_str(),
               printable(csv_path).c_str(), printable(o.out).c_str());
-
-  if (!o.ompl_log.empty()) {
-    for (std::size_t w = 0; w < scenarios.size(); ++w) {
-      std::vector<BenchRecord> mine;
-      for (const BenchRecord& r : all) {
-        if (r.scenario == scenarios[w].name) mine.push_back(r);
-      }
-      OmplLogInfo info;
-      info.experiment = "parksim_" + scenarios[w].name;
-      info.host = hostName();
-      info.start_time = start_time;
-      info.setup = "world " + scenarios[w].source_path + "\n" + settingsText(o) + "\n" +
-                   versionLine(buildProvenance()) + "\n";
-      info.cpu_info = cpuInfo();
-      info.time_limit_s = o.ompl ? std::max(o.budget_s, o.anytime_s) : o.anytime_s;
-      info.runs_per_planner = o.seeds;
-      info.total_s = world_seconds[w];
-      const std::string path = logPathFor(o.ompl_log, scenarios[w].name, scenarios.size() > 1);
-      writeFileAtomically(path, omplBenchmarkLog(info, mine));
-      std::printf("wrote %s\n", path.c_str());
-    }
-  }
+  if (!o.ompl_log.empty()) writeOmplLogs(o, plan.scenarios, all, world_seconds, start_time);
   return 0;
 }
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/planning/BenchRecord.h"
+#include "parksim/results/BenchRecord.h"
 
 namespace parksim::bench {
 

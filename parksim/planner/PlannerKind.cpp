@@ -21,6 +21,10 @@ std::vector<PlannerKind> allPlannerKinds() {
           PlannerKind::kRrtConnect, PlannerKind::kHybridAStar,    PlannerKind::kTimeAStar};
 }
 
+bool plannerUsesSteering(PlannerKind kind) {
+  return kind != PlannerKind::kHybridAStar && kind != PlannerKind::kTimeAStar;
+}
+
 PlannerKind plannerKindFromString(const std::string& name) {
   std::string known;
   for (PlannerKind k : allPlannerKinds()) {

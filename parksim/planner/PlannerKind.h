@@ -14,6 +14,9 @@ enum class PlannerKind { kRrt, kRrtGoalConnect, kRrtStar, kRrtConnect, kHybridAS
 const char* toString(PlannerKind kind);
 /// Every planner kind, in a fixed order (for benchmarks and help texts).
 std::vector<PlannerKind> allPlannerKinds();
+/// Whether the planner connects poses with the setup's steering function (the tree planners);
+/// the A* planners have their own moves and ignore it.
+bool plannerUsesSteering(PlannerKind kind);
 /// Parses "rrt", "rrt-goal-connect", "rrt-star", "rrt-connect", "hybrid-a-star" or
 /// "time-a-star"; throws Error otherwise.
 PlannerKind plannerKindFromString(const std::string& name);

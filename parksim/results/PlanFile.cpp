@@ -53,14 +53,18 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
     j["first_solution_s"] = result.stats.first_solution_s;
     j["first_solution_iteration"] = result.stats.first_solution_iteration;
   }
+  // A planner's cost is a path cost in metres, or for planners that minimise it the plan's
+  // duration in seconds: the key carries the unit.
+  const char* const cost_key = result.objective == PlanObjective::kDuration ? "cost_s" : "cost_m";
+  j["objective"] = toString(result.objective);
   nlohmann::json history = nlohmann::json::array();
   for (const CostSample& c : result.cost_history) {
-    history.push_back({{"time_s", c.time_s}, {"iteration", c.iteration}, {"cost_m", c.cost}});
+    history.push_back({{"time_s", c.time_s}, {"iteration", c.iteration}, {cost_key, c.cost}});
   }
   j["cost_history"] = history;
   if (result.solved()) {
     const Pose2& end = result.trajectory.points.back().pose;
-    j["cost_m"] = result.cost;
+    j[cost_key] = result.cost;
     j["path_length_m"] = result.trajectory.pathLength(scenario.robot);
     j["duration_s"] = result.trajectory.duration();
     j["duration_lower_bound_s"] = result.duration_lower_bound_s;
@@ -68,6 +72,10 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
         result.duration_lower_bound_s > 0.0
             ? result.trajectory.duration() / result.duration_lower_bound_s
             : 0.0;
+    j["free_space_bound_s"] = result.free_space_bound_s;
+    j["duration_over_free_space_bound"] =
+        result.free_space_bound_s > 0.0 ? result.trajectory.duration() / result.free_space_bound_s
+                                        : 0.0;
     j["cusps"] = result.trajectory.cusps(scenario.robot);
     j["waypoints"] = result.waypoints.size();
     j["final_pos_err_m"] = positionDistance(end, scenario.goal.pose);

@@ -84,16 +84,21 @@ void validate(const Scenario& scenario, const SimModelDef& model) {
   requirePositive(model.local_frame_grid_m, "local_frame_grid_m");
 }
 
-// Origin of Bullet's local frame in the lot frame (SimModelDef::local_frame_grid_m).
-Eigen::Vector2d localOrigin(const Pose2& start, double grid_m) {
-  return {grid_m * std::floor(start.x / grid_m), grid_m * std::floor(start.y / grid_m)};
+}  // namespace
+
+Pose2 localFrameOrigin(const Pose2& start, double grid_m) {
+  return {grid_m * std::floor(start.x / grid_m), grid_m * std::floor(start.y / grid_m), 0.0};
 }
 
+namespace {
+Eigen::Vector2d originXY(const Pose2& origin) { return {origin.x, origin.y}; }
 }  // namespace
 
 struct DynamicsWorld::Impl {
   Impl(const Scenario& scenario, const Pose2& start, const SimModelDef& m)
-      : physics(scenario.physics), model(m), origin(localOrigin(start, m.local_frame_grid_m)) {
+      : physics(scenario.physics),
+        model(m),
+        origin(originXY(localFrameOrigin(start, m.local_frame_grid_m))) {
     buildWorld();
     addGround(scenario.lot);
     obstacles.emplace(*world, scenario.obstacles, scenario.robot, physics, model, origin);

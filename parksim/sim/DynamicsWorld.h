@@ -130,6 +130,11 @@ struct SimModelDef {
   double local_frame_grid_m = 16.0;
 };
 
+/// Origin of Bullet's local frame in the lot frame for a robot starting at `start`: its
+/// position rounded down to the grid (SimModelDef::local_frame_grid_m), heading 0. The
+/// dynamics world and the episode that shifts the plan into that frame share it.
+Pose2 localFrameOrigin(const Pose2& start, double grid_m);
+
 /// The ego robot's measured state.
 struct RobotState {
   /// Reference point (axle middle) projected on the ground, and heading of the chassis.

@@ -45,10 +45,6 @@ const ExecutionDef& validated(const Scenario& scenario, const Trajectory& plan,
   return def;
 }
 
-Pose2 localOrigin(const Pose2& start, double grid_m) {
-  return {grid_m * std::floor(start.x / grid_m), grid_m * std::floor(start.y / grid_m), 0.0};
-}
-
 Trajectory shiftedPlan(const Trajectory& plan, const Pose2& origin) {
   Trajectory out = plan;
   for (TrajectoryPoint& p : out.points) {
@@ -106,7 +102,7 @@ struct Episode::Impl {
       : scenario(s),
         def(validated(s, plan, d)),
         build(drawRobotBuild(d.realism, d.noise_seed)),
-        origin(localOrigin(plan.points.front().pose, m.local_frame_grid_m)),
+        origin(localFrameOrigin(plan.points.front().pose, m.local_frame_grid_m)),
         reference(shiftedPlan(plan, origin), s.robot),
         world(s, plan.points.front().pose, modelFor(m, plan, d.realism, build, s)),
         dt(world.timeStep()),

@@ -25,7 +25,8 @@ TEST(ParksimBench, WritesTheCsvWithItsRequiredColumns) {
   const fs::path out = testing::testOutputDir("parksim_bench");
   fs::remove_all(out);
   const CliRun r = runBench(testing::sourceDir() + "/worlds/head_in.yaml" +
-                            " --seeds 2 --planners rrt-goal-connect,rrt-connect --ompl"
+                            " --seeds 2 --planners rrt-goal-connect,time-a-star"
+                            " --steering reeds-shepp,balkcom-mason --ompl"
                             " --ompl-planners RRTConnect --ompl-spaces reeds-shepp --out " +
                             out.string());
   ASSERT_EQ(r.exit_code, 0) << r.out;
@@ -35,8 +36,10 @@ TEST(ParksimBench, WritesTheCsvWithItsRequiredColumns) {
                              "length_m", "cusps", "min_clearance_m"}) {
     EXPECT_NE(header.find(column), std::string::npos) << column;
   }
-  // 2 seeds x (2 parksim planners x 3 steering functions + 1 OMPL planner) rows.
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * (2 * 3 + 1)) << csv;
+  // 2 seeds x (1 tree planner x 2 steering functions + time-a-star, which has its own moves
+  // and runs once, + 1 OMPL planner) rows.
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * (2 + 1 + 1)) << csv;
+  EXPECT_NE(csv.find(",time-a-star,primitives+balkcom-mason,"), std::string::npos) << csv;
   EXPECT_NE(csv.find("\nompl,"), std::string::npos);
   EXPECT_NE(csv.find("\nparksim,"), std::string::npos);
   const std::string summary = slurp(out / "summary.md");
