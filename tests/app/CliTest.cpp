@@ -18,6 +18,7 @@
 #include "parksim/core/Geometry.h"
 #include "parksim/core/Provenance.h"
 #include "parksim/core/Trajectory.h"
+#include "parksim/planner/PlanScenario.h"
 #include "parksim/renders/FigureSelection.h"
 #include "parksim/renders/PngEncoder.h"
 #include "parksim/results/TrajectoryFile.h"
@@ -61,7 +62,7 @@ TEST_F(Cli, PlanWritesAConsistentTrajectoryAndSummary) {
       const Pose2 next = integrateExact(t.points[i].pose, toTwist(t.points[i].wheels, s.robot),
                                         t.points[i + 1].t_s - t.points[i].t_s);
       EXPECT_LT(positionDistance(next, t.points[i + 1].pose), 1e-4);
-      EXPECT_NEAR(t.points[i + 1].t_s - t.points[i].t_s, 0.1, 1e-9);
+      EXPECT_NEAR(t.points[i + 1].t_s - t.points[i].t_s, PlanSetup{}.timing_period_s, 1e-9);
     }
     const auto plan = nlohmann::json::parse(slurp(out / "plan.json"));
     EXPECT_EQ(plan["status"], "solved");

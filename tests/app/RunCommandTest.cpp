@@ -67,7 +67,15 @@ TEST_F(RunCommand, TwoProcessesWriteIdenticalExecutedCsv) {
 }
 
 TEST_F(RunCommand, ExecutesAGivenPlanOpenLoopAndReportsTheMiss) {
-  ASSERT_EQ(parksim("plan " + world("head_in") + " --seed 1 --out " + out("plan")).exit_code, 0);
+  // The study's plan (move-to-pose, study timing): its wheel-speed jumps cost slip open loop
+  // and it ends ~6 mm off (docs/simulation.md); today's default plans are smooth enough to end
+  // within the goal's tolerance open loop.
+  ASSERT_EQ(parksim("plan " + world("head_in") +
+                    " --planner rrt-goal-connect --steering move-to-pose --timing study --seed 1"
+                    " --out " +
+                    out("plan"))
+                .exit_code,
+            0);
   const CliRun r = parksim("run " + world("head_in") + " --plan " + out("plan") +
                            "/trajectory.csv --tracking open --out " + out("open"));
   EXPECT_EQ(r.exit_code, 4) << r.out;  // tolerance not met, distinct from "unsolved"

@@ -41,7 +41,7 @@ def test_plan_result_has_status_stats_and_a_structured_trajectory(head_in_plan):
     assert traj.dtype.names == TRAJECTORY_FIELDS
     assert traj["t"][0] == 0.0 and np.all(np.diff(traj["t"]) > 0)
     stats = head_in_plan.stats
-    assert stats["planner"] == "hybrid-a-star" and stats["seed"] == 1
+    assert stats["planner"] == parksim.PlanSetup().planner.kind and stats["seed"] == 1
     assert stats["iterations"] > 0 and stats["path_length_m"] > 0
     assert set(stats["phase_times_s"]) >= {"sampling", "steering", "collision_checking"}
 

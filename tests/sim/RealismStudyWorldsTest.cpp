@@ -155,7 +155,9 @@ TEST_P(RealismWorlds, TheLotTracksTheSameTenKilometresAway) {
   // (measured 1.1e-6 m on parallel, 7e-9 m on head_in); the tracking itself stays within 1e-6.
   EXPECT_NEAR(there.final_pos_err_m, here.final_pos_err_m, 1e-5);
   EXPECT_NEAR(there.goal_pos_err_m, here.goal_pos_err_m, 1e-5);
-  EXPECT_NEAR(there.goal_heading_err_deg, here.goal_heading_err_deg, 1e-4);
+  // The same ~1e-6 m at rest, as a difference between the wheels 85 mm apart: ~2e-5 rad, 1e-3
+  // deg (measured 1.1e-4 deg on today's parallel plan).
+  EXPECT_NEAR(there.goal_heading_err_deg, here.goal_heading_err_deg, 1e-3);
   EXPECT_EQ(there.contacts, here.contacts);
   // lab: its encoder counts and stiction turn the inputs' 1e-12 m rounding at 10 km into
   // different discrete events, which move its errors by some 10 um (as any 1-ulp change of an

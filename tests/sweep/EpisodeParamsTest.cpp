@@ -29,7 +29,7 @@ TEST(EpisodeParams, CanonicalTextSpellsEveryParameterWithTheFormat) {
   p.world = "head_in";
   p.seed = 7;
   const std::string defaults =
-      "ids=2;world=head_in;planner=hybrid-a-star;steering=reeds-shepp;smooth=0;seed=7;"
+      "ids=2;world=head_in;planner=time-a-star;steering=balkcom-mason;smooth=1;seed=7;"
       "max_iterations=auto;tracking=closed;timing=time-optimal;realism=world;noise_seed=1;"
       "start_offset=0.0,0.0,0.0;goal_offset=0.0,0.0,0.0";
   EXPECT_EQ(canonicalString(p), defaults);
@@ -37,11 +37,11 @@ TEST(EpisodeParams, CanonicalTextSpellsEveryParameterWithTheFormat) {
   EXPECT_EQ(episodeId(p).size(), 16u);
   p.world_file = "elsewhere/head_in.yaml";  // provenance, not identity
   EXPECT_EQ(canonicalString(p), defaults);
-  p.smooth = true;
+  p.smooth = false;
   p.max_iterations = 5000;
   p.start_offset = {0.01, 0.0, -2.5};
   EXPECT_EQ(canonicalString(p),
-            "ids=2;world=head_in;planner=hybrid-a-star;steering=reeds-shepp;smooth=1;seed=7;"
+            "ids=2;world=head_in;planner=time-a-star;steering=balkcom-mason;smooth=0;seed=7;"
             "max_iterations=5000;tracking=closed;timing=time-optimal;realism=world;noise_seed=1;"
             "start_offset=0.01,0.0,-2.5;goal_offset=0.0,0.0,0.0");
 }
@@ -72,7 +72,7 @@ TEST(EpisodeParams, EveryParameterChangesTheId) {
   EXPECT_TRUE(differs([](EpisodeParams& p) { p.world = "parallel"; }));
   EXPECT_TRUE(differs([](EpisodeParams& p) { p.planner = "rrt"; }));
   EXPECT_TRUE(differs([](EpisodeParams& p) { p.steering = "rotate-translate-rotate"; }));
-  EXPECT_TRUE(differs([](EpisodeParams& p) { p.smooth = true; }));
+  EXPECT_TRUE(differs([](EpisodeParams& p) { p.smooth = !p.smooth; }));
   EXPECT_TRUE(differs([](EpisodeParams& p) { p.seed = 2; }));
   EXPECT_TRUE(differs([](EpisodeParams& p) { p.max_iterations = 10; }));
   EXPECT_TRUE(differs([](EpisodeParams& p) { p.tracking = "open"; }));

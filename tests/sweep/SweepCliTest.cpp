@@ -90,7 +90,7 @@ TEST(SweepCli, SurvivesAKillAndCompletesEachEpisodeOnceThenReports) {
     EXPECT_TRUE(fs::exists(out + "/report/" + f)) << f;
   }
   EXPECT_NE(
-      slurp(out + "/report/summary.md").find("| head_in | rrt-goal-connect | world | 6 | 6/6"),
+      slurp(out + "/report/summary.md").find("| head_in | rrt-goal-connect+smooth | world | 6 | 6/6"),
       std::string::npos);
   // The report is an output directory like plan's: written again whole, and never into a
   // directory of other files (it used to drop its files into any --out, the sweep's own too).
