@@ -1,10 +1,10 @@
 #include "parksim/rl/StepPool.h"
 
-#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <exception>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -14,6 +14,16 @@
 namespace parksim {
 
 namespace {
+
+// The pool's state in one word, so that joining a run and closing it cannot cross: the
+// generation of the last run, whether it is open to workers, and how many workers are inside.
+constexpr std::uint64_t kInsideMask = 0xffffU;
+constexpr std::uint64_t kOpen = std::uint64_t{1} << 16U;
+constexpr std::uint64_t kStop = std::uint64_t{1} << 17U;
+constexpr unsigned kGenerationShift = 18U;
+constexpr int kMaxThreads = 1024;
+
+std::uint64_t generationOf(std::uint64_t state) { return state >> kGenerationShift; }
 
 void relax() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -42,72 +52,73 @@ std::uint64_t awaitChange(const std::atomic<std::uint64_t>& value, std::uint64_t
 }  // namespace
 
 struct StepPool::Impl {
-  // One per worker, on its own cache line: the caller publishes a generation, the worker
-  // reports it done.
-  struct alignas(64) Slot {
-    std::atomic<std::uint64_t> start{0};
-    std::atomic<std::uint64_t> done{0};
-  };
-
   explicit Impl(const StepPoolDef& d)
-      : threads(d.threads),
-        spin(std::chrono::nanoseconds(static_cast<long long>(d.spin_s * 1e9))),
-        slots(static_cast<std::size_t>(d.threads - 1)) {
-    workers.reserve(slots.size());
-    for (std::size_t w = 0; w < slots.size(); ++w) {
-      workers.emplace_back([this, w] { serve(w); });
+      : threads(d.threads), spin(std::chrono::nanoseconds(static_cast<long long>(d.spin_s * 1e9))) {
+    workers.reserve(static_cast<std::size_t>(threads - 1));
+    for (int t = 1; t < threads; ++t) {
+      workers.emplace_back([this, t] { serve(static_cast<std::size_t>(t)); });
     }
   }
 
   ~Impl() {
-    stopping.store(true, std::memory_order_relaxed);
-    ++generation;
-    for (Slot& slot : slots) {
-      slot.start.store(generation, std::memory_order_release);
-      slot.start.notify_one();
-    }
+    state.fetch_or(kStop, std::memory_order_acq_rel);
+    state.notify_all();
     for (std::thread& t : workers) t.join();
   }
 
-  // Items of thread `t` (0: the caller) in this generation.
-  void drain(std::size_t t) {
-    for (std::size_t i = t; i < count; i += static_cast<std::size_t>(threads)) {
-      try {
-        (*work)(i);
-      } catch (...) {
-        errors[i] = std::current_exception();
-      }
+  void attempt(std::size_t i) {
+    if (claimed[i].exchange(1, std::memory_order_acq_rel) != 0) return;
+    try {
+      (*work)(i);
+    } catch (...) {
+      errors[i] = std::current_exception();
     }
   }
 
-  void serve(std::size_t w) {
-    Slot& slot = slots[w];
-    std::uint64_t seen = 0;
+  // Thread t's own items first, then (from the back, away from their owners' fronts) any item
+  // nobody has started.
+  void drain(std::size_t t) {
+    for (std::size_t i = t; i < count; i += static_cast<std::size_t>(threads)) attempt(i);
+    for (std::size_t i = count; i-- > 0;) attempt(i);
+  }
+
+  void serve(std::size_t t) {
+    std::uint64_t seen = state.load(std::memory_order_acquire);
+    std::uint64_t handled = 0;  // generation this worker last joined
     for (;;) {
-      seen = awaitChange(slot.start, seen, spin);
-      if (stopping.load(std::memory_order_relaxed)) return;
-      drain(w + 1);
-      slot.done.store(seen, std::memory_order_release);
-      slot.done.notify_one();
+      if ((seen & kStop) != 0) return;
+      if ((seen & kOpen) != 0 && generationOf(seen) != handled) {
+        if (!state.compare_exchange_weak(seen, seen + 1, std::memory_order_acq_rel,
+                                         std::memory_order_acquire)) {
+          continue;
+        }
+        handled = generationOf(seen);
+        drain(t);
+        seen = state.fetch_sub(1, std::memory_order_acq_rel) - 1;
+        state.notify_all();  // the caller may be waiting for the last one out
+        continue;
+      }
+      seen = awaitChange(state, seen, spin);
     }
   }
 
   int threads;
   std::chrono::nanoseconds spin;
-  std::vector<Slot> slots;
   std::vector<std::thread> workers;
-  std::atomic<bool> stopping{false};
+  std::atomic<std::uint64_t> state{0};
   std::uint64_t generation = 0;
-  // The current run's work, written before a generation is published (release) and read by
-  // the workers after they see it (acquire).
+  // The current run, written while the pool is closed and published by opening it (release);
+  // workers read it after joining (acquire).
   const std::function<void(std::size_t)>* work = nullptr;
   std::size_t count = 0;
+  std::vector<std::atomic<std::uint8_t>> claimed;
   std::vector<std::exception_ptr> errors;
 };
 
 StepPool::StepPool(const StepPoolDef& def) {
-  if (def.threads < 1) {
-    throw Error("step pool: threads must be at least 1, got " + std::to_string(def.threads));
+  if (def.threads < 1 || def.threads > kMaxThreads) {
+    throw Error("step pool: threads must be in [1, " + std::to_string(kMaxThreads) + "], got " +
+                std::to_string(def.threads));
   }
   if (!(def.spin_s >= 0.0 && def.spin_s <= 1.0)) {
     throw Error("step pool: spin_s must be in [0, 1] s, got " + formatGeneral(def.spin_s));
@@ -124,17 +135,23 @@ void StepPool::run(std::size_t count, const std::function<void(std::size_t)>& wo
   d.work = &work;
   d.count = count;
   d.errors.assign(count, nullptr);
-  // Workers without items this time are not woken.
-  const std::size_t busy = std::min(d.slots.size(), count > 0 ? count - 1 : 0);
-  const std::uint64_t generation = ++d.generation;
-  for (std::size_t w = 0; w < busy; ++w) {
-    d.slots[w].start.store(generation, std::memory_order_release);
-    d.slots[w].start.notify_one();
+  if (d.claimed.size() < count) d.claimed = std::vector<std::atomic<std::uint8_t>>(count);
+  for (std::size_t i = 0; i < count; ++i) d.claimed[i].store(0, std::memory_order_relaxed);
+  const std::uint64_t closed = ++d.generation << kGenerationShift;
+  if (d.threads > 1 && count > 1) {
+    d.state.store(closed | kOpen, std::memory_order_release);
+    d.state.notify_all();
   }
   d.drain(0);
-  for (std::size_t w = 0; w < busy; ++w) {
-    std::uint64_t done = d.slots[w].done.load(std::memory_order_acquire);
-    while (done != generation) done = awaitChange(d.slots[w].done, done, d.spin);
+  // Every item is claimed now; close once the workers inside have finished theirs.
+  std::uint64_t s = d.state.load(std::memory_order_acquire);
+  while (s != closed) {
+    if ((s & kInsideMask) == 0) {
+      d.state.compare_exchange_weak(s, closed, std::memory_order_acq_rel,
+                                    std::memory_order_acquire);
+    } else {
+      s = awaitChange(d.state, s, d.spin);
+    }
   }
   for (const std::exception_ptr& e : d.errors) {
     if (e) std::rethrow_exception(e);

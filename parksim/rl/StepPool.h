@@ -1,9 +1,15 @@
 #pragma once
 // A fork-join pool for stepping a batch: run(count, work) calls work(i) for every i, spread
-// over the caller's thread and the pool's workers, and returns when all calls have. Item i
-// always goes to thread i % threads(), so which thread steps a task never depends on timing.
+// over the caller's thread and the pool's workers, and returns when all calls have.
 // Reinforcement-learning loops call run() every few tens of microseconds, often faster than a
 // sleeping thread wakes: workers spin for StepPoolDef::spin_s before they sleep.
+//
+// Item i goes to thread i % threads() first (its data stays in that core's cache), but a
+// thread that has done its own items takes those nobody has started, and a worker that wakes
+// after the others have claimed every item joins no more. So a worker the scheduler has not
+// run yet (a machine busier than its cores) never holds up a step: the caller does its items.
+// Which thread ran an item therefore depends on timing; callers whose items are independent
+// (TaskBatch's tasks share nothing) get the same results whatever the thread count.
 
 #include <cstddef>
 #include <functional>
@@ -20,7 +26,7 @@ struct StepPoolDef {
 
 class StepPool {
  public:
-  /// Starts threads - 1 workers. Throws Error when threads < 1 or spin_s is negative.
+  /// Starts threads - 1 workers. Throws Error when threads < 1 or spin_s is outside [0, 1].
   explicit StepPool(const StepPoolDef& def);
   /// Stops and joins the workers.
   ~StepPool();

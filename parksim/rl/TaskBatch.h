@@ -2,8 +2,8 @@
 // A batch of parking tasks (rl/ParkingTask.h) stepped together in threads, for vectorised
 // reinforcement learning: Python's VecParkingEnv is this class behind Gymnasium's vector API.
 // Tasks are independent: each has its own world, seed and episode count, so the batch's
-// results do not depend on the number of threads (item i always runs whole on one thread,
-// and nothing is shared between tasks but the immutable Scenario they copied).
+// results do not depend on the number of threads nor on which thread stepped a task (each
+// step of a task runs whole on one thread, and tasks share nothing: each copied the Scenario).
 
 #include <cstddef>
 #include <cstdint>
