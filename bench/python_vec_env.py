@@ -4,6 +4,9 @@ A random policy (uniform wheel-speed fractions, drawn by NumPy in blocks: the Py
 cost is included) drives
   before   (with --baseline-env FILE) another ParkingEnv, e.g. the one of an earlier version,
            loaded from its env.py as a submodule of this parksim, one environment
+  physics  DynamicsWorld.step() alone for as many physics steps (the same random wheel
+           speeds, no observation, reward or Python per step beyond the call): the ceiling
+           of the dynamics fidelity on one core
   single   ParkingEnv: one environment, reset() after each end
   vec-1    VecParkingEnv(n, threads=1): n sub-environments in one thread (autoreset)
   vec-2    VecParkingEnv(n, threads=2): the same in two threads
@@ -57,6 +60,19 @@ def run_single(world, fidelity, steps, seed, env_class=None):
     return steps, start, obs
 
 
+def run_physics(world, fidelity, steps, seed):
+    rng = np.random.default_rng(seed)
+    sim = parksim.DynamicsWorld(world, start=world.start)
+    per_action = round(0.1 / world.time_step_s)
+    speed = world.robot.max_wheel_speed_radps
+    actions = rng.uniform(-speed, speed, size=(steps, 2))
+    start = time.perf_counter(), time.process_time()
+    for left, right in actions:
+        sim.set_wheel_targets(float(left), float(right))
+        sim.step(per_action)
+    return steps, start, None
+
+
 def run_vec(world, fidelity, n, threads, vec_steps, seed):
     envs = parksim.VecParkingEnv(n, world=world, fidelity=fidelity, threads=threads)
     rng = np.random.default_rng(seed)
@@ -105,6 +121,8 @@ def main():
             if baseline is not None and fidelity == "dynamics":
                 configs["before"] = (run_single, world, fidelity, 4 * vec_steps, args.seed,
                                      baseline)
+            if fidelity == "dynamics":
+                configs["physics"] = (run_physics, world, fidelity, 4 * vec_steps, args.seed)
             configs |= {
                 "single": (run_single, world, fidelity, min(vec_steps * args.envs, 4 * vec_steps),
                            args.seed),
@@ -129,7 +147,7 @@ def main():
     for fidelity in fidelities:
         key = (fidelity, reference) if (fidelity, reference) in results else (fidelity, "single")
         base = statistics.median(r for r, _ in results[key])
-        for name in ("before", "single", "vec-1", "vec-2"):
+        for name in ("before", "physics", "single", "vec-1", "vec-2"):
             rates = results.get((fidelity, name))
             if rates is None:
                 continue
