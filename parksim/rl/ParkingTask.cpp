@@ -63,24 +63,17 @@ struct ParkingTask::Impl {
     // truncated), and one action carries it at most v_max * period; doubled for the estimate's
     // error and for pushes. Speeds get half again for overshoot and collisions.
     const double margin = 2.0 * v_max * period_s;
+    // The goal's part has the robot's position and heading bounds, not the goal's values:
+    // Gymnasium's checker warns of bounds with low == high, and a task may move its goal.
     const LotBounds& lot = scenario.lot;
-    const Pose2& g = scenario.goal.pose;
-    low = {static_cast<float>(lot.x_min_m - margin),
-           static_cast<float>(lot.y_min_m - margin),
-           -1.0F,
-           -1.0F,
-           static_cast<float>(-1.5 * v_max),
-           static_cast<float>(-1.5 * omega_max),
-           static_cast<float>(g.x),
-           static_cast<float>(g.y),
-           static_cast<float>(std::cos(g.theta)),
-           static_cast<float>(std::sin(g.theta))};
-    high = low;
-    high[0] = static_cast<float>(lot.x_max_m + margin);
-    high[1] = static_cast<float>(lot.y_max_m + margin);
-    high[2] = high[3] = 1.0F;
-    high[4] = static_cast<float>(1.5 * v_max);
-    high[5] = static_cast<float>(1.5 * omega_max);
+    const auto x_min = static_cast<float>(lot.x_min_m - margin);
+    const auto y_min = static_cast<float>(lot.y_min_m - margin);
+    const auto x_max = static_cast<float>(lot.x_max_m + margin);
+    const auto y_max = static_cast<float>(lot.y_max_m + margin);
+    const auto v = static_cast<float>(1.5 * v_max);
+    const auto omega = static_cast<float>(1.5 * omega_max);
+    low = {x_min, y_min, -1.0F, -1.0F, -v, -omega, x_min, y_min, -1.0F, -1.0F};
+    high = {x_max, y_max, 1.0F, 1.0F, v, omega, x_max, y_max, 1.0F, 1.0F};
   }
 
   Scenario scenario;

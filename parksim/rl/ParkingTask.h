@@ -91,7 +91,8 @@ class ParkingTask {
   /// The control period after rounding to physics steps, s.
   double controlPeriod() const;
   /// Bounds of every observation: the lot grown by what one action can carry the robot past
-  /// it, and 1.5 x the robot's speed limits; observations are clipped into them.
+  /// it (the robot's and the goal's positions), and 1.5 x the robot's speed limits;
+  /// observations are clipped into them.
   const TaskObservation& observationLow() const;
   const TaskObservation& observationHigh() const;
   /// Planar pose (box centre, yaw) of every obstacle now, in scenario order.
