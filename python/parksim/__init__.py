@@ -68,6 +68,7 @@ from ._parksim import (  # noqa: F401,E402  (re-exported)
     MotionValidatorDef,
     MoveToPoseDef,
     PlannerDef,
+    ParkingTaskDef,
     PlanResult,
     PlanSetup,
     ReedsSheppDef,
@@ -99,17 +100,43 @@ def _plain(value):
     raise TypeError(f"a world dict holds numbers, strings, lists and dicts, not {type(value)}")
 
 
+def worlds_dir():
+    """The folder of the worlds installed with the package (the project's worlds/*.yaml)."""
+    return _os.path.join(_os.path.dirname(_os.path.abspath(__file__)), "worlds")
+
+
+def world_names():
+    """Names of the installed worlds, as load_world() takes them ("head_in", ...)."""
+    folder = worlds_dir()
+    if not _os.path.isdir(folder):
+        return []
+    return sorted(f[:-len(".yaml")] for f in _os.listdir(folder) if f.endswith(".yaml"))
+
+
+def _world_path(source):
+    """A world file's path: `source` itself, or for a bare name that is not a file here
+    ("head_in"), the installed world of that name."""
+    path = _os.fspath(source)
+    bare = _os.sep not in path and "/" not in path and not path.endswith((".yaml", ".yml"))
+    if bare and not _os.path.exists(path):
+        installed = _os.path.join(worlds_dir(), path + ".yaml")
+        if _os.path.isfile(installed):
+            return installed
+    return path
+
+
 def load_world(source, name="<dict>"):
-    """A World from a world file (path) or from a dict with the file's structure.
+    """A World from a world file (path), an installed world's name ("head_in": world_names()),
+    or a dict with the file's structure.
 
     Errors are parksim.Error (a ValueError) with the world reader's one-line message,
     "<file>:<line>: <field>: <what is wrong>". A dict is read as the YAML text json.dumps
-    makes of it (one key per line), named `name` in messages.
+    makes of it (one key per line), named `name` in messages. Worlds pickle as their text.
     """
     if isinstance(source, dict):
         text = _json.dumps(source, indent=1, default=_plain)
         return _parksim._parse_world(text, name)
-    return _parksim._load_world(_os.fspath(source))
+    return _parksim._load_world(_world_path(source))
 
 
 def render_frame(world, pose=None, plan=None, reference=None, episode=None,
@@ -141,13 +168,15 @@ def render_frame(world, pose=None, plan=None, reference=None, episode=None,
 
 
 from .env import ParkingEnv  # noqa: E402
+from .vector import VecParkingEnv  # noqa: E402
 from . import spaces  # noqa: E402
 
 __all__ = [
     "CollisionChecker", "DynamicsWorld", "Episode", "Error", "ExecutionDef", "FIGURE_NAMES",
-    "FrameDef", "FrameRecorder", "HybridAStarDef", "MotionValidatorDef", "MoveToPoseDef", "ParkingEnv", "PlannerDef",
+    "FrameDef", "FrameRecorder", "HybridAStarDef", "MotionValidatorDef", "MoveToPoseDef", "ParkingEnv",
+    "ParkingTaskDef", "PlannerDef",
     "PlanResult", "PlanSetup", "ReedsSheppDef", "RobotDef", "RotateTranslateRotateDef", "RunResult",
     "SimModelDef", "TrackingGains", "World", "cspace_slice", "encode_png", "load_world", "plan",
     "read_png", "read_trajectory", "render_figure", "render_frame", "run", "spaces",
-    "write_figures", "write_png",
+    "write_figures", "write_png", "VecParkingEnv", "world_names", "worlds_dir",
 ]

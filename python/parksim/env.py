@@ -1,17 +1,18 @@
-"""ParkingEnv: the parking task with gymnasium's interface, for reinforcement learning.
+"""ParkingEnv: the parking task with Gymnasium's interface, for reinforcement learning.
 
 Used like highway-env's parking-v0:
 
-    env = parksim.ParkingEnv(world="worlds/head_in.yaml")
+    env = parksim.ParkingEnv()                      # the installed head_in world
     obs, info = env.reset(seed=0)
     obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
 
-gymnasium is optional (Debian does not ship it). When it is importable, ParkingEnv is a
-gymnasium.Env with gymnasium.spaces.Box spaces and is registered as "parksim/Parking-v0";
-otherwise the spaces are parksim.spaces.Box, with the same attributes.
+The task itself (observation, action, reward, episode end, seeding) is C++
+(parksim/rl/ParkingTask.h, options: parksim.ParkingTaskDef); this file adds Gymnasium's
+interface. gymnasium is optional (Debian does not ship it). When it is importable, ParkingEnv is
+a gymnasium.Env with gymnasium.spaces.Box spaces, registered as "parksim/Parking-v0" (with
+max_episode_steps, and VecParkingEnv as its vector entry point); otherwise the spaces are
+parksim.spaces.Box, with the same attributes.
 """
-
-import math
 
 import numpy as np
 
@@ -28,165 +29,180 @@ except ImportError:
 
     _Base = object
 
+_MAX_SEED = 2**64 - 1
 
-def _wrap(angle):
-    return (angle + math.pi) % (2.0 * math.pi) - math.pi
+
+def world_from(world):
+    """A World from a World, a path, an installed world's name, or None (head_in)."""
+    if isinstance(world, _parksim.World):
+        return world
+    from . import load_world
+    return load_world("head_in" if world is None else world)
+
+
+def checked_seed(seed, what="seed"):
+    """`seed` as a non-negative int (a ValueError names it otherwise)."""
+    if isinstance(seed, (bool, np.bool_)) or not isinstance(seed, (int, np.integer)):
+        raise ValueError(f"{what} must be a non-negative integer or None, got {seed!r}")
+    if not 0 <= int(seed) <= _MAX_SEED:
+        raise ValueError(f"{what} must be a non-negative integer below 2**64, got {seed}")
+    return int(seed)
+
+
+def fresh_seed(rng):
+    """A task seed drawn from a NumPy generator (seeded by the user or from entropy)."""
+    return int(rng.integers(0, 2**63))
 
 
 class ParkingEnv(_Base):
     """Drive the world's robot from (near) its start into the goal, by wheel speeds.
 
-    Action: Box(-1, 1, (2,), float32), the left and right wheel speeds as fractions of the
-    robot's maximum; each action is held for control_period_s (whole simulation steps).
+    world: a World, a world file's path, an installed world's name (parksim.world_names()), or
+    None for "head_in" (installed with the package: no working directory needed).
+    realism: None (the library's default, "world": the world's realism: section, else the ideal
+    robot), or a preset ("ideal", "lab", "odometry"); it needs fidelity="dynamics".
+    Other options are parksim.ParkingTaskDef's fields (help(parksim.ParkingTaskDef)):
+    fidelity ("dynamics": Bullet; "kinematic": exact arcs against the collision checker, no
+    dynamics, for pre-training), control_period_s, max_episode_steps, start noise, success
+    thresholds, reward weights, terminate_on_contact, model (a SimModelDef or dict).
 
-    Observation: Box(-inf, inf, (10,), float32):
+    Action: Box(-1, 1, (2,), float32), the left and right wheel speeds as fractions of the
+    robot's maximum, held for control_period_s (whole physics steps). Exactly two finite
+    numbers; anything else raises ValueError, and values outside [-1, 1] are clipped.
+
+    Observation: Box(low, high, (10,), float32), bounds from the lot and the robot's limits:
         x, y, cos(theta), sin(theta), v, omega, x_goal, y_goal, cos(theta_goal), sin(theta_goal)
-    (m, m/s, rad/s; the true state of the Bullet simulation).
+    (m, m/s, rad/s). The robot's part is what its controller knows: the true state for the
+    ideal robot, the realism's estimate (and encoder speeds) otherwise.
 
     Reward per step, as parking-v0's: -sqrt(d / distance_scale_m + heading_weight * e / pi),
-    d the distance to the goal position and e the heading error (either heading when the goal
-    allows it), plus contact_reward on every step the chassis penetrates an obstacle and
-    success_reward on success.
+    d and e the true distance and heading error to the goal, plus contact_reward when the
+    chassis penetrated an obstacle during the step and success_reward on success.
 
-    terminated: success (within success_position_m and success_heading_rad of the goal; the
-    world's own tolerances, 1 mm / 0.5 deg in the study, are for planned trajectories), or a
-    contact when terminate_on_contact. truncated: max_episode_steps actions, or the reference
-    point left the lot.
+    terminated: success, or a contact when terminate_on_contact. truncated: max_episode_steps
+    actions, or the true reference point left the lot. A step after either raises RuntimeError:
+    call reset().
 
-    reset(seed=...) perturbs the start by up to start_position_noise_m and
-    start_heading_noise_rad (uniform), keeping the footprint collision-free.
+    info: pose and estimated_pose (arrays x, y, theta), t, goal_pos_err_m,
+    goal_heading_err_rad, is_success, contacts (bool array, one per obstacle of world.obstacles).
+
+    reset(seed=s) seeds the episodes (the action space is the user's: it is never re-seeded);
+    episode k after seed s starts from a start drawn from (s, k), as sub-environment i of
+    VecParkingEnv(seed=s - i) does. reset(options={"start": (x, y, theta)}) starts there.
+    The environment pickles and deep-copies, an episode in progress included (it is replayed).
     """
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 10}
 
-    def __init__(self, world="worlds/head_in.yaml", control_period_s=0.1, max_episode_steps=300,
-                 start_position_noise_m=0.02, start_heading_noise_rad=0.2,
-                 success_position_m=0.01, success_heading_rad=math.radians(5.0),
-                 distance_scale_m=0.1, heading_weight=0.3, contact_reward=-1.0,
-                 success_reward=10.0, terminate_on_contact=True, render_mode=None, model=None):
-        if isinstance(world, _parksim.World):
-            self.world = world
-        else:
-            from . import load_world
-            self.world = load_world(world)
+    def __init__(self, world=None, *, render_mode=None, realism=None, model=None, **options):
         if render_mode not in (None, "rgb_array"):
             raise ValueError(f"render_mode must be None or 'rgb_array', got {render_mode!r}")
+        self.world = world_from(world)
+        self._options = dict(options, realism=realism, model=model)
+        self._task = _parksim._ParkingTask(self.world, **self._options)
         self.render_mode = render_mode
-        self.model = model
-        dt = self.world.time_step_s
-        self.steps_per_action = max(1, round(control_period_s / dt))
-        self.control_period_s = self.steps_per_action * dt
-        self.max_episode_steps = int(max_episode_steps)
-        self.start_position_noise_m = float(start_position_noise_m)
-        self.start_heading_noise_rad = float(start_heading_noise_rad)
-        self.success_position_m = float(success_position_m)
-        self.success_heading_rad = float(success_heading_rad)
-        self.distance_scale_m = float(distance_scale_m)
-        self.heading_weight = float(heading_weight)
-        self.contact_reward = float(contact_reward)
-        self.success_reward = float(success_reward)
-        self.terminate_on_contact = bool(terminate_on_contact)
-
-        self._max_wheel = self.world.robot.max_wheel_speed_radps
-        goal = self.world.goal
-        self._goal = goal["pose"]
-        self._either_heading = goal["either_heading"]
-        self._lot = self.world.lot
-        self._checker = _parksim.CollisionChecker(self.world)
+        definition = self._task.definition
+        self.fidelity = definition.fidelity
+        self.control_period_s = self._task.control_period_s
+        self.max_episode_steps = definition.max_episode_steps
+        # Per instance: the class's metadata describes the default period only.
+        self.metadata = dict(type(self).metadata, render_fps=1.0 / self.control_period_s)
         self.action_space = _Box(-1.0, 1.0, shape=(2,), dtype=np.float32)
-        self.observation_space = _Box(-np.inf, np.inf, shape=(10,), dtype=np.float32)
-        self.np_random = np.random.default_rng()
-        self._sim = None
-        self._steps = 0
+        self.observation_space = _Box(self._task.observation_low, self._task.observation_high,
+                                      dtype=np.float32)
+        self._seeded = False
+        self._actions = []  # this episode's actions, to replay it when unpickled
 
     # -- gymnasium interface ---------------------------------------------------------------
 
+    if _gym is None:
+        @property
+        def np_random(self):
+            """The environment's generator (gymnasium.Env's attribute): seeded by
+            reset(seed=...), from entropy otherwise."""
+            if getattr(self, "_np_random", None) is None:
+                self._np_random = np.random.default_rng()
+            return self._np_random
+
     def reset(self, *, seed=None, options=None):
+        if seed is not None:
+            seed = checked_seed(seed)
         if _gym is not None:
             super().reset(seed=seed)
         elif seed is not None:
-            self.np_random = np.random.default_rng(seed)
+            self._np_random = np.random.default_rng(seed)
         if seed is not None:
-            self.action_space.seed(seed)
-        start = self._sample_start()
-        self._sim = _parksim.DynamicsWorld(self.world, start=start, model=self.model)
-        self._steps = 0
-        return self._observation(), self._info()
+            self._task.seed(seed)
+        elif not self._seeded:
+            self._task.seed(fresh_seed(self.np_random))
+        self._seeded = True
+        options = dict(options or {})
+        start = options.pop("start", None)
+        noise_seed = options.pop("noise_seed", None)
+        if options:
+            raise ValueError(f"reset: unknown options {sorted(options)} (start, noise_seed)")
+        self._actions = []
+        if start is None:
+            if noise_seed is not None:
+                raise ValueError("reset: options noise_seed needs start")
+            return self._task.reset()
+        return self._task.reset_at(start, checked_seed(noise_seed or 0, "noise_seed"))
 
     def step(self, action):
-        if self._sim is None:
-            raise RuntimeError("call reset() before step()")
-        a = np.clip(np.asarray(action, dtype=np.float64).reshape(2), -1.0, 1.0)
-        self._sim.set_wheel_targets(float(a[0]) * self._max_wheel, float(a[1]) * self._max_wheel)
-        self._sim.step(self.steps_per_action)
-        self._steps += 1
-        info = self._info()
-        contact = bool(info["contacts"])
-        reward = -math.sqrt(info["goal_pos_err_m"] / self.distance_scale_m
-                            + self.heading_weight * info["goal_heading_err_rad"] / math.pi)
-        if contact:
-            reward += self.contact_reward
-        if info["is_success"]:
-            reward += self.success_reward
-        terminated = info["is_success"] or (contact and self.terminate_on_contact)
-        x, y, _ = info["pose"]
-        outside = not (self._lot["x_min"] <= x <= self._lot["x_max"]
-                       and self._lot["y_min"] <= y <= self._lot["y_max"])
-        truncated = (not terminated) and (self._steps >= self.max_episode_steps or outside)
-        return self._observation(), reward, terminated, truncated, info
+        if not self._task.running:
+            raise RuntimeError(
+                "ParkingEnv.step: the episode has ended (terminated or truncated); call reset()"
+                if self._seeded else "ParkingEnv.step: call reset() before step()")
+        result = self._task.step(action)  # ValueError on a wrong shape or a non-finite value
+        self._actions.append(np.asarray(action, dtype=np.float64).reshape(2))
+        return result
 
     def render(self):
-        if self.render_mode != "rgb_array" or self._sim is None:
+        if self.render_mode != "rgb_array" or not self._seeded:
             return None
         from . import render_frame
-        return render_frame(self.world, pose=self._sim.pose,
-                            obstacle_poses=self._sim.obstacle_poses,
-                            contacts=self._sim.contacts)
+        return render_frame(self.world, pose=self._task.pose,
+                            obstacle_poses=self._task.obstacle_poses(),
+                            contacts=self._task.contacts)
 
     def close(self):
-        self._sim = None
+        pass
 
-    # -- internals -------------------------------------------------------------------------
+    # -- pickling: the task is rebuilt and its episode replayed (the simulation is
+    # deterministic, so the copy continues bit for bit) ------------------------------------
 
-    def _sample_start(self):
-        x0, y0, t0 = self.world.start
-        for _ in range(100):
-            dx, dy = self.np_random.uniform(-1.0, 1.0, size=2) * self.start_position_noise_m
-            dt = self.np_random.uniform(-1.0, 1.0) * self.start_heading_noise_rad
-            pose = (x0 + dx, y0 + dy, _wrap(t0 + dt))
-            if self._checker.is_free(pose):
-                return pose
-        return (x0, y0, t0)
+    def __getstate__(self):
+        state = self.__dict__.copy()
+        task = state.pop("_task")
+        state["_task_state"] = (task.seed_state, task.episode if self._seeded else None,
+                                task.steps, list(self._actions))
+        return state
 
-    def _heading_error(self, theta):
-        err = abs(_wrap(theta - self._goal[2]))
-        if self._either_heading:
-            err = min(err, abs(_wrap(theta - self._goal[2] - math.pi)))
-        return err
-
-    def _observation(self):
-        s = self._sim.robot_state()
-        x, y, theta = s["pose"]
-        v, omega = s["twist"]
-        gx, gy, gt = self._goal
-        return np.array([x, y, math.cos(theta), math.sin(theta), v, omega,
-                         gx, gy, math.cos(gt), math.sin(gt)], dtype=np.float32)
-
-    def _info(self):
-        pose = self._sim.pose
-        pos_err = math.hypot(pose[0] - self._goal[0], pose[1] - self._goal[1])
-        heading_err = self._heading_error(pose[2])
-        return {
-            "pose": pose,
-            "t": self._sim.time,
-            "goal_pos_err_m": pos_err,
-            "goal_heading_err_rad": heading_err,
-            "is_success": pos_err <= self.success_position_m
-            and heading_err <= self.success_heading_rad,
-            "contacts": self._sim.contacts,
-        }
+    def __setstate__(self, state):
+        seed_state, episode, steps, actions = state.pop("_task_state")
+        self.__dict__.update(state)
+        self._task = _parksim._ParkingTask(self.world, **self._options)
+        if episode is not None:
+            start, noise_seed = episode
+            self._task.reset_at(start, noise_seed)
+            for action in actions:
+                self._task.step(action)
+            assert self._task.steps == steps
+        self._task.seed_state = seed_state
 
 
-if _gym is not None:  # pragma: no cover - depends on what is installed
-    if "parksim/Parking-v0" not in _gym.registry:
-        _gym.register(id="parksim/Parking-v0", entry_point="parksim.env:ParkingEnv")
+def _register():  # pragma: no cover - depends on what is installed
+    if "parksim/Parking-v0" in _gym.registry:
+        return
+    import inspect
+
+    kwargs = {"max_episode_steps": _parksim.ParkingTaskDef().max_episode_steps}
+    if "vector_entry_point" in inspect.signature(_gym.register).parameters:
+        kwargs["vector_entry_point"] = "parksim.vector:VecParkingEnv"
+    _gym.register(id="parksim/Parking-v0", entry_point="parksim.env:ParkingEnv", **kwargs)
+
+
+if _gym is not None:
+    _register()
+
+__all__ = ["ParkingEnv"]

@@ -26,13 +26,20 @@ void bindWorld(py::module_& m);    // WorldBindings.cpp: World, load_world, coll
 void bindPlan(py::module_& m);     // PlanBindings.cpp: plan(), PlanResult, trajectories
 void bindEpisode(py::module_& m);  // EpisodeBindings.cpp: run(), Episode, DynamicsWorld
 void bindRender(py::module_& m);   // RenderBindings.cpp: images, figures, FrameRecorder
+void bindTasks(py::module_& m);    // TaskBindings.cpp: the reinforcement-learning tasks
 
 /// A loaded world (scenario/World.h): immutable, shared by every plan and episode made from it.
+/// It keeps the text it was read from, so that it pickles as that text and re-reads it.
 struct WorldHandle {
-  explicit WorldHandle(std::shared_ptr<const World> w)
-      : world(std::move(w)), scenario(world, &world->scenario) {}
+  WorldHandle(std::shared_ptr<const World> w, std::string text, std::string name)
+      : world(std::move(w)),
+        scenario(world, &world->scenario),
+        source_text(std::move(text)),
+        source_name(std::move(name)) {}
   std::shared_ptr<const World> world;
   std::shared_ptr<const Scenario> scenario;  ///< world->scenario, sharing its lifetime
+  std::string source_text;                   ///< the world file's text (or the dict's YAML)
+  std::string source_name;                   ///< its path (or the name given to a dict)
 };
 
 /// The episode request (pipeline/EpisodeRequest.h) plan(), run() and Episode() make: the
@@ -83,6 +90,8 @@ py::dict optionsDict(const py::kwargs& kwargs);
 /// (x, y, theta) from any sequence of three numbers.
 Pose2 poseFrom(const py::handle& sequence);
 py::tuple poseTuple(const Pose2& pose);
+/// N x 3 array: x, y, theta per pose.
+py::array posesArray(const std::vector<Pose2>& poses);
 
 /// JSON values as Python objects (dict, list, str, float, int, bool, None).
 py::object toPython(const nlohmann::json& json);

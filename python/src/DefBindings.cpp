@@ -10,6 +10,7 @@
 #include "parksim/realism/RealismDef.h"
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/renders/PngEncoder.h"
+#include "parksim/rl/ParkingTaskDef.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/ExecutionDef.h"
 #include "python/src/Bindings.h"
@@ -28,8 +29,8 @@ py::list propertyNames(const py::handle& type) {
   return names;
 }
 
-// A Def class: Def(**fields) or Def(dict), repr, to_dict(), and dicts convert implicitly where a
-// Def is expected (nested options such as gains={"k_x": 5}).
+// A Def class: Def(**fields) or Def(dict), repr, to_dict(), pickling (as to_dict()), and dicts
+// convert implicitly where a Def is expected (nested options such as gains={"k_x": 5}).
 template <class Def>
 py::class_<Def> defClass(py::module_& m, const char* name, const char* doc) {
   py::class_<Def> c(m, name, doc);
@@ -65,6 +66,13 @@ py::class_<Def> defClass(py::module_& m, const char* name, const char* doc) {
     }
     return text + ")";
   });
+  c.def(py::pickle([](const py::object& self) { return py::dict(self.attr("to_dict")()); },
+                   [name](const py::dict& fields) {
+                     py::dict options(fields);
+                     Def def = takeOptions(Def{}, options);
+                     rejectUnknownOptions(options, name);
+                     return def;
+                   }));
   py::implicitly_convertible<py::dict, Def>();
   return c;
 }
@@ -253,11 +261,36 @@ void bindEpisodeDefs(py::module_& m) {
           "auto (PARKSIM_GL_BACKEND, else egl, then osmesa), egl or osmesa");
 }
 
+void bindTaskDefs(py::module_& m) {
+  defClass<ParkingTaskDef>(m, "ParkingTaskDef",
+                           "The reinforcement-learning parking task (rl/ParkingTaskDef.h): "
+                           "ParkingEnv's and VecParkingEnv's options.")
+      .def_property(
+          "fidelity", [](const ParkingTaskDef& d) { return std::string(toString(d.fidelity)); },
+          [](ParkingTaskDef& d, const std::string& s) { d.fidelity = taskFidelityFromString(s); },
+          "dynamics (Bullet, realism) or kinematic (exact arcs against the collision checker, "
+          "for pre-training)")
+      .def_readwrite("control_period_s", &ParkingTaskDef::control_period_s)
+      .def_readwrite("max_episode_steps", &ParkingTaskDef::max_episode_steps)
+      .def_readwrite("start_position_noise_m", &ParkingTaskDef::start_position_noise_m)
+      .def_readwrite("start_heading_noise_rad", &ParkingTaskDef::start_heading_noise_rad)
+      .def_readwrite("success_position_m", &ParkingTaskDef::success_position_m)
+      .def_readwrite("success_heading_rad", &ParkingTaskDef::success_heading_rad)
+      .def_readwrite("distance_scale_m", &ParkingTaskDef::distance_scale_m)
+      .def_readwrite("heading_weight", &ParkingTaskDef::heading_weight)
+      .def_readwrite("contact_reward", &ParkingTaskDef::contact_reward)
+      .def_readwrite("success_reward", &ParkingTaskDef::success_reward)
+      .def_readwrite("terminate_on_contact", &ParkingTaskDef::terminate_on_contact)
+      .def_readwrite("model", &ParkingTaskDef::model)
+      .def_readwrite("kinematic_check_m", &ParkingTaskDef::kinematic_check_m);
+}
+
 }  // namespace
 
 void bindDefs(py::module_& m) {
   bindPlanningDefs(m);
   bindEpisodeDefs(m);
+  bindTaskDefs(m);
 }
 
 }  // namespace parksim::python

@@ -123,18 +123,6 @@ py::dict observation(const EpisodeHandle& h) {
   return d;
 }
 
-py::array posesArray(const std::vector<Pose2>& poses) {
-  py::array_t<double> out({static_cast<py::ssize_t>(poses.size()), py::ssize_t{3}});
-  auto r = out.mutable_unchecked<2>();
-  for (std::size_t i = 0; i < poses.size(); ++i) {
-    const auto k = static_cast<py::ssize_t>(i);
-    r(k, 0) = poses[i].x;
-    r(k, 1) = poses[i].y;
-    r(k, 2) = poses[i].theta;
-  }
-  return out;
-}
-
 py::list contactEvents(const EpisodeMetrics& m) {
   py::list l;
   for (const ContactEvent& c : m.contact_events) {

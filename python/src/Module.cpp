@@ -14,4 +14,5 @@ PYBIND11_MODULE(_parksim, m) {
   bindPlan(m);
   bindEpisode(m);
   bindRender(m);
+  bindTasks(m);
 }

@@ -6,7 +6,9 @@
 
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/Geometry.h"
+#include "parksim/core/InputFile.h"
 #include "parksim/renders/CSpace.h"
+#include "parksim/scenario/ScenarioReader.h"
 #include "parksim/scenario/World.h"
 #include "python/src/Bindings.h"
 
@@ -58,6 +60,11 @@ py::dict obstacleDict(const Obstacle& o) {
   if (o.shape == ObstacleShape::kCircle) d["radius"] = o.radius_m;
   if (o.shape == ObstacleShape::kPolygon) d["vertices"] = polygon(o.vertices);
   return d;
+}
+
+WorldHandle parsedWorld(const std::string& text, const std::string& source_name) {
+  return WorldHandle(std::make_shared<const World>(parseWorld(text, source_name)), text,
+                     source_name);
 }
 
 // The footprint checker with its world kept alive (it copies what it needs, but a World
@@ -128,6 +135,19 @@ void bindWorld(py::module_& m) {
           },
           py::arg("pose"), py::arg("margin_m") = 0.0,
           "Corners (4 x 2 array, m) of the robot's footprint at pose (x, y, theta).")
+      // Pickled as its text and name, and read again: a World crosses to another process
+      // (multiprocessing, Gymnasium's AsyncVectorEnv) without the file. It is immutable, so a
+      // copy may share it.
+      .def(py::pickle(
+          [](const WorldHandle& w) { return py::make_tuple(w.source_text, w.source_name); },
+          [](const py::tuple& state) {
+            if (state.size() != 2) throw py::value_error("World: bad pickled state");
+            return parsedWorld(state[0].cast<std::string>(), state[1].cast<std::string>());
+          }))
+      .def("__copy__", [](const WorldHandle& w) { return w; })
+      .def(
+          "__deepcopy__", [](const WorldHandle& w, const py::handle&) { return w; },
+          py::arg("memo"))
       .def("__repr__", [](const WorldHandle& w) {
         return "<parksim.World '" + w.scenario->name + "' from " + w.scenario->source_path + ": " +
                std::to_string(w.scenario->obstacles.size()) + " obstacles>";
@@ -136,15 +156,13 @@ void bindWorld(py::module_& m) {
   m.def(
       "_load_world",
       [](const std::string& path) {
-        return WorldHandle(std::make_shared<const World>(loadWorld(path)));
+        auto world = std::make_shared<const World>(loadWorld(path));
+        // Read again for pickling, after the loader's checks and messages.
+        return WorldHandle(std::move(world), readInputFile(path, kMaxWorldFileBytes, "world file"),
+                           path);
       },
       py::arg("path"));
-  m.def(
-      "_parse_world",
-      [](const std::string& text, const std::string& source_name) {
-        return WorldHandle(std::make_shared<const World>(parseWorld(text, source_name)));
-      },
-      py::arg("text"), py::arg("source_name"));
+  m.def("_parse_world", &parsedWorld, py::arg("text"), py::arg("source_name"));
 
   py::class_<CollisionChecker>(m, "CollisionChecker",
                                "Footprint queries against a world's obstacles (the planner's "

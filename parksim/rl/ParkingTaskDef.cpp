@@ -1,0 +1,57 @@
+#include "parksim/rl/ParkingTaskDef.h"
+
+#include <cmath>
+
+#include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
+
+namespace parksim {
+
+const char* toString(TaskFidelity fidelity) {
+  switch (fidelity) {
+    case TaskFidelity::kDynamics: return "dynamics";
+    case TaskFidelity::kKinematic: return "kinematic";
+  }
+  return "dynamics";
+}
+
+TaskFidelity taskFidelityFromString(const std::string& name) {
+  if (name == "dynamics") return TaskFidelity::kDynamics;
+  if (name == "kinematic") return TaskFidelity::kKinematic;
+  throw Error("parking task: fidelity: unknown value '" + name +
+              "' (expected dynamics or kinematic)");
+}
+
+void validateTaskDef(const ParkingTaskDef& def) {
+  const auto fail = [](const char* field, const char* rule, double value) {
+    throw Error(std::string("parking task: ") + field + " must be " + rule + ", got " +
+                formatGeneral(value));
+  };
+  const auto positive = [&fail](const char* field, double value) {
+    if (!(value > 0.0 && std::isfinite(value))) fail(field, "positive and finite", value);
+  };
+  const auto notNegative = [&fail](const char* field, double value) {
+    if (!(value >= 0.0 && std::isfinite(value))) fail(field, "finite and not negative", value);
+  };
+  const auto finite = [&fail](const char* field, double value) {
+    if (!std::isfinite(value)) fail(field, "finite", value);
+  };
+  positive("control_period_s", def.control_period_s);
+  if (def.max_episode_steps < 1) fail("max_episode_steps", "at least 1", def.max_episode_steps);
+  notNegative("start_position_noise_m", def.start_position_noise_m);
+  notNegative("start_heading_noise_rad", def.start_heading_noise_rad);
+  notNegative("success_position_m", def.success_position_m);
+  notNegative("success_heading_rad", def.success_heading_rad);
+  positive("distance_scale_m", def.distance_scale_m);
+  notNegative("heading_weight", def.heading_weight);
+  finite("contact_reward", def.contact_reward);
+  finite("success_reward", def.success_reward);
+  positive("kinematic_check_m", def.kinematic_check_m);
+  if (def.fidelity == TaskFidelity::kKinematic && def.realism.active()) {
+    throw Error("parking task: the kinematic fidelity drives the ideal robot; realism '" +
+                def.realism.name + "' needs fidelity dynamics");
+  }
+  validateRealism(def.realism);
+}
+
+}  // namespace parksim

@@ -1,0 +1,48 @@
+#pragma once
+// How a parking task's actions move the robot, one implementation per fidelity
+// (ParkingTaskDef.h): DynamicDrive.cpp through sim/Episode.h, KinematicDrive.cpp along exact
+// arcs against the collision checker. ParkingTask judges what they report; they judge nothing.
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "parksim/core/DiffDrive.h"
+#include "parksim/core/Pose2.h"
+#include "parksim/core/Scenario.h"
+#include "parksim/rl/ParkingTaskDef.h"
+
+namespace parksim {
+
+class BulletCollisionWorld;
+
+/// The robot after an action (or a reset), as a fidelity computes it.
+struct DriveState {
+  Pose2 pose;      ///< true pose
+  Pose2 estimate;  ///< the controller's belief (the true pose for the ideal robot)
+  Twist twist;     ///< as the controller observes it
+  double t_s = 0.0;
+  /// Obstacles (scenario order, ascending) the chassis penetrated during the action.
+  std::vector<int> contacts;
+};
+
+class TaskDrive {
+ public:
+  virtual ~TaskDrive() = default;
+  /// Puts the robot at `start`, at rest, time 0; noise_seed seeds the realism's draws.
+  virtual void reset(const Pose2& start, std::uint64_t noise_seed, DriveState& out) = 0;
+  /// Holds `wheels` (rad/s) for `steps` physics steps (the control period).
+  virtual void act(const WheelSpeeds& wheels, long steps, DriveState& out) = 0;
+  virtual std::vector<Pose2> obstaclePoses() const = 0;
+};
+
+/// The dynamics world through Episode's step API, for at most `max_actions` actions of `steps`
+/// physics steps each.
+std::unique_ptr<TaskDrive> makeDynamicDrive(const Scenario& scenario, const ParkingTaskDef& def,
+                                            long max_actions, long steps);
+
+/// Exact arcs checked against `collision` (kept by reference: it must outlive the drive).
+std::unique_ptr<TaskDrive> makeKinematicDrive(const Scenario& scenario, const ParkingTaskDef& def,
+                                              const BulletCollisionWorld& collision);
+
+}  // namespace parksim

@@ -1,0 +1,141 @@
+"""VecParkingEnv: n parking tasks stepped together in C++ threads, behind Gymnasium's vector API.
+
+    envs = parksim.VecParkingEnv(8, fidelity="kinematic")
+    obs, infos = envs.reset(seed=0)          # obs (8, 10) float32; sub-environment i seeded 0 + i
+    obs, rewards, terminated, truncated, infos = envs.step(envs.action_space.sample())
+
+Batched NumPy arrays throughout: observations (n, 10) float32, rewards (n,) float64, terminated
+and truncated (n,) bool, infos a dict of arrays (each key with its "_key" mask, as Gymnasium's
+vector environments give them). A sub-environment whose episode ended is reset at the next
+step (its action ignored, reward 0; Gymnasium's default autoreset mode, "next step"), while
+ParkingEnv itself refuses a step after the end. The tasks run in C++ (parksim/rl/TaskBatch.h)
+with the GIL released; results do not depend on the number of threads. When gymnasium is
+importable, VecParkingEnv is a gymnasium.vector.VectorEnv.
+"""
+
+import numpy as np
+
+from . import _parksim
+from .env import checked_seed, fresh_seed, world_from
+
+try:  # pragma: no cover - depends on what is installed
+    import gymnasium as _gym
+    from gymnasium.spaces import Box as _Box
+    from gymnasium.vector import VectorEnv as _Base
+
+    try:
+        from gymnasium.vector import AutoresetMode as _AutoresetMode
+
+        _NEXT_STEP = _AutoresetMode.NEXT_STEP
+    except ImportError:  # gymnasium 1.0: "next step" is the only mode
+        _NEXT_STEP = "next_step"
+except ImportError:
+    _gym = None
+    from .spaces import Box as _Box
+
+    _Base = object
+    _NEXT_STEP = "next_step"
+
+
+class VecParkingEnv(_Base):
+    """num_envs parking tasks (ParkingEnv's, same options) stepped in C++ threads.
+
+    threads: threads that step the batch, the calling one included (None or 0: one per
+    hardware thread, at most num_envs). Trajectories do not depend on it.
+    world, realism, model and the ParkingTaskDef options: as ParkingEnv's; in particular
+    fidelity="kinematic" (exact arcs against the collision checker, no Bullet dynamics: the
+    pre-training fidelity) or "dynamics" (the default).
+
+    reset(seed=s) seeds sub-environment i with s + i (a list gives each its own seed, None
+    keeps a sub-environment's sequence); sub-environment i then runs exactly the episodes of
+    ParkingEnv().reset(seed=s + i) followed by reset() after each end.
+    """
+
+    metadata = {"render_modes": ["rgb_array"], "autoreset_mode": _NEXT_STEP}
+
+    def __init__(self, num_envs, world=None, *, threads=None, render_mode=None, realism=None,
+                 model=None, **options):
+        num_envs = int(num_envs)
+        if num_envs < 1:
+            raise ValueError(f"num_envs must be at least 1, got {num_envs}")
+        if render_mode not in (None, "rgb_array"):
+            raise ValueError(f"render_mode must be None or 'rgb_array', got {render_mode!r}")
+        self.world = world_from(world)
+        self._batch = _parksim._TaskBatch(self.world, num_envs, threads=int(threads or 0),
+                                          realism=realism, model=model, **options)
+        self.num_envs = num_envs
+        self.render_mode = render_mode
+        self.threads = self._batch.threads
+        definition = self._batch.definition
+        self.fidelity = definition.fidelity
+        self.control_period_s = self._batch.control_period_s
+        self.max_episode_steps = definition.max_episode_steps
+        self.metadata = dict(type(self).metadata, render_fps=1.0 / self.control_period_s)
+        low, high = self._batch.observation_low, self._batch.observation_high
+        self.single_action_space = _Box(-1.0, 1.0, shape=(2,), dtype=np.float32)
+        self.single_observation_space = _Box(low, high, dtype=np.float32)
+        self.action_space = _Box(-1.0, 1.0, shape=(num_envs, 2), dtype=np.float32)
+        self.observation_space = _Box(np.tile(low, (num_envs, 1)), np.tile(high, (num_envs, 1)),
+                                      dtype=np.float32)
+        self.spec = None
+        self.closed = False
+        self._seeded = [False] * num_envs
+
+    if _gym is None:
+        @property
+        def np_random(self):
+            """The vector environment's generator: seeded by reset(seed=int), from entropy
+            otherwise; it seeds sub-environments that were never given a seed."""
+            if getattr(self, "_np_random", None) is None:
+                self._np_random = np.random.default_rng()
+            return self._np_random
+
+    def reset(self, *, seed=None, options=None):
+        if options:
+            raise ValueError(f"reset: unknown options {sorted(options)}")
+        n = self.num_envs
+        if seed is None:
+            seeds = [None] * n
+        elif isinstance(seed, (list, tuple, np.ndarray)):
+            if len(seed) != n:
+                raise ValueError(f"reset: {len(seed)} seeds for {n} environments")
+            seeds = [None if s is None else checked_seed(s) for s in seed]
+        else:
+            first = checked_seed(seed)
+            seeds = [checked_seed(first + i) for i in range(n)]
+        if isinstance(seed, (int, np.integer)) and not isinstance(seed, bool):
+            if _gym is not None:
+                super().reset(seed=int(seed))
+            else:
+                self._np_random = np.random.default_rng(int(seed))
+        for i, s in enumerate(seeds):
+            if s is None and not self._seeded[i]:
+                seeds[i] = fresh_seed(self.np_random)
+            self._seeded[i] = True
+        return self._batch.reset(seeds)
+
+    def step(self, actions):
+        """actions: (num_envs, 2) wheel speed fractions; ValueError on another shape or a
+        non-finite value (nothing steps then)."""
+        if not all(self._seeded):
+            raise RuntimeError("VecParkingEnv.step: call reset() before step()")
+        return self._batch.step(actions)
+
+    def render(self):
+        if self.render_mode != "rgb_array" or not all(self._seeded):
+            return None
+        from . import render_frame
+        return tuple(render_frame(self.world, pose=self._batch.pose(i),
+                                  obstacle_poses=self._batch.obstacle_poses(i),
+                                  contacts=self._batch.contacts(i))
+                     for i in range(self.num_envs))
+
+    def close(self, **kwargs):
+        self.closed = True
+
+    def __repr__(self):
+        return (f"VecParkingEnv({self.num_envs}, world={self.world.name!r}, "
+                f"fidelity={self.fidelity!r}, threads={self.threads})")
+
+
+__all__ = ["VecParkingEnv"]
