@@ -1,8 +1,9 @@
 // parksim run WORLD: plan (or load a plan), drive it in the Bullet simulation, measure, judge,
 // and optionally film it: one call of the episode pipeline (parksim/pipeline/). Writes
-// DIR/trajectory.csv and DIR/plan.json (as `parksim plan`), DIR/executed.csv, DIR/metrics.json,
-// and with --frames DIR/frames/*.png and the figures in DIR/figures/ (--figures chooses them,
-// also without --frames; --video, --gif: DIR/episode.mp4, DIR/episode.gif). Exit status: the
+// DIR/trajectory.csv and DIR/plan.json (as `parksim plan`), DIR/executed.csv (--record-format
+// npz: DIR/executed.npz), DIR/metrics.json, and with --frames DIR/frames/*.png and the figures
+// in DIR/figures/ (--figures chooses them, also without --frames; --video, --gif:
+// DIR/episode.mp4, DIR/episode.gif); --junit FILE: a JUnit report (docs/ci.md). Exit status: the
 // verdict's (exitCodeFor: 0 met, 1 unsolved plan, 4 tolerance not met) with its one-line reason
 // on stderr; 2 on bad input (app/Command.h lists the exit codes).
 
