@@ -92,8 +92,11 @@ std::vector<Json> syntheticTable(std::uint64_t first_noise_seed, const Spread& s
 }
 
 // The table as `parksim compare` gets it: written by the sweep's writer, read by its reader.
+// In a folder of the running test's own: ctest runs the tests in parallel processes.
 std::vector<Json> throughTheWriter(const std::vector<Json>& rows, const std::string& name) {
-  const std::filesystem::path dir = parksim::testing::testOutputDir("TableComparison") / name;
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::filesystem::path dir =
+      parksim::testing::testOutputDir("TableComparison." + test) / name;
   std::filesystem::remove_all(dir);
   writeResultsTable(dir.string(), rows);
   return readComparedTable(dir.string());
