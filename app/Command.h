@@ -19,7 +19,8 @@ enum ExitCode : int {
   kExitUnsolved = 1,         ///< the planner found no plan (plan, run)
   kExitBadInput = 2,         ///< bad input or usage; nothing was written
   kExitInternal = 3,         ///< a bug or an environment failure (out of memory, no OpenGL, ...)
-  kExitToleranceNotMet = 4,  ///< run: goal or tracking tolerance missed, or a contact
+  kExitToleranceNotMet = 4,  ///< run: goal or tracking tolerance missed, or a contact;
+                             ///< compare: a regression
 };
 
 /// The exit code of a single-episode command (plan, run) for its verdict: met 0, plan_failed
@@ -41,5 +42,6 @@ CommandRunner setupRenderCommand(CLI::App& sub);
 CommandRunner setupSweepCommand(CLI::App& sub);
 CommandRunner setupMergeCommand(CLI::App& sub);
 CommandRunner setupReportCommand(CLI::App& sub);
+CommandRunner setupCompareCommand(CLI::App& sub);
 
 }  // namespace parksim::app

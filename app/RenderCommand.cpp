@@ -51,9 +51,10 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
   sub.add_option("--size", opt->size, "figure size WxH in pixels")->capture_default_str();
   sub.add_option("--out", opt->out, "output directory; figures go to OUT/figures")
       ->capture_default_str();
-  sub.add_option("--executed", opt->executed,
-                 "executed.csv of an episode (columns t, pos_err, heading_err): adds the "
-                 "tracking-error plot");
+  sub.add_option(
+      "--executed", opt->executed,
+      "executed.csv or executed.npz of an episode (columns t, pos_err, heading_err): adds the "
+      "tracking-error plot");
   sub.add_option("--cspace-heading", opt->cspace_heading_deg,
                  "heading of the C-space slice figure, degrees")
       ->capture_default_str()
@@ -97,7 +98,7 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
       r.drive = false;
       checkEpisodeRequest(r);
     }
-    if (!opt->executed.empty()) inputs.tracking = readTrackingCsv(opt->executed);
+    if (!opt->executed.empty()) inputs.tracking = readTrackingRecord(opt->executed);
     std::optional<Pose2> target;
     if (opt->steer_target.size() == 3) {
       target = Pose2{opt->steer_target[0], opt->steer_target[1], degToRad(opt->steer_target[2])};

@@ -13,11 +13,13 @@
 
 #include "app/Command.h"
 #include "parksim/cli/OutputDir.h"
+#include "parksim/cli/ReportFileOption.h"
 #include "parksim/cli/TerminalText.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/results/OmplLog.h"
 #include "parksim/sweep/Report.h"
+#include "parksim/sweep/ResultsJUnit.h"
 #include "parksim/sweep/ResultsTable.h"
 #include "parksim/sweep/SweepManifest.h"
 
@@ -101,7 +103,7 @@ std::vector<std::string> writeOmplLogs(const std::vector<Json>& rows, const std:
   return written;
 }
 
-int runReport(const std::string& dir, std::string out) {
+int runReport(const std::string& dir, std::string out, const std::string& junit) {
   const std::string path = dir + "/results.jsonl";
   if (!std::filesystem::exists(path))
     throw Error(path + ": no such file (run parksim sweep first)");
@@ -129,6 +131,10 @@ int runReport(const std::string& dir, std::string out) {
     }
   }
   staged.commit();
+  if (!junit.empty()) {
+    writeJUnitFile(junit, resultsJUnit(rows, name));
+    written.push_back(junit);
+  }
   std::printf("%s\n", printableLines(summary).c_str());
   for (const std::string& w : written) {
     std::printf("wrote %s\n", printable(staged.shown(w)).c_str());
@@ -142,11 +148,15 @@ CommandRunner setupReportCommand(CLI::App& sub) {
   struct Options {
     std::string dir;
     std::string out;
+    std::string junit;
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("dir", opt->dir, "a sweep's output directory (with results.jsonl)")->required();
   sub.add_option("--out", opt->out, "where to write the report (default: DIR/report)");
-  return [opt](const OutputOptions&) { return runReport(opt->dir, opt->out); };
+  cli::addReportFileOption(sub, "--junit", opt->junit,
+                           "also write the table as a JUnit XML report: one test case per "
+                           "episode, one suite per world x planner x realism (docs/ci.md)");
+  return [opt](const OutputOptions&) { return runReport(opt->dir, opt->out, opt->junit); };
 }
 
 }  // namespace parksim::app

@@ -1,8 +1,9 @@
 // parksim run WORLD: plan (or load a plan), drive it in the Bullet simulation, measure, judge,
 // and optionally film it: one call of the episode pipeline (parksim/pipeline/). Writes
-// DIR/trajectory.csv and DIR/plan.json (as `parksim plan`), DIR/executed.csv, DIR/metrics.json,
-// and with --frames DIR/frames/*.png and the figures in DIR/figures/ (--figures chooses them,
-// also without --frames; --video, --gif: DIR/episode.mp4, DIR/episode.gif). Exit status: the
+// DIR/trajectory.csv and DIR/plan.json (as `parksim plan`), DIR/executed.csv (--record-format
+// npz: DIR/executed.npz), DIR/metrics.json, and with --frames DIR/frames/*.png and the figures
+// in DIR/figures/ (--figures chooses them, also without --frames; --video, --gif:
+// DIR/episode.mp4, DIR/episode.gif); --junit FILE: a JUnit report (docs/ci.md). Exit status: the
 // verdict's (exitCodeFor: 0 met, 1 unsolved plan, 4 tolerance not met) with its one-line reason
 // on stderr; 2 on bad input (app/Command.h lists the exit codes).
 
@@ -16,11 +17,13 @@
 #include "parksim/cli/OutputDir.h"
 #include "parksim/cli/PlanOptions.h"
 #include "parksim/cli/Progress.h"
+#include "parksim/cli/ReportFileOption.h"
 #include "parksim/cli/TerminalText.h"
 #include "parksim/cli/Validators.h"
 #include "parksim/cli/WorldOptions.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
+#include "parksim/pipeline/RealisationsJUnit.h"
 #include "parksim/realism/Distribution.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/renders/PngEncoder.h"
@@ -55,6 +58,8 @@ struct RunOptions {
   double max_goal_error_mm = -1.0;
   double max_goal_heading_error_deg = -1.0;
   cli::GlBackendOption gl_backend;
+  std::string record_format = toString(RecordDef{}.format);
+  std::string junit;
 };
 
 void addEpisodeOptions(CLI::App& sub, RunOptions& o) {
@@ -97,6 +102,14 @@ void addEpisodeOptions(CLI::App& sub, RunOptions& o) {
   sub.add_option("--max-goal-heading-error-deg", o.max_goal_heading_error_deg,
                  "tracking tolerance: final heading error against the goal (default 1.5)")
       ->check(realIn(0.0, 360.0, true));
+  sub.add_option("--record-format", o.record_format,
+                 "executed and sensor rows as csv (executed.csv) or npz (executed.npz: NumPy's "
+                 "archive, exact, a third of the bytes or less)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"csv", "npz"}));
+  cli::addReportFileOption(sub, "--junit", o.junit,
+                           "also write a JUnit XML report: one test case per realisation, its "
+                           "verdict as the failure (docs/ci.md)");
 }
 
 void addFilmOptions(CLI::App& sub, RunOptions& o) {
@@ -137,6 +150,7 @@ EpisodeRequest toRequest(const RunOptions& o) {
   r.noise_seed = o.noise_seed;
   r.realisations = o.realisations;
   r.min_success_fraction = o.min_success_fraction;
+  r.record.format = recordFormatFromString(o.record_format);
   if (o.max_tracking_error_mm > 0.0) r.tolerance.max_pos_err_m = 1e-3 * o.max_tracking_error_mm;
   if (o.max_goal_error_mm > 0.0) r.tolerance.goal_pos_err_m = 1e-3 * o.max_goal_error_mm;
   if (o.max_goal_heading_error_deg > 0.0) {
@@ -162,12 +176,20 @@ EpisodeRequest toRequest(const RunOptions& o) {
   return r;
 }
 
+// The file written whose name starts with `prefix` (the record's: "executed.csv" or ".npz").
+std::string written(const EpisodeOutcome& out, const std::string& prefix) {
+  for (const std::string& f : out.files) {
+    if (f.rfind(prefix, 0) == 0) return f;
+  }
+  return prefix + "csv";
+}
+
 void printEpisode(const EpisodeOutcome& out, const std::string& dir) {
   const EpisodeMetrics& m = out.episode.metrics;
   std::printf(
       "%s-loop episode on %s: tracking error max %.3f mm (rms %.3f mm), final %.3f mm / %.3f "
       "deg\nfinal pose %.3f mm / %.3f deg from the goal%s; %d contact event%s; %.2f s "
-      "simulated in %.3f s (%.0fx real time)\nwrote %s/trajectory.csv, %s/executed.csv and "
+      "simulated in %.3f s (%.0fx real time)\nwrote %s/trajectory.csv, %s/%s and "
       "%s/metrics.json\n",
       toString(m.tracking), printable(out.world->scenario.name).c_str(), m.max_pos_err_m * 1e3,
       m.rms_pos_err_m * 1e3, m.final_pos_err_m * 1e3, m.final_heading_err_deg,
@@ -175,7 +197,7 @@ void printEpisode(const EpisodeOutcome& out, const std::string& dir) {
       m.goal_reached ? " (within tolerance)" : " (outside tolerance)", m.contacts,
       m.contacts == 1 ? "" : "s", m.sim_time_s, m.wall_time_s,
       m.wall_time_s > 0.0 ? m.sim_time_s / m.wall_time_s : 0.0, dir.c_str(), dir.c_str(),
-      dir.c_str());
+      written(out, "executed.").c_str(), dir.c_str());
   const ExecutionDef& exec = out.execution;
   if (exec.realism.active()) {
     std::printf(
@@ -183,7 +205,8 @@ void printEpisode(const EpisodeOutcome& out, const std::string& dir) {
         "slip max %.1f mm/s, motor torque max %.4f N m%s\n",
         exec.realism.name.c_str(), static_cast<unsigned long long>(exec.noise_seed),
         m.estimator.c_str(), m.max_est_pos_err_m * 1e3, m.max_slip_mps * 1e3, m.max_motor_torque_nm,
-        exec.realism.pose_sensor.enabled ? "; pose samples in sensors.csv" : "");
+        exec.realism.pose_sensor.enabled ? ("; pose samples in " + written(out, "sensors.")).c_str()
+                                         : "");
   }
 }
 
@@ -272,6 +295,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     planning.finish();
     if (frames) frames->finish();
     out.commit();
+    if (!opt->junit.empty()) writeJUnitFile(opt->junit, realisationsJUnit(outcome));
     const std::string dir = printable(opt->out);
     if (outcome.driven()) {
       printEpisode(outcome, dir);

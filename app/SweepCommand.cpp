@@ -13,14 +13,17 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <set>
 #include <string>
 #include <thread>
 
 #include "app/Command.h"
+#include "parksim/cli/ReportFileOption.h"
 #include "parksim/cli/TerminalText.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/sweep/EpisodeExpansion.h"
+#include "parksim/sweep/ResultsJUnit.h"
 #include "parksim/sweep/ResultsTable.h"
 #include "parksim/sweep/Shard.h"
 #include "parksim/sweep/SlurmScript.h"
@@ -46,6 +49,7 @@ struct SweepOptions {
   SlurmDef slurm_def;
   int slurm_shards = 0;
   int slurm_max_parallel = 0;
+  std::string junit;
 };
 
 std::string duration(double s) {
@@ -126,6 +130,9 @@ int runSweepCommand(const SweepOptions& o) {
   const Shard shard = parseShard(o.shard);
   if (o.slurm) {
     if (o.shard != "0/1") throw Error("--slurm writes a script for every shard; drop --shard");
+    if (!o.junit.empty()) {
+      throw Error("--junit: --slurm runs nothing; after the jobs, parksim report DIR --junit FILE");
+    }
     return writeSlurm(o, spec, all);
   }
   const int workers = o.workers > 0
@@ -158,6 +165,16 @@ int runSweepCommand(const SweepOptions& o) {
   SweepProgressFn progress;
   if (tty || o.progress) progress = ProgressPrinter(tty, already);
   const SweepProgress p = runSweep(episodes, def, table, progress);
+  if (!o.junit.empty()) {
+    // The shard's episodes, those of earlier runs included (as the exit status counts them).
+    std::set<std::string> ids;
+    for (const SweepEpisode& e : episodes) ids.insert(e.id);
+    std::vector<nlohmann::ordered_json> rows;
+    for (nlohmann::ordered_json& row : readResultsJsonl(o.out + "/results.jsonl")) {
+      if (ids.count(row.value("episode_id", "")) > 0) rows.push_back(std::move(row));
+    }
+    writeJUnitFile(o.junit, resultsJUnit(rows, spec.name));
+  }
 
   // The verdict covers the shard's episodes, those of earlier runs included.
   std::size_t failed = 0;
@@ -219,6 +236,9 @@ CommandRunner setupSweepCommand(CLI::App& sub) {
   sub.add_option("--slurm-max-parallel", opt->slurm_max_parallel,
                  "at most this many tasks at once (the array's %K throttle)")
       ->check(CLI::Range(1, 100000));
+  cli::addReportFileOption(sub, "--junit", opt->junit,
+                           "also write a JUnit XML report: one test case per episode (of the "
+                           "shard), one suite per world x planner x realism (docs/ci.md)");
   // --progress is every command's (main.cpp): not a terminal, the line comes every 10 s.
   return [opt](const OutputOptions& output) {
     opt->progress = output.progress;

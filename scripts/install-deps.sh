@@ -27,6 +27,8 @@ test_packages=(
   slurm-wlm munge
   pybind11-dev python3 python3-dev python3-numpy python3-pytest python3-yaml python3-pandas
   jupyter-nbconvert python3-nbformat python3-ipykernel
+  # JUnit reports (`--junit`) read by a real consumer and checked with xmllint.
+  python3-junitparser libxml2-utils
   # scripts/fuzz.sh: clang's libFuzzer runtime comes with libclang-rt-14-dev (Debian 12's clang).
   clang libclang-rt-14-dev
   # bench/bench_mujoco: MuJoCo side by side with parksim (optional at configure time).

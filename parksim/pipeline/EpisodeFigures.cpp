@@ -1,7 +1,9 @@
 #include "parksim/pipeline/EpisodeFigures.h"
 
+#include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
 #include "parksim/planner/MoveToPoseSteering.h"
+#include "parksim/results/ExecutedFile.h"
 
 namespace parksim {
 
@@ -43,6 +45,29 @@ TrackingSeries trackingSeries(const std::vector<ExecutedRow>& rows) {
     series.heading_error_rad.push_back(row.heading_err_rad);
   }
   return series;
+}
+
+TrackingSeries readTrackingRecord(const std::string& path) {
+  if (path.size() < 4 || path.compare(path.size() - 4, 4, ".npz") != 0) {
+    return readTrackingCsv(path);
+  }
+  const std::vector<DataColumn> columns = readNpzFile(path);
+  const DataColumn* t = findColumn(columns, "t");
+  const DataColumn* p = findColumn(columns, "pos_err");
+  const DataColumn* h = findColumn(columns, "heading_err");
+  if (t == nullptr || p == nullptr || h == nullptr) {
+    throw Error(path + ": needs arrays t, pos_err and heading_err (an executed.npz)");
+  }
+  if (t->values.empty()) throw Error(path + ": no rows");
+  if (p->values.size() != t->values.size() || h->values.size() != t->values.size()) {
+    throw Error(path + ": arrays t, pos_err and heading_err differ in length");
+  }
+  for (std::size_t i = 1; i < t->values.size(); ++i) {
+    if (!(t->values[i] > t->values[i - 1])) {
+      throw Error(path + ": row " + std::to_string(i) + ": time does not increase");
+    }
+  }
+  return {t->values, p->values, h->values};
 }
 
 FrameInput frameInput(const EpisodeSample& sample) {

@@ -32,6 +32,11 @@ SteeringExample steeringExample(const Scenario& scenario,
 /// Tracking error over time from an episode's rows.
 TrackingSeries trackingSeries(const std::vector<ExecutedRow>& rows);
 
+/// Tracking error over time from a record file: an executed.npz (columns t, pos_err,
+/// heading_err; results/ExecutedFile.h) or any CSV file readTrackingCsv reads. Throws Error
+/// naming the file on a missing column, no rows, or time that does not increase.
+TrackingSeries readTrackingRecord(const std::string& path);
+
 /// What FrameRecorder::addFrame needs from one observer call of runEpisode.
 FrameInput frameInput(const EpisodeSample& sample);
 

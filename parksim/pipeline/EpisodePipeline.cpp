@@ -118,7 +118,7 @@ bool keepsFiles(const EpisodeRequest& request, const Verdict& verdict) {
 }
 
 // trajectory.csv and plan.json (a given plan: trajectory.csv alone), then, when driven,
-// executed.csv, sensors.csv (with a pose sensor) and metrics.json.
+// the executed record, the sensors record (with a pose sensor) and metrics.json.
 void writeFiles(const EpisodeRequest& request, EpisodeOutcome& out) {
   const Scenario& scenario = request.world->scenario;
   const std::string& dir = request.out_dir;
@@ -132,12 +132,14 @@ void writeFiles(const EpisodeRequest& request, EpisodeOutcome& out) {
     out.files.push_back("trajectory.csv");
   }
   if (!out.driven()) return;
-  writeExecutedCsv(dir + "/executed.csv", out.episode.rows, out.execution.realism.active());
-  out.files.push_back("executed.csv");
+  const RecordFormat format = request.record.format;
+  writeExecutedFile(dir + "/" + executedFileName(format), out.episode.rows,
+                    out.execution.realism.active(), format);
+  out.files.push_back(executedFileName(format));
   if (out.execution.realism.pose_sensor.enabled) {
-    writeFileAtomically(dir + "/sensors.csv",
-                        sensorsCsv(out.episode.pose_samples, out.episode.metrics.time_step_s));
-    out.files.push_back("sensors.csv");
+    writeSensorsFile(dir + "/" + sensorsFileName(format), out.episode.pose_samples,
+                     out.episode.metrics.time_step_s, format);
+    out.files.push_back(sensorsFileName(format));
   }
   writeJsonFile(dir + "/metrics.json", out.metrics);
   out.files.push_back("metrics.json");

@@ -21,6 +21,7 @@
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/renders/Figures.h"
 #include "parksim/renders/FrameRecorder.h"
+#include "parksim/results/ExecutedFile.h"
 #include "parksim/scenario/World.h"
 #include "parksim/sim/ExecutionDef.h"
 
@@ -45,6 +46,9 @@ struct RecordDef {
   /// csv_stride_steps (1 by default: every physics step, 240 Hz by default). The first and the
   /// last row are always kept.
   double executed_rate_hz = 0.0;
+  /// executed.csv and sensors.csv, or executed.npz and sensors.npz (the same columns, exact, a
+  /// third of the bytes or less; results/ExecutedFile.h).
+  RecordFormat format = RecordFormat::kCsv;
 };
 
 /// When the episode is filmed (frames/*.png, and a video if FrameDef asks).

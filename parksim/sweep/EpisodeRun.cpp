@@ -22,6 +22,7 @@ void applyRecord(const EpisodeRunDef& def, const std::string& dir, EpisodeReques
   r.out_dir = dir;
   r.record.files = def.record.executed_csv;
   r.record.executed_rate_hz = def.record.executed_rate_hz;
+  r.record.format = def.record.format;
   if (!def.record.film_failures) return;
   if (def.film_mutex == nullptr) throw Error("runSweepEpisode: filming needs a film_mutex");
   r.film.when = FilmWhen::kOnFailure;

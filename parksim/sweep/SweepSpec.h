@@ -19,6 +19,9 @@ struct SweepRecordDef {
   FilesPolicy executed_csv = FilesPolicy::kNone;
   /// Rows per second of simulated time in executed.csv (the simulation runs at 240 Hz), Hz.
   double executed_rate_hz = 10.0;
+  /// How the records are stored: executed.npz and sensors.npz (NumPy archives: exact, a third of
+  /// the CSV's bytes or less) by default, or executed.csv and sensors.csv.
+  RecordFormat format = RecordFormat::kNpz;
   /// Film the episodes that fail their tolerance: frames/*.png (and episode.mp4 with
   /// film_video). The episode is simulated a second time with the camera on; the simulation is
   /// deterministic, so the film shows the same run.

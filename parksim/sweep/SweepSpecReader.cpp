@@ -172,7 +172,8 @@ void readWorlds(const YamlField& field, const std::string& base_dir, SweepSpec& 
 }
 
 void readRecord(const YamlField& field, SweepRecordDef& r) {
-  const YamlMap m = field.map({"executed_csv", "executed_rate_hz", "film_failures", "film"});
+  const YamlMap m =
+      field.map({"executed_csv", "executed_rate_hz", "format", "film_failures", "film"});
   if (const std::optional<YamlField> f = m.optional("executed_csv")) {
     const std::string v = f->text();
     if (v == "none") {
@@ -187,6 +188,11 @@ void readRecord(const YamlField& field, SweepRecordDef& r) {
   }
   if (const std::optional<YamlField> f = m.optional("executed_rate_hz")) {
     r.executed_rate_hz = f->positive();
+  }
+  if (const std::optional<YamlField> f = m.optional("format")) {
+    const std::string v = f->text();
+    if (v != "npz" && v != "csv") f->fail("must be npz or csv, got '" + v + "'");
+    r.format = recordFormatFromString(v);
   }
   if (const std::optional<YamlField> f = m.optional("film_failures")) {
     r.film_failures = f->boolean();

@@ -170,6 +170,7 @@ def render_frame(world, pose=None, plan=None, reference=None, episode=None,
 from .env import ParkingEnv  # noqa: E402
 from .vector import VecParkingEnv  # noqa: E402
 from . import spaces  # noqa: E402
+from .records import read_record  # noqa: E402
 
 __all__ = [
     "CollisionChecker", "DynamicsWorld", "Episode", "Error", "ExecutionDef", "FIGURE_NAMES",
@@ -177,6 +178,6 @@ __all__ = [
     "ParkingTaskDef", "PlannerDef",
     "PlanResult", "PlanSetup", "ReedsSheppDef", "RobotDef", "RotateTranslateRotateDef", "RunResult",
     "SimModelDef", "TrackingGains", "World", "cspace_slice", "encode_png", "load_world", "plan",
-    "read_png", "read_trajectory", "render_figure", "render_frame", "run", "spaces",
+    "read_png", "read_record", "read_trajectory", "render_figure", "render_frame", "run", "spaces",
     "write_figures", "write_png", "VecParkingEnv", "world_names", "worlds_dir",
 ]

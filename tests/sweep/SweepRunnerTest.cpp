@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/Error.h"
+#include "parksim/results/ExecutedFile.h"
 #include "parksim/sweep/Merge.h"
 #include "parksim/sweep/Shard.h"
 #include "parksim/sweep/SweepManifest.h"
@@ -235,11 +236,14 @@ TEST(EpisodeRecording, ExecutedCsvAndFilmOfFailuresAtTheChosenRates) {
   const std::vector<Json> rows = readResultsJsonl(dir + "/results.jsonl");
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0]["status"], "tolerance_missed");
-  const std::string csv = dir + "/episodes/" + sweep.episodes[0].id + "/executed.csv";
-  ASSERT_TRUE(std::filesystem::exists(csv));
-  // 10 rows per simulated second (every 24th step at 240 Hz), plus the header and the last row.
+  // A sweep records executed.npz by default (SweepRecordDef::format), not executed.csv.
+  const std::string episode = dir + "/episodes/" + sweep.episodes[0].id;
+  EXPECT_FALSE(std::filesystem::exists(episode + "/executed.csv"));
+  const std::vector<DataColumn> columns = readRecordFile(episode + "/executed.npz");
+  ASSERT_FALSE(columns.empty());
+  // 10 rows per simulated second (every 24th step at 240 Hz), plus the last row.
   const double sim_time_s = rows[0]["sim_time_s"].get<double>();
-  const double rows_written = static_cast<double>(lineCount(csv) - 1);
+  const double rows_written = static_cast<double>(columns[0].values.size());
   EXPECT_NEAR(rows_written, std::floor(sim_time_s * 10.0) + 2.0, 1.0);
   // Filmed: one frame per simulated second from t = 0, and the final instant.
   const std::string frames = dir + "/episodes/" + sweep.episodes[0].id + "/frames";

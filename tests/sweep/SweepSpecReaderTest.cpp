@@ -29,7 +29,8 @@ TEST(SweepSpecReader, ReadsEveryAxis) {
                 "tracking: [open, closed]\ntiming: [study]\nrealism: [ideal, lab]\n"
                 "noise_seeds: {from: 1, to: 3}\n"
                 "start_offsets: [[0, 0, 0], [0.01, -0.02, 5]]\n"
-                "record: {executed_csv: failures, executed_rate_hz: 30, film_failures: true,\n"
+                "record: {executed_csv: failures, executed_rate_hz: 30, format: csv, "
+                "film_failures: true,\n"
                 "         film: {fps: 10, size: 320x240, view: both, video: false}}\n"
                 "tolerance: {max_pos_err_m: 0.01, max_contacts: 1}\n"),
       "spec.yaml", "");
@@ -47,6 +48,8 @@ TEST(SweepSpecReader, ReadsEveryAxis) {
   EXPECT_EQ(s.goal_offsets.size(), 1u);
   EXPECT_EQ(s.record.executed_csv, FilesPolicy::kFailures);
   EXPECT_EQ(s.record.executed_rate_hz, 30.0);
+  EXPECT_EQ(s.record.format, RecordFormat::kCsv);
+  EXPECT_EQ(parseSweepSpec(studySpec(""), "spec.yaml", "").record.format, RecordFormat::kNpz);
   EXPECT_TRUE(s.record.film_failures);
   EXPECT_EQ(s.record.film_width_px, 320);
   EXPECT_EQ(s.record.film_view, "both");
@@ -77,6 +80,8 @@ TEST(SweepSpecReader, ErrorsNameFileLineAndField) {
               HasSubstr("spec.yaml:4: start_offsets[0]: must be a list [dx_m, dy_m, dyaw_deg]"));
   EXPECT_THAT(errorOf(studySpec("record: {executed_csv: some}\n")),
               HasSubstr("spec.yaml:4: record.executed_csv: must be none, failures or all"));
+  EXPECT_THAT(errorOf(studySpec("record: {format: parquet}\n")),
+              HasSubstr("spec.yaml:4: record.format: must be npz or csv, got 'parquet'"));
   EXPECT_THAT(errorOf("format: parksim-sweep/2\nname: x\nworlds: a.yaml\n"),
               HasSubstr("spec.yaml:1: format: expected \"parksim-sweep/1\""));
   EXPECT_THAT(errorOf("format: parksim-sweep/1\nname: x\nworlds: [nope.yaml]\n"),

@@ -1,0 +1,99 @@
+// parksim compare BASELINE CANDIDATE: did the candidate sweep get worse than the baseline?
+// Per world x planner x realism group: the success rate (exact test), the median and p95 of
+// the max tracking error and of the goal error (bootstrap), paired by episode id where both
+// tables hold the same episodes, Holm-corrected over every test (parksim/compare/,
+// docs/ci.md). Prints the Markdown summary; --markdown and --junit write it for a CI page.
+// Exit status: 0 no regression, 4 regression, 2 bad input.
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "app/Command.h"
+#include "parksim/cli/ReportFileOption.h"
+#include "parksim/cli/TerminalText.h"
+#include "parksim/cli/Validators.h"
+#include "parksim/compare/ComparedTable.h"
+#include "parksim/compare/ComparisonReport.h"
+#include "parksim/core/AtomicFile.h"
+
+namespace parksim::app {
+
+namespace {
+
+struct CompareOptions {
+  std::string baseline;
+  std::string candidate;
+  CompareDef def;
+  double max_increase_percent = 100.0 * CompareDef{}.max_increase;
+  double min_increase_mm = 1e3 * CompareDef{}.min_increase_m;
+  double max_success_drop_percent = 100.0 * CompareDef{}.max_success_drop;
+  std::string markdown;
+  std::string junit;
+};
+
+int runCompare(CompareOptions o) {
+  o.def.max_increase = o.max_increase_percent / 100.0;
+  o.def.min_increase_m = o.min_increase_mm / 1e3;
+  o.def.max_success_drop = o.max_success_drop_percent / 100.0;
+  checkCompareDef(o.def);
+  const auto baseline = readComparedTable(o.baseline);
+  const auto candidate = readComparedTable(o.candidate);
+  const TableComparison t = compareTables(baseline, candidate, o.def);
+  const ComparisonSources sources{o.baseline, o.candidate, static_cast<int>(baseline.size()),
+                                  static_cast<int>(candidate.size())};
+  const std::string markdown = comparisonMarkdown(t, o.def, sources);
+  if (!o.markdown.empty()) writeFileAtomically(o.markdown, markdown);
+  if (!o.junit.empty()) writeJUnitFile(o.junit, comparisonJUnit(t, o.def));
+  std::printf("%s", cli::printableLines(markdown).c_str());
+  return t.regression() ? kExitToleranceNotMet : kExitOk;
+}
+
+}  // namespace
+
+CommandRunner setupCompareCommand(CLI::App& sub) {
+  using cli::integerIn;
+  using cli::realIn;
+  auto opt = std::make_shared<CompareOptions>();
+  sub.add_option("baseline", opt->baseline, "the baseline: a sweep directory or its results.jsonl")
+      ->required();
+  sub.add_option("candidate", opt->candidate,
+                 "the candidate: a sweep directory or its results.jsonl")
+      ->required();
+  sub.add_option("--confidence", opt->def.confidence,
+                 "family-wise confidence: unchanged code raises no alarm with at least this "
+                 "probability (Holm over every test)")
+      ->capture_default_str()
+      ->check(realIn(0.5, 0.9999));
+  sub.add_option("--max-increase-percent", opt->max_increase_percent,
+                 "an error quantile is a regression when it grew by more than this share of "
+                 "the baseline's ...")
+      ->capture_default_str()
+      ->check(realIn(0.0, 1000.0));
+  sub.add_option("--min-increase-mm", opt->min_increase_mm, "... and by more than this")
+      ->capture_default_str()
+      ->check(realIn(0.0, 1000.0));
+  sub.add_option("--max-success-drop-percent", opt->max_success_drop_percent,
+                 "the success rate is a regression when significantly lower and lower by more "
+                 "than these percentage points")
+      ->capture_default_str()
+      ->check(realIn(0.0, 100.0));
+  sub.add_option("--resamples", opt->def.resamples, "bootstrap resamples per quantile test")
+      ->capture_default_str()
+      ->check(integerIn(100, 10000000));
+  sub.add_option("--seed", opt->def.seed, "seed of the bootstrap")
+      ->capture_default_str()
+      ->check(cli::unsigned64());
+  sub.add_option("--min-samples", opt->def.min_samples,
+                 "a group with fewer episodes on either side has its quantiles not tested")
+      ->capture_default_str()
+      ->check(integerIn(2, 1000000));
+  cli::addReportFileOption(sub, "--markdown", opt->markdown,
+                           "also write the summary to this Markdown file (a CI job summary)");
+  cli::addReportFileOption(sub, "--junit", opt->junit,
+                           "also write a JUnit XML report: a suite per group, a test case per "
+                           "metric, failed where it regressed");
+  return [opt](const OutputOptions&) { return runCompare(*opt); };
+}
+
+}  // namespace parksim::app

@@ -1,0 +1,29 @@
+#include "parksim/compare/ComparedTable.h"
+
+#include <filesystem>
+
+#include "parksim/core/Error.h"
+#include "parksim/sweep/ResultsTable.h"
+#include "parksim/sweep/SweepManifest.h"
+
+namespace parksim {
+
+std::vector<nlohmann::ordered_json> readComparedTable(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  std::string file = path;
+  if (fs::is_directory(path, ec)) {
+    SweepManifest manifest;
+    (void)readSweepManifest(path, manifest);  // throws for another id format
+    file = (fs::path(path) / "results.jsonl").string();
+  }
+  if (!fs::exists(file, ec)) {
+    throw Error(file + ": no such file (a sweep directory or its results.jsonl is needed)");
+  }
+  if (!fs::is_regular_file(file, ec)) throw Error(file + ": not a regular file");
+  std::vector<nlohmann::ordered_json> rows = readResultsJsonl(file);
+  if (rows.empty()) throw Error(file + ": no rows");
+  return rows;
+}
+
+}  // namespace parksim
