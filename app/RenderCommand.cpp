@@ -22,6 +22,7 @@
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/renders/TrackingPlot.h"
 #include "parksim/results/JsonFile.h"
+#include "parksim/results/TrajectoryFile.h"
 
 namespace parksim::app {
 
@@ -97,7 +98,15 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
       r.drive = false;
       checkEpisodeRequest(r);
     }
-    if (!opt->executed.empty()) inputs.tracking = readTrackingCsv(opt->executed);
+    if (!opt->executed.empty()) {
+      // The plan reader's limits (docs/limits.md), on the columns the plot reads.
+      checkTimeSeriesCsv(opt->executed,
+                         {{"t", "t_s", "time"},
+                          {"pos_err", "pos_err_m", "position_error", "position_error_m"},
+                          {"heading_err", "heading_err_rad", "heading_error", "heading_error_rad",
+                           "heading_err_deg", "heading_error_deg"}});
+      inputs.tracking = readTrackingCsv(opt->executed);
+    }
     std::optional<Pose2> target;
     if (opt->steer_target.size() == 3) {
       target = Pose2{opt->steer_target[0], opt->steer_target[1], degToRad(opt->steer_target[2])};
