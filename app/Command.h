@@ -41,5 +41,6 @@ CommandRunner setupRenderCommand(CLI::App& sub);
 CommandRunner setupSweepCommand(CLI::App& sub);
 CommandRunner setupMergeCommand(CLI::App& sub);
 CommandRunner setupReportCommand(CLI::App& sub);
+CommandRunner setupVerifyCommand(CLI::App& sub);
 
 }  // namespace parksim::app
