@@ -15,10 +15,11 @@ std::string brief(double v) {
   return ec == std::errc() ? std::string(buf, end) : std::string("?");
 }
 
-// Shortest round-trip text, for limits; whole numbers in full ("100000", not "1e+05").
+// Shortest round-trip text, for limits; in fixed notation from 1e-4 on ("0.0001", "100000"),
+// as docs/limits.md writes them.
 std::string exact(double v) {
   char buf[64];
-  const auto [end, ec] = std::abs(v) < 1e15 && v == std::floor(v)
+  const auto [end, ec] = std::abs(v) >= 1e-4 && std::abs(v) < 1e15
                              ? std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed)
                              : std::to_chars(buf, buf + sizeof buf, v);
   return ec == std::errc() ? std::string(buf, end) : std::string("?");
@@ -117,10 +118,10 @@ std::optional<std::string> driveProblem(const RobotDef& r, const PhysicsDef& p) 
   const std::string limit =
       " at the wheel acceleration limit (" + brief(r.max_wheel_accel_radps2) + " rad/s^2)";
   if (!(w.force_n() <= grip)) {
-    return what + limit + " needs " + brief(w.force_n()) + " N at each wheel, but their grip " +
-           "gives at most " + brief(w.grip_n) +
-           " N (wheel_friction x ground_friction x half the weight; " +
-           "the simulation follows plans up to " + brief(kGripMargin) + " times that): " +
+    // kGripMargin is why the limit is a multiple of the grip (PhysicalRanges.h).
+    return what + limit + " needs " + brief(w.force_n()) + " N at each wheel, more than " +
+           brief(kGripMargin) + " times their grip (" + brief(w.grip_n) +
+           " N: wheel_friction x ground_friction x half the weight): " +
            (turning ? "widen robot.wheel_base, or lower robot.max_wheel_accel_radps2"
                     : "lower robot.max_wheel_accel_radps2") +
            " (docs/limits.md)";
