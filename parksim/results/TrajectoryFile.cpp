@@ -16,7 +16,6 @@
 #include "parksim/core/Error.h"
 #include "parksim/core/InputFile.h"
 #include "parksim/core/NumberFormat.h"
-#include "parksim/core/Text.h"
 
 namespace parksim {
 
@@ -66,10 +65,19 @@ void splitCells(std::string_view line, std::vector<std::string_view>& cells) {
 
 std::string limitText(double value) { return formatGeneral(value); }
 
-// A cell shown in a message: at most 40 bytes, control bytes escaped. A NUL byte in a cell cut
-// the message short (it ends the C string main() prints); it shows as \x00.
+// A cell shown in a message: at most 40 bytes. A NUL byte in a cell cut the message short (it
+// ends the C string main() prints); it shows as \x00. Other control bytes are escaped where
+// the message is printed (cli::printable), as in every other message.
 std::string shownCell(std::string_view cell) {
-  return escapeText(cell.substr(0, 40)) + (cell.size() > 40 ? "..." : "");
+  std::string shown;
+  for (const char c : cell.substr(0, 40)) {
+    if (c == '\0') {
+      shown += "\\x00";
+    } else {
+      shown += c;
+    }
+  }
+  return shown + (cell.size() > 40 ? "..." : "");
 }
 
 // A time series in CSV with the plan file's limits (PlanFileLimits): one line at a time, cells

@@ -135,7 +135,7 @@ TEST(TrajectoryFile, ControlBytesInACellAreEscapedInTheMessage) {
     parseTrajectoryCsv(text, "p.csv");
     FAIL() << "accepted";
   } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()), "p.csv:2: column 'y': '\\x001\\x01' is not a finite number");
+    EXPECT_EQ(std::string(e.what()), "p.csv:2: column 'y': '\\x001\x01' is not a finite number");
   }
 }
 
