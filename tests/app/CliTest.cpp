@@ -293,9 +293,9 @@ TEST_F(Cli, QuietPrintsNothingAndVerboseTellsTheBuild) {
 TEST_F(Cli, MessagesSayWhatIsWrongInFewWords) {
   CliRun r = parksim("foo");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(
-      r.out,
-      "parksim: unknown command 'foo'; commands: plan, run, render, sweep, merge, report, verify\n");
+  EXPECT_EQ(r.out,
+            "parksim: unknown command 'foo'; commands: plan, run, render, sweep, merge, report, "
+            "verify\n");
   // Bounds are stated, not printed as the 309-digit largest double.
   r = parksim("plan " + world("head_in.yaml") + " --seed -1");
   EXPECT_EQ(r.exit_code, 2);
