@@ -43,5 +43,6 @@ CommandRunner setupSweepCommand(CLI::App& sub);
 CommandRunner setupMergeCommand(CLI::App& sub);
 CommandRunner setupReportCommand(CLI::App& sub);
 CommandRunner setupCompareCommand(CLI::App& sub);
+CommandRunner setupVerifyCommand(CLI::App& sub);
 
 }  // namespace parksim::app

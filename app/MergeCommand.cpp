@@ -1,8 +1,10 @@
 // parksim merge SRC... [--out DIR]: merges sweep output directories (shards, machines, runs)
 // into one results table, each episode once, sorted by episode id; idempotent. `parksim merge
 // DIR` merges DIR/shards/* (a Slurm sweep) into DIR. Lists the episodes that are missing (from
-// the sweeps' manifests), duplicated or conflicting. Exit status: 0 when the table is complete
-// and without conflicts, 1 otherwise, 2 on bad input.
+// the sweeps' manifests), duplicated or conflicting. Every row's seal is checked: a changed row
+// stops the merge (exit 2, naming its file and line), and so do sources that mix world contents
+// or builds, unless --allow-mixed. Exit status: 0 when the table is complete and without
+// conflicts, 1 otherwise, 2 on bad input.
 
 #include <cstdio>
 #include <filesystem>
@@ -32,7 +34,7 @@ void list(const char* what, const std::vector<std::string>& ids) {
   std::fprintf(stderr, "%s\n", ids.size() > 20 ? " ..." : "");
 }
 
-int runMerge(const std::vector<std::string>& sources, std::string out) {
+int runMerge(const std::vector<std::string>& sources, std::string out, bool allow_mixed) {
   std::vector<std::string> dirs;
   std::vector<std::string> manifest_dirs;
   for (const std::string& src : sources) {
@@ -60,7 +62,15 @@ int runMerge(const std::vector<std::string>& sources, std::string out) {
   }
   if (dirs.empty()) throw Error(sources.front() + "/shards: no shard directories");
   const MergeResult r = mergeResults(dirs, manifest_dirs);
-  writeResultsTable(out, r.rows);
+  for (const std::string& mix : r.mixes) {
+    std::fprintf(stderr, "%s: %s\n", allow_mixed ? "warning" : "mixed", printable(mix).c_str());
+  }
+  if (!r.mixes.empty() && !allow_mixed) {
+    throw Error(
+        "the sources mix world contents or parksim builds (listed above): one table would hold "
+        "two experiments; run the stale shards again, or merge anyway with --allow-mixed");
+  }
+  writeMergedTable(out, r);
   std::printf("merged %zu source%s: %zu episodes", dirs.size(), dirs.size() == 1 ? "" : "s",
               r.rows.size());
   if (r.expected > 0) std::printf(" of %zu expected", r.expected);
@@ -82,13 +92,17 @@ CommandRunner setupMergeCommand(CLI::App& sub) {
   struct Options {
     std::vector<std::string> sources;
     std::string out;
+    bool allow_mixed = false;
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("sources", opt->sources,
                  "sweep output directories; one directory with shards/ merges its shards")
       ->required();
   sub.add_option("--out", opt->out, "where to write the merged table (default: the one source)");
-  return [opt](const OutputOptions&) { return runMerge(opt->sources, opt->out); };
+  sub.add_flag("--allow-mixed", opt->allow_mixed,
+               "merge sources whose rows come from other world contents or parksim builds "
+               "(listed as warnings; report flags such a table)");
+  return [opt](const OutputOptions&) { return runMerge(opt->sources, opt->out, opt->allow_mixed); };
 }
 
 }  // namespace parksim::app

@@ -22,6 +22,7 @@
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/renders/TrackingPlot.h"
 #include "parksim/results/JsonFile.h"
+#include "parksim/results/TrajectoryFile.h"
 
 namespace parksim::app {
 

@@ -2,6 +2,8 @@
 // in DIR/report/ (or --out): summary.md and summary.csv per world x planner x realism preset,
 // box plots and a success matrix drawn by parksim's renderer, and one OMPL benchmark log per
 // world (ompl_<world>.log, with the cost-over-time progress) for Planner Arena.
+// Every row's seal is checked (a changed row stops the report, naming its file and line); rows
+// of other world contents or builds are flagged on stderr and in summary.md.
 // Exit status: 0 when written, 2 on bad input.
 
 #include <cstdio>
@@ -107,8 +109,12 @@ int runReport(const std::string& dir, std::string out, const std::string& junit)
   const std::string path = dir + "/results.jsonl";
   if (!std::filesystem::exists(path))
     throw Error(path + ": no such file (run parksim sweep first)");
-  const std::vector<Json> rows = readResultsJsonl(path);
+  const VerifiedTable table = readVerifiedTable(path);
+  const std::vector<Json>& rows = table.rows;
   if (rows.empty()) throw Error(path + ": no results yet");
+  const std::vector<std::string> mixes = table.origins.mixes();
+  for (const std::string& mix : mixes)
+    std::fprintf(stderr, "warning: %s\n", printable(mix).c_str());
   if (out.empty()) out = dir + "/report";
   SweepManifest manifest;
   std::string name = std::filesystem::path(dir).filename().string();
@@ -129,6 +135,13 @@ int runReport(const std::string& dir, std::string out, const std::string& junit)
       while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) summary.append(buf, n);
       std::fclose(f);
     }
+  }
+  if (!mixes.empty()) {
+    summary +=
+        "\n**Warning: this table mixes world contents or parksim builds** (`parksim verify` "
+        "lists them):\n\n";
+    for (const std::string& mix : mixes) summary += "- " + mix + "\n";
+    writeFileAtomically(staged.path() + "/summary.md", summary);
   }
   staged.commit();
   if (!junit.empty()) {

@@ -2,13 +2,18 @@
 // simulate + measure on worker threads and appends each finished episode to DIR/results.jsonl
 // and DIR/results.csv. Resumable: run the same command again and only the episodes missing
 // from the table run. --shard I/N runs a deterministic part; --slurm writes DIR/sweep.sbatch, a
-// job array with one task per shard, instead of running anything (docs/sweeps.md).
+// job array with one task per shard, instead of running anything; --slurm --missing finds the
+// shards whose tasks died and submits them again (docs/sweeps.md).
+// A resumed table must hold sealed rows of the same world contents and build (ResultsTable.h).
 // Exit status: 0 when every episode (of the shard) met its tolerance, 1 when some did not,
 // 2 on bad input, 3 on an internal error.
 
+#include <pthread.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -18,6 +23,7 @@
 #include <thread>
 
 #include "app/Command.h"
+#include "parksim/cli/Progress.h"
 #include "parksim/cli/ReportFileOption.h"
 #include "parksim/cli/TerminalText.h"
 #include "parksim/core/AtomicFile.h"
@@ -25,7 +31,9 @@
 #include "parksim/sweep/EpisodeExpansion.h"
 #include "parksim/sweep/ResultsJUnit.h"
 #include "parksim/sweep/ResultsTable.h"
+#include "parksim/sweep/RowSeal.h"
 #include "parksim/sweep/Shard.h"
+#include "parksim/sweep/SlurmResubmit.h"
 #include "parksim/sweep/SlurmScript.h"
 #include "parksim/sweep/SweepManifest.h"
 #include "parksim/sweep/SweepRunner.h"
@@ -46,6 +54,8 @@ struct SweepOptions {
   std::string shard = "0/1";
   bool progress = false;
   bool slurm = false;
+  bool missing = false;  // with --slurm: submit the incomplete shards again
+  bool wait = false;     // with --missing: wait for the tasks to end
   SlurmDef slurm_def;
   int slurm_shards = 0;
   int slurm_max_parallel = 0;
@@ -79,6 +89,7 @@ class ProgressPrinter {
                  p.total > 0 ? 100.0 * p.done / p.total : 100.0, p.failed, rate,
                  p.ran > 0 ? duration(eta).c_str() : "?", tty_ && !last ? "" : "\n");
     std::fflush(stderr);
+    cli::markProgressLineOpen(tty_ && !last);
   }
 
  private:
@@ -87,18 +98,63 @@ class ProgressPrinter {
   std::chrono::steady_clock::time_point last_print_{};
 };
 
+// Ctrl-C, SIGTERM or SIGHUP end a sweep as their default action would: the table holds whole
+// rows whenever the process dies (ResultsTable.h). First an open progress line is ended, so the
+// shell's prompt starts on a line of its own. The signals are blocked in every thread made
+// while this lives and taken by a watcher thread.
+class SignalWatcher {
+ public:
+  SignalWatcher() {
+    sigset_t set = signals();
+    pthread_sigmask(SIG_BLOCK, &set, &old_mask_);
+    watcher_ = std::thread([this] { watch(); });
+  }
+  ~SignalWatcher() {
+    stop_ = true;
+    watcher_.join();
+    pthread_sigmask(SIG_SETMASK, &old_mask_, nullptr);
+  }
+  SignalWatcher(const SignalWatcher&) = delete;
+  SignalWatcher& operator=(const SignalWatcher&) = delete;
+
+ private:
+  static sigset_t signals() {
+    sigset_t set;
+    sigemptyset(&set);
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set, sig);
+    return set;
+  }
+  void watch() {
+    const sigset_t set = signals();
+    while (!stop_.load()) {
+      const timespec wait{0, 50'000'000};
+      const int sig = sigtimedwait(&set, nullptr, &wait);
+      if (sig <= 0) continue;
+      cli::endOpenProgressLine();
+      ::signal(sig, SIG_DFL);
+      sigset_t one;
+      sigemptyset(&one);
+      sigaddset(&one, sig);
+      pthread_sigmask(SIG_UNBLOCK, &one, nullptr);
+      ::raise(sig);
+    }
+  }
+  sigset_t old_mask_{};
+  std::atomic<bool> stop_{false};
+  std::thread watcher_;
+};
+
 std::string selfExe() {
   std::error_code ec;
   const fs::path p = fs::read_symlink("/proc/self/exe", ec);
   return ec ? std::string("parksim") : p.string();
 }
 
-int writeSlurm(const SweepOptions& o, const SweepSpec& spec,
-               const std::vector<SweepEpisode>& episodes) {
-  SlurmDef d = o.slurm_def;
-  const int wanted = o.slurm_shards > 0 ? o.slurm_shards : 10;
-  d.shards =
-      static_cast<int>(std::min<std::size_t>(wanted, std::max<std::size_t>(1, episodes.size())));
+// Writes DIR/sweep.sbatch for `shards` array tasks and DIR/sweep.json; returns the script's path.
+std::string writeSlurmFiles(const SweepOptions& o, const SweepSpec& spec,
+                            const std::vector<SweepEpisode>& episodes, int shards, SlurmDef& d) {
+  d = o.slurm_def;
+  d.shards = shards;
   d.job_name = "parksim-" + spec.name;
   if (o.slurm_max_parallel > 0) d.max_parallel = "%" + std::to_string(o.slurm_max_parallel);
   d.parksim_exe = selfExe();
@@ -107,12 +163,22 @@ int writeSlurm(const SweepOptions& o, const SweepSpec& spec,
   const std::string script = sbatchScript(d);  // checks the options before DIR is touched
   ensureDirectory(o.out + "/logs");
   ensureDirectory(o.out + "/shards");
-  SweepManifest manifest{o.spec, spec.name, Shard{}, {}};
+  SweepManifest manifest{o.spec, spec.name, Shard{}, {}, d.shards};
   for (const SweepEpisode& e : episodes) manifest.episode_ids.push_back(e.id);
   writeSweepManifest(o.out, manifest);
   const std::string path = o.out + "/sweep.sbatch";
   writeFileAtomically(path, script);
   fs::permissions(path, fs::perms::owner_exec | fs::perms::group_exec, fs::perm_options::add);
+  return path;
+}
+
+int writeSlurm(const SweepOptions& o, const SweepSpec& spec,
+               const std::vector<SweepEpisode>& episodes) {
+  const int wanted = o.slurm_shards > 0 ? o.slurm_shards : 10;
+  const int shards =
+      static_cast<int>(std::min<std::size_t>(wanted, std::max<std::size_t>(1, episodes.size())));
+  SlurmDef d;
+  const std::string path = writeSlurmFiles(o, spec, episodes, shards, d);
   std::printf(
       "wrote %s: %zu episodes in %d array tasks (%d CPU%s, %s, %s each)\n"
       "submit:  sbatch --wait %s\nthen:    %s merge %s\n",
@@ -122,18 +188,96 @@ int writeSlurm(const SweepOptions& o, const SweepSpec& spec,
   return 0;
 }
 
+// --slurm --missing: the shards whose tables lack episodes (tasks that died) are submitted
+// again, and only those; a shard whose table a task still holds is left alone.
+int resubmitMissing(const SweepOptions& o, const SweepSpec& spec,
+                    const std::vector<SweepEpisode>& all) {
+  SweepManifest manifest;
+  if (!readSweepManifest(o.out, manifest) || manifest.slurm_shards < 1) {
+    throw Error(o.out + "/sweep.json: no Slurm sweep here; write one first: parksim sweep " +
+                o.spec + " --out " + o.out + " --slurm");
+  }
+  std::vector<std::string> ids;
+  for (const SweepEpisode& e : all) ids.push_back(e.id);
+  if (ids != manifest.episode_ids) {
+    throw Error(o.spec + ": expands to other episodes than " + o.out +
+                "/sweep.json records (the spec or a world changed since --slurm wrote it); "
+                "write the script again with --slurm and submit it whole (every shard resumes)");
+  }
+  const int shards = manifest.slurm_shards;
+  if (o.slurm_shards > 0 && o.slurm_shards != shards) {
+    throw Error("--slurm-shards " + std::to_string(o.slurm_shards) + ": the sweep in " + o.out +
+                " was dealt to " + std::to_string(shards) + " shards, which --missing keeps");
+  }
+  const std::vector<ShardState> states = slurmShardStates(o.out, all, shards);
+  std::size_t missing = 0;
+  for (const ShardState& st : states) {
+    if (st.complete()) continue;
+    missing += st.episodes - st.done;
+    std::fprintf(stderr, "shard %d: %zu of %zu episodes done%s\n", st.index, st.done, st.episodes,
+                 st.running ? " (a task holds its table: still running, not submitted)" : "");
+  }
+  const std::string list = arrayList(states);
+  if (list.empty()) {
+    std::printf("%s: %s; nothing submitted\n", printable(o.out).c_str(),
+                missing == 0 ? "every shard is complete" : "the incomplete shards are running");
+    return 0;
+  }
+  SlurmDef d;
+  const std::string script = writeSlurmFiles(o, spec, all, shards, d);
+  const Submission sub = submitArrayTasks(script, list, o.wait, o.out + "/logs/sbatch-missing.log");
+  std::printf("submitted job %s: array tasks %s of %d (%zu episodes missing)\n", sub.job_id.c_str(),
+              list.c_str(), shards, missing);
+  if (!o.wait) return 0;
+  std::printf("job %s ended (sbatch exit status %d); then: %s merge %s\n", sub.job_id.c_str(),
+              sub.exit_code, printable(d.parksim_exe).c_str(), printable(o.out).c_str());
+  return sub.exit_code == 0 ? 0 : 1;
+}
+
+// The expectations a resumed table must meet: the worlds' contents now, this build.
+TableExpectations expectations(const std::vector<SweepWorld>& worlds,
+                               const nlohmann::ordered_json& provenance) {
+  TableExpectations expect;
+  for (const SweepWorld& w : worlds) expect.world_hashes[w->scenario.name] = w->content_hash;
+  expect.writer = rowWriter(provenance);
+  return expect;
+}
+
+// Lists up to ten failed episodes of the shard (sorted `episodes`), reading the table one row
+// at a time.
+void listFailures(const std::string& out, const std::vector<SweepEpisode>& episodes,
+                  std::size_t failed) {
+  std::size_t listed = 0;
+  scanResultsJsonl(out + "/results.jsonl", [&](const TableRow& r) {
+    const nlohmann::ordered_json& row = r.row;
+    if (row.value("met_tolerance", false) || listed == 10) return;
+    const std::string id = row["episode_id"].get<std::string>();
+    const auto it = std::lower_bound(
+        episodes.begin(), episodes.end(), id,
+        [](const SweepEpisode& e, const std::string& value) { return e.id < value; });
+    if (it == episodes.end() || it->id != id) return;  // another shard's
+    ++listed;
+    std::fprintf(stderr, "  failed %s: %s %s seed %s: %s\n", id.c_str(),
+                 printable(row.value("world", "")).c_str(), row.value("planner", "").c_str(),
+                 row["seed"].dump().c_str(), printable(row.value("failure", "")).c_str());
+  });
+  if (failed > listed) std::fprintf(stderr, "  ... and %zu more\n", failed - listed);
+}
+
 int runSweepCommand(const SweepOptions& o) {
   // Everything is read and checked before DIR is touched.
   const SweepSpec spec = loadSweepSpec(o.spec);
   const std::vector<SweepWorld> worlds = loadSweepWorlds(spec);
   const std::vector<SweepEpisode> all = expandEpisodes(spec, worlds);
   const Shard shard = parseShard(o.shard);
+  if (o.missing && !o.slurm) throw Error("--missing works on a Slurm sweep: add --slurm");
+  if (o.wait && !o.missing) throw Error("--wait waits for the tasks --slurm --missing submits");
   if (o.slurm) {
     if (o.shard != "0/1") throw Error("--slurm writes a script for every shard; drop --shard");
     if (!o.junit.empty()) {
       throw Error("--junit: --slurm runs nothing; after the jobs, parksim report DIR --junit FILE");
     }
-    return writeSlurm(o, spec, all);
+    return o.missing ? resubmitMissing(o, spec, all) : writeSlurm(o, spec, all);
   }
   const int workers = o.workers > 0
                           ? o.workers
@@ -143,12 +287,17 @@ int runSweepCommand(const SweepOptions& o) {
   // A table of another id format (an older parksim's) is refused before anything is written.
   SweepManifest existing;
   (void)readSweepManifest(o.out, existing);
-  ResultsTable table(o.out);  // refuses a table with other columns before anything is written
+  SweepRunnerDef def;
+  // Refuses a table with other columns, a changed row, or rows of another world content or
+  // build, before anything is written.
+  ResultsTable table(o.out, expectations(worlds, def.provenance));
+  for (const std::string& repair : table.repairs()) {
+    std::fprintf(stderr, "repaired %s\n", printable(repair).c_str());
+  }
   SweepManifest manifest{o.spec, spec.name, shard, {}};
   for (const SweepEpisode& e : all) manifest.episode_ids.push_back(e.id);
   writeSweepManifest(o.out, manifest);
 
-  SweepRunnerDef def;
   def.workers = workers;
   def.episode.record = spec.record;
   def.episode.episodes_dir = o.out + "/episodes";
@@ -164,7 +313,10 @@ int runSweepCommand(const SweepOptions& o) {
   const bool tty = isatty(STDERR_FILENO) == 1;
   SweepProgressFn progress;
   if (tty || o.progress) progress = ProgressPrinter(tty, already);
-  const SweepProgress p = runSweep(episodes, def, table, progress);
+  const SweepProgress p = [&] {
+    const SignalWatcher signals;
+    return runSweep(episodes, def, table, progress);
+  }();
   if (!o.junit.empty()) {
     // The shard's episodes, those of earlier runs included (as the exit status counts them).
     std::set<std::string> ids;
@@ -186,20 +338,7 @@ int runSweepCommand(const SweepOptions& o) {
       p.elapsed_s > 0.0 ? p.ran / p.elapsed_s : 0.0, episodes.size() - failed, failed,
       printable(o.out).c_str(), printable(o.out).c_str());
   if (failed > 0) {
-    std::size_t listed = 0;
-    for (const nlohmann::ordered_json& row : readResultsJsonl(o.out + "/results.jsonl")) {
-      if (row.value("met_tolerance", false) || listed == 10) continue;
-      const std::string id = row["episode_id"].get<std::string>();
-      if (std::none_of(episodes.begin(), episodes.end(),
-                       [&](const SweepEpisode& e) { return e.id == id; })) {
-        continue;
-      }
-      ++listed;
-      std::fprintf(stderr, "  failed %s: %s %s seed %s: %s\n", id.c_str(),
-                   row.value("world", "").c_str(), row.value("planner", "").c_str(),
-                   row["seed"].dump().c_str(), printable(row.value("failure", "")).c_str());
-    }
-    if (failed > listed) std::fprintf(stderr, "  ... and %zu more\n", failed - listed);
+    listFailures(o.out, episodes, failed);
     return 1;
   }
   return 0;
@@ -233,6 +372,11 @@ CommandRunner setupSweepCommand(CLI::App& sub) {
   sub.add_option("--slurm-partition", opt->slurm_def.partition,
                  "partition (default: the cluster's)");
   sub.add_option("--slurm-account", opt->slurm_def.account, "account to charge");
+  sub.add_flag("--missing", opt->missing,
+               "with --slurm: find the shards whose tables lack episodes (tasks that died) and "
+               "submit only those array tasks again (sbatch --array=LIST)");
+  sub.add_flag("--wait", opt->wait,
+               "with --slurm --missing: wait until the submitted tasks end (sbatch --wait)");
   sub.add_option("--slurm-max-parallel", opt->slurm_max_parallel,
                  "at most this many tasks at once (the array's %K throttle)")
       ->check(CLI::Range(1, 100000));

@@ -46,6 +46,8 @@ int main(int argc, char** argv) {
   add("report", "summary tables, figures and OMPL logs of a sweep's results", setupReportCommand);
   add("compare", "compare two sweeps' results for a regression (exit 4), with statistics",
       setupCompareCommand);
+  add("verify", "check a sweep's results tables: changed rows, mixed worlds or builds",
+      setupVerifyCommand);
 
   // CLI11 says "A subcommand is required" about `parksim foo`; say what was wrong instead.
   if (argc > 1 && argv[1][0] != '-') {

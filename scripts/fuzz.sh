@@ -1,14 +1,21 @@
 #!/usr/bin/env bash
-# libFuzzer campaigns on parksim's input readers: the world-file reader and the plan-file
-# reader, built with clang (-fsanitize=fuzzer,address,undefined) into build-fuzz/. The main
-# build uses g++; this is a separate, small build of just the readers.
+# libFuzzer campaigns on parksim's input readers, built with clang
+# (-fsanitize=fuzzer,address,undefined) into build-fuzz/. The main build uses g++; this is a
+# separate, small build of just the readers:
+#   world    the world-file reader                  plan      the plan-file reader
+#   spec     the sweep-spec reader                  jsonl     results.jsonl (sweep, merge, report)
+#   csv      results.csv (verify, a resumed sweep)  manifest  sweep.json
+#   dict     Python's dict-to-world path, C++ half (JSON as json.dumps writes it -> world)
 #
 #   scripts/fuzz.sh --ci                     bounded run for CI: every corpus input, then
-#                                            FUZZ_RUNS (default 20000) mutations per reader
-#   scripts/fuzz.sh world [libFuzzer args]   long campaign on one reader (world or plan), e.g.
+#                                            FUZZ_RUNS (default 20000) mutations per reader;
+#                                            then the dict path's Python half
+#                                            (tests/fuzz/world_dict_fuzz.py, FUZZ_DICT_RUNS,
+#                                            default 2000) when build/python has the module
+#   scripts/fuzz.sh world [libFuzzer args]   long campaign on one reader, e.g.
 #   scripts/fuzz.sh world -max_total_time=3600 -jobs=2 -workers=2
 #
-# Corpora live in tests/fuzz/corpus/{world,plan}/ (the crashers of issue 13 included); a long
+# Corpora live in tests/fuzz/corpus/<reader>/ (the crashers found so far included); a long
 # campaign adds what it finds to build-fuzz/corpus-<reader>/, never to the repository's corpus.
 # Each input gets at most FUZZ_TIMEOUT seconds (default 10) and 2 GB: a hang or a memory blow-up
 # is a failure, as is any crash or sanitizer report.
@@ -17,8 +24,10 @@ cd "$(dirname "$0")/.."
 out=build-fuzz
 mkdir -p "$out"
 cxx=${FUZZ_CXX:-clang++}
+# -ffunction-sections with --gc-sections at the link drop what no harness uses.
 flags=(-std=c++20 -O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer,address,undefined
-       -fno-sanitize-recover=undefined -I. -isystem /usr/include/eigen3)
+       -fno-sanitize-recover=undefined -ffunction-sections -fdata-sections -I.
+       -isystem /usr/include/eigen3 -isystem /usr/include/ompl-1.5 -isystem /usr/include/bullet)
 # The readers need the core library but not its build-provenance file (a configured header).
 core=()
 for f in parksim/core/*.cpp; do
@@ -27,15 +36,28 @@ done
 
 # Each source is compiled once into build-fuzz/obj/ (the readers share the core library's
 # sources), on all cores, and again only when it or a parksim header changed since.
+# The sweep-spec reader takes its name lists (planners, steerings, timings) from
+# parksim/planner/PlanScenario.cpp, whose other functions need the whole planner (OMPL, Bullet).
+# The fuzzer's coverage tables keep every instrumented function alive, so that file is compiled
+# without them (still with ASan and UBSan, as .nocov.o) and --gc-sections drops what the spec
+# reader does not call.
+nocov="parksim/planner/PlanScenario.cpp"
+object_of() {  # the object of SOURCE
+  case " $nocov " in *" $1 "*) echo "$out/obj/${1%.cpp}.nocov.o" ;; *) echo "$out/obj/${1%.cpp}.o" ;; esac
+}
 compile() {  # compile SOURCE into build-fuzz/obj/SOURCE.o
-  local object=$out/obj/${1%.cpp}.o
+  local object
+  object=$(object_of "$1")
+  local f=("${flags[@]}")
+  case "$object" in *.nocov.o) f=("${f[@]/-fsanitize=fuzzer,address,undefined/-fsanitize=address,undefined}") ;; esac
   if [ ! -f "$object" ] || [ "$1" -nt "$object" ] ||
      [ -n "$(find parksim tests/fuzz -name '*.h' -newer "$object" | head -1)" ]; then
     mkdir -p "$(dirname "$object")"
-    "$cxx" "${flags[@]}" -c "$1" -o "$object"
+    "$cxx" "${f[@]}" -c "$1" -o "$object"
   fi
 }
-export -f compile
+export -f compile object_of
+export nocov
 export out cxx
 flags_line=$(printf '%q ' "${flags[@]}")
 
@@ -49,16 +71,35 @@ link() {  # link NAME OBJECTS... LIBS...
 # The reader's realism: section is checked by the Bullet-free parksim_realism library
 # (parksim/realism/, all of it).
 realism=(parksim/realism/*.cpp)
-world_sources=(tests/fuzz/WorldReaderFuzz.cpp parksim/scenario/*.cpp "${realism[@]}" "${core[@]}")
-plan_sources=(tests/fuzz/PlanReaderFuzz.cpp parksim/results/TrajectoryFile.cpp "${core[@]}")
+scenario=(parksim/scenario/*.cpp)
+# The results tables' readers and what they share (seals, ids, manifests, merge's sources).
+tables=(parksim/sweep/ResultsFile.cpp parksim/sweep/RowSeal.cpp parksim/sweep/EpisodeParams.cpp
+        parksim/sweep/SweepManifest.cpp parksim/sweep/Shard.cpp parksim/sweep/Merge.cpp
+        parksim/sweep/TableVerify.cpp)
+declare -A sources
+sources[world]="tests/fuzz/WorldReaderFuzz.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
+sources[plan]="tests/fuzz/PlanReaderFuzz.cpp parksim/results/TrajectoryFile.cpp ${core[*]}"
+sources[spec]="tests/fuzz/SweepSpecFuzz.cpp parksim/sweep/SweepSpecReader.cpp
+  parksim/sweep/EpisodeSetup.cpp parksim/planner/PlannerKind.cpp parksim/planner/PlanScenario.cpp
+  parksim/sim/ExecutionDef.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
+sources[jsonl]="tests/fuzz/ResultsJsonlFuzz.cpp ${tables[*]} ${core[*]}"
+sources[csv]="tests/fuzz/ResultsCsvFuzz.cpp ${tables[*]} ${core[*]}"
+sources[manifest]="tests/fuzz/SweepManifestFuzz.cpp ${tables[*]} ${core[*]}"
+sources[dict]="tests/fuzz/WorldDictFuzz.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
+readers=(world plan spec jsonl csv manifest dict)
+libs_world=(-lyaml-cpp)
+libs_spec=(-lyaml-cpp)
+libs_dict=(-lyaml-cpp)
+
 echo "== compiling the readers for fuzzing (build-fuzz/obj/)"
-printf '%s\n' "${world_sources[@]}" tests/fuzz/PlanReaderFuzz.cpp parksim/results/TrajectoryFile.cpp |
+for reader in "${readers[@]}"; do printf '%s\n' ${sources[$reader]}; done | sort -u |
   FLAGS="$flags_line" xargs -P "$(nproc)" -I{} bash -c 'eval "flags=($FLAGS)"; compile "$1"' _ {}
-objects() { for f in "$@"; do printf '%s\n' "$out/obj/${f%.cpp}.o"; done; }
-mapfile -t world_objects < <(objects "${world_sources[@]}")
-mapfile -t plan_objects < <(objects "${plan_sources[@]}")
-link world "${world_objects[@]}" -lyaml-cpp
-link plan "${plan_objects[@]}"
+objects() { for f in "$@"; do object_of "$f"; done; }
+for reader in "${readers[@]}"; do
+  mapfile -t objs < <(objects ${sources[$reader]})
+  libs_var="libs_$reader[@]"
+  link "$reader" "${objs[@]}" -Wl,--gc-sections "${!libs_var}"
+done
 
 timeout_s=${FUZZ_TIMEOUT:-10}
 common=(-timeout="$timeout_s" -rss_limit_mb=2048 -malloc_limit_mb=2048 -max_len=65536
@@ -68,23 +109,44 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
 
 if [ "${1:-}" = "--ci" ]; then
   runs=${FUZZ_RUNS:-20000}
-  for reader in world plan; do
+  for reader in "${readers[@]}"; do
     echo "== fuzz_$reader: corpus replay, then $runs mutations (seed 1)"
     work=$(mktemp -d)
-    trap 'rm -rf "$work"' EXIT
+    # The table harnesses' files (results.csv, sweep.json, worlds) go to memory when it can.
+    PARKSIM_FUZZ_SCRATCH=$(mktemp -d /dev/shm/parksim-fuzz-XXXXXX 2>/dev/null || mktemp -d)
+    export PARKSIM_FUZZ_SCRATCH
+    trap 'rm -rf "$work" "$PARKSIM_FUZZ_SCRATCH"' EXIT
     # -runs counts mutations after the corpus; new inputs go to a scratch copy, and crash
     # reproducers into the build directory.
     cp tests/fuzz/corpus/$reader/* "$work"/
     # The outer timeout bounds the whole run even if libFuzzer's own handler hangs.
+    # The table harnesses run ~40 inputs/s (64 KB tables, scanned twice under ASan): 20000
+    # take ~470 s on a busy 2-core machine, so each reader is also bounded to FUZZ_MAX_S.
     timeout -k 10 600 "$out/fuzz_$reader" "${common[@]}" -seed=1 -runs="$runs" \
+      -max_total_time="${FUZZ_MAX_S:-420}" \
       -artifact_prefix="$out/$reader-" "$work" 2>&1 | grep -v '^    #' | tail -n 12
-    rm -rf "$work"
+    rm -rf "$work" "$PARKSIM_FUZZ_SCRATCH"
     trap - EXIT
   done
+  # The dict path's Python half, where the Python module is built (scripts/test.sh builds it).
+  # (__init__.py is copied at configure time; the compiled module is what must exist.)
+  if ls build/python/parksim/_parksim*.so >/dev/null 2>&1; then
+    echo "== world_dict_fuzz.py: ${FUZZ_DICT_RUNS:-2000} mutated world dicts (seed 1)"
+    timeout -k 10 600 /usr/bin/python3 tests/fuzz/world_dict_fuzz.py build/python worlds \
+      "${FUZZ_DICT_RUNS:-2000}" 1
+  else
+    echo "== world_dict_fuzz.py: skipped (no Python module in build/python; scripts/test.sh builds it)"
+  fi
   exit 0
 fi
 
-reader=${1:?usage: scripts/fuzz.sh --ci | scripts/fuzz.sh world|plan [libFuzzer args...]}
+reader=${1:?usage: scripts/fuzz.sh --ci | scripts/fuzz.sh world|plan|spec|jsonl|csv|manifest|dict [libFuzzer args...]}
+[ -n "${sources[$reader]:-}" ] || { echo "fuzz.sh: no reader '$reader' (${readers[*]})" >&2; exit 2; }
+if [ -z "${PARKSIM_FUZZ_SCRATCH:-}" ]; then
+  PARKSIM_FUZZ_SCRATCH=$out/scratch-$reader
+  mkdir -p "$PARKSIM_FUZZ_SCRATCH"
+  export PARKSIM_FUZZ_SCRATCH
+fi
 shift
 mkdir -p "$out/corpus-$reader"
 exec "$out/fuzz_$reader" "${common[@]}" -artifact_prefix="$out/$reader-" "$@" \

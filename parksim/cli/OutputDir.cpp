@@ -14,6 +14,7 @@
 #include <mutex>
 #include <thread>
 
+#include "parksim/cli/Progress.h"
 #include "parksim/core/Error.h"
 
 namespace parksim::cli {
@@ -88,6 +89,7 @@ struct OutputDir::Impl {
           fs::rename(staging, doomed, ec);
           fs::remove_all(ec ? staging : doomed, ec);
         }
+        endOpenProgressLine();  // a "planning: ..." line must not run into the prompt
         ::signal(sig, SIG_DFL);
         sigset_t one;
         sigemptyset(&one);

@@ -3,11 +3,32 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 
 #include "parksim/core/NumberFormat.h"
 
 namespace parksim::cli {
+
+namespace {
+
+// Whether a progress line is open on stderr: one stderr per process, so one flag per process,
+// read by the signal-handling thread (OutputDir.cpp, the sweep command).
+std::atomic<bool>& openLine() {
+  static std::atomic<bool> open{false};
+  return open;
+}
+
+}  // namespace
+
+void markProgressLineOpen(bool open) { openLine().store(open); }
+
+void endOpenProgressLine() {
+  if (openLine().exchange(false)) {
+    std::fputc('\n', stderr);
+    std::fflush(stderr);
+  }
+}
 
 bool progressWanted(bool forced, bool quiet) {
   if (forced) return true;
@@ -48,6 +69,7 @@ void Progress::draw(long done) {
   }
   std::fprintf(stderr, "\r%s\033[K", line.c_str());
   std::fflush(stderr);
+  markProgressLineOpen(true);
   drawn_ = true;
 }
 
@@ -57,6 +79,7 @@ void Progress::finish() {
   if (!drawn_) return;  // never drawn: the command was short, leave no trace
   draw(done_);
   std::fputc('\n', stderr);
+  markProgressLineOpen(false);
 }
 
 PlanProgress planProgress(Progress& progress) {

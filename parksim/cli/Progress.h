@@ -40,6 +40,15 @@ class Progress {
   Clock::time_point last_draw_;
 };
 
+/// Marks a progress line as drawn on stderr without its newline (true) or ended (false); Progress
+/// does this itself, other progress lines (the sweep's) call it.
+void markProgressLineOpen(bool open);
+
+/// Ends an open progress line with a newline (and forgets it). For the thread that handles
+/// SIGINT, SIGTERM or SIGHUP before the process dies of it: the shell's prompt then starts on
+/// a line of its own, and a log does not end in a cut-off line.
+void endOpenProgressLine();
+
 /// A progress line for a planner's search ("planning (hybrid-a-star expansions): 1200/20000
 /// ..."): `budget` is the planner's iteration budget; a search that succeeds ends early.
 /// The returned callback feeds `progress`, which must outlive it.

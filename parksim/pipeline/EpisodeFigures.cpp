@@ -4,6 +4,7 @@
 #include "parksim/core/NumberFormat.h"
 #include "parksim/planner/MoveToPoseSteering.h"
 #include "parksim/results/ExecutedFile.h"
+#include "parksim/results/TrajectoryFile.h"
 
 namespace parksim {
 
@@ -49,6 +50,11 @@ TrackingSeries trackingSeries(const std::vector<ExecutedRow>& rows) {
 
 TrackingSeries readTrackingRecord(const std::string& path) {
   if (path.size() < 4 || path.compare(path.size() - 4, 4, ".npz") != 0) {
+    // The plan reader's limits (docs/limits.md), on the columns the plot reads.
+    checkTimeSeriesCsv(path, {{"t", "t_s", "time"},
+                              {"pos_err", "pos_err_m", "position_error", "position_error_m"},
+                              {"heading_err", "heading_err_rad", "heading_error",
+                               "heading_error_rad", "heading_err_deg", "heading_error_deg"}});
     return readTrackingCsv(path);
   }
   const std::vector<DataColumn> columns = readNpzFile(path);

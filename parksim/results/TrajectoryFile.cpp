@@ -4,8 +4,12 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iterator>
+#include <limits>
 #include <map>
+#include <optional>
+#include <vector>
 
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/DiffDrive.h"
@@ -16,6 +20,11 @@
 namespace parksim {
 
 void writeTrajectoryCsv(const std::string& path, const Trajectory& traj, const RobotDef& robot) {
+  // What `run --plan` could not read back is not written: the reader's limits are the writer's.
+  if (const std::optional<std::string> problem = planFileProblem(traj)) {
+    throw Error(path + ": the plan exceeds the limits of a plan file (" + *problem +
+                "; docs/limits.md), so `run --plan` could not read it back");
+  }
   std::string out = "t,x,y,theta,omega_left,omega_right,v,omega\n";
   out.reserve(out.size() + traj.points.size() * 160);
   for (const TrajectoryPoint& p : traj.points) {
@@ -56,9 +65,28 @@ void splitCells(std::string_view line, std::vector<std::string_view>& cells) {
 
 std::string limitText(double value) { return formatGeneral(value); }
 
-}  // namespace
+// A cell shown in a message: at most 40 bytes. A NUL byte in a cell cut the message short (it
+// ends the C string main() prints); it shows as \x00. Other control bytes are escaped where
+// the message is printed (cli::printable), as in every other message.
+std::string shownCell(std::string_view cell) {
+  std::string shown;
+  for (const char c : cell.substr(0, 40)) {
+    if (c == '\0') {
+      shown += "\\x00";
+    } else {
+      shown += c;
+    }
+  }
+  return shown + (cell.size() > 40 ? "..." : "");
+}
 
-Trajectory parseTrajectoryCsv(std::string_view text, const std::string& path) {
+// A time series in CSV with the plan file's limits (PlanFileLimits): one line at a time, cells
+// as views into it. `columns` lists, per column read, the names it may have; the first is the
+// time. A column not found is an error when `required`, else it is not read (NaN). Calls
+// `on_row` with the values of each data row, in the order of `columns`.
+void scanSeries(std::string_view text, const std::string& path, const char* what, double max_time_s,
+                const std::vector<std::vector<std::string_view>>& columns, bool required,
+                const std::function<void(const std::vector<double>&, int line)>& on_row) {
   using L = PlanFileLimits;
   std::size_t pos = 0;
   int line_no = 0;
@@ -77,52 +105,56 @@ Trajectory parseTrajectoryCsv(std::string_view text, const std::string& path) {
   // A byte-order mark (spreadsheets' "CSV UTF-8") is no part of the first column's name.
   if (text.substr(0, 3) == "\xEF\xBB\xBF") pos = 3;
   std::string_view line;
-  if (!next(line)) throw Error(path + ":1: empty trajectory file (expected a header)");
+  if (!next(line)) throw Error(path + ":1: empty " + what + " (expected a header)");
   std::vector<std::string_view> cells;
   splitCells(line, cells);
-  const std::size_t columns = cells.size();
+  const std::size_t width = cells.size();
   std::map<std::string_view, std::size_t> column;
   for (std::size_t i = 0; i < cells.size(); ++i) {
     if (!column.emplace(cells[i], i).second) {
-      const std::string shown(cells[i].substr(0, 40));
-      throw Error(path + ":1: header names column '" + shown + "' twice");
+      throw Error(path + ":1: header names column '" + shownCell(cells[i]) + "' twice");
     }
   }
-  const char* required[] = {"t", "x", "y", "theta", "omega_left", "omega_right"};
-  std::size_t index[6];
-  for (int k = 0; k < 6; ++k) {
-    const auto it = column.find(required[k]);
-    if (it == column.end()) {
-      throw Error(path + ":1: header lacks column '" + required[k] + "'");
+  std::vector<std::size_t> index(columns.size(), width);  // width: not in the file
+  std::vector<std::string> names(columns.size());
+  for (std::size_t k = 0; k < columns.size(); ++k) {
+    for (const std::string_view name : columns[k]) {
+      const auto it = column.find(name);
+      if (it == column.end()) continue;
+      index[k] = it->second;
+      names[k] = std::string(name);
+      break;
     }
-    index[k] = it->second;
+    if (index[k] == width && required) {
+      throw Error(path + ":1: header lacks column '" + std::string(columns[k].front()) + "'");
+    }
   }
-  Trajectory traj;
+  std::vector<double> v(columns.size());
+  std::size_t rows = 0;
+  double last_t = 0.0;
   while (next(line)) {
     if (line.empty()) continue;
-    if (traj.points.size() >= L::kMaxRows) {
+    if (rows >= L::kMaxRows) {
       throw Error(at(line_no) + "more than the limit of " + std::to_string(L::kMaxRows) +
                   " rows (docs/limits.md)");
     }
     splitCells(line, cells);
     // A row of another width is a shifted or truncated file, not a row to guess at.
-    if (cells.size() != columns) {
+    if (cells.size() != width) {
       throw Error(at(line_no) + "row has " + std::to_string(cells.size()) +
-                  " cells, the header has " + std::to_string(columns) + " columns");
+                  " cells, the header has " + std::to_string(width) + " columns");
     }
-    double v[6];
-    for (int k = 0; k < 6; ++k) {
-      const std::string where = at(line_no) + "column '" + required[k] + "'";
-      if (index[k] >= cells.size()) throw Error(where + ": missing value");
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+      v[k] = std::numeric_limits<double>::quiet_NaN();
+      if (index[k] == width) continue;
+      const std::string where = at(line_no) + "column '" + names[k] + "'";
       const std::string_view cell = cells[index[k]];
       const auto [end, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), v[k]);
       if (ec != std::errc() || end != cell.data() + cell.size() || !std::isfinite(v[k])) {
-        const std::string shown(cell.substr(0, 40));
-        throw Error(where + ": '" + shown + (cell.size() > 40 ? "...'" : "'") +
-                    " is not a finite number");
+        throw Error(where + ": '" + shownCell(cell) + "' is not a finite number");
       }
-      if (k == 0 && !(v[k] >= 0.0 && v[k] <= L::kMaxTimeS)) {
-        throw Error(where + ": must be in [0, " + limitText(L::kMaxTimeS) + "] s, got " +
+      if (k == 0 && !(v[k] >= 0.0 && v[k] <= max_time_s)) {
+        throw Error(where + ": must be in [0, " + limitText(max_time_s) + "] s, got " +
                     limitText(v[k]) + " (docs/limits.md)");
       }
       if (k > 0 && !(std::abs(v[k]) <= L::kMaxMagnitude)) {
@@ -130,23 +162,77 @@ Trajectory parseTrajectoryCsv(std::string_view text, const std::string& path) {
                     limitText(v[k]) + " (docs/limits.md)");
       }
     }
-    TrajectoryPoint p;
-    p.t_s = v[0];
-    p.pose = {v[1], v[2], v[3]};
-    p.wheels = {v[4], v[5]};
-    if (!traj.points.empty()) {
-      const double gap = p.t_s - traj.points.back().t_s;
-      if (!(gap > 0.0)) throw Error(at(line_no) + "column 't': time does not increase");
+    if (rows > 0 && index[0] != width) {
+      const double gap = v[0] - last_t;
+      if (!(gap > 0.0)) {
+        throw Error(at(line_no) + "column '" + names[0] + "': time does not increase");
+      }
       if (gap > L::kMaxGapS) {
-        throw Error(at(line_no) + "column 't': " + limitText(gap) +
+        throw Error(at(line_no) + "column '" + names[0] + "': " + limitText(gap) +
                     " s after the previous row, more than the limit of " + limitText(L::kMaxGapS) +
                     " s (docs/limits.md)");
       }
     }
-    traj.points.push_back(p);
+    last_t = v[0];
+    ++rows;
+    on_row(v, line_no);
   }
+}
+
+}  // namespace
+
+std::optional<std::string> planFileProblem(const Trajectory& traj) {
+  using L = PlanFileLimits;
+  if (traj.points.size() > L::kMaxRows) {
+    return std::to_string(traj.points.size()) + " rows, more than the limit of " +
+           std::to_string(L::kMaxRows);
+  }
+  for (std::size_t i = 0; i < traj.points.size(); ++i) {
+    const TrajectoryPoint& p = traj.points[i];
+    const std::string row = "row " + std::to_string(i + 1) + ": ";
+    if (!(p.t_s >= 0.0 && p.t_s <= L::kMaxTimeS)) {
+      return row + "t = " + limitText(p.t_s) + " s, outside [0, " + limitText(L::kMaxTimeS) +
+             "] s (a plan " + limitText(traj.duration()) + " s long)";
+    }
+    if (i > 0) {
+      const double gap = p.t_s - traj.points[i - 1].t_s;
+      if (!(gap > 0.0 && gap <= L::kMaxGapS)) {
+        return row + limitText(gap) + " s after the previous row, outside (0, " +
+               limitText(L::kMaxGapS) + "] s";
+      }
+    }
+    for (const double value :
+         {p.pose.x, p.pose.y, p.pose.theta, p.wheels.left_radps, p.wheels.right_radps}) {
+      if (!(std::abs(value) <= L::kMaxMagnitude)) {
+        return row + "a value of " + limitText(value) + ", beyond +-" + limitText(L::kMaxMagnitude);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+Trajectory parseTrajectoryCsv(std::string_view text, const std::string& path) {
+  Trajectory traj;
+  scanSeries(text, path, "trajectory file", PlanFileLimits::kMaxTimeS,
+             {{"t"}, {"x"}, {"y"}, {"theta"}, {"omega_left"}, {"omega_right"}}, true,
+             [&traj](const std::vector<double>& v, int) {
+               TrajectoryPoint p;
+               p.t_s = v[0];
+               p.pose = {v[1], v[2], v[3]};
+               p.wheels = {v[4], v[5]};
+               traj.points.push_back(p);
+             });
   if (traj.points.empty()) throw Error(path + ": trajectory has no rows");
   return traj;
+}
+
+void checkTimeSeriesCsv(const std::string& path,
+                        const std::vector<std::vector<std::string_view>>& columns) {
+  std::size_t rows = 0;
+  // An episode lasts its plan and a stop phase: a plan file's longest plan and one gap more.
+  const double max_time_s = PlanFileLimits::kMaxTimeS + PlanFileLimits::kMaxGapS;
+  scanSeries(readInputFile(path, kMaxSeriesFileBytes, "CSV file"), path, "CSV file", max_time_s,
+             columns, false, [&rows](const std::vector<double>&, int) { ++rows; });
 }
 
 Trajectory readTrajectoryCsv(const std::string& path) {

@@ -4,8 +4,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "parksim/core/RobotDef.h"
 #include "parksim/core/Trajectory.h"
@@ -13,7 +15,9 @@
 namespace parksim {
 
 /// Writes `t,x,y,theta,omega_left,omega_right,v,omega` (s, m, rad, rad/s, m/s) with
-/// round-trip precision. Atomic: the file appears complete or not at all. Throws Error.
+/// round-trip precision. Atomic: the file appears complete or not at all. Throws Error, also
+/// when the plan exceeds the plan file's limits (planFileProblem: a plan of more than 3600 s in
+/// a huge lot), which readTrajectoryCsv would refuse.
 void writeTrajectoryCsv(const std::string& path, const Trajectory& traj, const RobotDef& robot);
 
 /// Limits of a plan file (docs/limits.md), checked while reading, before anything is simulated.
@@ -26,6 +30,10 @@ struct PlanFileLimits {
   static constexpr double kMaxMagnitude = 1e6;            ///< |x|, |y| (m), |theta|, wheels
 };
 
+/// What in `traj` a plan file could not hold (PlanFileLimits), or nothing: writeTrajectoryCsv
+/// refuses such a plan, so that every plan file parksim writes `run --plan` reads back.
+std::optional<std::string> planFileProblem(const Trajectory& traj);
+
 /// Reads a file written by writeTrajectoryCsv (extra columns allowed). Only regular files up
 /// to PlanFileLimits::kMaxBytes are read. Throws Error naming the file, line and column on bad
 /// input, or the limit that was exceeded.
@@ -33,5 +41,19 @@ Trajectory readTrajectoryCsv(const std::string& path);
 
 /// As readTrajectoryCsv, from text in memory; `source_name` prefixes messages.
 Trajectory parseTrajectoryCsv(std::string_view text, const std::string& source_name);
+
+/// Largest file checkTimeSeriesCsv reads: as readCsvFile's (core/Csv.h), 32 MiB.
+inline constexpr std::uintmax_t kMaxSeriesFileBytes = 32u << 20;
+
+/// Checks another time series in CSV (`render --executed`'s executed.csv) as readTrajectoryCsv
+/// checks a plan: a regular file of at most kMaxSeriesFileBytes, lines within kMaxLineBytes, a
+/// header naming each column once, every row as wide as the header, at most kMaxRows rows, and
+/// in the columns read (`columns`: per column the names it may have, the time first) finite
+/// numbers, the time within [0, kMaxTimeS + kMaxGapS] s (a plan and its stop phase),
+/// increasing by at most kMaxGapS, the others within
+/// +-kMaxMagnitude. Columns not found are not checked (the file's reader names them). Throws
+/// Error naming the file, line and column, control bytes escaped.
+void checkTimeSeriesCsv(const std::string& path,
+                        const std::vector<std::vector<std::string_view>>& columns);
 
 }  // namespace parksim

@@ -15,6 +15,7 @@
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
 #include "parksim/core/Text.h"
+#include "parksim/scenario/PhysicalRanges.h"
 #include "parksim/scenario/RealismSections.h"
 #include "parksim/scenario/WorldDocument.h"
 #include "parksim/scenario/YamlField.h"
@@ -99,6 +100,17 @@ void readFormat(const YamlField& field) {
   if (format != kFormat) field.fail("expected " + inQuotes(kFormat) + ", got " + inQuotes(format));
 }
 
+// A robot or physics value: its sign first (the messages every reader gives), then the range
+// a real robot and a stable simulation can have (PhysicalRanges.h), with its reason.
+double ranged(const YamlField& f, std::string_view key, bool zero_allowed = false) {
+  const double v = zero_allowed ? f.nonNegative() : f.positive();
+  if (const std::optional<std::string> problem =
+          rangeProblem(physicalRange(key), v, f.node().Scalar())) {
+    f.fail(*problem);
+  }
+  return v;
+}
+
 LotBounds readLot(const YamlField& field) {
   const YamlMap m = field.map({"x_min", "y_min", "x_max", "y_max"});
   LotBounds lot;
@@ -126,18 +138,17 @@ RobotDef readRobot(const YamlField& field) {
   RobotDef robot;
   // Each key overrides one field; absent keys keep the study's robot.
   const auto set = [&m](std::string_view key, double& out) {
-    if (const std::optional<YamlField> f = m.optional(key)) out = f->positive();
+    if (const std::optional<YamlField> f = m.optional(key)) {
+      out = ranged(*f, "robot." + std::string(key));
+    }
   };
-  const auto setLength = [&m](std::string_view key, double& out) {
-    if (const std::optional<YamlField> f = m.optional(key)) out = length(*f);
-  };
-  setLength("length", robot.length_m);
-  setLength("width", robot.width_m);
-  setLength("wheel_base", robot.wheel_base_m);
-  setLength("wheel_radius", robot.wheel_radius_m);
+  set("length", robot.length_m);
+  set("width", robot.width_m);
+  set("wheel_base", robot.wheel_base_m);
+  set("wheel_radius", robot.wheel_radius_m);
   set("max_wheel_speed_radps", robot.max_wheel_speed_radps);
   set("max_wheel_accel_radps2", robot.max_wheel_accel_radps2);
-  setLength("height", robot.height_m);
+  set("height", robot.height_m);
   // The chassis' underside must stay below its top.
   if (const std::optional<YamlField> f = m.optional("ground_clearance")) {
     robot.ground_clearance_m = f->nonNegative();
@@ -174,15 +185,24 @@ PhysicsDef readPhysics(const YamlField& field) {
                  "max_wheel_torque_nm", "parked_robot_mass_kg", "obstacle_friction"});
   PhysicsDef physics;
   const auto positive = [&m](std::string_view key, double& out) {
-    if (const std::optional<YamlField> f = m.optional(key)) out = f->positive();
+    if (const std::optional<YamlField> f = m.optional(key)) {
+      out = ranged(*f, "physics." + std::string(key));
+    }
   };
   // A friction coefficient of zero is a frictionless contact, which the slider wants.
   const auto friction = [&m](std::string_view key, double& out) {
-    if (const std::optional<YamlField> f = m.optional(key)) out = f->nonNegative();
+    if (const std::optional<YamlField> f = m.optional(key)) {
+      out = ranged(*f, "physics." + std::string(key), true);
+    }
   };
   positive("time_step_s", physics.time_step_s);
   if (const std::optional<YamlField> f = m.optional("solver_iterations")) {
     physics.solver_iterations = f->positiveInt();
+    if (const std::optional<std::string> problem =
+            rangeProblem(physicalRange("physics.solver_iterations"), physics.solver_iterations,
+                         f->node().Scalar())) {
+      f->fail(*problem);
+    }
   }
   positive("gravity_mps2", physics.gravity_mps2);
   positive("chassis_mass_kg", physics.chassis_mass_kg);
@@ -308,7 +328,9 @@ Obstacle readParkedRobot(const YamlField& field, const RobotDef& robot) {
   obstacle.box = footprintAt(body, readPose(m.required("pose")));
   obstacle.height_m = robot.height_m;
   if (const std::optional<YamlField> f = m.optional("height")) obstacle.height_m = length(*f);
-  if (const std::optional<YamlField> f = m.optional("mass_kg")) obstacle.mass_kg = f->positive();
+  if (const std::optional<YamlField> f = m.optional("mass_kg")) {
+    obstacle.mass_kg = ranged(*f, "parked_robots.mass_kg");
+  }
   return obstacle;
 }
 
@@ -420,8 +442,15 @@ World readWorldDocument(const YAML::Node& document, const std::string& source_na
   s.name = top.required("name").name();
   s.lot = readLot(top.required("lot"));
   // The robot comes before the parked robots whatever the key order: they share its footprint.
-  if (const std::optional<YamlField> f = top.optional("robot")) s.robot = readRobot(*f);
-  if (const std::optional<YamlField> f = top.optional("physics")) s.physics = readPhysics(*f);
+  const std::optional<YamlField> robot = top.optional("robot");
+  const std::optional<YamlField> physics = top.optional("physics");
+  if (robot) s.robot = readRobot(*robot);
+  if (physics) s.physics = readPhysics(*physics);
+  // Values each within range may still ask more of the wheels than they can give; the robot's
+  // section is named (its shape and limits are what a user changes), else the physics one.
+  if (const std::optional<std::string> problem = driveProblem(s.robot, s.physics)) {
+    (robot ? *robot : physics ? *physics : root).fail(*problem);
+  }
 
   NameRegistry names;
   if (const std::optional<YamlField> list = top.optional("obstacles")) {

@@ -17,6 +17,10 @@ struct World {
   Scenario scenario;
   /// The file's realism: and tolerance: sections (each flagged when present).
   WorldRealism sections;
+  /// 16 hex digits of the 64-bit FNV-1a hash of the text read (the file's bytes), followed by
+  /// each override's path and value: two worlds with one name but other contents differ here.
+  /// A sweep's results rows carry it (world_hash) so that an edited world file is noticed.
+  std::string content_hash;
 };
 
 /// Reads the world file at `path`, applies `overrides` in order and validates the result as a

@@ -24,8 +24,36 @@ std::vector<SweepWorld> loadSweepWorlds(const SweepSpec& spec) {
   return worlds;
 }
 
+namespace {
+
+// Each offset on each world, before the product: an offset that leaves the robot outside the
+// lot or on an obstacle is named by its line in the spec.
+void checkOffsets(const SweepSpec& spec, const std::vector<SweepWorld>& worlds) {
+  const auto check = [&](const std::vector<PoseOffset>& offsets, const std::vector<int>& lines,
+                         const char* key, bool start) {
+    for (std::size_t i = 0; i < offsets.size(); ++i) {
+      for (const SweepWorld& world : worlds) {
+        EpisodeParams p;
+        (start ? p.start_offset : p.goal_offset) = offsets[i];
+        try {
+          (void)episodeRequest(p, world, spec.tolerance);
+        } catch (const Error& e) {
+          const int line = i < lines.size() ? lines[i] : 0;
+          throw Error(spec.source_path + (line > 0 ? ":" + std::to_string(line) : "") + ": " + key +
+                      "[" + std::to_string(i) + "]: " + e.what());
+        }
+      }
+    }
+  };
+  check(spec.start_offsets, spec.start_offset_lines, "start_offsets", true);
+  check(spec.goal_offsets, spec.goal_offset_lines, "goal_offsets", false);
+}
+
+}  // namespace
+
 std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
                                          const std::vector<SweepWorld>& worlds) {
+  checkOffsets(spec, worlds);
   std::vector<SweepEpisode> out;
   for (std::size_t w = 0; w < worlds.size(); ++w) {
     for (const std::string& planner : spec.planners)

@@ -124,6 +124,9 @@ nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const Episod
   addPlanColumns(out, row);
   if (out.driven()) addSimulationColumns(out, row);
   addTimingColumns(out, t0, row);
+  // Which content of the world file the episode ran on: its name alone (in the id) cannot tell
+  // an edited file from the one an earlier run used.
+  row["world_hash"] = episode.world->content_hash;
   return row;
 }
 

@@ -27,7 +27,8 @@ struct EpisodeRunDef {
 /// The episode's results row, without provenance (see ResultsTable.h for its keys): id,
 /// parameters, status (the verdict's, pipeline/Verdict.h), met_tolerance, failure (the
 /// verdict's one line; empty when met), plan statistics, simulation metrics (absent when the
-/// plan failed) and timing. Throws Error when a file cannot be written.
+/// plan failed), timing and world_hash (the world's content_hash). Throws Error when a file
+/// cannot be written.
 nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const EpisodeRunDef& def);
 
 }  // namespace parksim

@@ -1,61 +1,54 @@
 #pragma once
-// A sweep's results table: DIR/results.jsonl (one JSON object per line, every key) and
-// DIR/results.csv (the fixed columns of resultColumns(), one row per episode), appended one
-// finished episode at a time.
+// A running sweep's results table: DIR/results.jsonl and DIR/results.csv (ResultsFile.h),
+// appended one finished episode at a time, each row sealed (RowSeal.h).
 //
 // Crash safety: each row is one write() per file to a file opened O_APPEND, so a killed process
 // leaves whole rows (the kernel keeps what write() returned); fdatasync runs at most once per
-// sync_interval_s and on close, for machine crashes. Opening a table repairs what a crash in the
-// middle of a write can still leave: a last line without its newline (or one that does not
-// parse) is cut off, and results.csv is rebuilt from results.jsonl when the two disagree
-// (results.jsonl is written first and is the reference).
+// sync_interval_s and on close, for machine crashes. A row whose write fails (a full disk, a
+// file-size limit) is taken back from both files (ftruncate needs no space), so the files hold
+// whole rows and agree after any failed write. Opening a table repairs what a kill in the middle
+// of a write can still leave: a last line without its newline is cut off, and results.csv is
+// rebuilt from results.jsonl (the reference) when it lacks rows at its end.
+//
+// Integrity: opening reads every row and refuses (Error naming the file and line) a row whose
+// seal does not match its content, a line of results.csv that is not the rendering of its
+// results.jsonl row, and rows of another world content or another build than the expected ones
+// (TableExpectations): a resumed sweep never mixes two versions of a world or of parksim.
+// One writer: DIR/.results.lock is held (flock) while the table is open, so a second sweep into
+// the same DIR fails at once instead of interleaving rows.
 
-#include <cstdint>
 #include <map>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "parksim/sweep/ResultsFile.h"
+
 namespace parksim {
 
-/// results.csv's columns, in order: episode_id, the parameters, the outcome, plan statistics,
-/// simulation metrics, timing and provenance. Keys a row lacks (a failed plan has no
-/// simulation) are empty cells. results.jsonl also has keys that vary per world or are lists
-/// (parked_displacement_m.<name>, plan_cost_history, plan_phase_times_s).
-const std::vector<std::string>& resultColumns();
+/// What the rows already in a table must agree with to be resumed.
+struct TableExpectations {
+  /// World name -> contentHash of the world file this sweep read. Rows of these worlds must
+  /// carry the same world_hash; rows of other worlds (an edited spec) are kept as they are.
+  std::map<std::string, std::string> world_hashes;
+  /// rowWriter of this build; empty: rows of any build are accepted.
+  std::string writer;
+};
 
-/// Columns and keys measured in wall-clock time: they differ between runs of the same episode.
-/// Everything else is a function of the episode's parameters and the binary.
-bool isTimingKey(std::string_view key);
+/// The lock file of DIR's table, held by the sweep writing it.
+std::string resultsLockPath(const std::string& dir);
 
-/// `row` with its timing keys removed (for comparing runs).
-nlohmann::ordered_json withoutTiming(const nlohmann::ordered_json& row);
-
-/// The header line of results.csv, with its newline.
-std::string csvHeader();
-/// One CSV line for `row` (RFC 4180 quoting; booleans true/false; lists joined by '|').
-std::string csvRow(const nlohmann::ordered_json& row);
-
-/// Largest results.jsonl or results.csv read (docs/limits.md): a row is ~2 KB, so ~250,000
-/// episodes; a parsed row takes a few times its text in memory.
-inline constexpr std::uintmax_t kMaxResultsTableBytes = 512u << 20;
-
-/// Every whole row of a results.jsonl; a torn or unparsable last line is skipped. Throws Error
-/// naming the file and line for a bad line before the last, or when the file cannot be read.
-/// A missing file has no rows.
-std::vector<nlohmann::ordered_json> readResultsJsonl(const std::string& path);
-
-/// Writes DIR/results.jsonl and DIR/results.csv with exactly `rows`, each file atomically.
-void writeResultsTable(const std::string& dir, const std::vector<nlohmann::ordered_json>& rows);
+/// True when a sweep holds DIR's table open now (its lock is taken).
+bool resultsTableBusy(const std::string& dir);
 
 class ResultsTable {
  public:
   /// Opens (creating, or repairing as described above) DIR/results.jsonl and DIR/results.csv.
-  /// Throws Error when they cannot be opened or results.csv has another header (another
-  /// parksim version's columns).
-  explicit ResultsTable(const std::string& dir, double sync_interval_s = 1.0);
+  /// Throws Error when they cannot be opened, another sweep holds them, results.csv has another
+  /// header (another parksim version's columns), or a row fails the checks above.
+  explicit ResultsTable(const std::string& dir, const TableExpectations& expect = {},
+                        double sync_interval_s = 1.0);
   ~ResultsTable();
   ResultsTable(const ResultsTable&) = delete;
   ResultsTable& operator=(const ResultsTable&) = delete;
@@ -63,20 +56,30 @@ class ResultsTable {
   /// Ids already in the table, with whether each met its tolerance (met_tolerance).
   const std::map<std::string, bool>& done() const { return done_; }
 
-  /// Appends one row (it must have episode_id and met_tolerance). Throws Error on a failed write.
+  /// What opening repaired, one line each ("<file>: ..."), for the command to print.
+  const std::vector<std::string>& repairs() const { return repairs_; }
+
+  /// Seals and appends one row (it must have episode_id and met_tolerance, and no
+  /// row_checksum). Throws Error on a failed write, after taking the row back from both files.
   void append(const nlohmann::ordered_json& row);
 
   /// fdatasync both files now.
   void sync();
 
  private:
+  void open(const std::string& dir, const TableExpectations& expect);
+
   std::string jsonl_path_;
   std::string csv_path_;
+  int lock_fd_ = -1;
   int jsonl_fd_ = -1;
   int csv_fd_ = -1;
+  long long jsonl_size_ = 0;  // bytes of whole rows: where a failed append is cut back to
+  long long csv_size_ = 0;
   double sync_interval_s_;
   double last_sync_s_ = 0.0;
   std::map<std::string, bool> done_;
+  std::vector<std::string> repairs_;
 };
 
 }  // namespace parksim

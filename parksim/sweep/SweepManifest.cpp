@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -27,20 +28,20 @@ void writeSweepManifest(const std::string& dir, const SweepManifest& m) {
   j["spec"] = m.spec_path;
   j["name"] = m.name;
   j["shard"] = std::to_string(m.shard.index) + "/" + std::to_string(m.shard.count);
+  if (m.slurm_shards > 0) j["slurm_shards"] = m.slurm_shards;
   j["episode_ids"] = m.episode_ids;
   ensureDirectory(dir);
   writeFileAtomically(dir + "/sweep.json", j.dump(1) + "\n");
 }
 
-bool readSweepManifest(const std::string& dir, SweepManifest& m) {
-  const std::string path = dir + "/sweep.json";
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) return false;
-  // A regular file within the results table's limit: a FIFO blocked the open, and keys of the
-  // wrong type ended in a JSON type error (exit 3).
-  const nlohmann::json j = nlohmann::json::parse(
-      readInputFile(path, kMaxResultsTableBytes, "sweep manifest"), nullptr, false);
-  if (j.is_object() && j.value("format", "") == "parksim-sweep-manifest/1") {
+SweepManifest parseSweepManifest(std::string_view text, const std::string& path) {
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  const auto text_of = [&j](const char* key) -> std::optional<std::string> {
+    const auto it = j.find(key);
+    if (it == j.end() || !it->is_string()) return std::nullopt;
+    return it->get<std::string>();
+  };
+  if (j.is_object() && text_of("format") == "parksim-sweep-manifest/1") {
     throw Error(path +
                 ": written by parksim 0.2, whose episode ids (format 1) left default "
                 "parameters out and meant other defaults; this parksim's ids (format " +
@@ -49,20 +50,50 @@ bool readSweepManifest(const std::string& dir, SweepManifest& m) {
                 "ids\")");
   }
   const Error not_manifest(path + ": not a sweep manifest (format " + kManifestFormat + ")");
-  if (!j.is_object() || j.value("format", "") != kManifestFormat ||
-      j.value("episode_id_format", 0) != kEpisodeIdFormat || !j.contains("episode_ids") ||
-      !j["episode_ids"].is_array()) {
+  // Every key checked for its type before it is read: a key of the wrong type was a JSON type
+  // error (exit 3), a huge number an overflowing conversion.
+  const auto whole = [&j](const char* key, long long lo, long long hi) -> std::optional<long long> {
+    const auto it = j.find(key);
+    if (it == j.end()) return std::nullopt;
+    if (!it->is_number_integer()) return hi + 1;
+    const long long v = it->is_number_unsigned() && it->get<std::uint64_t>() > std::uint64_t(hi)
+                            ? hi + 1
+                            : it->get<long long>();
+    return v < lo ? hi + 1 : v;
+  };
+  if (!j.is_object() || text_of("format") != kManifestFormat ||
+      whole("episode_id_format", 0, 1000) != kEpisodeIdFormat) {
     throw not_manifest;
   }
+  const auto ids = j.find("episode_ids");
+  if (ids == j.end() || !ids->is_array()) throw not_manifest;
+  SweepManifest m;
+  for (const nlohmann::json& id : *ids) {
+    if (!id.is_string()) throw not_manifest;
+    m.episode_ids.push_back(id.get<std::string>());
+  }
+  for (const char* key : {"spec", "name", "shard"}) {
+    if (j.contains(key) && !text_of(key)) throw not_manifest;
+  }
+  m.spec_path = text_of("spec").value_or("");
+  m.name = text_of("name").value_or("");
   try {
-    m.spec_path = j.value("spec", "");
-    m.name = j.value("name", "");
-    const std::string shard = j.value("shard", "0/1");
-    m.shard = parseShard(shard);
-    m.episode_ids = j["episode_ids"].get<std::vector<std::string>>();
-  } catch (const nlohmann::json::exception&) {
+    m.shard = parseShard(text_of("shard").value_or("0/1"));
+  } catch (const Error&) {
     throw not_manifest;
   }
+  const std::optional<long long> shards = whole("slurm_shards", 0, 100000);
+  if (shards && *shards > 100000) throw not_manifest;
+  m.slurm_shards = static_cast<int>(shards.value_or(0));
+  return m;
+}
+
+bool readSweepManifest(const std::string& dir, SweepManifest& m) {
+  const std::string path = dir + "/sweep.json";
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return false;
+  // A regular file within the results table's limit: a FIFO blocked the open.
+  m = parseSweepManifest(readInputFile(path, kMaxResultsTableBytes, "sweep manifest"), path);
   return true;
 }
 

@@ -3,6 +3,7 @@
 // id of the whole sweep), so that `parksim merge` can list the episodes that are missing.
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "parksim/sweep/Shard.h"
@@ -14,6 +15,9 @@ struct SweepManifest {
   std::string name;       ///< SweepSpec::name
   Shard shard;
   std::vector<std::string> episode_ids;  ///< every id of the whole sweep, canonical order
+  /// Array tasks of the Slurm script `--slurm` wrote into this directory (DIR/sweep.sbatch), so
+  /// that `--slurm --missing` deals the episodes to the same shards; 0 when there is none.
+  int slurm_shards = 0;
 };
 
 /// Writes DIR/sweep.json atomically.
@@ -21,5 +25,9 @@ void writeSweepManifest(const std::string& dir, const SweepManifest& manifest);
 
 /// Reads DIR/sweep.json; false when there is none. Throws Error when it exists but is not one.
 bool readSweepManifest(const std::string& dir, SweepManifest& manifest);
+
+/// The manifest in `text` (a sweep.json's bytes); `path` names it in messages. Throws Error
+/// when it is not one.
+SweepManifest parseSweepManifest(std::string_view text, const std::string& path);
 
 }  // namespace parksim

@@ -57,6 +57,9 @@ struct SweepSpec {
   std::vector<std::uint64_t> noise_seeds = {EpisodeParams{}.noise_seed};
   std::vector<PoseOffset> start_offsets = {PoseOffset{}};
   std::vector<PoseOffset> goal_offsets = {PoseOffset{}};
+  /// Lines of the offsets in the spec (0: not from a file), for errors found with the worlds.
+  std::vector<int> start_offset_lines = {0};
+  std::vector<int> goal_offset_lines = {0};
 
   SweepRecordDef record;
   /// Overrides of the tracking tolerance (ToleranceOverrides): an episode meets its tolerance

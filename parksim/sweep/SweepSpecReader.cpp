@@ -116,16 +116,18 @@ std::vector<std::uint64_t> seedsAxis(const YamlField& field) {
   return values;
 }
 
-std::vector<PoseOffset> offsetsAxis(const YamlField& field) {
+std::vector<PoseOffset> offsetsAxis(const YamlField& field, std::vector<int>& lines) {
   if (!field.node().IsSequence()) {
     field.fail("must be a list of [dx_m, dy_m, dyaw_deg] offsets, e.g. [[0, 0, 0], [0.01, 0, 0]]");
   }
   const std::vector<YamlField> items = field.items();
   if (items.empty()) field.fail("must list at least one offset");
   std::vector<PoseOffset> values;
+  lines.clear();
   for (const YamlField& item : items) {
     const std::vector<double> v = item.numbers(3, "[dx_m, dy_m, dyaw_deg]");
     values.push_back({v[0], v[1], v[2]});
+    lines.push_back(item.line());
   }
   rejectDuplicates(items, values);
   return values;
@@ -329,8 +331,12 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
           "identical episodes; give one seed or add a realism preset (lab, odometry)");
     }
   }
-  if (const auto f = top.optional("start_offsets")) spec.start_offsets = offsetsAxis(*f);
-  if (const auto f = top.optional("goal_offsets")) spec.goal_offsets = offsetsAxis(*f);
+  if (const auto f = top.optional("start_offsets")) {
+    spec.start_offsets = offsetsAxis(*f, spec.start_offset_lines);
+  }
+  if (const auto f = top.optional("goal_offsets")) {
+    spec.goal_offsets = offsetsAxis(*f, spec.goal_offset_lines);
+  }
   if (const auto f = top.optional("record")) readRecord(*f, spec.record);
   if (const auto f = top.optional("tolerance")) readTolerance(*f, spec.tolerance);
 

@@ -173,10 +173,23 @@ const Case kCases[] = {
     {"plan {W} --set name=, --out {OUT}", 2, "name: must be a string, got null"},
     {"plan {W} --start 0.1,0.1,1.5708 --out {OUT}", 2, "1.5708 looks like radians"},
     // Physics no simulation can integrate: Bullet's state became NaN at the first step and the
-    // run printed "-nan mm" and a max tracking error of 0.000 mm, exit 4.
+    // run printed "-nan mm" and a max tracking error of 0.000 mm, exit 4. Since issue 22 the
+    // world reader refuses them (physical ranges); the simulation's own guard is tested in
+    // tests/sim/EpisodeCommandTest.cpp.
     {"run {W} --set physics.gravity_mps2=1e300 --out {OUT}", 2,
-     "simulation: diverged at t = 0.00416667 s (step 1)"},
-    {"run {W} --set physics.wheel_mass_kg=1e300 --out {OUT}", 2, "simulation: diverged"},
+     "physics.gravity_mps2: must be in [0.1, 100] m/s^2"},
+    {"run {W} --set physics.wheel_mass_kg=1e300 --out {OUT}", 2,
+     "physics.wheel_mass_kg: must be in [0.0001, 10000] kg"},
+    // Issue 22: degenerate values that planned and then ended metres from the goal (exit 4).
+    {"run {W} --set robot.wheel_base=1e-12 --out {OUT}", 2, "robot.wheel_base: must be in"},
+    {"run {W} --set physics.chassis_mass_kg=1e-300 --out {OUT}", 2,
+     "physics.chassis_mass_kg: must be in [0.001, 100000] kg"},
+    {"run {W} --set physics.time_step_s=1000 --out {OUT}", 2,
+     "physics.time_step_s: must be in [1e-05, 0.01] s"},
+    {"run {W} --set robot.max_wheel_speed_radps=1e-300 --out {OUT}", 2,
+     "robot.max_wheel_speed_radps: must be in [0.1, 1000] rad/s"},
+    {"run {W} --set robot.length=5 --set robot.width=5 --out {OUT}", 2,
+     "robot: turning a 5 x 5 m body on a 0.085 m wheel base"},
     // Plan files: type, size and content limits, checked before anything is written.
     {"run {W} --plan /dev/zero --out {OUT}", 2, "/dev/zero: is not a regular file"},
     {"run {W} --plan /dev/urandom --out {OUT}", 2, "is not a regular file"},
@@ -198,10 +211,12 @@ const Case kCases[] = {
     {"run {W} --plan {DIR}/long_plan.csv --frames --fps 30 --out {OUT}", 2,
      "more than the limit of 50000"},
     {"run {C}world/tiny_time_step.yaml --out {OUT}", 2, "physics steps"},
+    // A 1e-6 rad/s^2 wheel acceleration and a 1 nm wheel radius needed more than 100000
+    // control periods; since issue 22 the world reader refuses them (physical ranges).
     {"plan {C}world/tiny_accel.yaml --steering rotate-translate-rotate --out {OUT}", 2,
-     "control periods, more than the limit of 100000"},
+     "tiny_accel.yaml:4: robot.max_wheel_accel_radps2: must be in [0.1, 10000] rad/s^2"},
     {"plan {C}world/tiny_wheel.yaml --steering rotate-translate-rotate --out {OUT}", 2,
-     "a half turn (wheel radius 1e-09 m"},
+     "tiny_wheel.yaml:4: robot.wheel_radius: must be in [0.001, 5] m"},
     {"plan {C}world/huge_lot.yaml --steering rotate-translate-rotate --out {OUT}", 2,
      "a straight move across the lot"},
     // World files (the reader's own limits, docs/world-format.md): bounded, one line, exit 2.
@@ -296,7 +311,8 @@ TEST_F(HostileInput, AnUnsolvedPlanIsAResultAndReplacesTheEarlierOutputWhole) {
   const fs::path out = dir_ / "unsolved";
   ASSERT_EQ(run("run " + vars_["{W}"] + " --out " + out.string()).exit_code, 0);
   ASSERT_TRUE(fs::exists(out / "executed.csv"));
-  const Outcome r = run("run " + vars_["{W}"] + " --planner rrt --max-iterations 1 --out " + out.string());
+  const Outcome r =
+      run("run " + vars_["{W}"] + " --planner rrt --max-iterations 1 --out " + out.string());
   EXPECT_EQ(r.exit_code, 1) << r.out;
   // The new outputs (plan.json of the unsolved plan) and none of the earlier run's.
   EXPECT_TRUE(fs::exists(out / "plan.json"));

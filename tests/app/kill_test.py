@@ -138,6 +138,26 @@ def main():
                 left = [n for n in os.listdir(tmp) if n.endswith("staging-%d" % p.pid)]
                 check(not left, "kill %d: SIGINT left %s" % (i, left))
 
+        # Directed (issue 22): SIGINT while planning with --progress ends the progress line,
+        # so the shell's prompt does not run into it. rrt-star plans until its budget.
+        plan_cmd = [args.parksim, "plan", args.world, "--planner", "rrt-star", "--progress",
+                    "--max-iterations", "1000000", "--out", os.path.join(tmp, "plan")]
+        p = subprocess.Popen(plan_cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+        err = b""
+        while p.poll() is None and b"\r" not in err:
+            chunk = os.read(p.stderr.fileno(), 4096)
+            if not chunk:
+                break
+            err += chunk
+        check(b"\r" in err, "plan --progress drew no progress line: %r" % err[-200:])
+        p.send_signal(signal.SIGINT)
+        err += p.stderr.read()
+        p.wait()
+        print("SIGINT during planning: exit %d, stderr ends %r" % (p.returncode, err[-40:]),
+              flush=True)
+        check(p.returncode == -signal.SIGINT, "plan: exit %d after SIGINT" % p.returncode)
+        check(err.endswith(b"\n"), "SIGINT left the progress line open: %r" % err[-80:])
+
         # Directed: SIGKILL while ffmpeg is encoding; ffmpeg must die with parksim.
         before = snapshot(out)
         p = subprocess.Popen(new_cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)

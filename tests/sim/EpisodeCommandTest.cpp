@@ -1,9 +1,11 @@
 // Episode::step(command): an episode driven by wheel speeds from outside (a user's controller).
 
 #include <cmath>
+#include <string>
 
 #include <gtest/gtest.h>
 
+#include "parksim/core/Error.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/results/JsonFile.h"
@@ -31,6 +33,22 @@ TEST(EpisodeCommand, CommandingTheControllersOwnCommandIsBitIdenticalToStep) {
     while (!episode.finished()) episode.step(episode.controllerCommand());
     EXPECT_EQ(executedCsv(episode.rows()), executedCsv(reference.rows)) << toString(mode);
     EXPECT_EQ(episode.metrics().steps, reference.metrics.steps);
+  }
+}
+
+// Physics no simulation can integrate ends in an error, not in NaN metrics. The world reader
+// refuses such values since issue 22 (PhysicalRanges.h), so the guard is tested here, on a
+// scenario built without the reader (it was HostileInputTest's gravity of 1e300).
+TEST(EpisodeCommand, PhysicsThatDivergesIsAnErrorNotNanMetrics) {
+  Scenario s = testing::emptyLot({0.5, 0.5, 0.3});
+  const Trajectory plan = straightPlan(s);
+  s.goal.pose = plan.points.back().pose;
+  s.physics.gravity_mps2 = 1e300;
+  try {
+    (void)runEpisode(s, plan, ExecutionDef{});
+    FAIL() << "a gravity of 1e300 m/s^2 ran";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("simulation: diverged at t = ", 0), 0u) << e.what();
   }
 }
 

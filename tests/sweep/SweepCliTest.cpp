@@ -168,5 +168,66 @@ TEST(SweepCli, SlurmWritesAResubmittableArrayScript) {
   EXPECT_NE(escaped.out.find("red\\x1B[31m"), std::string::npos) << escaped.out;
 }
 
+// Issue 22: an offset that moves the robot out of the lot is named by its line in the spec.
+TEST(SweepCli, ABadOffsetIsNamedByItsLineInTheSpec) {
+  const std::string dir = scratchDir();
+  writeText(dir + "/spec.yaml",
+            studySpec("planners: rrt\nstart_offsets:\n  - [0, 0, 0]\n  - [100, 0, 0]\n"));
+  const auto r = runParksim("sweep " + dir + "/spec.yaml --out " + dir + "/out");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find(dir + "/spec.yaml:7: start_offsets[1]: start offset on head_in: "),
+            std::string::npos)
+      << r.out;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
+// Issue 22: a byte changed in a results row is found by merge, report and verify, each naming
+// the file and the line; verify passes the intact table.
+TEST(SweepCli, AChangedRowIsReportedByMergeReportAndVerify) {
+  const std::string dir = scratchDir();
+  writeText(dir + "/spec.yaml", studySpec("planners: rrt-goal-connect\nseeds: [1, 2, 3]\n"));
+  const std::string out = dir + "/out";
+  const auto swept = runParksim("sweep " + dir + "/spec.yaml --out " + out);
+  ASSERT_LE(swept.exit_code, 1) << swept.out;
+  const auto intact = runParksim("verify " + out);
+  EXPECT_EQ(intact.exit_code, 0) << intact.out;
+  EXPECT_NE(intact.out.find("3 rows intact, 0 problems"), std::string::npos) << intact.out;
+
+  // One digit of the second row's seed changed, as a bad disk or a careless edit would.
+  const std::string jsonl = out + "/results.jsonl";
+  std::string text = slurp(jsonl);
+  const std::size_t second = text.find('\n') + 1;
+  const std::size_t digit = text.find("\"seed\":", second) + 7;
+  text[digit] = text[digit] == '7' ? '8' : '7';
+  writeText(jsonl, text);
+  const std::string where = jsonl + ":2: row_checksum ";
+  const auto merged = runParksim("merge " + out + " --out " + dir + "/merged");
+  EXPECT_EQ(merged.exit_code, 2) << merged.out;
+  EXPECT_NE(merged.out.find(where), std::string::npos) << merged.out;
+  EXPECT_FALSE(fs::exists(dir + "/merged/results.jsonl"));
+  const auto reported = runParksim("report " + out);
+  EXPECT_EQ(reported.exit_code, 2) << reported.out;
+  EXPECT_NE(reported.out.find(where), std::string::npos) << reported.out;
+  const auto verified = runParksim("verify " + out);
+  EXPECT_EQ(verified.exit_code, 1) << verified.out;
+  EXPECT_NE(verified.out.find(where), std::string::npos) << verified.out;
+  EXPECT_NE(verified.out.find("2 rows intact, 1 problem"), std::string::npos) << verified.out;
+  const auto resumed = runParksim("sweep " + dir + "/spec.yaml --out " + out);
+  EXPECT_EQ(resumed.exit_code, 2) << resumed.out;
+  EXPECT_NE(resumed.out.find(where), std::string::npos) << resumed.out;
+}
+
+TEST(SweepCli, MissingNeedsASlurmSweep) {
+  const std::string dir = scratchDir();
+  writeText(dir + "/spec.yaml", studySpec("seeds: [1, 2]\n"));
+  const auto plain = runParksim("sweep " + dir + "/spec.yaml --out " + dir + "/out --missing");
+  EXPECT_EQ(plain.exit_code, 2) << plain.out;
+  EXPECT_NE(plain.out.find("--missing works on a Slurm sweep: add --slurm"), std::string::npos);
+  const auto none =
+      runParksim("sweep " + dir + "/spec.yaml --out " + dir + "/out --slurm --missing");
+  EXPECT_EQ(none.exit_code, 2) << none.out;
+  EXPECT_NE(none.out.find("/out/sweep.json: no Slurm sweep here"), std::string::npos) << none.out;
+}
+
 }  // namespace
 }  // namespace parksim

@@ -16,6 +16,7 @@
 #include "parksim/core/Error.h"
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/sweep/Merge.h"
+#include "parksim/sweep/RowSeal.h"
 #include "parksim/sweep/Shard.h"
 #include "parksim/sweep/SweepManifest.h"
 #include "parksim/sweep/SweepSpecReader.h"
@@ -168,19 +169,18 @@ TEST_F(SweepRunnerTest, ThreeShardsMergedEqualTheWholeSweep) {
   const MergeResult merged = mergeResults(mergeSources(dir));
   EXPECT_TRUE(merged.duplicated.empty());
   EXPECT_TRUE(merged.conflicting.empty());
-  EXPECT_EQ(content(merged.rows), tableContent(*reference_dir_));
-  EXPECT_TRUE(
-      std::is_sorted(merged.rows.begin(), merged.rows.end(), [](const Json& a, const Json& b) {
-        return a["episode_id"].get<std::string>() < b["episode_id"].get<std::string>();
-      }));
+  EXPECT_TRUE(merged.mixes.empty());
+  EXPECT_EQ(content(mergedRows(merged)), tableContent(*reference_dir_));
+  EXPECT_TRUE(std::is_sorted(merged.rows.begin(), merged.rows.end(),
+                             [](const MergedRow& a, const MergedRow& b) { return a.id < b.id; }));
 
   // Idempotent: merging the merged table with its sources again changes nothing and reports
   // every episode as duplicated, none as conflicting.
-  writeResultsTable(dir, merged.rows);
+  writeMergedTable(dir, merged);
   std::vector<std::string> again = shard_dirs;
   again.push_back(dir);
   const MergeResult twice = mergeResults(again);
-  EXPECT_EQ(content(twice.rows), content(merged.rows));
+  EXPECT_EQ(content(mergedRows(twice)), content(mergedRows(merged)));
   EXPECT_EQ(twice.duplicated.size(), merged.rows.size());
   EXPECT_TRUE(twice.conflicting.empty());
 }
@@ -263,10 +263,14 @@ TEST(ResultsTableFile, RejectsATableWithOtherColumns) {
 // sweep, merge and report, exit 3 (hostile pass); it is refused naming the line and the key.
 TEST(ResultsTableFile, RefusesRowsWithKeysOfTheWrongType) {
   const std::string dir = scratchDir();
-  testing::writeText(dir + "/results.jsonl",
-                     "{\"episode_id\": \"a\", \"met_tolerance\": true}\n"
-                     "{\"episode_id\": \"b\", \"met_tolerance\": \"yes\"}\n"
-                     "{\"episode_id\": \"c\", \"met_tolerance\": false}\n");
+  // Sealed, so that the seal is not what is wrong with them.
+  std::string text;
+  for (const char* r : {R"({"episode_id": "a", "met_tolerance": true})",
+                        R"({"episode_id": "b", "met_tolerance": "yes"})",
+                        R"({"episode_id": "c", "met_tolerance": false})"}) {
+    text += sealRow(Json::parse(r)).line + "\n";
+  }
+  testing::writeText(dir + "/results.jsonl", text);
   try {
     readResultsJsonl(dir + "/results.jsonl");
     ADD_FAILURE() << "accepted";

@@ -1,0 +1,137 @@
+#include "parksim/sweep/TableVerify.h"
+
+#include <filesystem>
+#include <map>
+
+#include "parksim/core/Error.h"
+#include "parksim/sweep/Merge.h"
+#include "parksim/sweep/ResultsFile.h"
+#include "parksim/sweep/SweepManifest.h"
+
+namespace parksim {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Checks one directory's results.jsonl and results.csv into `v`.
+void verifyTable(const std::string& dir, bool check_manifest, std::size_t max_listed,
+                 TableVerification& v) {
+  const std::string jsonl = dir + "/results.jsonl";
+  const std::string csv_path = dir + "/results.csv";
+  v.tables.push_back(jsonl);
+  std::size_t listed = 0;
+  const auto problem = [&](const std::string& text) {
+    if (listed < max_listed) {
+      v.problems.push_back(text);
+      ++listed;
+    } else {
+      ++v.unlisted;
+    }
+  };
+  const auto at = [](const std::string& file, std::size_t line) {
+    return file + ":" + std::to_string(line) + ": ";
+  };
+
+  std::error_code ec;
+  const bool csv_exists = fs::exists(csv_path, ec);
+  CsvFollower csv(csv_path);
+  enum class Csv { kFollowing, kEnded, kIgnored } state = Csv::kFollowing;
+  std::size_t csv_behind = 0;
+  if (!csv_exists) {
+    problem(csv_path + ": missing (a sweep opening this table rebuilds it from results.jsonl)");
+    state = Csv::kIgnored;
+  } else {
+    const CsvFollower::Match m = csv.next(csvHeader());
+    if (m != CsvFollower::Match::kSame) {
+      problem(at(csv_path, 1) + "header is not this parksim's columns (another version's table?)");
+      state = Csv::kIgnored;
+    }
+  }
+
+  std::map<std::string, std::size_t> first_line;
+  TableOrigins origins;
+  const TableScan scan = scanResultsJsonl(
+      jsonl,
+      [&](const TableRow& r) {
+        const std::string id = r.row["episode_id"].get<std::string>();
+        const auto [it, inserted] = first_line.emplace(id, r.line);
+        if (!inserted) {
+          problem(at(jsonl, r.line) + "episode " + id + " again (first at line " +
+                  std::to_string(it->second) + ")");
+        }
+        origins.add(r.row, jsonl, r.line);
+        ++v.rows;
+        if (state == Csv::kEnded) ++csv_behind;
+        if (state != Csv::kFollowing) return;
+        switch (csv.next(csvRow(r.row))) {
+          case CsvFollower::Match::kSame: break;
+          case CsvFollower::Match::kEnded:
+            state = Csv::kEnded;
+            csv_behind = 1;
+            break;
+          case CsvFollower::Match::kDiffers:
+            problem(at(csv_path, csv.line()) + "differs from the row of " + jsonl + ":" +
+                    std::to_string(r.line) + " (episode " + id +
+                    "): results.csv changed after parksim wrote it");
+            csv.skipLine();  // rows are one line each: go on with the next
+            break;
+        }
+      },
+      [&](std::size_t line, const std::string& what) {
+        problem(at(jsonl, line) + what);
+        if (state == Csv::kFollowing) csv.skipLine();
+      });
+
+  if (scan.torn_tail) {
+    v.notes.push_back(jsonl +
+                      ": ends in a torn row (a sweep stopped while writing it); the next "
+                      "sweep into this directory cuts it off and runs that episode again");
+  }
+  if (state == Csv::kEnded) {
+    if (csv_behind == 1) {
+      v.notes.push_back(csv_path +
+                        ": lacks the last row of results.jsonl (a sweep stopped "
+                        "between the two files); the next sweep rebuilds it");
+    } else {
+      problem(at(csv_path, csv.line()) + "ends here, " + std::to_string(csv_behind) +
+              " rows of results.jsonl short");
+    }
+  } else if (state == Csv::kFollowing && csv.hasMore()) {
+    problem(at(csv_path, csv.line()) + "rows beyond those of results.jsonl");
+  }
+  for (const std::string& mix : origins.mixes()) problem(mix);
+
+  SweepManifest manifest;
+  if (check_manifest && readSweepManifest(dir, manifest)) {
+    std::size_t missing = 0;
+    for (const std::string& id : manifest.episode_ids) missing += first_line.count(id) == 0;
+    if (missing > 0) {
+      v.notes.push_back(jsonl + ": " + std::to_string(missing) + " of the sweep's " +
+                        std::to_string(manifest.episode_ids.size()) +
+                        " episodes are not in the table (yet)");
+    }
+  }
+}
+
+}  // namespace
+
+TableVerification verifyResults(const std::string& dir, std::size_t max_listed) {
+  TableVerification v;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw Error(dir + ": not a directory");
+  const std::vector<std::string> sources = mergeSources(dir);
+  const bool sharded = !(sources.size() == 1 && sources.front() == dir);
+  if (sharded && fs::exists(dir + "/results.jsonl", ec)) verifyTable(dir, true, max_listed, v);
+  for (const std::string& source : sources) {
+    if (fs::exists(source + "/results.jsonl", ec)) {
+      verifyTable(source, !sharded, max_listed, v);
+    }
+  }
+  if (v.tables.empty()) {
+    throw Error(dir + ": no results table (results.jsonl) here" +
+                (sharded ? std::string(" or in its shards/") : std::string()));
+  }
+  return v;
+}
+
+}  // namespace parksim

@@ -1,0 +1,31 @@
+#pragma once
+// `parksim verify DIR`: checks a sweep's results tables without changing them, and lists every
+// problem (not just the first, as the readers do): rows whose seal does not match their content,
+// lines that are not rows, lines of results.csv that are not the rendering of their
+// results.jsonl row, an episode twice in one table, rows of other world contents or builds.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace parksim {
+
+struct TableVerification {
+  std::vector<std::string> tables;  ///< the results.jsonl files checked
+  std::size_t rows = 0;             ///< rows that passed every check
+  /// One line each, "<file>:<line>: <what>" (or "<file>: <what>"), in file order.
+  std::vector<std::string> problems;
+  /// Problems beyond those listed (per table, after `max_listed`).
+  std::size_t unlisted = 0;
+  /// What is not a problem but worth knowing: a torn last row or a results.csv one row behind
+  /// (a killed sweep; the next sweep repairs both), episodes of sweep.json not in the table.
+  std::vector<std::string> notes;
+  bool ok() const { return problems.empty() && unlisted == 0; }
+};
+
+/// Checks DIR's results table and, for a Slurm sweep, the table of every DIR/shards/*. At most
+/// `max_listed` problems are listed per table (the rest counted in `unlisted`). Throws Error
+/// when DIR holds no results table at all.
+TableVerification verifyResults(const std::string& dir, std::size_t max_listed = 20);
+
+}  // namespace parksim
