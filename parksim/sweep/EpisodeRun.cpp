@@ -45,7 +45,9 @@ void addPlanColumns(const EpisodeOutcome& out, nlohmann::ordered_json& row) {
   row["plan_goal_tree_size"] = plan.stats.goal_tree_size;
   row["plan_collision_queries"] = plan.stats.collision_queries;
   if (plan.solved()) {
-    row["plan_cost_m"] = plan.cost;
+    // A path cost, m; a planner that minimises duration (time-a-star) has its cost in
+    // plan_duration_s, and this column stays empty rather than hold seconds.
+    if (plan.objective == PlanObjective::kPathCost) row["plan_cost_m"] = plan.cost;
     row["plan_path_length_m"] = plan.trajectory.pathLength(scenario.robot);
     row["plan_duration_s"] = plan.trajectory.duration();
     row["plan_cusps"] = plan.trajectory.cusps(scenario.robot);
