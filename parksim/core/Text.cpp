@@ -6,7 +6,10 @@ namespace parksim {
 
 namespace {
 
-// Length of the valid UTF-8 sequence starting at text[i] and its code point, or 0.
+bool isControl(std::uint32_t code) { return code < 0x20 || (code >= 0x7F && code <= 0x9F); }
+
+}  // namespace
+
 std::size_t utf8Sequence(std::string_view text, std::size_t i, std::uint32_t& code) {
   const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
   const unsigned char b0 = byte(i);
@@ -39,10 +42,6 @@ std::size_t utf8Sequence(std::string_view text, std::size_t i, std::uint32_t& co
   if (code < min || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return 0;
   return n;
 }
-
-bool isControl(std::uint32_t code) { return code < 0x20 || (code >= 0x7F && code <= 0x9F); }
-
-}  // namespace
 
 bool isValidUtf8(std::string_view text) {
   for (std::size_t i = 0; i < text.size();) {

@@ -3,10 +3,16 @@
 // that are not UTF-8 are escaped, so a world file can neither drive the terminal (escape
 // sequences) nor make a JSON writer throw.
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
 namespace parksim {
+
+/// Length of the valid UTF-8 sequence starting at text[i] and its code point in `code`, or 0
+/// when none starts there (overlong forms, surrogates and code points past U+10FFFF are not).
+std::size_t utf8Sequence(std::string_view text, std::size_t i, std::uint32_t& code);
 
 /// True when `text` is well-formed UTF-8 (no overlong forms, surrogates or code points past
 /// U+10FFFF).

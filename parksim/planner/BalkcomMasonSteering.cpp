@@ -30,24 +30,10 @@ SteerResult BalkcomMasonSteering::steer(const Pose2& from, const WheelSpeeds& fr
   const double dt = def_.period_s;
   const TimingLimits limits{def_.speed_fraction * robot_.max_wheel_speed_radps,
                             robot_.max_wheel_accel_radps2, dt};
-  const double step = limits.max_wheel_accel_radps2 * dt;
   SteerResult result;
-  Trajectory& traj = result.trajectory;
-  Pose2 pose = from;
-  // Brake to rest first (the last braking row stands still): the path starts from rest.
-  WheelSpeeds w = from_wheels;
-  while (!(w == WheelSpeeds{})) {
-    w.left_radps -= std::clamp(w.left_radps, -step, step);
-    w.right_radps -= std::clamp(w.right_radps, -step, step);
-    traj.points.push_back({static_cast<double>(traj.points.size()) * dt, pose, w});
-    pose = integrateExact(pose, toTwist(w, robot_), dt);
-  }
-  Trajectory path = timePieces(pose, pieces(pose, to), robot_, limits);
-  const double t0 = static_cast<double>(traj.points.size()) * dt;
-  for (TrajectoryPoint p : path.points) {
-    p.t_s += t0;
-    traj.points.push_back(p);
-  }
+  // The path starts from rest.
+  result.trajectory = brakeThenTimePieces(
+      from, from_wheels, robot_, limits, [&](const Pose2& at_rest) { return pieces(at_rest, to); });
   finishAtTarget(result, to, mode, def_.horizon_s, dt);
   return result;
 }

@@ -314,4 +314,28 @@ double durationLowerBound(const std::vector<PathPiece>& pieces, const TimingLimi
   return bound;
 }
 
+Trajectory brakeThenTimePieces(
+    const Pose2& from, const WheelSpeeds& from_wheels, const RobotDef& robot,
+    const TimingLimits& limits,
+    const std::function<std::vector<PathPiece>(const Pose2& at_rest)>& pieces_from) {
+  const double dt = limits.period_s;
+  const double step = limits.max_wheel_accel_radps2 * dt;
+  Trajectory traj;
+  Pose2 pose = from;
+  WheelSpeeds w = from_wheels;
+  while (!(w == WheelSpeeds{})) {
+    w.left_radps -= std::clamp(w.left_radps, -step, step);
+    w.right_radps -= std::clamp(w.right_radps, -step, step);
+    traj.points.push_back({static_cast<double>(traj.points.size()) * dt, pose, w});
+    pose = integrateExact(pose, toTwist(w, robot), dt);
+  }
+  const Trajectory path = timePieces(pose, pieces_from(pose), robot, limits);
+  const double t0 = static_cast<double>(traj.points.size()) * dt;
+  for (TrajectoryPoint p : path.points) {
+    p.t_s += t0;
+    traj.points.push_back(p);
+  }
+  return traj;
+}
+
 }  // namespace parksim

@@ -13,6 +13,7 @@
 // junction (a cusp: half a step each way; the start and the end: one step from rest). Junction
 // speeds start at that limit and are lowered where a piece is too short to go between them.
 
+#include <functional>
 #include <vector>
 
 #include "parksim/core/DiffDrive.h"
@@ -62,6 +63,14 @@ std::vector<PathPiece> pathPieces(const Trajectory& traj);
 /// (steps of at most max_wheel_accel * period between periods, from and to rest) hold.
 Trajectory timePieces(const Pose2& start, const std::vector<PathPiece>& pieces,
                       const RobotDef& robot, const TimingLimits& limits);
+
+/// What a steering function that plans whole paths from rest drives: from `from` it brakes
+/// `from_wheels` to rest at the acceleration limit (the last braking row stands still), then
+/// follows `pieces_from(pose at rest)` timed by timePieces, the whole on one clock from t = 0.
+Trajectory brakeThenTimePieces(
+    const Pose2& from, const WheelSpeeds& from_wheels, const RobotDef& robot,
+    const TimingLimits& limits,
+    const std::function<std::vector<PathPiece>(const Pose2& at_rest)>& pieces_from);
 
 /// The duration of timePieces(start, pieces, ...), s, without building its rows: the number of
 /// periods the profile takes times the period. O(pieces) per lowering pass.

@@ -1,5 +1,7 @@
 #include "parksim/results/XmlText.h"
 
+#include "parksim/core/Text.h"
+
 #include <cstdint>
 
 namespace parksim {
@@ -7,35 +9,6 @@ namespace parksim {
 namespace {
 
 constexpr char kHex[] = "0123456789abcdef";
-
-// Length of the valid UTF-8 sequence at text[i] and its code point, or 0 when it is not one
-// (overlong forms, surrogates and code points past U+10FFFF are not).
-std::size_t utf8Sequence(std::string_view text, std::size_t i, std::uint32_t& code) {
-  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
-  const unsigned char b0 = byte(i);
-  std::size_t n = 0;
-  std::uint32_t min = 0;
-  if (b0 < 0x80) {
-    code = b0;
-    return 1;
-  }
-  if ((b0 & 0xE0) == 0xC0) {
-    n = 2, code = b0 & 0x1Fu, min = 0x80;
-  } else if ((b0 & 0xF0) == 0xE0) {
-    n = 3, code = b0 & 0x0Fu, min = 0x800;
-  } else if ((b0 & 0xF8) == 0xF0) {
-    n = 4, code = b0 & 0x07u, min = 0x10000;
-  } else {
-    return 0;
-  }
-  if (i + n > text.size()) return 0;
-  for (std::size_t k = 1; k < n; ++k) {
-    if ((byte(i + k) & 0xC0) != 0x80) return 0;
-    code = (code << 6) | (byte(i + k) & 0x3Fu);
-  }
-  if (code < min || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return 0;
-  return n;
-}
 
 void appendHex(std::string& out, const char* prefix, std::uint32_t value, int digits) {
   out += prefix;

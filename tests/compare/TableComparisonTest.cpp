@@ -273,9 +273,11 @@ TEST(TableComparison, SmallGroupsAndOneSidedGroupsAreSaidNotTested) {
   EXPECT_TRUE(t.groups[0].metrics[0].tested);
   EXPECT_FALSE(t.groups[0].metrics[1].tested);
   EXPECT_EQ(t.groups[0].metrics[1].note, "3 values, fewer than 5");
-  EXPECT_EQ(t.only_baseline, (std::vector<std::string>{"tight_parallel / hybrid-a-star / lab"}));
-  EXPECT_EQ(t.only_candidate, (std::vector<std::string>{"corridor / hybrid-a-star / lab",
-                                                        "parallel / hybrid-a-star / lab"}));
+  // Groups are named world / planner (+smooth when smoothed) / realism.
+  EXPECT_EQ(t.only_baseline,
+            (std::vector<std::string>{"tight_parallel / time-a-star+smooth / lab"}));
+  EXPECT_EQ(t.only_candidate, (std::vector<std::string>{"corridor / time-a-star+smooth / lab",
+                                                        "parallel / time-a-star+smooth / lab"}));
 }
 
 TEST(TableComparison, BadTablesAreRefused) {

@@ -9,11 +9,14 @@ import os
 import pathlib
 import shutil
 import subprocess
+import sys
 
 import pytest
 
 SOURCE_DIR = pathlib.Path(os.environ.get("PARKSIM_SOURCE_DIR",
                                          pathlib.Path(__file__).resolve().parents[2]))
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "support"))
+from sealed_rows import write_sealed  # noqa: E402  (tests/support/sealed_rows.py)
 
 
 def parksim(*args, ok=(0,)):
@@ -52,7 +55,7 @@ def rows(path):
 
 
 def write_rows(path, table):
-    path.write_text("".join(json.dumps(r) + "\n" for r in table), encoding="utf-8")
+    write_sealed(path, table)
 
 
 def test_the_same_spec_twice_is_paired_and_passes(sweeps):

@@ -11,6 +11,7 @@ import pathlib
 import re
 import shutil
 import subprocess
+import sys
 
 import pytest
 
@@ -18,6 +19,8 @@ yaml = pytest.importorskip("yaml")
 
 SOURCE_DIR = pathlib.Path(os.environ.get("PARKSIM_SOURCE_DIR",
                                          pathlib.Path(__file__).resolve().parents[2]))
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "support"))
+from sealed_rows import write_sealed  # noqa: E402  (tests/support/sealed_rows.py)
 CI = SOURCE_DIR / "examples" / "ci"
 SCRIPT = CI / "parksim-ci.sh"
 
@@ -130,7 +133,7 @@ def test_check_fails_with_exit_4_when_the_code_got_worse(job):
     for row in rows:
         row["max_pos_err_m"] *= 2.0 / 3.0
     better = tmp / "better.jsonl"
-    better.write_text("".join(json.dumps(r) + "\n" for r in rows), encoding="utf-8")
+    write_sealed(better, rows)
     p = run_script("check", dict(env, BASELINE=str(better)), tmp)
     assert p.returncode == 4, p.stdout + p.stderr
     md = (tmp / "job" / "compare.md").read_text(encoding="utf-8")
