@@ -38,11 +38,12 @@ done
 # Each source is compiled once into build-fuzz/obj/ (the readers share the core library's
 # sources), on all cores, and again only when it or a parksim header changed since.
 # The sweep-spec reader takes its name lists (planners, steerings, timings) from
-# parksim/planner/PlanScenario.cpp, whose other functions need the whole planner (OMPL, Bullet).
+# parksim/planner/PlanScenario.cpp, whose other functions need the whole planner (OMPL, Bullet),
+# and its record format's names from parksim/results/ExecutedFile.cpp (the record writers).
 # The fuzzer's coverage tables keep every instrumented function alive, so that file is compiled
 # without them (still with ASan and UBSan, as .nocov.o) and --gc-sections drops what the spec
 # reader does not call.
-nocov="parksim/planner/PlanScenario.cpp"
+nocov="parksim/planner/PlanScenario.cpp parksim/results/ExecutedFile.cpp"
 object_of() {  # the object of SOURCE
   case " $nocov " in *" $1 "*) echo "$out/obj/${1%.cpp}.nocov.o" ;; *) echo "$out/obj/${1%.cpp}.o" ;; esac
 }
@@ -82,6 +83,7 @@ sources[world]="tests/fuzz/WorldReaderFuzz.cpp ${scenario[*]} ${realism[*]} ${co
 sources[plan]="tests/fuzz/PlanReaderFuzz.cpp parksim/results/TrajectoryFile.cpp ${core[*]}"
 sources[spec]="tests/fuzz/SweepSpecFuzz.cpp parksim/sweep/SweepSpecReader.cpp
   parksim/sweep/EpisodeSetup.cpp parksim/planner/PlannerKind.cpp parksim/planner/PlanScenario.cpp
+  parksim/results/ExecutedFile.cpp
   parksim/sim/ExecutionDef.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
 sources[jsonl]="tests/fuzz/ResultsJsonlFuzz.cpp ${tables[*]} ${core[*]}"
 sources[csv]="tests/fuzz/ResultsCsvFuzz.cpp ${tables[*]} ${core[*]}"
@@ -89,7 +91,7 @@ sources[manifest]="tests/fuzz/SweepManifestFuzz.cpp ${tables[*]} ${core[*]}"
 sources[dict]="tests/fuzz/WorldDictFuzz.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
 readers=(world plan spec jsonl csv manifest dict)
 libs_world=(-lyaml-cpp)
-libs_spec=(-lyaml-cpp)
+libs_spec=(-lyaml-cpp -lz)
 libs_dict=(-lyaml-cpp)
 
 echo "== compiling the readers for fuzzing (build-fuzz/obj/)"

@@ -52,6 +52,12 @@ def paths(node, prefix=()):
             yield from paths(node[i], prefix + (i,))
 
 
+def weird():
+    """A fresh copy of one of WEIRD's values: the lists and dicts among them are mutated in
+    place by later steps, and a shared one could end up inside itself."""
+    return copy.deepcopy(rng.choice(WEIRD))
+
+
 def mutate(world):
     w = copy.deepcopy(world)
     for _ in range(rng.randint(1, 4)):
@@ -61,16 +67,16 @@ def mutate(world):
         container, key = rng.choice(spots)
         action = rng.random()
         if action < 0.55:
-            container[key] = rng.choice(WEIRD)
+            container[key] = weird()
         elif action < 0.7 and isinstance(container, dict):
             del container[key]
         elif action < 0.8 and isinstance(container, dict):
-            container[rng.choice(KEYS)] = rng.choice(WEIRD)
+            container[rng.choice(KEYS)] = weird()
         elif action < 0.9 and isinstance(container[key], (int, float)) and not isinstance(
                 container[key], bool):
             container[key] = container[key] * rng.choice([-1, 0, 1e-9, 1e9, 1e308])
         else:
-            container[key] = [container[key]] * rng.randint(0, 3)
+            container[key] = [copy.deepcopy(container[key]) for _ in range(rng.randint(0, 3))]
     return w
 
 
