@@ -9,30 +9,18 @@
 
 #include <CLI/CLI.hpp>
 
+#include "parksim/cli/Program.h"
 #include "parksim/pipeline/Verdict.h"
 
 namespace parksim::app {
 
-/// The process exit codes, the same for every command (README "Exit codes").
-enum ExitCode : int {
-  kExitOk = 0,
-  kExitUnsolved = 1,         ///< the planner found no plan (plan, run)
-  kExitBadInput = 2,         ///< bad input or usage; nothing was written
-  kExitInternal = 3,         ///< a bug or an environment failure (out of memory, no OpenGL, ...)
-  kExitToleranceNotMet = 4,  ///< run: goal or tracking tolerance missed, or a contact;
-                             ///< compare: a regression
-};
+using enum cli::ExitCode;  // kExitOk, ..., shared with parksim-bench (parksim/cli/Program.h)
 
 /// The exit code of a single-episode command (plan, run) for its verdict: met 0, plan_failed
 /// 1, contact, goal_missed and tolerance_missed 4.
 int exitCodeFor(EpisodeStatus status);
 
-/// -q, -v and --progress, which every command takes (registered by main()).
-struct OutputOptions {
-  bool quiet = false;     ///< -q: nothing on stdout; errors only on stderr
-  bool verbose = false;   ///< -v: also the build and the settings on stderr
-  bool progress = false;  ///< --progress: draw progress even when stderr is not a terminal
-};
+using cli::OutputOptions;  // -q, -v and --progress, which every command takes
 
 using CommandRunner = std::function<int(const OutputOptions&)>;
 

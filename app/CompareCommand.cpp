@@ -37,11 +37,17 @@ int runCompare(CompareOptions o) {
   o.def.min_increase_m = o.min_increase_mm / 1e3;
   o.def.max_success_drop = o.max_success_drop_percent / 100.0;
   checkCompareDef(o.def);
-  const auto baseline = readComparedTable(o.baseline);
-  const auto candidate = readComparedTable(o.candidate);
-  const TableComparison t = compareTables(baseline, candidate, o.def);
-  const ComparisonSources sources{o.baseline, o.candidate, static_cast<int>(baseline.size()),
-                                  static_cast<int>(candidate.size())};
+  const ComparedTable baseline = readComparedTable(o.baseline);
+  const ComparedTable candidate = readComparedTable(o.candidate);
+  // As report does: rows of another world content or build are flagged, not silently pooled.
+  for (const ComparedTable* table : {&baseline, &candidate}) {
+    for (const std::string& mix : table->mixes) {
+      std::fprintf(stderr, "warning: %s\n", cli::printable(mix).c_str());
+    }
+  }
+  const TableComparison t = compareTables(baseline.rows, candidate.rows, o.def);
+  const ComparisonSources sources{o.baseline, o.candidate, static_cast<int>(baseline.rows.size()),
+                                  static_cast<int>(candidate.rows.size())};
   const std::string markdown = comparisonMarkdown(t, o.def, sources);
   if (!o.markdown.empty()) writeFileAtomically(o.markdown, markdown);
   if (!o.junit.empty()) writeJUnitFile(o.junit, comparisonJUnit(t, o.def));

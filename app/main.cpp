@@ -1,8 +1,7 @@
 // parksim: plan, simulate, render and benchmark parking manoeuvres of a two-wheel robot.
 
-#include <csignal>
 #include <cstdio>
-#include <exception>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,14 +10,11 @@
 
 #include "app/Command.h"
 #include "parksim/cli/TerminalText.h"
-#include "parksim/core/Error.h"
 #include "parksim/core/Provenance.h"
 
 int main(int argc, char** argv) {
   using namespace parksim::app;
-  // Past a file-size limit (ulimit -f) a write then fails with EFBIG and is reported like any
-  // other write error, instead of the process dying with a partial file.
-  std::signal(SIGXFSZ, SIG_IGN);
+  parksim::cli::startProgram();
   // Named, so that usage lines say "parksim", not the path the binary was started from.
   CLI::App app{"parksim: plan, simulate, render and benchmark parking manoeuvres", "parksim"};
   app.require_subcommand(1);
@@ -29,10 +25,7 @@ int main(int argc, char** argv) {
   auto add = [&](const char* name, const char* help, CommandRunner (*setup)(CLI::App&)) {
     CLI::App* sub = app.add_subcommand(name, help);
     sub->set_version_flag("--version", version);
-    sub->add_flag("-q,--quiet", output.quiet, "print nothing but errors");
-    sub->add_flag("-v,--verbose", output.verbose, "also print the build and the settings (stderr)");
-    sub->add_flag("--progress", output.progress,
-                  "show progress even when stderr is not a terminal (default: on a terminal)");
+    parksim::cli::addOutputFlags(*sub, output, "also print the build and the settings (stderr)");
     commands.emplace_back(sub, setup(*sub));
   };
   add("plan", "plan a parking manoeuvre and write trajectory.csv and plan.json", setupPlanCommand);
@@ -67,17 +60,9 @@ int main(int argc, char** argv) {
       return kExitBadInput;
     }
   }
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    // CLI11 prints help (success); usage errors exit 2 like any bad input, printed here so the
-    // option text the user gave is escaped.
-    if (e.get_exit_code() == 0) return app.exit(e);
-    std::fprintf(stderr, "parksim: error: %s\nRun with --help for more information.\n",
-                 parksim::cli::printable(e.what()).c_str());
-    return kExitBadInput;
-  }
-  try {
+  if (const std::optional<int> ended = parksim::cli::parseCommandLine(app, argc, argv, "parksim"))
+    return *ended;
+  return parksim::cli::runReportingErrors("parksim", [&]() -> int {
     for (auto& [sub, run] : commands) {
       if (!sub->parsed()) continue;
       if (output.verbose) {
@@ -93,16 +78,6 @@ int main(int argc, char** argv) {
       if (output.quiet && std::freopen("/dev/null", "w", stdout) == nullptr) return kExitInternal;
       return run(output);
     }
-  } catch (const parksim::EnvironmentError& e) {  // no OpenGL, no font: the machine, not the input
-    std::fprintf(stderr, "parksim: error: %s\n", parksim::cli::printable(e.what()).c_str());
-    return kExitInternal;
-  } catch (const parksim::Error& e) {
-    std::fprintf(stderr, "parksim: error: %s\n", parksim::cli::printable(e.what()).c_str());
     return kExitBadInput;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "parksim: internal error: %s\n",
-                 parksim::cli::printable(e.what()).c_str());
-    return kExitInternal;
-  }
-  return kExitBadInput;
+  });
 }

@@ -36,6 +36,7 @@
 #include "parksim/results/TrajectoryFile.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/Episode.h"
+#include "parksim/sim/ReferenceTrajectory.h"
 
 namespace parksim {
 namespace {
@@ -148,10 +149,11 @@ mjModel* loadMujoco(const Scenario& s, const MujocoDef& def) {
   return m;
 }
 
-// The plan's wheel speeds held per control period, the period chosen by the step's midpoint,
-// then zero until the robot rests (ExecutionDef's rule) or the stop time runs out: as parksim's
-// open loop.
-Run runMujoco(const mjModel* m, const Trajectory& plan) {
+// The plan's wheel speeds held per control period, the period chosen by the step's midpoint
+// (ReferenceTrajectory, as parksim's open loop reads them), then zero until the robot rests
+// (ExecutionDef's rule) or the stop time runs out.
+Run runMujoco(const mjModel* m, const ReferenceTrajectory& reference) {
+  const Trajectory& plan = reference.plan();
   mjData* d = mj_makeData(m);
   const ExecutionDef rules;
   const double dt = m->opt.timestep;
@@ -160,15 +162,9 @@ Run runMujoco(const mjModel* m, const Trajectory& plan) {
   const long rest_steps = std::lround(std::ceil(rules.rest_hold_s / dt - 1e-9));
   long k = 0;
   long resting = 0;
-  std::size_t period = 0;
   const double start = cpuSeconds();
   for (;;) {
-    const double mid = t0 + (static_cast<double>(k) + 0.5) * dt;
-    WheelSpeeds wheels;
-    if (mid < t0 + duration) {
-      while (period + 1 < plan.points.size() && plan.points[period + 1].t_s <= mid) ++period;
-      wheels = plan.points[period].wheels;
-    }
+    const WheelSpeeds wheels = reference.wheelsAt(t0 + (static_cast<double>(k) + 0.5) * dt);
     d->ctrl[0] = wheels.left_radps;
     d->ctrl[1] = wheels.right_radps;
     mj_step(m, d);
@@ -241,14 +237,15 @@ int run(int argc, char** argv) {
   // One run of each first (caches, lazy set-up), then alternately.
   runParksim(scenario, plan, SimModelDef{});
   runParksim(before, plan, before_model);
-  runMujoco(model, plan);
+  const ReferenceTrajectory reference(plan, scenario.robot);
+  runMujoco(model, reference);
   std::vector<Run> parksim;
   std::vector<Run> parksim_before;
   std::vector<Run> mujoco;
   for (int i = 0; i < repetitions; ++i) {
     parksim.push_back(runParksim(scenario, plan, SimModelDef{}));
     parksim_before.push_back(runParksim(before, plan, before_model));
-    mujoco.push_back(runMujoco(model, plan));
+    mujoco.push_back(runMujoco(model, reference));
   }
   mj_deleteModel(model);
   const Summary p = summarize(parksim);

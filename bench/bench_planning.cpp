@@ -109,7 +109,7 @@ std::vector<PlanSetup> configurations(const Options& o, const Scenario& scenario
     s.planner.smooth = true;
     s.planner.max_iterations = o.budget_scale * defaultIterationBudget(kind, scenario.lot);
     s.planner.smoothing_attempts *= o.budget_scale;
-    if (kind == PlannerKind::kHybridAStar || kind == PlannerKind::kTimeAStar) {
+    if (!plannerUsesSteering(kind)) {
       out.push_back(s);
       continue;
     }

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <vector>
@@ -26,6 +27,7 @@
 #include "bench/planning/ParksimRuns.h"
 #include "parksim/cli/OutputDir.h"
 #include "parksim/cli/PlanOptions.h"
+#include "parksim/cli/Program.h"
 #include "parksim/cli/Progress.h"
 #include "parksim/cli/TerminalText.h"
 #include "parksim/cli/Validators.h"
@@ -114,12 +116,7 @@ std::string settingsText(const BenchOptions& o) {
          formatGeneral(o.segment_m) + " m, validity margin 0; exact path check at 0.2 mm, margin 0";
 }
 
-// -q, -v and --progress, as the parksim command line takes them.
-struct OutputOptions {
-  bool quiet = false;
-  bool verbose = false;
-  bool progress = false;
-};
+using cli::OutputOptions;
 
 // What one bench runs: the option lists parsed, the worlds read, every budget checked.
 struct BenchPlan {
@@ -306,10 +303,7 @@ int runBench(const BenchOptions& o, const OutputOptions& output) {
 }
 
 void addOptions(CLI::App& sub, BenchOptions* opt, OutputOptions& output) {
-  sub.add_flag("-q,--quiet", output.quiet, "print nothing but errors");
-  sub.add_flag("-v,--verbose", output.verbose, "also print the build (stderr)");
-  sub.add_flag("--progress", output.progress,
-               "show progress even when stderr is not a terminal (default: on a terminal)");
+  cli::addOutputFlags(sub, output, "also print the build (stderr)");
   sub.add_option("worlds", opt->worlds, "world files (YAML, see docs/world-format.md)")->required();
   sub.add_option("--seeds", opt->seeds, "runs per planner and world, with seeds 1..N")
       ->capture_default_str()
@@ -367,33 +361,21 @@ void addOptions(CLI::App& sub, BenchOptions* opt, OutputOptions& output) {
 
 int main(int argc, char** argv) {
   using namespace parksim;
+  cli::startProgram();
   CLI::App app{"parksim-bench: benchmark parksim's planners, optionally against OMPL",
                "parksim-bench"};
   const std::string version = versionLine(buildProvenance());
   app.set_version_flag("--version", version, "print parksim's version and build, then exit");
   bench::BenchOptions options;
-  bench::OutputOptions output;
+  cli::OutputOptions output;
   bench::addOptions(app, &options, output);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);
-    std::fprintf(stderr, "parksim-bench: error: %s\nRun with --help for more information.\n",
-                 cli::printable(e.what()).c_str());
-    return 2;
+  if (const std::optional<int> ended = cli::parseCommandLine(app, argc, argv, "parksim-bench")) {
+    return *ended;
   }
-  try {
+  return cli::runReportingErrors("parksim-bench", [&]() -> int {
     if (output.verbose) std::fprintf(stderr, "%s\n", version.c_str());
-    if (output.quiet && std::freopen("/dev/null", "w", stdout) == nullptr) return 3;
+    if (output.quiet && std::freopen("/dev/null", "w", stdout) == nullptr)
+      return cli::kExitInternal;
     return bench::runBench(options, output);
-  } catch (const EnvironmentError& e) {
-    std::fprintf(stderr, "parksim-bench: error: %s\n", cli::printable(e.what()).c_str());
-    return 3;
-  } catch (const Error& e) {
-    std::fprintf(stderr, "parksim-bench: error: %s\n", cli::printable(e.what()).c_str());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "parksim-bench: internal error: %s\n", cli::printable(e.what()).c_str());
-    return 3;
-  }
+  });
 }

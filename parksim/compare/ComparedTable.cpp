@@ -3,12 +3,12 @@
 #include <filesystem>
 
 #include "parksim/core/Error.h"
-#include "parksim/sweep/ResultsTable.h"
+#include "parksim/sweep/ResultsFile.h"
 #include "parksim/sweep/SweepManifest.h"
 
 namespace parksim {
 
-std::vector<nlohmann::ordered_json> readComparedTable(const std::string& path) {
+ComparedTable readComparedTable(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
   std::string file = path;
@@ -21,9 +21,9 @@ std::vector<nlohmann::ordered_json> readComparedTable(const std::string& path) {
     throw Error(file + ": no such file (a sweep directory or its results.jsonl is needed)");
   }
   if (!fs::is_regular_file(file, ec)) throw Error(file + ": not a regular file");
-  std::vector<nlohmann::ordered_json> rows = readResultsJsonl(file);
-  if (rows.empty()) throw Error(file + ": no rows");
-  return rows;
+  VerifiedTable table = readVerifiedTable(file);
+  if (table.rows.empty()) throw Error(file + ": no rows");
+  return {std::move(table.rows), table.origins.mixes()};
 }
 
 }  // namespace parksim

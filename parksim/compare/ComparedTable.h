@@ -10,8 +10,16 @@
 
 namespace parksim {
 
-/// The rows of the table at `path` (readResultsJsonl). Throws Error when there is no table
-/// there, it is empty, or its manifest is of another parksim.
-std::vector<nlohmann::ordered_json> readComparedTable(const std::string& path);
+/// A table to compare, read and checked as `report` reads one (readVerifiedTable).
+struct ComparedTable {
+  std::vector<nlohmann::ordered_json> rows;  ///< every whole row, in file order
+  /// Rows of another world content or another build than the table's first (TableOrigins):
+  /// their comparison mixes two versions, so the command flags them.
+  std::vector<std::string> mixes;
+};
+
+/// The table at `path`. Throws Error "<file>:<line>: ..." at a changed or malformed row, and
+/// when there is no table there, it is empty, or its manifest is of another parksim.
+ComparedTable readComparedTable(const std::string& path);
 
 }  // namespace parksim

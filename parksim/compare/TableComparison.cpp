@@ -22,7 +22,7 @@ namespace parksim {
 namespace {
 
 using Json = nlohmann::ordered_json;
-using GroupKey = std::tuple<std::string, std::string, std::string>;
+using GroupKey = RowGroupKey;
 /// A group's rows by episode id.
 using GroupRows = std::map<std::string, const Json*>;
 
@@ -69,14 +69,9 @@ std::map<GroupKey, GroupRows> groupRows(const std::vector<Json>& rows, const cha
       throw Error(std::string(which) + ": episode " + id +
                   " appears twice (merge the table first: parksim merge)");
     }
-    groups[{textOf(row, "world", "?"), plannerLabel(row), textOf(row, "realism", "world")}].emplace(
-        id, &row);
+    groups[rowGroupKey(row)].emplace(id, &row);
   }
   return groups;
-}
-
-std::string groupName(const GroupKey& k) {
-  return std::get<0>(k) + " / " + std::get<1>(k) + " / " + std::get<2>(k);
 }
 
 // The generator of one test: its own stream, so groups and metrics do not shift each other's.
@@ -211,7 +206,7 @@ void judge(TableComparison& t, const CompareDef& def) {
 
 }  // namespace
 
-std::string GroupComparison::name() const { return world + " / " + planner + " / " + realism; }
+std::string GroupComparison::name() const { return rowGroupName({world, planner, realism}); }
 
 void checkCompareDef(const CompareDef& def) {
   const auto bad = [](const std::string& what) { throw Error(what); };
@@ -236,10 +231,10 @@ TableComparison compareTables(const std::vector<Json>& baseline, const std::vect
   const std::map<GroupKey, GroupRows> c = groupRows(candidate, "candidate");
   TableComparison t;
   for (const auto& [key, rows] : b) {
-    if (c.count(key) == 0) t.only_baseline.push_back(groupName(key));
+    if (c.count(key) == 0) t.only_baseline.push_back(rowGroupName(key));
   }
   for (const auto& [key, rows] : c) {
-    if (b.count(key) == 0) t.only_candidate.push_back(groupName(key));
+    if (b.count(key) == 0) t.only_candidate.push_back(rowGroupName(key));
   }
   std::vector<GroupKey> keys;
   for (const auto& [key, rows] : b) {

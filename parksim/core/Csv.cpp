@@ -93,8 +93,7 @@ CsvTable::CsvTable(std::string_view text, std::string source) : source_(std::mov
   rows_ = std::move(records);
 }
 
-std::optional<std::size_t> CsvTable::findColumn(
-    std::initializer_list<std::string_view> names) const {
+std::optional<std::size_t> CsvTable::findColumn(std::span<const std::string_view> names) const {
   for (const std::string_view name : names) {
     for (std::size_t i = 0; i < header_.size(); ++i) {
       if (header_[i] == name) return i;

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,7 +33,10 @@ class CsvTable {
   const std::vector<Row>& rows() const { return rows_; }
 
   /// The index of the first of `names` that is a column, or nothing.
-  std::optional<std::size_t> findColumn(std::initializer_list<std::string_view> names) const;
+  std::optional<std::size_t> findColumn(std::span<const std::string_view> names) const;
+  std::optional<std::size_t> findColumn(std::initializer_list<std::string_view> names) const {
+    return findColumn(std::span<const std::string_view>(names.begin(), names.size()));
+  }
   /// The index of column `name`. Throws Error ("<file>:1: header lacks column 'x'").
   std::size_t column(std::string_view name) const;
 

@@ -168,4 +168,10 @@ std::optional<std::string> goalPlacementProblem(const Scenario& s, double margin
   return problem;
 }
 
+double goalHeadingError(const GoalRegion& goal, double theta) {
+  double err = std::abs(angleDiff(theta, goal.pose.theta));
+  if (goal.either_heading) err = std::min(err, std::abs(angleDiff(theta, goal.pose.theta + kPi)));
+  return err;
+}
+
 }  // namespace parksim

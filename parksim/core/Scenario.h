@@ -97,6 +97,11 @@ struct GoalRegion {
   bool either_heading = false;
 };
 
+/// Heading error of `theta` from the goal's heading, rad in [0, pi]: against the nearer of the
+/// two headings when either is accepted. The episode's verdict and the RL task's reward and
+/// success both use it.
+double goalHeadingError(const GoalRegion& goal, double theta);
+
 /// Physical parameters for the dynamics world. Defaults are documented here and may be
 /// overridden under `physics:` in the world file.
 struct PhysicsDef {

@@ -51,10 +51,14 @@ TrackingSeries trackingSeries(const std::vector<ExecutedRow>& rows) {
 TrackingSeries readTrackingRecord(const std::string& path) {
   if (path.size() < 4 || path.compare(path.size() - 4, 4, ".npz") != 0) {
     // The plan reader's limits (docs/limits.md), on the columns the plot reads.
-    checkTimeSeriesCsv(path, {{"t", "t_s", "time"},
-                              {"pos_err", "pos_err_m", "position_error", "position_error_m"},
-                              {"heading_err", "heading_err_rad", "heading_error",
-                               "heading_error_rad", "heading_err_deg", "heading_error_deg"}});
+    std::vector<std::string_view> heading(std::begin(kTrackingHeadingRadNames),
+                                          std::end(kTrackingHeadingRadNames));
+    heading.insert(heading.end(), std::begin(kTrackingHeadingDegNames),
+                   std::end(kTrackingHeadingDegNames));
+    checkTimeSeriesCsv(path,
+                       {{std::begin(kTrackingTimeNames), std::end(kTrackingTimeNames)},
+                        {std::begin(kTrackingPositionNames), std::end(kTrackingPositionNames)},
+                        heading});
     return readTrackingCsv(path);
   }
   const std::vector<DataColumn> columns = readNpzFile(path);

@@ -26,7 +26,7 @@ FilesPolicy filesPolicyFromString(const std::string& name) {
   for (FilesPolicy p : {FilesPolicy::kNone, FilesPolicy::kFailures, FilesPolicy::kAll}) {
     if (name == toString(p)) return p;
   }
-  throw Error("unknown files policy '" + name + "' (expected one of none, failures, all)");
+  throw Error("must be none, failures or all, got '" + name + "'");
 }
 
 }  // namespace parksim

@@ -212,8 +212,6 @@ PngEncoder::~PngEncoder() {
   if (impl_->deflating) deflateEnd(&impl_->zs);
 }
 
-PngCompression PngEncoder::compression() const { return impl_->compression; }
-
 const std::vector<unsigned char>& PngEncoder::encode(const RgbImage& image) {
   checkImage(image);
   Impl& m = *impl_;

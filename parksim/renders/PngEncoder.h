@@ -48,8 +48,6 @@ class PngEncoder {
   PngEncoder(const PngEncoder&) = delete;
   PngEncoder& operator=(const PngEncoder&) = delete;
 
-  PngCompression compression() const;
-
   /// The PNG file bytes of `image`, valid until the next call. Throws Error when the image has
   /// no pixels or a wrong buffer size.
   const std::vector<unsigned char>& encode(const RgbImage& image);

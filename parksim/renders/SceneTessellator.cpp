@@ -251,7 +251,9 @@ void SceneTessellator::addEdgeOutlines(const Scene& scene, const Eigen::Matrix4d
   // boxes' top faces, with a fading one-pixel outline in their own colour (the lines'
   // anti-aliasing). The outline sits on the face, so the depth test keeps it under anything
   // higher.
-  edge_ = ScenePolyline{{}, Rgba8{}, 1.0f, true};
+  // edge_ keeps its points' buffer from frame to frame: only its contents change.
+  edge_.width_px = 1.0f;
+  edge_.closed = true;
   for (const ScenePolygon& p : scene.polygons) {
     if (p.color.a != 255) continue;
     edge_.color = p.color;
@@ -261,7 +263,11 @@ void SceneTessellator::addEdgeOutlines(const Scene& scene, const Eigen::Matrix4d
   }
   for (const SceneBox& b : scene.boxes) {
     if (b.color.a != 255) continue;
-    edge_ = boxOutline(b.footprint, b.z_min_m + b.height_m, b.color, 1.0f);
+    edge_.color = b.color;
+    edge_.points.clear();
+    for (const Eigen::Vector2d& c : b.footprint.corners()) {
+      edge_.points.emplace_back(c.x(), c.y(), b.z_min_m + b.height_m);
+    }
     addPolyline(edge_, vp, true);
   }
   for (const ScenePrism& p : scene.prisms) {

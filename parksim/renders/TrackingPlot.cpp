@@ -183,11 +183,10 @@ Scene buildTrackingPlot(const TrackingSeries& series, const std::string& title, 
 
 TrackingSeries readTrackingCsv(const std::string& path) {
   const CsvTable csv = readCsvFile(path);
-  const auto t_col = csv.findColumn({"t", "t_s", "time"});
-  const auto p_col = csv.findColumn({"pos_err", "pos_err_m", "position_error", "position_error_m"});
-  const auto h_rad =
-      csv.findColumn({"heading_err", "heading_err_rad", "heading_error", "heading_error_rad"});
-  const auto h_deg = csv.findColumn({"heading_err_deg", "heading_error_deg"});
+  const auto t_col = csv.findColumn(kTrackingTimeNames);
+  const auto p_col = csv.findColumn(kTrackingPositionNames);
+  const auto h_rad = csv.findColumn(kTrackingHeadingRadNames);
+  const auto h_deg = csv.findColumn(kTrackingHeadingDegNames);
   if (!t_col || !p_col || (!h_rad && !h_deg)) {
     std::string header;
     for (const std::string& name : csv.header()) header += (header.empty() ? "" : ",") + name;

@@ -4,6 +4,7 @@
 // labels. Built as a Scene in pixel units, so the same renderer draws it.
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "parksim/renders/Scene.h"
@@ -30,6 +31,15 @@ Scene buildTrackingPlot(const TrackingSeries& series, const std::string& title, 
 /// in `_deg` are read as degrees). Other columns are ignored. Throws Error naming the file and
 /// line on bad input.
 TrackingSeries readTrackingCsv(const std::string& path);
+
+/// The names readTrackingCsv accepts for each column it reads, for checks of the same file.
+inline constexpr std::string_view kTrackingTimeNames[] = {"t", "t_s", "time"};
+inline constexpr std::string_view kTrackingPositionNames[] = {"pos_err", "pos_err_m",
+                                                              "position_error", "position_error_m"};
+inline constexpr std::string_view kTrackingHeadingRadNames[] = {
+    "heading_err", "heading_err_rad", "heading_error", "heading_error_rad"};
+inline constexpr std::string_view kTrackingHeadingDegNames[] = {"heading_err_deg",
+                                                                "heading_error_deg"};
 
 /// A tick label with as many decimals as the step between ticks needs.
 std::string formatTick(double value, double step);

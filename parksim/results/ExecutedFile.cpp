@@ -119,7 +119,7 @@ const char* toString(RecordFormat format) { return format == RecordFormat::kNpz 
 RecordFormat recordFormatFromString(const std::string& name) {
   if (name == "csv") return RecordFormat::kCsv;
   if (name == "npz") return RecordFormat::kNpz;
-  throw Error("record format: must be csv or npz, got '" + name + "'");
+  throw Error("must be npz or csv, got '" + name + "'");
 }
 
 std::string executedFileName(RecordFormat format) {

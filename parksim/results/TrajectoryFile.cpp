@@ -228,11 +228,10 @@ Trajectory parseTrajectoryCsv(std::string_view text, const std::string& path) {
 
 void checkTimeSeriesCsv(const std::string& path,
                         const std::vector<std::vector<std::string_view>>& columns) {
-  std::size_t rows = 0;
   // An episode lasts its plan and a stop phase: a plan file's longest plan and one gap more.
   const double max_time_s = PlanFileLimits::kMaxTimeS + PlanFileLimits::kMaxGapS;
   scanSeries(readInputFile(path, kMaxSeriesFileBytes, "CSV file"), path, "CSV file", max_time_s,
-             columns, false, [&rows](const std::vector<double>&, int) { ++rows; });
+             columns, false, [](const std::vector<double>&, int) {});
 }
 
 Trajectory readTrajectoryCsv(const std::string& path) {

@@ -76,7 +76,7 @@ class DynamicDrive final : public TaskDrive {
       out.twist = robot.twist;
       return;
     }
-    const ExecutedRow row = episode_->sample().tracking;
+    const ExecutedRow& row = episode_->current();
     out.estimate = row.estimate;
     out.twist = {};
     if (elapsed_s > 0.0) {

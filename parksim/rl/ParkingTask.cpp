@@ -24,12 +24,6 @@ std::mt19937_64 episodeRng(const TaskSeed& s) {
   return std::mt19937_64(seq);
 }
 
-double goalHeadingError(const GoalRegion& goal, double theta) {
-  double err = std::abs(angleDiff(theta, goal.pose.theta));
-  if (goal.either_heading) err = std::min(err, std::abs(angleDiff(theta, goal.pose.theta + kPi)));
-  return err;
-}
-
 const ParkingTaskDef& validated(const ParkingTaskDef& def, const Scenario& scenario) {
   validateTaskDef(def);
   const double dt = scenario.physics.time_step_s;

@@ -1,31 +1,20 @@
 #include "parksim/scenario/World.h"
 
 #include <cstdint>
-#include <cstdio>
 
+#include "parksim/core/Fnv1a.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "parksim/scenario/WorldDocument.h"
 
 namespace parksim {
 namespace {
 
-// 64-bit FNV-1a, continued from `h` (the sweep's episode ids use the same hash).
-std::uint64_t fnv1a64(std::string_view text, std::uint64_t h = 0xcbf29ce484222325ULL) {
-  for (const char c : text) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 0x100000001b3ULL;
-  }
-  return h;
-}
-
 std::string contentHash(std::string_view text, const std::vector<ScenarioOverride>& overrides) {
   std::uint64_t h = fnv1a64(text);
   for (const ScenarioOverride& o : overrides) {
     h = fnv1a64("\n--set " + o.path + "=" + o.value, h);
   }
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
+  return hex16(h);
 }
 
 }  // namespace

@@ -26,12 +26,6 @@ long stepsFor(double duration_s, double dt_s) {
   return static_cast<long>(std::ceil(duration_s / dt_s - 1e-9));
 }
 
-double goalHeadingError(const GoalRegion& goal, double theta) {
-  double err = std::abs(angleDiff(theta, goal.pose.theta));
-  if (goal.either_heading) err = std::min(err, std::abs(angleDiff(theta, goal.pose.theta + kPi)));
-  return err;
-}
-
 const ExecutionDef& validated(const Scenario& scenario, const Trajectory& plan,
                               const ExecutionDef& def) {
   auto fail = [](const char* what) { throw Error(std::string("execution: ") + what); };
@@ -280,9 +274,11 @@ WheelSpeeds Episode::controllerCommand() const {
 
 bool Episode::finished() const { return impl_->finished; }
 
+const ExecutedRow& Episode::current() const { return impl_->current; }
+
 EpisodeSample Episode::sample() const {
   EpisodeSample s;
-  s.tracking = impl_->current;
+  s.tracking = current();
   s.obstacles = impl_->world.obstaclePoses();
   s.contacts = impl_->world.chassisContacts();
   s.stopping = impl_->world.steps() >= impl_->plan_steps;

@@ -74,6 +74,9 @@ class Episode {
 
   /// The current instant, with obstacle poses.
   EpisodeSample sample() const;
+  /// The current row alone (EpisodeSample::tracking), without the obstacle poses and contacts
+  /// sample() gathers: what a controller stepping the episode reads every action.
+  const ExecutedRow& current() const;
   /// Every recorded row so far (one per csv_stride_steps steps, plus the first and the last).
   const std::vector<ExecutedRow>& rows() const;
   /// Pose measurements the controller received so far, in arrival order.

@@ -27,20 +27,8 @@ std::string canonicalString(const EpisodeParams& p) {
   return s;
 }
 
-std::uint64_t fnv1a64(std::string_view text) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (const char c : text) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 0x100000001b3ULL;
-  }
-  return h;
-}
-
 std::string episodeId(const EpisodeParams& params) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx",
-                static_cast<unsigned long long>(fnv1a64(canonicalString(params))));
-  return buf;
+  return hex16(fnv1a64(canonicalString(params)));
 }
 
 void appendParamColumns(const EpisodeParams& p, nlohmann::ordered_json& row) {

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "parksim/core/Fnv1a.h"
 #include "parksim/pipeline/EpisodeRequest.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/sim/ExecutionDef.h"
@@ -63,9 +64,6 @@ struct EpisodeParams {
 /// "ids=2;world=...;planner=...;...": every parameter but world_file, keys in a fixed order,
 /// numbers in their shortest round-trip form, an automatic budget as "auto".
 std::string canonicalString(const EpisodeParams& params);
-
-/// 64-bit FNV-1a of `text`.
-std::uint64_t fnv1a64(std::string_view text);
 
 /// fnv1a64(canonicalString(params)) as 16 lower-case hex digits.
 std::string episodeId(const EpisodeParams& params);

@@ -116,16 +116,20 @@ std::string plannerLabel(const Json& row) {
   return s;
 }
 
+RowGroupKey rowGroupKey(const Json& row) {
+  return {str(row, "world", "?"), plannerLabel(row), str(row, "realism", "world")};
+}
+
+std::string rowGroupName(const RowGroupKey& key) {
+  return std::get<0>(key) + " / " + std::get<1>(key) + " / " + std::get<2>(key);
+}
+
 std::vector<ReportGroup> groupResults(const std::vector<Json>& rows) {
-  std::map<std::tuple<std::string, std::string, std::string>, ReportGroup> groups;
+  std::map<RowGroupKey, ReportGroup> groups;
   for (const Json& row : rows) {
-    const std::string world = str(row, "world", "?");
-    const std::string planner = plannerLabel(row);
-    const std::string realism = str(row, "realism", "world");
-    ReportGroup& g = groups[{world, planner, realism}];
-    g.world = world;
-    g.planner = planner;
-    g.realism = realism;
+    const RowGroupKey key = rowGroupKey(row);
+    ReportGroup& g = groups[key];
+    std::tie(g.world, g.planner, g.realism) = key;
     ++g.episodes;
     if (flag(row, "plan_solved")) ++g.solved;
     if (flag(row, "met_tolerance")) ++g.met;

@@ -3,6 +3,7 @@
 // configuration x realism preset.
 
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -28,6 +29,13 @@ struct ReportGroup {
 /// defaults ("rrt-star+smooth", "rrt/rotate-translate-rotate", "rrt open-loop", "rrt it=5000",
 /// "rrt timing=...").
 std::string plannerLabel(const nlohmann::ordered_json& row);
+
+/// The group of a row in report, compare and JUnit: (world, plannerLabel, realism); a row
+/// without a world reads "?", without a realism "world".
+using RowGroupKey = std::tuple<std::string, std::string, std::string>;
+RowGroupKey rowGroupKey(const nlohmann::ordered_json& row);
+/// "<world> / <planner label> / <realism>": how every front-end names a group.
+std::string rowGroupName(const RowGroupKey& key);
 
 /// Rows grouped by (world, planner label, realism), sorted by those.
 std::vector<ReportGroup> groupResults(const std::vector<nlohmann::ordered_json>& rows);

@@ -385,9 +385,8 @@ bool CsvFollower::fill() {
     pos_ = 0;
   }
   std::size_t end = buffer_.size();
-  std::uint64_t total = 0;
   buffer_.resize(end + kChunkBytes);
-  eof_ = !readMore(fd_, path_, buffer_, end, total);
+  eof_ = !readMore(fd_, path_, buffer_, end, total_);
   buffer_.resize(end);
   return !eof_;
 }

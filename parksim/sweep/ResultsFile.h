@@ -89,16 +89,11 @@ class TableOrigins {
   /// 'head_in' has another content (world_hash 4567...) than at <file>:1 (0123...): the world
   /// file changed between runs"; empty when every world has one content and every row one build.
   std::vector<std::string> mixes() const;
-  bool mixed() const { return !mixes().empty(); }
-  /// world name -> world_hash -> where first seen ("file:line")
-  const std::map<std::string, std::map<std::string, std::string>>& worldHashes() const {
-    return world_hashes_;
-  }
-  /// rowWriter -> where first seen
-  const std::map<std::string, std::string>& writers() const { return writers_; }
 
  private:
+  /// world name -> world_hash -> where first seen ("file:line")
   std::map<std::string, std::map<std::string, std::string>> world_hashes_;
+  /// rowWriter -> where first seen
   std::map<std::string, std::string> writers_;
   std::size_t order_ = 0;  // insertion counter: variants are listed in the order they were seen
   std::map<std::string, std::size_t> seen_at_;
@@ -149,6 +144,7 @@ class CsvFollower {
   std::string buffer_;
   std::size_t pos_ = 0;
   std::size_t line_ = 1;
+  std::uint64_t total_ = 0;  ///< bytes read so far: the file's size limit holds over all reads
   bool eof_ = false;
   std::string path_;
 };

@@ -91,11 +91,8 @@ JUnitCase rowCase(const Row& row, const std::string& suite) {
 }  // namespace
 
 JUnitReport resultsJUnit(const std::vector<Row>& rows, const std::string& name) {
-  using Key = std::tuple<std::string, std::string, std::string>;
-  std::map<Key, std::vector<const Row*>> groups;
-  for (const Row& row : rows) {
-    groups[{text(row, "world"), plannerLabel(row), text(row, "realism")}].push_back(&row);
-  }
+  std::map<RowGroupKey, std::vector<const Row*>> groups;
+  for (const Row& row : rows) groups[rowGroupKey(row)].push_back(&row);
   JUnitReport report{name, {}};
   for (auto& [key, members] : groups) {
     const auto order = [](const Row* a, const Row* b) {
@@ -107,7 +104,7 @@ JUnitReport resultsJUnit(const std::vector<Row>& rows, const std::string& name) 
     };
     std::sort(members.begin(), members.end(), order);
     JUnitSuite suite;
-    suite.name = std::get<0>(key) + " / " + std::get<1>(key) + " / " + std::get<2>(key);
+    suite.name = rowGroupName(key);
     for (const Row* row : members) suite.cases.push_back(rowCase(*row, suite.name));
     report.suites.push_back(std::move(suite));
   }

@@ -29,7 +29,7 @@ namespace parksim {
 
 /// What the rows already in a table must agree with to be resumed.
 struct TableExpectations {
-  /// World name -> contentHash of the world file this sweep read. Rows of these worlds must
+  /// World name -> World::content_hash of the world file this sweep read. Rows of these worlds must
   /// carry the same world_hash; rows of other worlds (an edited spec) are kept as they are.
   std::map<std::string, std::string> world_hashes;
   /// rowWriter of this build; empty: rows of any build are accepted.

@@ -1,8 +1,7 @@
 #include "parksim/sweep/RowSeal.h"
 
-#include <cstdio>
-
 #include "parksim/core/Error.h"
+#include "parksim/core/Fnv1a.h"
 #include "parksim/sweep/EpisodeParams.h"
 
 namespace parksim {
@@ -14,19 +13,10 @@ static_assert(kSealHead.substr(2, kRowChecksumKey.size()) == kRowChecksumKey);
 constexpr std::size_t kHexDigits = 16;
 constexpr std::size_t kSealLength = kSealHead.size() + kHexDigits + 2;
 
-std::string hex(std::uint64_t h) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
-
 // The checksum of `body` (a line without its seal, i.e. without the closing '}') as if it were
 // closed: the hash of body + "}", without building that string.
 std::string checksumOfOpenObject(std::string_view body) {
-  std::uint64_t h = fnv1a64(body);
-  h ^= static_cast<unsigned char>('}');
-  h *= 0x100000001b3ULL;
-  return hex(h);
+  return hex16(fnv1a64("}", fnv1a64(body)));
 }
 
 bool isHex(std::string_view s) {
@@ -37,8 +27,6 @@ bool isHex(std::string_view s) {
 }
 
 }  // namespace
-
-std::string contentHash(std::string_view bytes) { return hex(fnv1a64(bytes)); }
 
 SealedRow sealRow(const nlohmann::ordered_json& row) {
   if (!row.is_object() || row.empty()) throw Error("sealRow: a row is a JSON object with keys");

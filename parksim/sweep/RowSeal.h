@@ -25,9 +25,6 @@ inline constexpr std::string_view kRowChecksumKey = "row_checksum";
 /// The key of the world's content hash (World::content_hash: its file's bytes and overrides).
 inline constexpr std::string_view kWorldHashKey = "world_hash";
 
-/// 16 lower-case hex digits of the 64-bit FNV-1a hash of `bytes`.
-std::string contentHash(std::string_view bytes);
-
 /// A row as results.jsonl holds it: its line (without the newline) and the checksum in it.
 struct SealedRow {
   std::string line;

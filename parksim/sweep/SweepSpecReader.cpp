@@ -173,28 +173,28 @@ void readWorlds(const YamlField& field, const std::string& base_dir, SweepSpec& 
   }
 }
 
+// The field's text through the library's own parser of those names; its message, at the
+// field's line.
+template <class Parse>
+auto parsedBy(const YamlField& f, Parse parse) {
+  try {
+    return parse(f.text());
+  } catch (const Error& e) {
+    f.fail(e.what());
+  }
+}
+
 void readRecord(const YamlField& field, SweepRecordDef& r) {
   const YamlMap m =
       field.map({"executed_csv", "executed_rate_hz", "format", "film_failures", "film"});
   if (const std::optional<YamlField> f = m.optional("executed_csv")) {
-    const std::string v = f->text();
-    if (v == "none") {
-      r.executed_csv = FilesPolicy::kNone;
-    } else if (v == "failures") {
-      r.executed_csv = FilesPolicy::kFailures;
-    } else if (v == "all") {
-      r.executed_csv = FilesPolicy::kAll;
-    } else {
-      f->fail("must be none, failures or all, got '" + v + "'");
-    }
+    r.executed_csv = parsedBy(*f, filesPolicyFromString);
   }
   if (const std::optional<YamlField> f = m.optional("executed_rate_hz")) {
     r.executed_rate_hz = f->positive();
   }
   if (const std::optional<YamlField> f = m.optional("format")) {
-    const std::string v = f->text();
-    if (v != "npz" && v != "csv") f->fail("must be npz or csv, got '" + v + "'");
-    r.format = recordFormatFromString(v);
+    r.format = parsedBy(*f, recordFormatFromString);
   }
   if (const std::optional<YamlField> f = m.optional("film_failures")) {
     r.film_failures = f->boolean();

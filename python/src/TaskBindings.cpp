@@ -222,10 +222,13 @@ struct BatchArrays {
 
   py::dict infos() const {
     py::dict d;
-    const auto add = [&d, this](const char* key, const py::array& value) {
+    // Every key holds a value for every sub-environment: one all-true mask, read-only so that
+    // the seven "_key" entries can share it.
+    py::array_t<bool> mask(count);
+    std::fill(mask.mutable_data(), mask.mutable_data() + count, true);
+    mask.attr("setflags")(py::arg("write") = false);
+    const auto add = [&d, &mask](const char* key, const py::array& value) {
       d[key] = value;
-      py::array_t<bool> mask(count);
-      std::fill(mask.mutable_data(), mask.mutable_data() + count, true);
       d[(std::string("_") + key).c_str()] = mask;
     };
     add("pose", pose);

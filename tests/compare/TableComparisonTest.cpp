@@ -99,7 +99,7 @@ std::vector<Json> throughTheWriter(const std::vector<Json>& rows, const std::str
       parksim::testing::testOutputDir("TableComparison." + test) / name;
   std::filesystem::remove_all(dir);
   writeResultsTable(dir.string(), rows);
-  return readComparedTable(dir.string());
+  return readComparedTable(dir.string()).rows;
 }
 
 bool trackingFlagged(const TableComparison& t, const std::string& world) {

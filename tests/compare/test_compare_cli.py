@@ -123,3 +123,15 @@ def test_tables_without_a_common_group_are_bad_input(sweeps):
     write_rows(sweeps / "elsewhere.jsonl", table)
     p = parksim("compare", sweeps / "base", sweeps / "elsewhere.jsonl", ok=(2,))
     assert "no world / planner / realism group is in both" in p.stderr
+
+
+def test_rows_of_another_world_content_are_flagged(sweeps):
+    # As report does: a table whose rows come from two versions of a world is compared, but
+    # not silently; the warning names the row.
+    table = rows(sweeps / "again" / "results.jsonl")
+    table[-1]["world_hash"] = "0" * 16
+    write_rows(sweeps / "mixed.jsonl", table)
+    p = parksim("compare", sweeps / "base", sweeps / "mixed.jsonl")
+    assert "warning: " in p.stderr and "mixed.jsonl:%d" % len(table) in p.stderr
+    clean = parksim("compare", sweeps / "base", sweeps / "again")
+    assert "warning" not in clean.stderr

@@ -17,13 +17,6 @@
 namespace parksim {
 namespace {
 
-TEST(EpisodeParams, Fnv1aMatchesTheReferenceVectors) {
-  // From the FNV reference (Fowler, Noll, Vo): the offset basis and FNV-1a of "a" and "foobar".
-  EXPECT_EQ(fnv1a64(""), 0xcbf29ce484222325ULL);
-  EXPECT_EQ(fnv1a64("a"), 0xaf63dc4c8601ec8cULL);
-  EXPECT_EQ(fnv1a64("foobar"), 0x85944171f73967e8ULL);
-}
-
 TEST(EpisodeParams, CanonicalTextSpellsEveryParameterWithTheFormat) {
   EpisodeParams p;
   p.world = "head_in";
