@@ -33,6 +33,24 @@ TEST(TimeAStar, PlansTheStudyLotInTime) {
   }
 }
 
+// A start that already is the goal pose: the path is empty, and that is a solution (it was
+// refused as "no trajectory within 200000 expansions" while an empty path meant "none found"),
+// as every other planner returns it.
+TEST(TimeAStar, AStartAtTheGoalIsSolvedWithoutMoving) {
+  Scenario s = testing::studyLot();
+  s.start = s.goal.pose;
+  const SatChecker checker(s);
+  for (PlannerKind kind : allPlannerKinds()) {
+    SCOPED_TRACE(toString(kind));
+    PlanSetup setup;
+    setup.planner.kind = kind;
+    const PlanResult r = planScenario(s, checker, setup);
+    ASSERT_TRUE(r.solved()) << r.message;
+    EXPECT_EQ(r.trajectory.duration(), 0.0);
+    EXPECT_EQ(r.trajectory.points.back().pose, s.goal.pose);
+  }
+}
+
 // The same problem in a 200 m and in a 1000 m lot: the same search, the same plan.
 TEST(TimeAStar, TheProblemNotTheLotSetsTheSearch) {
   PlanResult results[2];
