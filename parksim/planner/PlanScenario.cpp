@@ -103,10 +103,17 @@ void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup) {
              turn);
     }
   }
-  const double cross = restToRestPeriods(diagonal, wheel_max * r, wheel_step * r, period_s);
+  // The tree planners steer between samples anywhere in the lot; the A* planners' moves and
+  // expansions follow the problem (their search window grows from the start and the goal), so
+  // for them the move that bounds a trajectory is the one from the start to the goal.
+  const bool across_lot = plannerUsesSteering(setup.planner.kind);
+  const double length =
+      across_lot ? diagonal : positionDistance(scenario.start, scenario.goal.pose);
+  const double cross = restToRestPeriods(length, wheel_max * r, wheel_step * r, period_s);
   if (!(cross <= kMaxProfilePeriods)) {
-    refuse(std::string(name) + ": a straight move across the lot (" + formatGeneral(diagonal) +
-               " m, wheel radius " + formatGeneral(r) + " m)",
+    refuse(std::string(name) + ": a straight move " +
+               (across_lot ? "across the lot (" : "from the start to the goal (") +
+               formatGeneral(length) + " m, wheel radius " + formatGeneral(r) + " m)",
            cross);
   }
 }

@@ -217,7 +217,7 @@ const Case kCases[] = {
      "tiny_accel.yaml:4: robot.max_wheel_accel_radps2: must be in [0.1, 10000] rad/s^2"},
     {"plan {C}world/tiny_wheel.yaml --steering rotate-translate-rotate --out {OUT}", 2,
      "tiny_wheel.yaml:4: robot.wheel_radius: must be in [0.001, 5] m"},
-    {"plan {C}world/huge_lot.yaml --steering rotate-translate-rotate --out {OUT}", 2,
+    {"plan {C}world/huge_lot.yaml --planner rrt --steering rotate-translate-rotate --out {OUT}", 2,
      "a straight move across the lot"},
     // World files (the reader's own limits, docs/world-format.md): bounded, one line, exit 2.
     {"plan {C}world/comma --out {OUT}", 2, "unexpected ','"},

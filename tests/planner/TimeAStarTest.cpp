@@ -1,5 +1,6 @@
 #include "parksim/planner/TimeAStar.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "parksim/core/Error.h"
@@ -31,6 +32,25 @@ TEST(TimeAStar, PlansTheStudyLotInTime) {
     EXPECT_LE(std::max(std::abs(first.left_radps), std::abs(first.right_radps)),
               setup.start_jerk_radps3 * setup.timing_period_s * setup.timing_period_s + 1e-9);
   }
+}
+
+// The tree planners steer between samples anywhere in the lot, so a 10 km lot is refused for
+// them before planning; the A* planners' trajectories follow the problem, so the same metres-long
+// problem is accepted for them, and a start 7 km from its goal is refused by that distance.
+TEST(TimeAStar, ItsLimitsFollowTheProblemNotTheLot) {
+  Scenario s = testing::studyLot();
+  s.lot = {0.0, 0.0, 10000.0, 10000.0};
+  PlanSetup setup;
+  EXPECT_NO_THROW(checkPlanningLimits(s, setup));
+  setup.planner.kind = PlannerKind::kHybridAStar;
+  EXPECT_NO_THROW(checkPlanningLimits(s, setup));
+  setup.planner.kind = PlannerKind::kRrtConnect;
+  EXPECT_THAT([&] { checkPlanningLimits(s, setup); },
+              ::testing::ThrowsMessage<Error>(::testing::HasSubstr("across the lot")));
+  setup = PlanSetup{};
+  s.goal.pose = {7000.0, 0.04, -kPi / 2};
+  EXPECT_THAT([&] { checkPlanningLimits(s, setup); },
+              ::testing::ThrowsMessage<Error>(::testing::HasSubstr("from the start to the goal")));
 }
 
 // A start that already is the goal pose: the path is empty, and that is a solution (it was
