@@ -15,8 +15,13 @@ namespace {
 
 StepPoolDef poolDef(const TaskBatchDef& def, std::size_t count) {
   if (count == 0) throw Error("task batch: needs at least one task");
-  if (def.threads < 0) {
-    throw Error("task batch: threads must not be negative, got " + std::to_string(def.threads));
+  if (count > kMaxBatchTasks) {
+    throw Error("task batch: " + std::to_string(count) + " tasks, more than the limit of " +
+                std::to_string(kMaxBatchTasks) + " (docs/limits.md)");
+  }
+  if (def.threads < 0 || def.threads > kMaxBatchThreads) {
+    throw Error("task batch: threads must be in [0, " + std::to_string(kMaxBatchThreads) +
+                "], got " + std::to_string(def.threads));
   }
   const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const int wanted = def.threads == 0 ? hardware : def.threads;

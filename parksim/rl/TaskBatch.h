@@ -18,9 +18,15 @@
 
 namespace parksim {
 
+/// Most tasks one batch holds: each has a world of its own (a Bullet world for the dynamics
+/// fidelity, ~1 MB), so the count must not be able to ask for unbounded memory.
+inline constexpr std::size_t kMaxBatchTasks = 4096;
+/// Most threads a batch starts.
+inline constexpr int kMaxBatchThreads = 256;
+
 struct TaskBatchDef {
-  /// Threads that step the batch, the caller's included; 0: one per hardware thread. Never
-  /// more than the batch has tasks.
+  /// Threads that step the batch, the caller's included, at most kMaxBatchThreads; 0: one per
+  /// hardware thread. Never more than the batch has tasks.
   int threads = 0;
   /// How long idle threads poll for the next step before they sleep, s (StepPoolDef).
   double spin_s = 50e-6;
@@ -28,7 +34,8 @@ struct TaskBatchDef {
 
 class TaskBatch {
  public:
-  /// `count` tasks (>= 1) of the same world and definition. Throws Error on a bad definition.
+  /// `count` tasks (1 to kMaxBatchTasks) of the same world and definition. Throws Error on a
+  /// bad definition.
   TaskBatch(const Scenario& scenario, const ParkingTaskDef& task, std::size_t count,
             const TaskBatchDef& def = {});
   ~TaskBatch();

@@ -111,6 +111,12 @@ TEST(TaskBatch, RefusesBadActionsBeforeAnyTaskMoves) {
   EXPECT_THROW(batch.step(std::vector<TaskAction>(3)), Error);
   EXPECT_THROW(batch.reset({std::uint64_t{1}}), Error);
   EXPECT_THROW(TaskBatch(testing::studyLot(), def, 0, {}), Error);
+  // Bounded before anything is built: a count or thread number from a typo must not allocate
+  // without limit.
+  EXPECT_THROW(TaskBatch(testing::studyLot(), def, kMaxBatchTasks + 1, {}), Error);
+  EXPECT_THROW(TaskBatch(testing::studyLot(), def, 1000000000, {}), Error);
+  EXPECT_THROW(TaskBatch(testing::studyLot(), def, 2, {.threads = kMaxBatchThreads + 1}), Error);
+  EXPECT_THROW(TaskBatch(testing::studyLot(), def, 2, {.threads = -1}), Error);
 }
 
 }  // namespace
