@@ -73,7 +73,7 @@ std::string duration(double s) {
 // The progress line: rewritten in place on a terminal, or one line now and then in a log.
 class ProgressPrinter {
  public:
-  ProgressPrinter(bool tty, std::size_t already_done) : tty_(tty), already_(already_done) {}
+  explicit ProgressPrinter(bool tty) : tty_(tty) {}
 
   void operator()(const SweepProgress& p) {
     const bool last = p.done == p.total;
@@ -94,7 +94,6 @@ class ProgressPrinter {
 
  private:
   bool tty_;
-  std::size_t already_;
   std::chrono::steady_clock::time_point last_print_{};
 };
 
@@ -312,7 +311,7 @@ int runSweepCommand(const SweepOptions& o) {
       already, printable(o.out).c_str(), workers, workers == 1 ? "" : "s");
   const bool tty = isatty(STDERR_FILENO) == 1;
   SweepProgressFn progress;
-  if (tty || o.progress) progress = ProgressPrinter(tty, already);
+  if (tty || o.progress) progress = ProgressPrinter(tty);
   const SweepProgress p = [&] {
     const SignalWatcher signals;
     return runSweep(episodes, def, table, progress);

@@ -119,7 +119,7 @@ function(parksim_target_defaults target)
       UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${PARKSIM_UNITY_BATCH_SIZE})
     # A batch includes its sources like headers, and GCC then warns that a class of one (a
     # parksim type with a member from the file's anonymous namespace) could be seen elsewhere.
-    target_compile_options(${target} PRIVATE -Wno-subobject-linkage)
+    target_compile_options(${target} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-Wno-subobject-linkage>)
     get_target_property(sources ${target} SOURCES)
     foreach(source IN LISTS sources)
       get_filename_component(path ${source} ABSOLUTE)

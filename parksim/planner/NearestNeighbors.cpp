@@ -6,10 +6,14 @@
 
 // nanoflann 1.4.3 copies a not-yet-computed bounding box while building its sub-trees; the value
 // is overwritten before use, but GCC's -Wmaybe-uninitialized flags it.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <nanoflann.hpp>
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 
 namespace parksim {
 
