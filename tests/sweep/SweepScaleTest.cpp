@@ -31,6 +31,12 @@ namespace {
 std::atomic<long long> g_live_bytes{0};
 std::atomic<long long> g_allocations{0};
 
+}  // namespace
+
+// Under AddressSanitizer the sanitizer owns operator new; the counts are then not taken.
+#if !defined(PARKSIM_SANITIZED)
+namespace {
+
 void* allocate(std::size_t n) {
   void* p = std::malloc(n == 0 ? 1 : n);
   if (p == nullptr) throw std::bad_alloc();
@@ -47,8 +53,6 @@ void release(void* p) noexcept {
 
 }  // namespace
 
-// Under AddressSanitizer the sanitizer owns operator new; the counts are then not taken.
-#if !defined(__SANITIZE_ADDRESS__)
 void* operator new(std::size_t n) { return allocate(n); }
 void* operator new[](std::size_t n) { return allocate(n); }
 void operator delete(void* p) noexcept { release(p); }
