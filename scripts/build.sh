@@ -6,7 +6,7 @@
 # otherwise everything the configuration enables. Examples:
 #   scripts/build.sh build                                      everything (Release)
 #   scripts/build.sh build --target parksim                     the command line and its libraries
-#   scripts/build.sh build-asan -DPARKSIM_SANITIZE=ON --target parksim_tests
+#   scripts/build.sh build-sanitize -DPARKSIM_SANITIZE=ON --target parksim_tests
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${1:-build}
