@@ -31,16 +31,29 @@ if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   # clang, -O1 -g1 (line tables: reports still name file and line): this build took 350 s on
   # 2 cores where GCC took about 840 s (docs/building.md); GCC builds the Release pass, so both
   # compilers see every source.
-  scripts/build.sh build-sanitize -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+  # No compiler cache in CI: nothing else uses these objects, and a cold cache only costs (each
+  # file preprocessed once more for its key).
+  ccache=1
+  [ "${CI:-}" = true ] && ccache=0
+  PARKSIM_CCACHE=$ccache scripts/build.sh build-sanitize -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPARKSIM_SANITIZE=ON -DPARKSIM_BUILD_BENCH=OFF \
     -DPARKSIM_PYTHON=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
     --target parksim_tests
   # Leaks are checked; tests/lsan.supp names the third-party allocations that live until exit
   # by design (Mesa's OSMesa).
+  # LeakSanitizer's stop-the-world tracer itself crashes at exit ("Tracer caught signal 11",
+  # google/sanitizers#1170) after OffscreenContextTest.ARendererMovesBetweenThreads has passed,
+  # while llvmpipe's threads of its two contexts end: under the parallel load of this pass, with
+  # GCC's runtime (3 attempts of 3) and clang's (1 of 1); never when it runs alone (8 runs with
+  # GCC, 4 with clang). That test runs with leak checking off (ASan and UBSan still on); every
+  # other test with it on.
+  lsan_tracer_crash='^OffscreenContextTest\.ARendererMovesBetweenThreads$'
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
   LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0" \
   UBSAN_OPTIONS=print_stacktrace=1 \
-    ctest --test-dir build-sanitize --output-on-failure --parallel "$jobs"
+    ctest --test-dir build-sanitize --output-on-failure --parallel "$jobs" -E "$lsan_tracer_crash"
+  ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+    ctest --test-dir build-sanitize --output-on-failure -R "$lsan_tracer_crash"
   release_targets=(--target parksim_front_end_tests)
   release_tests=(-L front_end)
 else
