@@ -39,7 +39,8 @@ done
 # sources), on all cores, and again only when it or a parksim header changed since.
 # The sweep-spec reader takes its name lists (planners, steerings, timings) from
 # parksim/planner/PlanScenario.cpp, whose other functions need the whole planner (OMPL, Bullet),
-# and its record format's names from parksim/results/ExecutedFile.cpp (the record writers).
+# its record format's names from parksim/results/ExecutedFile.cpp (the record writers), and
+# its files policy's from parksim/pipeline/EpisodeRequest.cpp.
 # The fuzzer's coverage tables keep every instrumented function alive, so that file is compiled
 # without them (still with ASan and UBSan, as .nocov.o) and --gc-sections drops what the spec
 # reader does not call.
@@ -83,7 +84,7 @@ sources[world]="tests/fuzz/WorldReaderFuzz.cpp ${scenario[*]} ${realism[*]} ${co
 sources[plan]="tests/fuzz/PlanReaderFuzz.cpp parksim/results/TrajectoryFile.cpp ${core[*]}"
 sources[spec]="tests/fuzz/SweepSpecFuzz.cpp parksim/sweep/SweepSpecReader.cpp
   parksim/sweep/EpisodeSetup.cpp parksim/planner/PlannerKind.cpp parksim/planner/PlanScenario.cpp
-  parksim/results/ExecutedFile.cpp
+  parksim/results/ExecutedFile.cpp parksim/pipeline/EpisodeRequest.cpp
   parksim/sim/ExecutionDef.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
 sources[jsonl]="tests/fuzz/ResultsJsonlFuzz.cpp ${tables[*]} ${core[*]}"
 sources[csv]="tests/fuzz/ResultsCsvFuzz.cpp ${tables[*]} ${core[*]}"
