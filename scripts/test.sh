@@ -70,7 +70,16 @@ echo "== Fuzzing the world-file and plan-file readers (bounded; docs/limits.md)"
 scripts/fuzz.sh --ci
 
 echo "== Shared libraries: the installed package and the Python module"
+# With the Release pass's compiler (scripts/demo.sh may have chosen clang for build/), so that
+# the compiler cache serves pass 2's objects.
+shared_options=()
+if [ ! -f build-shared/CMakeCache.txt ]; then
+  for lang in C CXX; do
+    compiler=$(sed -n "s/^CMAKE_${lang}_COMPILER:[A-Z]*=//p" build/CMakeCache.txt)
+    shared_options+=("-DCMAKE_${lang}_COMPILER=$compiler")
+  done
+fi
 scripts/build.sh build-shared -DPARKSIM_SHARED=ON -DPARKSIM_BUILD_BENCH=OFF \
-  --target parksim parksim_python
+  "${shared_options[@]}" --target parksim parksim_python
 ctest --test-dir build-shared --output-on-failure --parallel "$jobs" \
   -R '^(package\.consumer|python\.test_plan_run|python\.test_world)$'
