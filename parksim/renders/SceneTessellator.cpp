@@ -254,30 +254,19 @@ void SceneTessellator::addEdgeOutlines(const Scene& scene, const Eigen::Matrix4d
   // edge_ keeps its points' buffer from frame to frame: only its contents change.
   edge_.width_px = 1.0f;
   edge_.closed = true;
-  for (const ScenePolygon& p : scene.polygons) {
-    if (p.color.a != 255) continue;
-    edge_.color = p.color;
+  const auto outline = [&](Rgba8 color, const auto& corners, double z_m) {
+    if (color.a != 255) return;
+    edge_.color = color;
     edge_.points.clear();
-    for (const Eigen::Vector2d& q : p.points) edge_.points.emplace_back(q.x(), q.y(), p.z_m);
+    for (const Eigen::Vector2d& q : corners) edge_.points.emplace_back(q.x(), q.y(), z_m);
     addPolyline(edge_, vp, true);
-  }
+  };
+  for (const ScenePolygon& p : scene.polygons) outline(p.color, p.points, p.z_m);
   for (const SceneBox& b : scene.boxes) {
-    if (b.color.a != 255) continue;
-    edge_.color = b.color;
-    edge_.points.clear();
-    for (const Eigen::Vector2d& c : b.footprint.corners()) {
-      edge_.points.emplace_back(c.x(), c.y(), b.z_min_m + b.height_m);
-    }
-    addPolyline(edge_, vp, true);
+    outline(b.color, b.footprint.corners(), b.z_min_m + b.height_m);
   }
   for (const ScenePrism& p : scene.prisms) {
-    if (p.color.a != 255) continue;
-    edge_.color = p.color;
-    edge_.points.clear();
-    for (const Eigen::Vector2d& q : p.footprint) {
-      edge_.points.emplace_back(q.x(), q.y(), p.z_min_m + p.height_m);
-    }
-    addPolyline(edge_, vp, true);
+    outline(p.color, p.footprint, p.z_min_m + p.height_m);
   }
 }
 
