@@ -71,10 +71,11 @@ class Solve {
   long queries_before_ = 0;
   double margin_m_ = 0.0;
 
-  std::vector<PathPiece> best_;  // driven from the start
-  bool found_ = false;  // best_ holds a path (empty when the start already is the goal pose)
-  std::vector<PathPiece> first_found_;  // the first search's path, as found
-  double best_s_ = std::numeric_limits<double>::infinity();
+  std::vector<PathPiece> best_;                              // driven from the start
+  std::vector<PathPiece> first_found_;                       // the first search's path, as found
+  double best_s_ = std::numeric_limits<double>::infinity();  // best_'s duration
+  // best_ holds a path (it is empty when the start already is the goal pose).
+  bool found() const { return best_s_ < std::numeric_limits<double>::infinity(); }
   PlanResult result_;
 };
 
@@ -143,7 +144,6 @@ void Solve::offer(const Pose2& start, std::vector<PathPiece> pieces) {
   if (!(d < best_s_ - kImprovementS)) return;
   best_ = std::move(pieces);
   best_s_ = d;
-  found_ = true;
   if (result_.stats.first_solution_s < 0.0) {
     result_.stats.first_solution_s = seconds(t_begin_);
     result_.stats.first_solution_iteration = result_.stats.iterations;
@@ -187,10 +187,10 @@ PlanResult Solve::run(const Pose2& start, const GoalRegion& goal) {
       continue;
     }
     // Every weight searched: spend what is left on fresh random shortcuts of the best plan.
-    while (found_ && def_.smooth && seconds(t_begin_) < def_.max_time_s) offer(start, best_);
+    while (found() && def_.smooth && seconds(t_begin_) < def_.max_time_s) offer(start, best_);
     break;
   }
-  if (!found_) {
+  if (!found()) {
     if (last == TimeSearchOutcome::Status::kTimeLimit) {
       return finish(PlanStatus::kTimeLimit, "no collision-free trajectory to the goal within " +
                                                 std::to_string(def_.max_time_s) + " s");
