@@ -58,7 +58,9 @@ INSTANTIATE_TEST_SUITE_P(Worlds, DefaultPlanning,
                                            "garage_reverse", "clutter", "corridor", "big_lot",
                                            // issue 18's lots the planner was not tuned on
                                            "narrow_gate", "dead_end", "slalom", "angled_bays",
-                                           "far_lot_200m", "far_lot_1000m"));
+                                           "far_lot_200m", "far_lot_1000m",
+                                           // made in review, after the planner was done
+                                           "switchback"));
 
 TEST(DefaultPlanning, HybridAStarIgnoresTheSeed) {
   const Scenario s = world("garage_reverse");
