@@ -162,6 +162,19 @@ RobotDef readRobot(const YamlField& field) {
                               m.required("height").node().Scalar());
   }
 
+  // The planner checks the body's footprint only, and the simulated wheels touch only the
+  // ground: a wheel beyond the body's sides would drive through obstacles unseen.
+  if (robot.wheel_base_m > robot.width_m) {
+    const std::string why = " (the wheels must lie within the body, which alone meets obstacles)";
+    if (const std::optional<YamlField> base = m.optional("wheel_base")) {
+      base->fail("must not exceed robot.width (" + formatNumber(robot.width_m) + ")" + why +
+                 ", got " + base->node().Scalar());
+    }
+    const YamlField width = m.required("width");
+    width.fail("must be at least robot.wheel_base (" + formatNumber(robot.wheel_base_m) + ")" +
+               why + ", got " + width.node().Scalar());
+  }
+
   // Zero is a real design (axle at the front edge); beyond the length the reference point
   // would lie outside the body it steers.
   const std::optional<YamlField> overhang = m.optional("front_overhang");

@@ -130,7 +130,7 @@ TEST(PhysicalRanges, ABodyItsWheelsCannotTurnIsRefused) {
                 .find("robot: turning a 1 x 1 m body on a 0.085 m wheel base"),
             std::string::npos);
   // Straight-ahead acceleration beyond the grip, and torque below what the grip allows.
-  EXPECT_NE(errorOf(world("robot: {wheel_base: 0.3, max_wheel_accel_radps2: 5000}\n"))
+  EXPECT_NE(errorOf(world("robot: {width: 0.3, wheel_base: 0.3, max_wheel_accel_radps2: 5000}\n"))
                 .find("accelerating the robot straight ahead"),
             std::string::npos);
   EXPECT_NE(
@@ -142,6 +142,22 @@ TEST(PhysicalRanges, ABodyItsWheelsCannotTurnIsRefused) {
   EXPECT_NE(errorOf(world("physics: {wheel_friction: 0}\n"))
                 .find("more than 2.5 times their grip (0 N: wheel_friction x ground_friction"),
             std::string::npos);
+}
+
+// A wheel beyond the body's sides: the planner checks the body only and the simulated wheels
+// touch only the ground, so it would drive through walls unseen. Equal is the study's robot.
+TEST(PhysicalRanges, WheelsOutsideTheBodyAreRefused) {
+  EXPECT_EQ(errorOf(world("robot: {wheel_base: 20}\n")),
+            "t.yaml:6: robot.wheel_base: must not exceed robot.width (0.085) (the wheels must "
+            "lie within the body, which alone meets obstacles), got 20");
+  // Narrowing the body under the default wheels names the width, the field that was given.
+  EXPECT_EQ(errorOf(world("robot: {width: 0.05}\n")),
+            "t.yaml:6: robot.width: must be at least robot.wheel_base (0.085) (the wheels must "
+            "lie within the body, which alone meets obstacles), got 0.05");
+  EXPECT_EQ(errorOf(world("robot: {wheel_base: 0.0851}\n")).find("must not exceed robot.width"),
+            std::string("t.yaml:6: robot.wheel_base: ").size());
+  EXPECT_EQ(errorOf(world("robot: {width: 0.2, wheel_base: 0.2}\n")), "(accepted)");
+  EXPECT_EQ(errorOf(world("robot: {wheel_base: 0.085}\n")), "(accepted)");
 }
 
 // Robots from 1 cm to 10 m, with their own masses, motors and wheels (a micro robot, the
