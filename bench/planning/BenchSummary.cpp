@@ -133,13 +133,14 @@ std::vector<GroupSummary> summarize(const std::vector<BenchRecord>& records) {
       }
       if (!std::isnan(r.min_clearance_m)) a.clearances.push_back(r.min_clearance_m);
     }
-    for (const auto& [name, seconds] : r.phases_s) {
+    // A named pair, not a structured binding: clang before 16 cannot capture bindings.
+    for (const auto& phase : r.phases_s) {
       auto p = std::find_if(a.phase_sum.begin(), a.phase_sum.end(),
-                            [&](const auto& e) { return e.first == name; });
+                            [&](const auto& e) { return e.first == phase.first; });
       if (p == a.phase_sum.end()) {
-        a.phase_sum.emplace_back(name, seconds);
+        a.phase_sum.push_back(phase);
       } else {
-        p->second += seconds;
+        p->second += phase.second;
       }
     }
   }
