@@ -4,16 +4,13 @@
 #include <cmath>
 
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 
 namespace parksim {
 namespace {
 
 // Up to 3 significant digits, for forces and accelerations in messages.
-std::string brief(double v) {
-  char buf[64];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 3);
-  return ec == std::errc() ? std::string(buf, end) : std::string("?");
-}
+std::string brief(double v) { return formatGeneral(v, 3); }
 
 // Shortest round-trip text, for limits; in fixed notation from 1e-4 on ("0.0001", "100000"),
 // as docs/limits.md writes them.
