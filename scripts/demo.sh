@@ -14,13 +14,8 @@ scripts/install-deps.sh demo
 options=()
 if [ ! -f build/CMakeCache.txt ]; then
   options=(-DPARKSIM_BUILD_TESTS=OFF -DPARKSIM_BUILD_BENCH=OFF -DPARKSIM_PYTHON=OFF)
-  # clang, unless CXX names a compiler: it builds the program in about half of GCC's time (103
-  # against 190 s on 2 idle cores, docs/building.md) and the demo's outputs are the same bytes
-  # (only timings and the recorded compiler differ). scripts/test.sh keeps what this chose.
-  if [ -z "${CXX:-}" ]; then
-    options+=(-DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++)
-  fi
 fi
+# The compiler: clang unless CXX names one (scripts/build.sh says why).
 scripts/build.sh build "${options[@]}" --target parksim
 ./build/app/parksim run worlds/head_in.yaml --seed 1 --tracking closed --frames --video \
   --out "$out"

@@ -16,7 +16,7 @@ demo_packages=(
   libbullet-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libnanoflann-dev libstb-dev zlib1g-dev libompl-dev
   libegl-dev libgl1-mesa-dri libfontconfig-dev fonts-dejavu-core ffmpeg
-  # scripts/demo.sh compiles with clang (half of GCC's time for the program).
+  # scripts/build.sh compiles with clang unless CXX names a compiler (half of GCC's time).
   clang
 )
 

@@ -5,7 +5,8 @@
 #      UndefinedBehaviorSanitizer; all their tests;
 #   2. Release: the front-ends the sanitizer build leaves out (the Python module, the
 #      benchmarks, the documentation's example programs, the installed package) and their
-#      tests (`ctest -L front_end`);
+#      tests (`ctest -L front_end`), compiled with clang unless CXX names a compiler
+#      (scripts/build.sh);
 #   3. fuzzing: the readers' libFuzzer harnesses, bounded (scripts/fuzz.sh --ci);
 #   4. shared libraries (PARKSIM_SHARED=ON): the parksim program and the Python module, the
 #      installed-package consumer and the Python tests against them.
@@ -13,6 +14,9 @@
 #   scripts/test.sh                              all passes
 #   PARKSIM_SKIP_SANITIZERS=1 scripts/test.sh    no sanitizer build: pass 2 builds and runs
 #                                                every test in Release instead
+#   CC=gcc CXX=g++ PARKSIM_SKIP_SANITIZERS=1 scripts/test.sh
+#                                                the same with GCC, in a fresh clone (CI builds
+#                                                with clang only; docs/building.md)
 # Timings and what each pass costs: docs/building.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,8 +33,7 @@ if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   echo "== Sanitizer build (clang, ASan + LSan + UBSan) and the library's tests"
   # Only what the tests run: the GoogleTest programs and the parksim program (parksim_tests).
   # clang, -O1 -g1 (line tables: reports still name file and line): this build took 350 s on
-  # 2 cores where GCC took about 840 s (docs/building.md); GCC builds the Release pass, so both
-  # compilers see every source.
+  # 2 cores where GCC took about 840 s (docs/building.md).
   # No compiler cache in CI: nothing else uses these objects, and a cold cache only costs (each
   # file preprocessed once more for its key).
   ccache=1
@@ -68,7 +71,7 @@ echo "== Fuzzing the world-file and plan-file readers (bounded; docs/limits.md)"
 scripts/fuzz.sh --ci
 
 echo "== Shared libraries: the installed package and the Python module"
-# With the Release pass's compiler (scripts/demo.sh may have chosen clang for build/), so that
+# With the Release pass's compiler (whatever configured build/ chose), so that
 # the compiler cache serves pass 2's objects.
 shared_options=()
 if [ ! -f build-shared/CMakeCache.txt ]; then
