@@ -59,6 +59,9 @@ struct SweepOptions {
   SlurmDef slurm_def;
   int slurm_shards = 0;
   int slurm_max_parallel = 0;
+  // The --slurm-* request options this command line gives; with --missing the others are
+  // what sweep.json recorded of the first submission.
+  std::set<std::string> slurm_given;
   std::string junit;
 };
 
@@ -162,7 +165,7 @@ std::string writeSlurmFiles(const SweepOptions& o, const SweepSpec& spec,
   const std::string script = sbatchScript(d);  // checks the options before DIR is touched
   ensureDirectory(o.out + "/logs");
   ensureDirectory(o.out + "/shards");
-  SweepManifest manifest{o.spec, spec.name, Shard{}, {}, d.shards};
+  SweepManifest manifest{o.spec, spec.name, Shard{}, {}, d.shards, d};
   for (const SweepEpisode& e : episodes) manifest.episode_ids.push_back(e.id);
   writeSweepManifest(o.out, manifest);
   const std::string path = o.out + "/sweep.sbatch";
@@ -222,8 +225,23 @@ int resubmitMissing(const SweepOptions& o, const SweepSpec& spec,
                 missing == 0 ? "every shard is complete" : "the incomplete shards are running");
     return 0;
   }
+  // The tasks ask for what the first submission asked (a resubmission with the defaults could
+  // ask for less memory than the episodes need), except where this command line says otherwise.
+  SweepOptions again = o;
+  if (manifest.slurm_request) {
+    const SlurmDef& asked = *manifest.slurm_request;
+    const auto keep = [&o](const char* option, auto& field, const auto& recorded) {
+      if (o.slurm_given.count(option) == 0) field = recorded;
+    };
+    keep("--slurm-cpus", again.slurm_def.cpus_per_task, asked.cpus_per_task);
+    keep("--slurm-mem", again.slurm_def.mem, asked.mem);
+    keep("--slurm-time", again.slurm_def.time, asked.time);
+    keep("--slurm-partition", again.slurm_def.partition, asked.partition);
+    keep("--slurm-account", again.slurm_def.account, asked.account);
+    keep("--slurm-max-parallel", again.slurm_def.max_parallel, asked.max_parallel);
+  }
   SlurmDef d;
-  const std::string script = writeSlurmFiles(o, spec, all, shards, d);
+  const std::string script = writeSlurmFiles(again, spec, all, shards, d);
   const Submission sub = submitArrayTasks(script, list, o.wait, o.out + "/logs/sbatch-missing.log");
   std::printf("submitted job %s: array tasks %s of %d (%zu episodes missing)\n", sub.job_id.c_str(),
               list.c_str(), shards, missing);
@@ -362,29 +380,40 @@ CommandRunner setupSweepCommand(CLI::App& sub) {
   sub.add_option("--slurm-shards", opt->slurm_shards,
                  "array tasks (default 10, at most one per episode)")
       ->check(CLI::Range(1, 100000));
-  sub.add_option("--slurm-cpus", opt->slurm_def.cpus_per_task,
-                 "CPUs per task (the task's --workers)")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 1024));
-  sub.add_option("--slurm-mem", opt->slurm_def.mem, "memory per task")->capture_default_str();
-  sub.add_option("--slurm-time", opt->slurm_def.time, "time limit per task")->capture_default_str();
-  sub.add_option("--slurm-partition", opt->slurm_def.partition,
-                 "partition (default: the cluster's)");
-  sub.add_option("--slurm-account", opt->slurm_def.account, "account to charge");
+  CLI::Option* cpus = sub.add_option("--slurm-cpus", opt->slurm_def.cpus_per_task,
+                                     "CPUs per task (the task's --workers)")
+                          ->capture_default_str()
+                          ->check(CLI::Range(1, 1024));
+  CLI::Option* mem =
+      sub.add_option("--slurm-mem", opt->slurm_def.mem, "memory per task")->capture_default_str();
+  CLI::Option* time_limit =
+      sub.add_option("--slurm-time", opt->slurm_def.time, "time limit per task")
+          ->capture_default_str();
+  CLI::Option* partition = sub.add_option("--slurm-partition", opt->slurm_def.partition,
+                                          "partition (default: the cluster's)");
+  CLI::Option* account =
+      sub.add_option("--slurm-account", opt->slurm_def.account, "account to charge");
   sub.add_flag("--missing", opt->missing,
                "with --slurm: find the shards whose tables lack episodes (tasks that died) and "
-               "submit only those array tasks again (sbatch --array=LIST)");
+               "submit only those array tasks again (sbatch --array=LIST), asking for what the "
+               "first submission asked unless --slurm-* options say otherwise");
   sub.add_flag("--wait", opt->wait,
                "with --slurm --missing: wait until the submitted tasks end (sbatch --wait)");
-  sub.add_option("--slurm-max-parallel", opt->slurm_max_parallel,
-                 "at most this many tasks at once (the array's %K throttle)")
-      ->check(CLI::Range(1, 100000));
+  CLI::Option* max_parallel =
+      sub.add_option("--slurm-max-parallel", opt->slurm_max_parallel,
+                     "at most this many tasks at once (the array's %K throttle)")
+          ->check(CLI::Range(1, 100000));
   cli::addReportFileOption(sub, "--junit", opt->junit,
                            "also write a JUnit XML report: one test case per episode (of the "
                            "shard), one suite per world x planner x realism (docs/ci.md)");
   // --progress is every command's (main.cpp): not a terminal, the line comes every 10 s.
-  return [opt](const OutputOptions& output) {
+  const std::vector<const CLI::Option*> request = {cpus,      mem,     time_limit,
+                                                   partition, account, max_parallel};
+  return [opt, request](const OutputOptions& output) {
     opt->progress = output.progress;
+    for (const CLI::Option* option : request) {
+      if (option->count() > 0) opt->slurm_given.insert(option->get_name());
+    }
     return runSweepCommand(*opt);
   };
 }

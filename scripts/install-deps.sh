@@ -25,8 +25,9 @@ test_packages=(
   # OSMesa: the tests compare its images with EGL's, byte for byte.
   libosmesa6-dev
   libgtest-dev libgmock-dev libbenchmark-dev locales
-  # The sweep's Slurm path, tested on a one-node cluster (scripts/slurm-local.sh).
-  slurm-wlm munge
+  # The sweep's Slurm path, tested on a one-node cluster (scripts/slurm-local.sh); procps:
+  # pkill, which stops a task mid-shard in tests/sweep/slurm_missing_test.sh.
+  slurm-wlm munge procps
   pybind11-dev python3 python3-dev python3-numpy python3-pytest python3-yaml python3-pandas
   jupyter-nbconvert python3-nbformat python3-ipykernel
   # JUnit reports (`--junit`) read by a real consumer and checked with xmllint.

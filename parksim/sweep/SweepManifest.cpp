@@ -29,6 +29,15 @@ void writeSweepManifest(const std::string& dir, const SweepManifest& m) {
   j["name"] = m.name;
   j["shard"] = std::to_string(m.shard.index) + "/" + std::to_string(m.shard.count);
   if (m.slurm_shards > 0) j["slurm_shards"] = m.slurm_shards;
+  if (m.slurm_request) {
+    const SlurmDef& r = *m.slurm_request;
+    j["slurm_request"] = {{"cpus_per_task", r.cpus_per_task},
+                          {"mem", r.mem},
+                          {"time", r.time},
+                          {"partition", r.partition},
+                          {"account", r.account},
+                          {"max_parallel", r.max_parallel}};
+  }
   j["episode_ids"] = m.episode_ids;
   ensureDirectory(dir);
   writeFileAtomically(dir + "/sweep.json", j.dump(1) + "\n");
@@ -85,6 +94,28 @@ SweepManifest parseSweepManifest(std::string_view text, const std::string& path)
   const std::optional<long long> shards = whole("slurm_shards", 0, 100000);
   if (shards && *shards > 100000) throw not_manifest;
   m.slurm_shards = static_cast<int>(shards.value_or(0));
+  if (const auto r = j.find("slurm_request"); r != j.end()) {
+    // Every field present and of its type; the words are checked again where the script is
+    // written (sbatchScript), so a changed file cannot put a line of its own into the script.
+    const auto word = [&](const char* key) -> std::string {
+      const auto it = r->find(key);
+      if (it == r->end() || !it->is_string()) throw not_manifest;
+      return it->get<std::string>();
+    };
+    if (!r->is_object()) throw not_manifest;
+    const auto cpus = r->find("cpus_per_task");
+    if (cpus == r->end() || !cpus->is_number_integer() || *cpus < 1 || *cpus > 1024) {
+      throw not_manifest;
+    }
+    SlurmDef d;
+    d.cpus_per_task = cpus->get<int>();
+    d.mem = word("mem");
+    d.time = word("time");
+    d.partition = word("partition");
+    d.account = word("account");
+    d.max_parallel = word("max_parallel");
+    m.slurm_request = d;
+  }
   return m;
 }
 

@@ -2,11 +2,13 @@
 // DIR/sweep.json: what a sweep directory was asked to hold (the spec, the shard, every episode
 // id of the whole sweep), so that `parksim merge` can list the episodes that are missing.
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "parksim/sweep/Shard.h"
+#include "parksim/sweep/SlurmScript.h"
 
 namespace parksim {
 
@@ -18,6 +20,11 @@ struct SweepManifest {
   /// Array tasks of the Slurm script `--slurm` wrote into this directory (DIR/sweep.sbatch), so
   /// that `--slurm --missing` deals the episodes to the same shards; 0 when there is none.
   int slurm_shards = 0;
+  /// What each of those tasks asked Slurm for (SlurmDef's cpus_per_task, mem, time, partition,
+  /// account and max_parallel; its other fields are not recorded), so that `--slurm --missing`
+  /// asks for the same unless its own command line names other values. Empty without a Slurm
+  /// script, and in manifests written before it was recorded.
+  std::optional<SlurmDef> slurm_request = std::nullopt;
 };
 
 /// Writes DIR/sweep.json atomically.

@@ -89,9 +89,9 @@ TEST(SweepCli, SurvivesAKillAndCompletesEachEpisodeOnceThenReports) {
                         "plan_time.png", "path_length.png", "duration.png"}) {
     EXPECT_TRUE(fs::exists(out + "/report/" + f)) << f;
   }
-  EXPECT_NE(
-      slurp(out + "/report/summary.md").find("| head_in | rrt-goal-connect+smooth | world | 6 | 6/6"),
-      std::string::npos);
+  EXPECT_NE(slurp(out + "/report/summary.md")
+                .find("| head_in | rrt-goal-connect+smooth | world | 6 | 6/6"),
+            std::string::npos);
   // The report is an output directory like plan's: written again whole, and never into a
   // directory of other files (it used to drop its files into any --out, the sweep's own too).
   EXPECT_EQ(runParksim("report " + out).exit_code, 0);
@@ -215,6 +215,42 @@ TEST(SweepCli, AChangedRowIsReportedByMergeReportAndVerify) {
   const auto resumed = runParksim("sweep " + dir + "/spec.yaml --out " + out);
   EXPECT_EQ(resumed.exit_code, 2) << resumed.out;
   EXPECT_NE(resumed.out.find(where), std::string::npos) << resumed.out;
+}
+
+// --slurm --missing writes the script again: it asks for what the first --slurm asked (not the
+// defaults: 1G could be less memory than the episodes need), except what its own options name.
+// A stand-in sbatch on PATH records its arguments.
+TEST(SweepCli, MissingAsksForTheFirstSubmissionsResources) {
+  const std::string dir = scratchDir();
+  writeText(dir + "/spec.yaml", studySpec("seeds: {from: 1, to: 4}\n"));
+  fs::create_directories(dir + "/bin");
+  writeText(dir + "/bin/sbatch",
+            "#!/bin/sh\necho \"$@\" >> \"$(dirname \"$0\")/calls\"\necho 42\n");
+  fs::permissions(dir + "/bin/sbatch", fs::perms::owner_all);
+  const std::string parksim = "PATH=" + dir + "/bin:$PATH " + testing::parksimExe();
+  const std::string sweep = "sweep " + dir + "/spec.yaml --out " + dir + "/out --slurm";
+  ASSERT_EQ(runParksim(sweep + " --slurm-shards 2 --slurm-mem 300M --slurm-time 00:07:00 "
+                               "--slurm-max-parallel 1")
+                .exit_code,
+            0);
+  // No shard ran: both are missing.
+  const auto again = testing::runProgram(parksim, sweep + " --missing");
+  ASSERT_EQ(again.exit_code, 0) << again.out;
+  EXPECT_NE(again.out.find("submitted job 42: array tasks 0,1 of 2"), std::string::npos)
+      << again.out;
+  std::string script = slurp(dir + "/out/sweep.sbatch");
+  EXPECT_NE(script.find("#SBATCH --mem=300M\n"), std::string::npos) << script;
+  EXPECT_NE(script.find("#SBATCH --time=00:07:00\n"), std::string::npos) << script;
+  EXPECT_NE(script.find("#SBATCH --array=0-1%1\n"), std::string::npos) << script;
+  // A longer time limit for the resubmission; the memory stays the first submission's.
+  const auto longer = testing::runProgram(parksim, sweep + " --missing --slurm-time 00:20:00");
+  ASSERT_EQ(longer.exit_code, 0) << longer.out;
+  script = slurp(dir + "/out/sweep.sbatch");
+  EXPECT_NE(script.find("#SBATCH --time=00:20:00\n"), std::string::npos) << script;
+  EXPECT_NE(script.find("#SBATCH --mem=300M\n"), std::string::npos) << script;
+  const std::string calls = slurp(dir + "/bin/calls");
+  EXPECT_NE(calls.find("--parsable --array=0,1 " + dir + "/out/sweep.sbatch"), std::string::npos)
+      << calls;
 }
 
 TEST(SweepCli, MissingNeedsASlurmSweep) {
