@@ -33,8 +33,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   parksim::SweepManifest back;
   if (!parksim::readSweepManifest(dir, back)) std::abort();
   if (back.episode_ids != m.episode_ids || back.name != m.name ||
-      back.slurm_shards != m.slurm_shards || back.shard.index != m.shard.index) {
+      back.slurm_shards != m.slurm_shards || back.shard.index != m.shard.index ||
+      back.slurm_request.has_value() != m.slurm_request.has_value()) {
     std::abort();
+  }
+  if (m.slurm_request) {
+    const parksim::SlurmDef& a = *m.slurm_request;
+    const parksim::SlurmDef& b = *back.slurm_request;
+    if (a.cpus_per_task < 1 || a.cpus_per_task != b.cpus_per_task || a.mem != b.mem ||
+        a.time != b.time || a.partition != b.partition || a.account != b.account ||
+        a.max_parallel != b.max_parallel) {
+      std::abort();
+    }
   }
   return 0;
 }
