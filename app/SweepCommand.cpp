@@ -242,7 +242,9 @@ int resubmitMissing(const SweepOptions& o, const SweepSpec& spec,
   }
   SlurmDef d;
   const std::string script = writeSlurmFiles(again, spec, all, shards, d);
-  const Submission sub = submitArrayTasks(script, list, o.wait, o.out + "/logs/sbatch-missing.log");
+  // The throttle goes with the list: sbatch's --array replaces the script's whole #SBATCH one.
+  const Submission sub =
+      submitArrayTasks(script, list + d.max_parallel, o.wait, o.out + "/logs/sbatch-missing.log");
   std::printf("submitted job %s: array tasks %s of %d (%zu episodes missing)\n", sub.job_id.c_str(),
               list.c_str(), shards, missing);
   if (!o.wait) return 0;

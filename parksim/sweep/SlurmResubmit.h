@@ -35,7 +35,8 @@ struct Submission {
   int exit_code = 0;   ///< sbatch's (with `wait`, the job's: non-zero when a task failed)
 };
 
-/// Runs `sbatch --parsable --array=LIST [--wait] SCRIPT` with its output in `log_path`.
+/// Runs `sbatch --parsable --array=LIST [--wait] SCRIPT` with its output in `log_path`; LIST
+/// ends in the array's throttle ("%4") when it has one.
 /// Throws EnvironmentError when sbatch is not installed, Error when it did not submit (its
 /// output quoted).
 Submission submitArrayTasks(const std::string& script, const std::string& array_list, bool wait,
