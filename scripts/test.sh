@@ -1,19 +1,20 @@
 #!/usr/bin/env bash
-# Installs what is missing (scripts/install-deps.sh test), then runs four passes:
+# Installs what is missing (scripts/install-deps.sh test), then runs three passes:
 #   1. sanitizers: every GoogleTest program and the parksim program built with clang,
 #      AddressSanitizer (LeakSanitizer on, its suppressions in tests/lsan.supp) and
-#      UndefinedBehaviorSanitizer; all their tests;
-#   2. Release: the front-ends the sanitizer build leaves out (the Python module, the
-#      benchmarks, the documentation's example programs, the installed package) and their
-#      tests (`ctest -L front_end`), compiled with clang unless CXX names a compiler
+#      UndefinedBehaviorSanitizer, against the static libraries; all their tests;
+#   2. front-ends: what the sanitizer build leaves out (the Python module, the benchmarks, the
+#      documentation's example programs, the installed package and its consumer), in Release
+#      against the shared libraries (build/, made PARKSIM_SHARED=ON), and their tests
+#      (`ctest -L front_end`); compiled with clang unless CXX names a compiler
 #      (scripts/build.sh);
-#   3. fuzzing: the readers' libFuzzer harnesses, bounded (scripts/fuzz.sh --ci);
-#   4. shared libraries (PARKSIM_SHARED=ON): the parksim program and the Python module, the
-#      installed-package consumer and the Python tests against them.
+#   3. fuzzing: the readers' libFuzzer harnesses, bounded (scripts/fuzz.sh --ci).
 # Every test runs once. Usage:
 #   scripts/test.sh                              all passes
-#   PARKSIM_SKIP_SANITIZERS=1 scripts/test.sh    no sanitizer build: pass 2 builds and runs
-#                                                every test in Release instead
+#   PARKSIM_SKIP_SANITIZERS=1 scripts/test.sh    no sanitizer build: everything in Release
+#                                                against the static libraries (build/), every
+#                                                test; fuzzing; then the front-end tests
+#                                                against the shared libraries (build-shared/)
 #   CC=gcc CXX=g++ PARKSIM_SKIP_SANITIZERS=1 scripts/test.sh
 #                                                the same with GCC, in a fresh clone (CI builds
 #                                                with clang only; docs/building.md)
@@ -23,21 +24,22 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh test
 jobs=$(nproc)
 
-# In CI (a clean clone) the compiler cache starts empty and lives in this clone only: it lets
-# pass 4 take the objects pass 2 compiled (same flags) instead of compiling them again.
-if [ "${CI:-}" = true ] && [ -z "${CCACHE_DIR:-}" ]; then
-  export CCACHE_DIR=$PWD/build-ccache
-fi
+# No compiler cache in CI (a clean clone, an empty cache): nothing else there uses a pass's
+# objects, and a cold cache only costs (each file preprocessed once more for its key).
+ccache=1
+[ "${CI:-}" = true ] && ccache=0
+shared_front_ends() {  # shared_front_ends BUILD_DIR: the front-ends and their tests, shared
+  PARKSIM_CCACHE=$ccache scripts/build.sh "$1" -DPARKSIM_SHARED=ON \
+    -DPARKSIM_BUILD_TESTS=ON -DPARKSIM_BUILD_BENCH=ON -DPARKSIM_PYTHON=ON \
+    --target parksim_front_end_tests
+  ctest --test-dir "$1" --output-on-failure --parallel "$jobs" -L front_end
+}
 
 if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   echo "== Sanitizer build (clang, ASan + LSan + UBSan) and the library's tests"
   # Only what the tests run: the GoogleTest programs and the parksim program (parksim_tests).
   # clang, -O1 -g1 (line tables: reports still name file and line): this build took 350 s on
   # 2 cores where GCC took about 840 s (docs/building.md).
-  # No compiler cache in CI: nothing else uses these objects, and a cold cache only costs (each
-  # file preprocessed once more for its key).
-  ccache=1
-  [ "${CI:-}" = true ] && ccache=0
   PARKSIM_CCACHE=$ccache scripts/build.sh build-sanitize -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPARKSIM_SANITIZE=ON -DPARKSIM_BUILD_BENCH=OFF \
     -DPARKSIM_PYTHON=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
@@ -55,32 +57,32 @@ if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0" \
   UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --test-dir build-sanitize --output-on-failure --parallel "$jobs"
-  release_targets=(--target parksim_front_end_tests)
-  release_tests=(-L front_end)
+
+  echo "== Front-ends (Release, shared libraries) and their tests"
+  # In build/, where the documentation's commands find them. The libraries compile alike
+  # static and shared (cmake/TargetDefaults.cmake), so after scripts/demo.sh this pass only
+  # links them again; one pass builds the libraries in Release, where a static and a shared
+  # pass compiled them twice (clang's precompiled headers, which embed their build directory,
+  # gave a compiler cache no hits across the two: 152 s more in CI).
+  shared_front_ends build
+
+  echo "== Fuzzing the world-file and plan-file readers (bounded; docs/limits.md)"
+  scripts/fuzz.sh --ci
 else
-  release_targets=()
-  release_tests=()
+  echo "== Release build (static libraries): everything and every test"
+  PARKSIM_CCACHE=$ccache scripts/build.sh build -DPARKSIM_SHARED=OFF -DPARKSIM_BUILD_TESTS=ON \
+    -DPARKSIM_BUILD_BENCH=ON -DPARKSIM_PYTHON=ON
+  ctest --test-dir build --output-on-failure --parallel "$jobs"
+
+  echo "== Fuzzing the world-file and plan-file readers (bounded; docs/limits.md)"
+  scripts/fuzz.sh --ci
+
+  echo "== The front-ends against the shared libraries"
+  # With build/'s compiler (CC and CXX, or what configured build/ chose).
+  if [ ! -f build-shared/CMakeCache.txt ] && [ -z "${CXX:-}" ]; then
+    export CC CXX
+    CC=$(sed -n "s/^CMAKE_C_COMPILER:[A-Z]*=//p" build/CMakeCache.txt)
+    CXX=$(sed -n "s/^CMAKE_CXX_COMPILER:[A-Z]*=//p" build/CMakeCache.txt)
+  fi
+  shared_front_ends build-shared
 fi
-
-echo "== Release build: the front-ends and their tests"
-scripts/build.sh build -DPARKSIM_BUILD_TESTS=ON -DPARKSIM_BUILD_BENCH=ON -DPARKSIM_PYTHON=ON \
-  "${release_targets[@]}"
-ctest --test-dir build --output-on-failure --parallel "$jobs" "${release_tests[@]}"
-
-echo "== Fuzzing the world-file and plan-file readers (bounded; docs/limits.md)"
-scripts/fuzz.sh --ci
-
-echo "== Shared libraries: the installed package and the Python module"
-# With the Release pass's compiler (whatever configured build/ chose), so that
-# the compiler cache serves pass 2's objects.
-shared_options=()
-if [ ! -f build-shared/CMakeCache.txt ]; then
-  for lang in C CXX; do
-    compiler=$(sed -n "s/^CMAKE_${lang}_COMPILER:[A-Z]*=//p" build/CMakeCache.txt)
-    shared_options+=("-DCMAKE_${lang}_COMPILER=$compiler")
-  done
-fi
-scripts/build.sh build-shared -DPARKSIM_SHARED=ON -DPARKSIM_BUILD_BENCH=OFF \
-  "${shared_options[@]}" --target parksim parksim_python
-ctest --test-dir build-shared --output-on-failure --parallel "$jobs" \
-  -R '^(package\.consumer|python\.test_plan_run|python\.test_world)$'
