@@ -67,6 +67,16 @@ std::string sbatchScript(const SlurmDef& d) {
   sbatchWord(d.partition, "--slurm-partition");
   sbatchWord(d.account, "--slurm-account");
   sbatchWord(d.max_parallel, "--slurm-max-parallel");
+  // Appended to the array's index range ("0-9%4"): anything but "%K" would change the range
+  // (a max_parallel of "0-5" in an edited sweep.json asked for "--array=0-90-5").
+  const bool throttle = d.max_parallel.size() >= 2 && d.max_parallel.size() <= 7 &&
+                        d.max_parallel[0] == '%' &&
+                        d.max_parallel.find_first_not_of("0123456789", 1) == std::string::npos;
+  if (!d.max_parallel.empty() && !throttle) {
+    throw Error(
+        "--slurm-max-parallel: the array's throttle must be %K with K a whole number, got " +
+        d.max_parallel);
+  }
   onOneLine(d.out_dir, "--out");
   onOneLine(d.parksim_exe, "the parksim executable's path");
   const std::string n = std::to_string(d.shards);

@@ -248,6 +248,16 @@ TEST(SweepCli, MissingAsksForTheFirstSubmissionsResources) {
   script = slurp(dir + "/out/sweep.sbatch");
   EXPECT_NE(script.find("#SBATCH --time=00:20:00\n"), std::string::npos) << script;
   EXPECT_NE(script.find("#SBATCH --mem=300M\n"), std::string::npos) << script;
+  // An edited sweep.json cannot change the array's range through the throttle.
+  std::string manifest = slurp(dir + "/out/sweep.json");
+  const std::size_t at = manifest.find("\"max_parallel\": \"%1\"");
+  ASSERT_NE(at, std::string::npos) << manifest;
+  writeText(dir + "/out/sweep.json", manifest.replace(at, 20, "\"max_parallel\": \"0-5\""));
+  const auto edited = testing::runProgram(parksim, sweep + " --missing");
+  EXPECT_EQ(edited.exit_code, 2) << edited.out;
+  EXPECT_NE(edited.out.find("--slurm-max-parallel: the array's throttle must be %K"),
+            std::string::npos)
+      << edited.out;
   const std::string calls = slurp(dir + "/bin/calls");
   // The throttle of the first submission too: --array on the command line replaces the script's.
   EXPECT_NE(calls.find("--parsable --array=0,1%1 " + dir + "/out/sweep.sbatch"), std::string::npos)
