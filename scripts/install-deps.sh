@@ -36,8 +36,8 @@ test_packages=(
   libclang-rt-14-dev
   # bench/bench_mujoco: MuJoCo side by side with parksim (optional at configure time).
   libmujoco-dev
-  # scripts/test.sh builds the shared-library pass from the Release pass's objects through a
-  # compiler cache of its own.
+  # scripts/build.sh compiles through it where it is installed: a second build of the same
+  # sources on one machine (a test.sh run again, another clone) costs seconds (CI does without).
   ccache
 )
 

@@ -65,18 +65,17 @@ if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   # pass compiled them twice (clang's precompiled headers, which embed their build directory,
   # gave a compiler cache no hits across the two: 152 s more in CI).
   shared_front_ends build
-
-  echo "== Fuzzing the world-file and plan-file readers (bounded; docs/limits.md)"
-  scripts/fuzz.sh --ci
 else
   echo "== Release build (static libraries): everything and every test"
   PARKSIM_CCACHE=$ccache scripts/build.sh build -DPARKSIM_SHARED=OFF -DPARKSIM_BUILD_TESTS=ON \
     -DPARKSIM_BUILD_BENCH=ON -DPARKSIM_PYTHON=ON
   ctest --test-dir build --output-on-failure --parallel "$jobs"
+fi
 
-  echo "== Fuzzing the world-file and plan-file readers (bounded; docs/limits.md)"
-  scripts/fuzz.sh --ci
+echo "== Fuzzing the world-file and plan-file readers (bounded; docs/limits.md)"
+scripts/fuzz.sh --ci
 
+if [ "${PARKSIM_SKIP_SANITIZERS:-0}" = 1 ]; then
   echo "== The front-ends against the shared libraries"
   # With build/'s compiler (CC and CXX, or what configured build/ chose).
   if [ ! -f build-shared/CMakeCache.txt ] && [ -z "${CXX:-}" ]; then
