@@ -3,6 +3,7 @@
 #include <string_view>
 
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 
 namespace parksim {
 namespace {
@@ -68,13 +69,15 @@ std::string sbatchScript(const SlurmDef& d) {
   sbatchWord(d.account, "--slurm-account");
   sbatchWord(d.max_parallel, "--slurm-max-parallel");
   // Appended to the array's index range ("0-9%4"): anything but "%K" would change the range
-  // (a max_parallel of "0-5" in an edited sweep.json asked for "--array=0-90-5").
-  const bool throttle = d.max_parallel.size() >= 2 && d.max_parallel.size() <= 7 &&
-                        d.max_parallel[0] == '%' &&
-                        d.max_parallel.find_first_not_of("0123456789", 1) == std::string::npos;
-  if (!d.max_parallel.empty() && !throttle) {
+  // (a max_parallel of "0-5" in an edited sweep.json asked for "--array=0-90-5"). K as the
+  // command line's --slurm-max-parallel allows it.
+  long long k = 0;
+  if (!d.max_parallel.empty() &&
+      (d.max_parallel[0] != '%' || !parseInt(std::string_view(d.max_parallel).substr(1), k) ||
+       k < 1 || k > 100000 || d.max_parallel.find('+') != std::string::npos)) {
     throw Error(
-        "--slurm-max-parallel: the array's throttle must be %K with K a whole number, got " +
+        "--slurm-max-parallel: the array's throttle must be %K with K from 1 to 100000, "
+        "got " +
         d.max_parallel);
   }
   onOneLine(d.out_dir, "--out");

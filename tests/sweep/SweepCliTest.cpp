@@ -255,8 +255,10 @@ TEST(SweepCli, MissingAsksForTheFirstSubmissionsResources) {
   writeText(dir + "/out/sweep.json", manifest.replace(at, 20, "\"max_parallel\": \"0-5\""));
   const auto edited = testing::runProgram(parksim, sweep + " --missing");
   EXPECT_EQ(edited.exit_code, 2) << edited.out;
-  EXPECT_NE(edited.out.find("--slurm-max-parallel: the array's throttle must be %K"),
-            std::string::npos)
+  EXPECT_NE(
+      edited.out.find(
+          "--slurm-max-parallel: the array's throttle must be %K with K from 1 to 100000, got 0-5"),
+      std::string::npos)
       << edited.out;
   const std::string calls = slurp(dir + "/bin/calls");
   // The throttle of the first submission too: --array on the command line replaces the script's.
