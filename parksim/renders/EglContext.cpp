@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "parksim/core/Error.h"
+#include "parksim/core/SharedLibrary.h"
 #include "parksim/renders/GlFunctions.h"
-#include "parksim/renders/SharedLibrary.h"
 
 namespace parksim::detail {
 

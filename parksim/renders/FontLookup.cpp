@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "parksim/core/Error.h"
-#include "parksim/renders/SharedLibrary.h"
+#include "parksim/core/SharedLibrary.h"
 
 namespace parksim {
 

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "parksim/core/Error.h"
-#include "parksim/renders/SharedLibrary.h"
+#include "parksim/core/SharedLibrary.h"
 
 namespace parksim::detail {
 

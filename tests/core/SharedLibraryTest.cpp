@@ -1,4 +1,4 @@
-#include "parksim/renders/SharedLibrary.h"
+#include "parksim/core/SharedLibrary.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 namespace parksim {
 namespace {
 
-// zlib is linked into every render test: loaded before any test runs.
-constexpr const char* kLoaded = "libz.so.1";
+// libm: the C++ runtime needs it, so it is loaded before any test runs.
+constexpr const char* kLoaded = "libm.so.6";
 constexpr const char* kMissing = "libparksim-no-such-library.so.1";
 
 TEST(SharedLibraryTest, MissingLibraryIsAnEnvironmentErrorWithAHint) {
@@ -25,33 +25,33 @@ TEST(SharedLibraryTest, MissingLibraryIsAnEnvironmentErrorWithAHint) {
 }
 
 TEST(SharedLibraryTest, FindsTypedFunctionsAndNamesMissingOnes) {
-  const SharedLibrary zlib(kLoaded, "zlib", "");
-  using Version = const char* (*)();
-  const auto version = zlib.function<Version>("zlibVersion");
-  ASSERT_NE(version, nullptr);
-  EXPECT_EQ(version()[0], '1');
-  EXPECT_EQ(zlib.find("no_such_function"), nullptr);
+  const SharedLibrary libm(kLoaded, "libm", "");
+  using Function = double (*)(double);
+  const auto square_root = libm.function<Function>("sqrt");
+  ASSERT_NE(square_root, nullptr);
+  EXPECT_EQ(square_root(6.25), 2.5);
+  EXPECT_EQ(libm.find("no_such_function"), nullptr);
   try {
-    zlib.function<Version>("no_such_function");
+    libm.function<Function>("no_such_function");
     FAIL();
   } catch (const EnvironmentError& e) {
-    EXPECT_EQ(std::string(e.what()), "zlib: libz.so.1 has no no_such_function");
+    EXPECT_EQ(std::string(e.what()), "libm: libm.so.6 has no no_such_function");
   }
 }
 
 TEST(SharedLibraryTest, IfLoadedLoadsNothing) {
   EXPECT_FALSE(SharedLibrary::ifLoaded(kMissing).has_value());
-  const std::optional<SharedLibrary> zlib = SharedLibrary::ifLoaded(kLoaded);
-  ASSERT_TRUE(zlib.has_value());
-  EXPECT_NE(zlib->find("zlibVersion"), nullptr);
+  const std::optional<SharedLibrary> libm = SharedLibrary::ifLoaded(kLoaded);
+  ASSERT_TRUE(libm.has_value());
+  EXPECT_NE(libm->find("sqrt"), nullptr);
 }
 
 TEST(SharedLibraryTest, MovesItsHandle) {
-  SharedLibrary a(kLoaded, "zlib", "");
+  SharedLibrary a(kLoaded, "libm", "");
   SharedLibrary b = std::move(a);
-  EXPECT_NE(b.find("zlibVersion"), nullptr);
+  EXPECT_NE(b.find("sqrt"), nullptr);
   a = std::move(b);
-  EXPECT_NE(a.find("zlibVersion"), nullptr);
+  EXPECT_NE(a.find("sqrt"), nullptr);
 }
 
 }  // namespace

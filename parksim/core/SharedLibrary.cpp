@@ -1,4 +1,4 @@
-#include "parksim/renders/SharedLibrary.h"
+#include "parksim/core/SharedLibrary.h"
 
 #include <dlfcn.h>
 
