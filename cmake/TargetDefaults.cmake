@@ -89,7 +89,7 @@ function(_parksim_apply_pch target)
   get_target_property(kind ${target} PARKSIM_PCH_KIND)
   if(kind STREQUAL "test" AND TARGET parksim_pch_test)
     target_precompile_headers(${target} REUSE_FROM parksim_pch_test)
-  elseif(type STREQUAL "MODULE_LIBRARY")
+  elseif(type STREQUAL "MODULE_LIBRARY" AND target STREQUAL "parksim_python")
     # The Python module: Python.h must come before the standard headers; -fvisibility=hidden.
     set(headers <pybind11/pybind11.h> <pybind11/numpy.h> <pybind11/stl.h> ${PARKSIM_PCH_COMMON})
     if("CLI11::CLI11" IN_LIST libs)
@@ -102,7 +102,7 @@ function(_parksim_apply_pch target)
   elseif(type MATCHES "^(STATIC|SHARED|OBJECT)_LIBRARY$")
     target_precompile_headers(${target} REUSE_FROM parksim_pch_lib)
   endif()
-  # Other programs (benchmarks, examples) are a file or two: nothing to share.
+  # Other programs (benchmarks, examples) and the OMPL plugin are a file or two: nothing to share.
 endfunction()
 
 function(parksim_target_defaults target)

@@ -17,17 +17,3 @@ if(NOT TARGET parksim::stb)
   add_library(parksim::stb UNKNOWN IMPORTED)
   set_target_properties(parksim::stb PROPERTIES IMPORTED_LOCATION "${PARKSIM_STB_LIBRARY}")
 endif()
-
-# OMPL supplies the planner's Reeds-Shepp curves. Debian's omplConfig.cmake defines variables
-# only, and OMPL_LIBRARIES also lists Boost libraries that exist only with the Boost -dev
-# packages installed; libompl links Boost itself, so keep libompl alone. OMPL_INCLUDE_DIRS adds
-# /usr/include itself: use OMPL_INCLUDE_DIR.
-if(NOT TARGET parksim::ompl)
-  set(parksim_ompl_libraries ${OMPL_LIBRARIES})
-  list(FILTER parksim_ompl_libraries INCLUDE REGEX "libompl\\.")
-  add_library(parksim::ompl INTERFACE IMPORTED)
-  set_target_properties(parksim::ompl PROPERTIES
-    INTERFACE_INCLUDE_DIRECTORIES "${OMPL_INCLUDE_DIR}"
-    INTERFACE_SYSTEM_INCLUDE_DIRECTORIES "${OMPL_INCLUDE_DIR}"
-    INTERFACE_LINK_LIBRARIES "${parksim_ompl_libraries}")
-endif()

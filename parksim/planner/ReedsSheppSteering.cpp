@@ -3,31 +3,37 @@
 #include <algorithm>
 #include <cmath>
 
-#include <ompl/base/spaces/ReedsSheppStateSpace.h>
-
 #include "parksim/core/Error.h"
+#include "parksim/planner/OmplPlugin.h"
 
 namespace parksim {
 
-namespace ob = ompl::base;
-
 struct ReedsSheppSteering::Curve {
-  explicit Curve(double radius) : space(radius) {}
-  ob::ReedsSheppStateSpace space;
+  // Segment types of OmplApi.h's reeds_shepp_path.
+  static constexpr int kNone = 0;
+  static constexpr int kLeft = 1;
+  static constexpr int kRight = 3;
 
-  ob::ReedsSheppStateSpace::ReedsSheppPath path(const Pose2& from, const Pose2& to) const {
-    // allocState per call keeps steer() const and safe to call from several threads.
-    ob::State* a = space.allocState();
-    ob::State* b = space.allocState();
-    a->as<ob::SE2StateSpace::StateType>()->setXY(from.x, from.y);
-    a->as<ob::SE2StateSpace::StateType>()->setYaw(from.theta);
-    b->as<ob::SE2StateSpace::StateType>()->setXY(to.x, to.y);
-    b->as<ob::SE2StateSpace::StateType>()->setYaw(to.theta);
-    const ob::ReedsSheppStateSpace::ReedsSheppPath p = space.reedsShepp(a, b);
-    space.freeState(a);
-    space.freeState(b);
+  struct Path {
+    int types[5];
+    double lengths[5];  // signed, in radii
+    double total;       // in radii
+  };
+
+  explicit Curve(double radius)
+      : api(plugin.api()), space(api.reeds_shepp_new(radius), api.reeds_shepp_delete) {}
+
+  Path path(const Pose2& from, const Pose2& to) const {
+    const double a[3] = {from.x, from.y, from.theta};
+    const double b[3] = {to.x, to.y, to.theta};
+    Path p;
+    api.reeds_shepp_path(space.get(), a, b, p.types, p.lengths, &p.total);
     return p;
   }
+
+  OmplPlugin plugin;
+  const ParksimOmplApi& api;
+  std::unique_ptr<void, void (*)(void*)> space;
 };
 
 ReedsSheppSteering::ReedsSheppSteering(const RobotDef& robot, const ReedsSheppDef& def)
@@ -52,11 +58,11 @@ std::vector<PathPiece> ReedsSheppSteering::pieces(const Pose2& from, const Pose2
   const double rho = def_.turning_radius_m;
   std::vector<PathPiece> out;
   for (int i = 0; i < 5; ++i) {
-    const double d = path.length_[i] * rho;  // signed: negative drives backwards, m
-    if (path.type_[i] == ob::ReedsSheppStateSpace::RS_NOP || !(std::abs(d) > 1e-12)) continue;
+    const double d = path.lengths[i] * rho;  // signed: negative drives backwards, m
+    if (path.types[i] == Curve::kNone || !(std::abs(d) > 1e-12)) continue;
     double kappa = 0.0;
-    if (path.type_[i] == ob::ReedsSheppStateSpace::RS_LEFT) kappa = 1.0 / rho;
-    if (path.type_[i] == ob::ReedsSheppStateSpace::RS_RIGHT) kappa = -1.0 / rho;
+    if (path.types[i] == Curve::kLeft) kappa = 1.0 / rho;
+    if (path.types[i] == Curve::kRight) kappa = -1.0 / rho;
     // Moving d metres at curvature kappa turns the heading by d * kappa, in 1 s here.
     out.push_back(pieceOf(toWheelSpeeds({d, d * kappa}, robot_), 1.0));
   }
@@ -64,7 +70,7 @@ std::vector<PathPiece> ReedsSheppSteering::pieces(const Pose2& from, const Pose2
 }
 
 double ReedsSheppSteering::distance(const Pose2& from, const Pose2& to) const {
-  return curve_->path(from, to).length() * def_.turning_radius_m;
+  return curve_->path(from, to).total * def_.turning_radius_m;
 }
 
 SteerResult ReedsSheppSteering::steer(const Pose2& from, const WheelSpeeds& from_wheels,

@@ -1,9 +1,10 @@
 #pragma once
 // Reeds-Shepp steering: the shortest path of forward and reverse arcs of a chosen radius and
 // straights between two poses (Reeds and Shepp 1990; the curve itself comes from OMPL's
-// ReedsSheppStateSpace, which tries all 48 words). The arcs and straights become exact pieces
-// (TimeOptimalTiming.h) driven at the wheel-speed and acceleration limits, stopping at every
-// cusp, so the trajectory ends exactly at the target (up to rounding) at rest.
+// ReedsSheppStateSpace, which tries all 48 words, loaded on first use: OmplPlugin.h). The arcs
+// and straights become exact pieces (TimeOptimalTiming.h) driven at the wheel-speed and
+// acceleration limits, stopping at every cusp, so the trajectory ends exactly at the target (up
+// to rounding) at rest.
 //
 // A diff-drive robot could also turn on the spot (radius 0: rotate-translate-rotate does that);
 // Reeds-Shepp curves need a radius > 0. A radius at or above half the wheel base keeps both
@@ -47,7 +48,7 @@ class ReedsSheppSteering final : public SteeringFunction {
   const ReedsSheppDef& def() const { return def_; }
 
  private:
-  struct Curve;  // OMPL's state space, kept out of this header
+  struct Curve;  // OMPL's state space, through the plugin
   RobotDef robot_;
   ReedsSheppDef def_;
   std::unique_ptr<Curve> curve_;

@@ -10,6 +10,7 @@
 
 #include "parksim/core/NumberFormat.h"
 #include "parksim/core/Provenance.h"
+#include "parksim/planner/OmplPlugin.h"
 
 namespace parksim::bench {
 namespace {
@@ -48,9 +49,10 @@ void block(std::string& out, const std::string& text) {
 
 int omplStatusCode(const BenchRecord& r) {
   if (r.solved) return ob::PlannerStatus::EXACT_SOLUTION;
-  for (int i = 0; i < ob::PlannerStatus::TYPE_COUNT; ++i) {
-    const auto type = static_cast<ob::PlannerStatus::StatusType>(i);
-    if (r.status == ob::PlannerStatus(type).asString()) return i;
+  // OMPL's planners' statuses, by name (their names need libompl: the plugin).
+  const OmplPlugin ompl;
+  for (int i = 0; const char* name = ompl.api().status_name(i); ++i) {
+    if (r.status == name) return i;
   }
   if (r.status == "iteration_limit" || r.status == "time_limit") {
     return ob::PlannerStatus::TIMEOUT;
@@ -102,9 +104,10 @@ std::string omplBenchmarkLog(const OmplLogInfo& info, const std::vector<BenchRec
   out += std::to_string(info.runs_per_planner) + " runs per planner\n";
   out += number(info.total_s) + " seconds spent to collect the data\n";
   out += "1 enum type\nstatus";
-  for (int i = 0; i < ob::PlannerStatus::TYPE_COUNT; ++i) {
+  const OmplPlugin ompl;
+  for (int i = 0; const char* name = ompl.api().status_name(i); ++i) {
     out += '|';
-    out += ob::PlannerStatus(static_cast<ob::PlannerStatus::StatusType>(i)).asString();
+    out += name;
   }
   out += '\n';
   out += std::to_string(planners.size()) + " planners\n";

@@ -12,6 +12,9 @@ cmake --install "$build" --prefix "$tmp/prefix" >/dev/null
 test -f "$tmp/prefix/include/parksim/sim/Episode.h"
 test -x "$tmp/prefix/bin/parksim"
 ls "$tmp"/prefix/lib*/cmake/parksim/parksimConfigVersion.cmake >/dev/null
+# The OMPL plugin, which the consumer's default plan loads (its smoothing uses Reeds-Shepp
+# curves) through the run path the package gives it: nothing in the build tree is reachable.
+ls "$tmp"/prefix/lib*/parksim/libparksim_ompl_plugin.so >/dev/null
 
 generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)

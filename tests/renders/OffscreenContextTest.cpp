@@ -1,11 +1,9 @@
 #include "parksim/renders/OffscreenContext.h"
 
 #include <gtest/gtest.h>
-#include <link.h>
 
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <optional>
 #include <set>
 #include <string>
@@ -20,6 +18,7 @@
 #include "parksim/renders/Renderer.h"
 #include "parksim/renders/SceneBuilder.h"
 #include "parksim/renders/SceneTessellator.h"
+#include "tests/support/LoadedLibraries.h"
 
 namespace parksim {
 namespace {
@@ -232,23 +231,7 @@ TEST(OffscreenContextTest, CallsReachTheirOwnContextAcrossBackends) {
   EXPECT_EQ(in_egl, in_osmesa + 10);
 }
 
-// Whether the process has mapped a shared object whose path contains `fragment`.
-bool mapped(const char* fragment) {
-  struct Search {
-    const char* fragment;
-    bool found;
-  } search{fragment, false};
-  dl_iterate_phdr(
-      [](dl_phdr_info* info, std::size_t, void* data) {
-        auto* s = static_cast<Search*>(data);
-        if (info->dlpi_name != nullptr && std::strstr(info->dlpi_name, s->fragment) != nullptr) {
-          s->found = true;
-        }
-        return 0;
-      },
-      &search);
-  return search.found;
-}
+using testing::mapped;
 
 // What BackendsLoadTheirLibrariesOnFirstUse checks, in a process of its own; returns the
 // first broken expectation, or empty.
