@@ -230,15 +230,24 @@ int resubmitMissing(const SweepOptions& o, const SweepSpec& spec,
   SweepOptions again = o;
   if (manifest.slurm_request) {
     const SlurmDef& asked = *manifest.slurm_request;
-    const auto keep = [&o](const char* option, auto& field, const auto& recorded) {
-      if (o.slurm_given.count(option) == 0) field = recorded;
+    // A recorded word is checked here, so that an edited sweep.json is named as the culprit.
+    const std::string recorded_in = o.out + "/sweep.json: slurm_request.";
+    const auto keep = [&](const char* option, const char* key, std::string& field,
+                          const std::string& recorded, auto check) {
+      if (o.slurm_given.count(option) > 0) return;
+      check(recorded, recorded_in + key + " (" + option + " overrides it)");
+      field = recorded;
     };
-    keep("--slurm-cpus", again.slurm_def.cpus_per_task, asked.cpus_per_task);
-    keep("--slurm-mem", again.slurm_def.mem, asked.mem);
-    keep("--slurm-time", again.slurm_def.time, asked.time);
-    keep("--slurm-partition", again.slurm_def.partition, asked.partition);
-    keep("--slurm-account", again.slurm_def.account, asked.account);
-    keep("--slurm-max-parallel", again.slurm_def.max_parallel, asked.max_parallel);
+    if (o.slurm_given.count("--slurm-cpus") == 0) {
+      again.slurm_def.cpus_per_task = asked.cpus_per_task;
+    }
+    keep("--slurm-mem", "mem", again.slurm_def.mem, asked.mem, checkSbatchWord);
+    keep("--slurm-time", "time", again.slurm_def.time, asked.time, checkSbatchWord);
+    keep("--slurm-partition", "partition", again.slurm_def.partition, asked.partition,
+         checkSbatchWord);
+    keep("--slurm-account", "account", again.slurm_def.account, asked.account, checkSbatchWord);
+    keep("--slurm-max-parallel", "max_parallel", again.slurm_def.max_parallel, asked.max_parallel,
+         checkArrayThrottle);
   }
   SlurmDef d;
   const std::string script = writeSlurmFiles(again, spec, all, shards, d);

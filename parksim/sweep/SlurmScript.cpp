@@ -22,20 +22,6 @@ std::string quoted(const std::string& s) {
   return out;
 }
 
-// A value on an `#SBATCH` line: one word. A newline in --slurm-partition wrote a shell command
-// of its own into the script, which the job then ran.
-const std::string& sbatchWord(const std::string& value, const char* option) {
-  for (const char c : value) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-                    std::string_view("_.:,+=@/%-").find(c) != std::string_view::npos;
-    if (!ok) {
-      throw Error(std::string(option) +
-                  ": must be one word of letters, digits and _.:,+=@/%- for an #SBATCH line");
-    }
-  }
-  return value;
-}
-
 // Text on a comment or #SBATCH line (paths): any character but a line break or control byte.
 const std::string& onOneLine(const std::string& value, const char* what) {
   for (const char c : value) {
@@ -60,26 +46,39 @@ std::string jobName(const std::string& name) {
 
 }  // namespace
 
+// A value on an `#SBATCH` line: one word. A newline in --slurm-partition wrote a shell command
+// of its own into the script, which the job then ran.
+void checkSbatchWord(const std::string& value, const std::string& name) {
+  for (const char c : value) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    std::string_view("_.:,+=@/%-").find(c) != std::string_view::npos;
+    if (!ok) {
+      throw Error(name +
+                  ": must be one word of letters, digits and _.:,+=@/%- for an #SBATCH line");
+    }
+  }
+}
+
+// Appended to the array's index range ("0-9%4"): anything but "%K" would change the range (a
+// max_parallel of "0-5" in an edited sweep.json asked for "--array=0-90-5"). K as the command
+// line's --slurm-max-parallel allows it.
+void checkArrayThrottle(const std::string& value, const std::string& name) {
+  checkSbatchWord(value, name);
+  long long k = 0;
+  if (!value.empty() && (value[0] != '%' || !parseInt(std::string_view(value).substr(1), k) ||
+                         k < 1 || k > 100000 || value.find('+') != std::string::npos)) {
+    throw Error(name + ": the array's throttle must be %K with K from 1 to 100000, got " + value);
+  }
+}
+
 std::string sbatchScript(const SlurmDef& d) {
   if (d.shards < 1) throw Error("--slurm-shards must be at least 1");
   if (d.cpus_per_task < 1) throw Error("--slurm-cpus must be at least 1");
-  sbatchWord(d.mem, "--slurm-mem");
-  sbatchWord(d.time, "--slurm-time");
-  sbatchWord(d.partition, "--slurm-partition");
-  sbatchWord(d.account, "--slurm-account");
-  sbatchWord(d.max_parallel, "--slurm-max-parallel");
-  // Appended to the array's index range ("0-9%4"): anything but "%K" would change the range
-  // (a max_parallel of "0-5" in an edited sweep.json asked for "--array=0-90-5"). K as the
-  // command line's --slurm-max-parallel allows it.
-  long long k = 0;
-  if (!d.max_parallel.empty() &&
-      (d.max_parallel[0] != '%' || !parseInt(std::string_view(d.max_parallel).substr(1), k) ||
-       k < 1 || k > 100000 || d.max_parallel.find('+') != std::string::npos)) {
-    throw Error(
-        "--slurm-max-parallel: the array's throttle must be %K with K from 1 to 100000, "
-        "got " +
-        d.max_parallel);
-  }
+  checkSbatchWord(d.mem, "--slurm-mem");
+  checkSbatchWord(d.time, "--slurm-time");
+  checkSbatchWord(d.partition, "--slurm-partition");
+  checkSbatchWord(d.account, "--slurm-account");
+  checkArrayThrottle(d.max_parallel, "--slurm-max-parallel");
   onOneLine(d.out_dir, "--out");
   onOneLine(d.parksim_exe, "the parksim executable's path");
   const std::string n = std::to_string(d.shards);

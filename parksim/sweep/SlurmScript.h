@@ -26,4 +26,10 @@ struct SlurmDef {
 /// The script's text. Throws Error on a non-positive shard or CPU count.
 std::string sbatchScript(const SlurmDef& def);
 
+/// Throws Error "NAME: ..." unless `value` can stand on an #SBATCH line: one word of letters,
+/// digits and _.:,+=@/%- (sbatchScript checks every field so, named by its option).
+void checkSbatchWord(const std::string& value, const std::string& name);
+/// The same for an array throttle, which must also be empty or %K with K from 1 to 100000.
+void checkArrayThrottle(const std::string& value, const std::string& name);
+
 }  // namespace parksim

@@ -255,11 +255,15 @@ TEST(SweepCli, MissingAsksForTheFirstSubmissionsResources) {
   writeText(dir + "/out/sweep.json", manifest.replace(at, 20, "\"max_parallel\": \"0-5\""));
   const auto edited = testing::runProgram(parksim, sweep + " --missing");
   EXPECT_EQ(edited.exit_code, 2) << edited.out;
-  EXPECT_NE(
-      edited.out.find(
-          "--slurm-max-parallel: the array's throttle must be %K with K from 1 to 100000, got 0-5"),
-      std::string::npos)
+  // The file and the field are named; the option that overrides the field mends it.
+  EXPECT_NE(edited.out.find(dir + "/out/sweep.json: slurm_request.max_parallel "
+                                  "(--slurm-max-parallel overrides it): the array's throttle "
+                                  "must be %K with K from 1 to 100000, got 0-5"),
+            std::string::npos)
       << edited.out;
+  const auto mended = testing::runProgram(parksim, sweep + " --missing --slurm-max-parallel 2");
+  EXPECT_EQ(mended.exit_code, 0) << mended.out;
+  EXPECT_NE(slurp(dir + "/out/sweep.sbatch").find("#SBATCH --array=0-1%2\n"), std::string::npos);
   const std::string calls = slurp(dir + "/bin/calls");
   // The throttle of the first submission too: --array on the command line replaces the script's.
   EXPECT_NE(calls.find("--parsable --array=0,1%1 " + dir + "/out/sweep.sbatch"), std::string::npos)
