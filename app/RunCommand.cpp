@@ -129,9 +129,10 @@ void addFilmOptions(CLI::App& sub, RunOptions& o) {
       ->check(CLI::IsMember({"top", "3d", "both"}));
   sub.add_option("--png-compression", o.png_compression,
                  "frames' PNG compression: default (zlib level 1), fast (run-length: larger "
-                 "files, ~4x less encoding CPU), stored (uncompressed, 3 bytes a pixel)")
+                 "files, ~4x less encoding CPU), stored (uncompressed, 3 bytes a pixel), small "
+                 "(stb's deflate and filters, as the figures: ~15% smaller, ~8x more CPU)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"default", "fast", "stored"}));
+      ->check(CLI::IsMember({"default", "fast", "stored", "small"}));
   o.gl_backend.addTo(sub);
 }
 

@@ -102,7 +102,7 @@ void BM_Png(benchmark::State& state) {
   PngEncoder encoder(png == kStbPng ? PngCompression::kDefault : static_cast<PngCompression>(png));
   for (auto _ : state) {
     if (png == kStbPng) {
-      const std::vector<unsigned char> out = encodePng(image, PngDeflate::kStbDefault);
+      const std::vector<unsigned char> out = encodePng(image, PngCompression::kSmall);
       bytes = out.size();
       benchmark::DoNotOptimize(out.data());
     } else {

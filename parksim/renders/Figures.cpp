@@ -393,7 +393,7 @@ class FigureWriter {
     renderer_.render(scene, camera, image_);
     const std::string path = dir_ + "/" + name + ".png";
     // Figures are written once: stb's slower, smaller encoding is worth it.
-    writePng(path, image_, PngDeflate::kStbDefault);
+    writePng(path, image_, PngCompression::kSmall);
     return path;
   }
 
@@ -469,7 +469,7 @@ void writeTrackingPlot(const TrackingSeries& series, const std::string& title, c
   camera.fill = 1.0;
   renderer.render(buildTrackingPlot(series, title, def.width_px, def.height_px, style), camera,
                   image);
-  writePng(path, image, PngDeflate::kStbDefault);
+  writePng(path, image, PngCompression::kSmall);
 }
 
 }  // namespace parksim

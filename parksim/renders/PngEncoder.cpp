@@ -184,16 +184,17 @@ const char* toString(PngCompression compression) {
     case PngCompression::kDefault: return "default";
     case PngCompression::kFast: return "fast";
     case PngCompression::kStored: return "stored";
+    case PngCompression::kSmall: return "small";
   }
   return "?";
 }
 
 PngCompression pngCompressionFromString(const std::string& name) {
-  for (PngCompression c :
-       {PngCompression::kDefault, PngCompression::kFast, PngCompression::kStored}) {
+  for (PngCompression c : {PngCompression::kDefault, PngCompression::kFast, PngCompression::kStored,
+                           PngCompression::kSmall}) {
     if (name == toString(c)) return c;
   }
-  throw Error("PNG compression must be default, fast or stored, got '" + name + "'");
+  throw Error("PNG compression must be default, fast, stored or small, got '" + name + "'");
 }
 
 PngEncoder::PngEncoder(PngCompression compression) : impl_(std::make_unique<Impl>()) {
@@ -215,6 +216,10 @@ PngEncoder::~PngEncoder() {
 const std::vector<unsigned char>& PngEncoder::encode(const RgbImage& image) {
   checkImage(image);
   Impl& m = *impl_;
+  if (m.compression == PngCompression::kSmall) {
+    m.out = detail::encodePngStbDefault(image);
+    return m.out;
+  }
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
   const std::size_t filtered = (row_bytes + 1) * static_cast<std::size_t>(image.height);
   const std::size_t bound = m.deflating ? deflateBound(&m.zs, static_cast<uLong>(filtered))
@@ -225,6 +230,7 @@ const std::vector<unsigned char>& PngEncoder::encode(const RgbImage& image) {
     case PngCompression::kDefault: m.finish(m.deflateRows(image)); break;
     case PngCompression::kFast: m.finish(m.runLengthRows(image)); break;
     case PngCompression::kStored: m.finish(m.storeRows(image)); break;
+    case PngCompression::kSmall: break;  // above
   }
   return m.out;
 }
@@ -234,13 +240,8 @@ std::vector<unsigned char> encodePng(const RgbImage& image, PngCompression compr
   return encoder.encode(image);
 }
 
-std::vector<unsigned char> encodePng(const RgbImage& image, PngDeflate deflate) {
-  if (deflate == PngDeflate::kStbDefault) return detail::encodePngStbDefault(image);
-  return encodePng(image, PngCompression::kDefault);
-}
-
-void writePng(const std::string& path, const RgbImage& image, PngDeflate deflate) {
-  const std::vector<unsigned char> bytes = encodePng(image, deflate);
+void writePng(const std::string& path, const RgbImage& image, PngCompression compression) {
+  const std::vector<unsigned char> bytes = encodePng(image, compression);
   writeFileAtomically(path,
                       std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }

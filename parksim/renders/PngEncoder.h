@@ -14,7 +14,7 @@
 
 namespace parksim {
 
-/// How PNG frames are compressed (FrameDef::png_compression). All use PNG filter 0 (none).
+/// How PNGs are compressed: frames (FrameDef::png_compression) and figures (kSmall).
 enum class PngCompression {
   /// zlib level 1: fast and small (~25 kB a 640x480 frame), chosen by measurement.
   kDefault,
@@ -25,21 +25,19 @@ enum class PngCompression {
   /// No compression: 3 bytes a pixel (0.92 MB a 640x480 frame). Encoding costs only a copy,
   /// but on a disk, writing such files costs more than compressing them (docs/rendering.md).
   kStored,
+  /// stb_image_write's own deflate (level 8) and the best PNG filter per row: the smallest
+  /// files, ~10x slower to encode than kDefault. For figures, written once each.
+  kSmall,
 };
 
-/// "default", "fast", "stored".
+/// "default", "fast", "stored", "small".
 const char* toString(PngCompression compression);
-/// Parses "default", "fast" or "stored"; throws Error naming them otherwise.
+/// Parses what toString gives; throws Error naming the four otherwise.
 PngCompression pngCompressionFromString(const std::string& name);
 
-enum class PngDeflate {
-  kZlibFast,    ///< PngCompression::kDefault: zlib level 1, filter 0
-  kStbDefault,  ///< stb's built-in deflate, level 8, best filter per row: small and slow
-};
-
-/// Encodes PNGs (8-bit RGB, filter 0), reusing its zlib state and buffers from one image to the
-/// next: for a thread that writes many frames. The bytes depend only on the image and the
-/// compression (kDefault gives exactly the bytes stb_image_write gives with its deflate routed
+/// Encodes PNGs (8-bit RGB; filter 0 but for kSmall), reusing its zlib state and buffers from one
+/// image to the next: for a thread that writes many frames. The bytes depend only on the image and
+/// the compression (kDefault gives exactly the bytes stb_image_write gives with its deflate routed
 /// to zlib's compress2 at level 1 and filter 0, as parksim wrote frames before).
 class PngEncoder {
  public:
@@ -57,16 +55,15 @@ class PngEncoder {
   std::unique_ptr<Impl> impl_;
 };
 
-/// PNG file bytes of `image` (8-bit RGB). Throws Error when encoding fails.
+/// PNG file bytes of `image` (8-bit RGB) compressed as `compression` says. Throws Error when
+/// encoding fails.
 std::vector<unsigned char> encodePng(const RgbImage& image,
-                                     PngDeflate deflate = PngDeflate::kZlibFast);
-/// PNG file bytes of `image` (8-bit RGB, filter 0) compressed as `compression` says.
-std::vector<unsigned char> encodePng(const RgbImage& image, PngCompression compression);
+                                     PngCompression compression = PngCompression::kDefault);
 
 /// Writes `image` to `path` as PNG, atomically (the file appears complete or not at all).
 /// Throws Error naming the path.
 void writePng(const std::string& path, const RgbImage& image,
-              PngDeflate deflate = PngDeflate::kZlibFast);
+              PngCompression compression = PngCompression::kDefault);
 
 /// Reads a PNG (or any image stb_image reads) as 8-bit RGB. Throws Error naming the path.
 RgbImage readPng(const std::string& path);

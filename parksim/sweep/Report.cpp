@@ -81,7 +81,7 @@ void renderTo(const Scene& scene, int w, int h, const std::string& path) {
   CameraDef camera;
   camera.fill = 1.0;
   renderer.render(scene, camera, image);
-  writePng(path, image, PngDeflate::kStbDefault);
+  writePng(path, image, PngCompression::kSmall);
 }
 
 }  // namespace

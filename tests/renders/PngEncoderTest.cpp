@@ -28,9 +28,9 @@ RgbImage pattern(int w, int h) {
 TEST(PngEncoderTest, RoundTripsThroughStbImage) {
   const std::string dir = rendertest::outputDir("PngEncoderTest");
   const RgbImage img = pattern(173, 91);  // odd sizes: no row padding assumptions
-  for (PngDeflate deflate : {PngDeflate::kZlibFast, PngDeflate::kStbDefault}) {
+  for (PngCompression compression : {PngCompression::kDefault, PngCompression::kSmall}) {
     const std::string path = dir + "/round_trip.png";
-    writePng(path, img, deflate);
+    writePng(path, img, compression);
     const RgbImage back = readPng(path);
     EXPECT_EQ(back.width, img.width);
     EXPECT_EQ(back.height, img.height);
@@ -39,7 +39,7 @@ TEST(PngEncoderTest, RoundTripsThroughStbImage) {
 }
 
 constexpr PngCompression kAll[] = {PngCompression::kDefault, PngCompression::kFast,
-                                   PngCompression::kStored};
+                                   PngCompression::kStored, PngCompression::kSmall};
 
 TEST(PngEncoderTest, EveryCompressionRoundTrips) {
   for (PngCompression c : kAll) {
@@ -127,7 +127,8 @@ TEST(PngEncoderTest, CompressionNamesRoundTrip) {
     pngCompressionFromString("9");
     FAIL();
   } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()), "PNG compression must be default, fast or stored, got '9'");
+    EXPECT_EQ(std::string(e.what()),
+              "PNG compression must be default, fast, stored or small, got '9'");
   }
 }
 
