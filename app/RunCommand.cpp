@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/Command.h"
 #include "parksim/cli/FiguresOption.h"
@@ -34,6 +35,13 @@ namespace parksim::app {
 namespace {
 
 using cli::printable;
+
+// --realism's values: the world's own section, or a preset.
+std::vector<std::string> realismChoices() {
+  std::vector<std::string> choices = realismPresetNames();
+  choices.insert(choices.begin(), "world");
+  return choices;
+}
 
 struct RunOptions {
   std::string world;
@@ -77,7 +85,7 @@ void addEpisodeOptions(CLI::App& sub, RunOptions& o) {
                  "(idealised motors, true pose at 240 Hz), lab (motors, mocap at 100 Hz with 60 "
                  "ms latency, fused estimate), odometry (encoders only) (docs/realism.md)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"world", "ideal", "lab", "odometry"}));
+      ->check(CLI::IsMember(realismChoices()));
   sub.add_option("--noise-seed", o.noise_seed,
                  "seed of the realism's random draws (calibration, motor gains, sensor noise), "
                  "independent of --seed")

@@ -1,5 +1,6 @@
 #include "parksim/scenario/RealismReader.h"
 
+#include <algorithm>
 #include <optional>
 
 #include "parksim/core/Angle.h"
@@ -119,8 +120,11 @@ RealismDef readRealism(const YamlField& field) {
   RealismDef d;
   if (const std::optional<YamlField> f = m.optional("preset")) {
     const std::string name = f->text();
-    if (name != "ideal" && name != "lab" && name != "odometry") {
-      f->fail("unknown preset \"" + name + "\"; expected one of: ideal, lab, odometry");
+    const std::vector<std::string> presets = realismPresetNames();
+    if (std::find(presets.begin(), presets.end(), name) == presets.end()) {
+      std::string list;
+      for (const std::string& p : presets) list += (list.empty() ? "" : ", ") + p;
+      f->fail("unknown preset \"" + name + "\"; expected one of: " + list);
     }
     d = presetRealism(name);
   }
