@@ -36,13 +36,6 @@ namespace {
 
 using cli::printable;
 
-// --realism's values: the world's own section, or a preset.
-std::vector<std::string> realismChoices() {
-  std::vector<std::string> choices = realismPresetNames();
-  choices.insert(choices.begin(), "world");
-  return choices;
-}
-
 struct RunOptions {
   std::string world;
   std::string out = "out";

@@ -20,10 +20,10 @@ std::string poseText(const Pose2& p) {
 }
 
 void checkRealismName(const std::string& name) {
-  const std::vector<std::string> presets = realismPresetNames();
-  if (name == "world" || std::find(presets.begin(), presets.end(), name) != presets.end()) return;
-  std::string list = "world";
-  for (const std::string& p : presets) list += ", " + p;
+  const std::vector<std::string> choices = realismChoices();
+  if (std::find(choices.begin(), choices.end(), name) != choices.end()) return;
+  std::string list;
+  for (const std::string& c : choices) list += (list.empty() ? "" : ", ") + c;
   throw Error("realism: unknown value '" + name + "' (expected one of " + list + ")");
 }
 
@@ -42,6 +42,12 @@ void checkGivenPlan(const EpisodeRequest& request, const Scenario& scenario) {
 }
 
 }  // namespace
+
+std::vector<std::string> realismChoices() {
+  std::vector<std::string> choices = realismPresetNames();
+  choices.insert(choices.begin(), "world");
+  return choices;
+}
 
 int executedStride(double rate_hz, double time_step_s) {
   if (rate_hz <= 0.0) return 1;

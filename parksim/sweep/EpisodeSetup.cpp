@@ -5,8 +5,8 @@
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
+#include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/planner/PlanScenario.h"
-#include "parksim/realism/RealismDef.h"
 
 namespace parksim {
 namespace {
@@ -25,19 +25,13 @@ void requireOneOf(const std::string& what, const std::string& value,
 
 }  // namespace
 
-std::vector<std::string> supportedRealismPresets() {
-  std::vector<std::string> names = {"world"};
-  for (const std::string& n : realismPresetNames()) names.push_back(n);
-  return names;
-}
-
 std::vector<std::string> supportedTimings() {
   return {toString(TimingKind::kTimeOptimal), toString(TimingKind::kStudy)};
 }
 
 EpisodeRequest episodeRequest(const EpisodeParams& p, const std::shared_ptr<const World>& world,
                               const ToleranceOverrides& tolerance) {
-  requireOneOf("realism", p.realism, supportedRealismPresets());
+  requireOneOf("realism", p.realism, realismChoices());
   requireOneOf("timing", p.timing, supportedTimings());
   EpisodeRequest r;
   r.world = world;

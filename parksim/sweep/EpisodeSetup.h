@@ -13,8 +13,8 @@
 
 namespace parksim {
 
-/// Values the realism and timing axes accept: "world" and every realism preset; every timing.
-std::vector<std::string> supportedRealismPresets();
+/// Values the timing axis accepts: every timing. (The realism axis accepts realismChoices(),
+/// pipeline/EpisodeSettings.h.)
 std::vector<std::string> supportedTimings();
 
 /// The request for `params` in `world`, with the spec's tolerance overrides. The world is

@@ -14,6 +14,7 @@
 
 #include "parksim/core/Error.h"
 #include "parksim/core/InputFile.h"
+#include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/planner/TreePlanner.h"
 #include "parksim/scenario/YamlField.h"
@@ -319,7 +320,7 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
     spec.timing = namesAxis(*f, supportedTimings(), "timing");
   }
   if (const auto f = top.optional("realism")) {
-    spec.realism = namesAxis(*f, supportedRealismPresets(), "realism");
+    spec.realism = namesAxis(*f, realismChoices(), "realism");
   }
   if (const auto f = top.optional("noise_seeds")) {
     spec.noise_seeds = seedsAxis(*f);
