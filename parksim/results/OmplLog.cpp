@@ -45,14 +45,19 @@ void block(std::string& out, const std::string& text) {
   out += "|>>>\n";
 }
 
-}  // namespace
-
-int omplStatusCode(const BenchRecord& r) {
-  if (r.solved) return ob::PlannerStatus::EXACT_SOLUTION;
-  // OMPL's planners' statuses, by name (their names need libompl: the plugin).
+// OMPL's names of its planner statuses, by code: loaded once per log (they need libompl, so
+// the plugin).
+std::vector<std::string> omplStatusNames() {
   const OmplPlugin ompl;
-  for (int i = 0; const char* name = ompl.api().status_name(i); ++i) {
-    if (r.status == name) return i;
+  std::vector<std::string> names;
+  for (int i = 0; const char* name = ompl.api().status_name(i); ++i) names.emplace_back(name);
+  return names;
+}
+
+int statusCode(const BenchRecord& r, const std::vector<std::string>& status_names) {
+  if (r.solved) return ob::PlannerStatus::EXACT_SOLUTION;
+  for (std::size_t i = 0; i < status_names.size(); ++i) {
+    if (r.status == status_names[i]) return static_cast<int>(i);
   }
   if (r.status == "iteration_limit" || r.status == "time_limit") {
     return ob::PlannerStatus::TIMEOUT;
@@ -62,6 +67,10 @@ int omplStatusCode(const BenchRecord& r) {
   if (r.status.rfind("child", 0) == 0) return ob::PlannerStatus::CRASH;
   return ob::PlannerStatus::UNKNOWN;
 }
+
+}  // namespace
+
+int omplStatusCode(const BenchRecord& r) { return statusCode(r, omplStatusNames()); }
 
 std::string omplLogTimeNow() {
   const std::time_t now = std::time(nullptr);
@@ -104,8 +113,8 @@ std::string omplBenchmarkLog(const OmplLogInfo& info, const std::vector<BenchRec
   out += std::to_string(info.runs_per_planner) + " runs per planner\n";
   out += number(info.total_s) + " seconds spent to collect the data\n";
   out += "1 enum type\nstatus";
-  const OmplPlugin ompl;
-  for (int i = 0; const char* name = ompl.api().status_name(i); ++i) {
+  const std::vector<std::string> status_names = omplStatusNames();
+  for (const std::string& name : status_names) {
     out += '|';
     out += name;
   }
@@ -134,11 +143,17 @@ std::string omplBenchmarkLog(const OmplLogInfo& info, const std::vector<BenchRec
     for (const std::string& prop : properties) out += prop + "\n";
     out += std::to_string(p.runs.size()) + " runs\n";
     for (const BenchRecord* r : p.runs) {
-      const std::vector<std::string> values = {
-          count(r->cusps),         number(r->time_first_s), count(r->tree_size),
-          count(r->iterations),    std::to_string(r->seed), number(r->min_clearance_m),
-          number(r->length_m),     r->solved ? "1" : "0",   std::to_string(omplStatusCode(*r)),
-          number(r->time_total_s), r->valid ? "1" : "0"};
+      const std::vector<std::string> values = {count(r->cusps),
+                                               number(r->time_first_s),
+                                               count(r->tree_size),
+                                               count(r->iterations),
+                                               std::to_string(r->seed),
+                                               number(r->min_clearance_m),
+                                               number(r->length_m),
+                                               r->solved ? "1" : "0",
+                                               std::to_string(statusCode(*r, status_names)),
+                                               number(r->time_total_s),
+                                               r->valid ? "1" : "0"};
       for (const std::string& v : values) out += v + "; ";
       out += "\n";
     }
