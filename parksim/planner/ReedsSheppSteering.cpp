@@ -21,19 +21,18 @@ struct ReedsSheppSteering::Curve {
   };
 
   explicit Curve(double radius)
-      : api(plugin.api()), space(api.reeds_shepp_new(radius), api.reeds_shepp_delete) {}
+      : space(plugin.api().reeds_shepp_new(radius), plugin.api().reeds_shepp_delete) {}
 
   Path path(const Pose2& from, const Pose2& to) const {
     const double a[3] = {from.x, from.y, from.theta};
     const double b[3] = {to.x, to.y, to.theta};
     Path p;
-    api.reeds_shepp_path(space.get(), a, b, p.types, p.lengths, &p.total);
+    plugin.api().reeds_shepp_path(space.get(), a, b, p.types, p.lengths, &p.total);
     return p;
   }
 
   OmplPlugin plugin;
-  const ParksimOmplApi& api;
-  std::unique_ptr<void, void (*)(void*)> space;
+  std::unique_ptr<void, void (*)(void*)> space;  // OMPL's state space, freed by the plugin
 };
 
 ReedsSheppSteering::ReedsSheppSteering(const RobotDef& robot, const ReedsSheppDef& def)

@@ -3,8 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 
 #include "parksim/core/Angle.h"
@@ -66,14 +64,7 @@ std::string firstUseProblem() {
 // OMPL (with Boost and ODE) is loaded with the plugin, when Reeds-Shepp curves are first
 // wanted, not at start-up: a death test runs this in a fresh process.
 TEST(OmplPluginDeathTest, OmplIsLoadedOnFirstUse) {
-  GTEST_FLAG_SET(death_test_style, "threadsafe");
-  EXPECT_EXIT(
-      {
-        const std::string problem = firstUseProblem();
-        std::fprintf(stderr, "%s\n", problem.empty() ? "ok" : problem.c_str());
-        std::exit(problem.empty() ? 0 : 1);
-      },
-      ::testing::ExitedWithCode(0), "ok");
+  testing::expectNoProblemInAFreshProcess(firstUseProblem);
 }
 
 }  // namespace

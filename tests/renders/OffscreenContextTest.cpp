@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <cstdlib>
 #include <optional>
 #include <set>
@@ -272,14 +271,7 @@ std::string firstUseProblem() {
 // The GL backends' libraries (libEGL; libOSMesa with LLVM) are loaded when a context of theirs
 // is first made, not at start-up: a death test runs this in a fresh process.
 TEST(OffscreenContextDeathTest, BackendsLoadTheirLibrariesOnFirstUse) {
-  GTEST_FLAG_SET(death_test_style, "threadsafe");
-  EXPECT_EXIT(
-      {
-        const std::string problem = firstUseProblem();
-        std::fprintf(stderr, "%s\n", problem.empty() ? "ok" : problem.c_str());
-        std::exit(problem.empty() ? 0 : 1);
-      },
-      ::testing::ExitedWithCode(0), "ok");
+  testing::expectNoProblemInAFreshProcess(firstUseProblem);
 }
 
 }  // namespace
