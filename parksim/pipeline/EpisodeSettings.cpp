@@ -43,12 +43,6 @@ void checkGivenPlan(const EpisodeRequest& request, const Scenario& scenario) {
 
 }  // namespace
 
-std::vector<std::string> realismChoices() {
-  std::vector<std::string> choices = realismPresetNames();
-  choices.insert(choices.begin(), "world");
-  return choices;
-}
-
 int executedStride(double rate_hz, double time_step_s) {
   if (rate_hz <= 0.0) return 1;
   return std::max(1, static_cast<int>(std::lround(1.0 / (rate_hz * time_step_s))));

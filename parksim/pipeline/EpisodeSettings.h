@@ -4,9 +4,6 @@
 // runEpisodePipeline uses them; a front-end that steps an episode itself (Python's Episode)
 // takes them from here, so it drives and judges exactly as the pipeline would.
 
-#include <string>
-#include <vector>
-
 #include "parksim/core/TrackingTolerance.h"
 #include "parksim/pipeline/EpisodeRequest.h"
 #include "parksim/planner/PlanScenario.h"
@@ -30,10 +27,6 @@ inline constexpr int kMaxRealisations = 10'000;
 /// runEpisodePipeline calls it first; front-ends call it before they create an output
 /// directory, so bad input writes nothing.
 void checkEpisodeRequest(const EpisodeRequest& request);
-
-/// The values EpisodeRequest::realism accepts: "world" (the world's realism: section, else
-/// ideal), then every preset (realismPresetNames()).
-std::vector<std::string> realismChoices();
 
 /// The settings `request` runs with. Throws Error on an unknown realism.
 EpisodeSettings resolveSettings(const EpisodeRequest& request);

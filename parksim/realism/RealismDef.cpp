@@ -17,6 +17,12 @@ bool RealismDef::active() const {
 
 std::vector<std::string> realismPresetNames() { return {"ideal", "lab", "odometry"}; }
 
+std::vector<std::string> realismChoices() {
+  std::vector<std::string> choices = realismPresetNames();
+  choices.insert(choices.begin(), "world");
+  return choices;
+}
+
 // Values and their sources: docs/realism.md.
 RealismDef presetRealism(const std::string& name) {
   RealismDef r;

@@ -63,6 +63,10 @@ struct RealismDef {
 /// "ideal", "lab" or "odometry"; throws Error naming the choices otherwise.
 RealismDef presetRealism(const std::string& name);
 std::vector<std::string> realismPresetNames();
+/// The names a run may ask for a realism by: "world" (the world file's realism: section, else
+/// ideal), then every preset. `--realism`, the sweep spec's realism axis and episode requests
+/// accept these.
+std::vector<std::string> realismChoices();
 
 /// Throws Error naming the first field out of range ("realism.motor.time_constant_s must be
 /// positive").

@@ -5,8 +5,8 @@
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
-#include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/planner/PlanScenario.h"
+#include "parksim/realism/RealismDef.h"
 
 namespace parksim {
 namespace {

@@ -14,7 +14,7 @@
 namespace parksim {
 
 /// Values the timing axis accepts: every timing. (The realism axis accepts realismChoices(),
-/// pipeline/EpisodeSettings.h.)
+/// realism/RealismDef.h.)
 std::vector<std::string> supportedTimings();
 
 /// The request for `params` in `world`, with the spec's tolerance overrides. The world is

@@ -14,9 +14,9 @@
 
 #include "parksim/core/Error.h"
 #include "parksim/core/InputFile.h"
-#include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/planner/TreePlanner.h"
+#include "parksim/realism/RealismDef.h"
 #include "parksim/scenario/YamlField.h"
 #include "parksim/sim/ExecutionDef.h"
 #include "parksim/sweep/EpisodeSetup.h"
