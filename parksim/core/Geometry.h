@@ -20,6 +20,8 @@ struct OrientedBox {
 
   /// Corners counter-clockwise, starting at (+x, -y) in the box frame.
   std::array<Eigen::Vector2d, 4> corners() const;
+
+  friend bool operator==(const OrientedBox&, const OrientedBox&) = default;
 };
 
 /// A disc in the plane: round bollards and pillars.

@@ -4,6 +4,25 @@
 
 namespace parksim {
 
+namespace {
+
+template <class T>
+void appendAll(std::vector<T>& into, const std::vector<T>& from) {
+  into.insert(into.end(), from.begin(), from.end());
+}
+
+}  // namespace
+
+void appendScene(Scene& into, const Scene& from) {
+  appendAll(into.polygons, from.polygons);
+  appendAll(into.boxes, from.boxes);
+  appendAll(into.prisms, from.prisms);
+  appendAll(into.lines, from.lines);
+  appendAll(into.arrows, from.arrows);
+  appendAll(into.texts, from.texts);
+  if (from.focus) into.focus = from.focus;
+}
+
 std::vector<ScenePolyline> dashed(const ScenePolyline& line, double dash_m, double gap_m) {
   std::vector<ScenePolyline> dashes;
   std::vector<Eigen::Vector3d> pts = line.points;

@@ -29,6 +29,8 @@ struct Extent2 {
   double width() const { return x_max - x_min; }
   double height() const { return y_max - y_min; }
   Eigen::Vector2d center() const { return {0.5 * (x_min + x_max), 0.5 * (y_min + y_max)}; }
+
+  friend bool operator==(const Extent2&, const Extent2&) = default;
 };
 
 /// A box standing on its footprint: obstacles, the robot's body and wheels.
@@ -37,6 +39,8 @@ struct SceneBox {
   double z_min_m = 0.0;   ///< bottom face height, m
   double height_m = 0.1;  ///< m
   Rgba8 color;
+
+  friend bool operator==(const SceneBox&, const SceneBox&) = default;
 };
 
 /// A convex polygon extruded vertically: round and polygonal obstacles (a circle is drawn as a
@@ -46,6 +50,8 @@ struct ScenePrism {
   double z_min_m = 0.0;                    ///< bottom face height, m
   double height_m = 0.1;                   ///< m
   Rgba8 color;
+
+  friend bool operator==(const ScenePrism&, const ScenePrism&) = default;
 };
 
 /// A filled convex polygon lying in the horizontal plane z = z_m (ground, C-space slices).
@@ -53,6 +59,8 @@ struct ScenePolygon {
   std::vector<Eigen::Vector2d> points;  ///< convex, either winding, m
   double z_m = 0.0;
   Rgba8 color;
+
+  friend bool operator==(const ScenePolygon&, const ScenePolygon&) = default;
 };
 
 /// A line of constant on-screen width through world points (paths, tree edges, outlines).
@@ -61,6 +69,8 @@ struct ScenePolyline {
   Rgba8 color;
   float width_px = 2.0f;  ///< on-screen width, pixels
   bool closed = false;    ///< joins the last point back to the first
+
+  friend bool operator==(const ScenePolyline&, const ScenePolyline&) = default;
 };
 
 /// An arrow lying flat at height z_m: a shaft from the pose along its heading and a filled head
@@ -72,6 +82,8 @@ struct SceneArrow {
   double z_m = 0.0;
   Rgba8 color;
   float width_px = 3.0f;  ///< shaft width, pixels
+
+  friend bool operator==(const SceneArrow&, const SceneArrow&) = default;
 };
 
 enum class HAlign { kLeft, kCenter, kRight };
@@ -95,6 +107,8 @@ struct SceneText {
     return {std::move(text), world,  Eigen::Vector2d::Zero(), size_px, color, {0, 0, 0, 0},
             h_align,         v_align};
   }
+
+  friend bool operator==(const SceneText&, const SceneText&) = default;
 };
 
 struct Scene {
@@ -112,7 +126,15 @@ struct Scene {
   std::vector<ScenePolyline> lines;
   std::vector<SceneArrow> arrows;
   std::vector<SceneText> texts;
+
+  /// Equal scenes draw equal images through the same camera: a renderer keeps a backdrop's
+  /// pixels while the backdrop stays equal (Renderer::renderInto).
+  friend bool operator==(const Scene&, const Scene&) = default;
 };
+
+/// Appends `from`'s items after `into`'s, kind by kind, so `into` draws `from` over itself as
+/// one scene would; `from`'s focus replaces `into`'s when set. Background and extent are kept.
+void appendScene(Scene& into, const Scene& from);
 
 /// Splits a polyline into dashes of `dash_m` separated by gaps of `gap_m` (lengths in the
 /// world, so dashes keep their size along a curve). Returns the dashes as separate polylines;

@@ -181,23 +181,34 @@ void addPath(Scene& scene, std::span<const Pose2> poses, double z_m, Rgba8 color
   scene.lines.push_back(std::move(line));
 }
 
-Scene buildScene(const Scenario& scenario, const ViewState& view, const SceneStyle& style) {
-  Scene scene = buildLotScene(scenario, style, view.obstacle_poses, view.contacts);
+SceneLayers buildSceneLayers(const Scenario& scenario, const ViewState& view,
+                             const SceneStyle& style) {
+  SceneLayers layers;
+  layers.back = buildLotScene(scenario, style, view.obstacle_poses, view.contacts);
+  Scene& back = layers.back;
+  Scene& front = layers.front;
+  front.background = back.background;
+  front.extent = back.extent;
+  front.extent_top_m = back.extent_top_m;
+  // The arrows are drawn after every line: they go to the front so the driven path stays
+  // under them, as in one front.
+  front.arrows = std::move(back.arrows);
+  back.arrows.clear();
   for (const Trajectory& edge : view.tree_edges) {
     ScenePolyline line{{}, style.tree, style.tree_px, false};
     line.points.reserve(edge.points.size());
     for (const TrajectoryPoint& p : edge.points) {
       line.points.emplace_back(p.pose.x, p.pose.y, Layers::kTree);
     }
-    if (line.points.size() >= 2) scene.lines.push_back(std::move(line));
+    if (line.points.size() >= 2) back.lines.push_back(std::move(line));
   }
-  addPath(scene, view.planned_path, Layers::kPlanned, style.planned, style.path_px);
-  addPath(scene, view.executed_path, Layers::kExecuted, style.executed, style.path_px);
-  if (view.robot) addRobot(scene, scenario.robot, *view.robot, style);
+  addPath(back, view.planned_path, Layers::kPlanned, style.planned, style.path_px);
+  addPath(front, view.executed_path, Layers::kExecuted, style.executed, style.path_px);
+  if (view.robot) addRobot(front, scenario.robot, *view.robot, style);
   if (view.reference) {
     // Above the body, so that in the top view a tracking error shows as the outline's offset
     // from the body rather than being hidden under it.
-    scene.lines.push_back(boxOutline(footprintAt(scenario.robot, *view.reference),
+    front.lines.push_back(boxOutline(footprintAt(scenario.robot, *view.reference),
                                      scenario.robot.height_m + 0.001, style.reference,
                                      style.outline_px));
   }
@@ -207,7 +218,7 @@ Scene buildScene(const Scenario& scenario, const ViewState& view, const SceneSty
                               "t = " + padLeft(formatFixed(o.time_s, 2), 6) + " s";
     const float size = style.text_px;
     const double pad = 0.5 * size;
-    scene.texts.push_back({line1,
+    front.texts.push_back({line1,
                            std::nullopt,
                            {pad, pad},
                            size,
@@ -215,7 +226,7 @@ Scene buildScene(const Scenario& scenario, const ViewState& view, const SceneSty
                            style.text_background,
                            HAlign::kLeft,
                            VAlign::kTop});
-    scene.texts.push_back({formatOverlayLine2(o),
+    front.texts.push_back({formatOverlayLine2(o),
                            std::nullopt,
                            {pad, pad + 1.35 * size},
                            size,
@@ -224,7 +235,13 @@ Scene buildScene(const Scenario& scenario, const ViewState& view, const SceneSty
                            HAlign::kLeft,
                            VAlign::kTop});
   }
-  return scene;
+  return layers;
+}
+
+Scene buildScene(const Scenario& scenario, const ViewState& view, const SceneStyle& style) {
+  SceneLayers layers = buildSceneLayers(scenario, view, style);
+  appendScene(layers.back, layers.front);
+  return std::move(layers.back);
 }
 
 std::vector<Pose2> samplePath(const Trajectory& trajectory, const RobotDef& robot,

@@ -48,6 +48,18 @@ Scene buildLotScene(const Scenario& scenario, const SceneStyle& style,
 /// The lot scene plus the view state's paths, tree, robot and overlay.
 Scene buildScene(const Scenario& scenario, const ViewState& view, const SceneStyle& style);
 
+/// A view's scene in two layers, for films. `back` holds what changes only when obstacles move
+/// or touch the robot: the lot, obstacles, goal outline, tree and planned path. `front` holds
+/// the rest, over it: the driven path, robot, reference outline, start and goal arrows and the
+/// overlay, with back's background and extent. appendScene(back, front) is buildScene's scene.
+struct SceneLayers {
+  Scene back;
+  Scene front;
+};
+
+SceneLayers buildSceneLayers(const Scenario& scenario, const ViewState& view,
+                             const SceneStyle& style);
+
 /// Poses along a trajectory, following its exact arcs (integrateExact), no farther apart than
 /// `max_step_m` in position or `max_turn_rad` in heading. Includes the first and last pose.
 std::vector<Pose2> samplePath(const Trajectory& trajectory, const RobotDef& robot,

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "RenderTestUtil.h"
 
 namespace parksim {
@@ -81,6 +83,50 @@ TEST(SceneBuilderTest, ViewStateAddsRobotPathsAndOverlay) {
   EXPECT_NE(scene.texts[0].text.find("t =   2.50 s"), std::string::npos) << scene.texts[0].text;
   EXPECT_NE(scene.texts[1].text.find("4.00 mm"), std::string::npos) << scene.texts[1].text;
   EXPECT_FALSE(scene.texts[0].world);
+}
+
+// A film keeps the back layer while the robot drives: it must change with the obstacles and
+// with nothing that moves with the robot, and the two layers must make buildScene's scene.
+TEST(SceneBuilderTest, LayersSplitWhatStaysFromWhatMoves) {
+  const Scenario s = testLot();
+  const SceneStyle style;
+  const std::vector<Pose2> planned = {{0.1, 0.1, 0.0}, {0.2, 0.1, 0.0}, {0.3, 0.2, 0.5}};
+  std::vector<Pose2> executed = {{0.1, 0.1, 0.0}, {0.15, 0.1, 0.0}};
+  ViewState view;
+  view.robot = Pose2{0.15, 0.1, 0.0};
+  view.reference = Pose2{0.16, 0.1, 0.0};
+  view.planned_path = planned;
+  view.executed_path = executed;
+  view.overlay = Overlay{"lot", 2.5, 0.004, 0.01};
+  const SceneLayers first = buildSceneLayers(s, view, style);
+  Scene whole = first.back;
+  appendScene(whole, first.front);
+  EXPECT_EQ(whole, buildScene(s, view, style));
+  EXPECT_EQ(first.front.extent, first.back.extent);
+  EXPECT_TRUE(first.back.texts.empty());
+  EXPECT_EQ(first.front.arrows.size(), 2u);  // start and goal, over the driven path
+
+  // The robot drives on, the overlay ticks: only the front changes.
+  executed.push_back({0.2, 0.12, 0.1});
+  view.robot = executed.back();
+  view.reference = Pose2{0.21, 0.12, 0.1};
+  view.overlay->time_s = 2.6;
+  const SceneLayers later = buildSceneLayers(s, view, style);
+  EXPECT_EQ(later.back, first.back);
+  EXPECT_NE(later.front, first.front);
+
+  // A touched obstacle turns red, a pushed one moves: the back changes.
+  const std::vector<int> touching = {0};
+  view.contacts = touching;
+  EXPECT_NE(buildSceneLayers(s, view, style).back, first.back);
+  view.contacts = {};
+  std::vector<Pose2> poses;
+  for (const Obstacle& o : s.obstacles)
+    poses.push_back({o.box.center.x(), o.box.center.y(), o.box.yaw});
+  view.obstacle_poses = poses;
+  EXPECT_EQ(buildSceneLayers(s, view, style).back, first.back);
+  poses.front().y += 0.01;
+  EXPECT_NE(buildSceneLayers(s, view, style).back, first.back);
 }
 
 TEST(SceneBuilderTest, SampledPathFollowsTheTrajectorysArcs) {
