@@ -322,17 +322,24 @@ void FrameRecorder::Impl::render(const FrameInput& in) {
   view.executed_path = executed;
   if (def.show_tree) view.tree_edges = tree;
   view.overlay = Overlay{scenario.name, in.t_s, in.position_error_m, in.heading_error_rad};
-  const Scene scene = buildScene(scenario, view, style);
+  // The top view keeps the lot's pixels while only the robot moves (Renderer's backdrop); the
+  // following 3D camera sees the lot from a new place every frame.
+  const SceneLayers layers = buildSceneLayers(scenario, view, style);
+  std::optional<Scene> whole;
+  if (def.view != FrameView::kTop) {
+    whole = layers.back;
+    appendScene(*whole, layers.front);
+  }
 
   std::unique_ptr<RgbImage> image = queue->acquire();
   try {
     const CameraDef top{};
     switch (def.view) {
-      case FrameView::kTop: renderer->renderInto(scene, top, *image, 0); break;
-      case FrameView::k3d: renderer->renderInto(scene, def.camera_3d, *image, 0); break;
+      case FrameView::kTop: renderer->renderInto(layers.back, layers.front, top, *image, 0); break;
+      case FrameView::k3d: renderer->renderInto(*whole, def.camera_3d, *image, 0); break;
       case FrameView::kBoth:
-        renderer->renderInto(scene, top, *image, 0);
-        renderer->renderInto(scene, def.camera_3d, *image, def.width_px);
+        renderer->renderInto(layers.back, layers.front, top, *image, 0);
+        renderer->renderInto(*whole, def.camera_3d, *image, def.width_px);
         break;
     }
   } catch (...) {

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -54,6 +55,11 @@ struct Renderer::Impl {
   GLint max_samples = 1;
   GLuint msaa_fbo = 0, msaa_color = 0, msaa_depth = 0;
   GLuint resolve_fbo = 0, resolve_color = 0, resolve_depth = 0;
+  // The kept backdrop (renderInto with a backdrop): its colour and depth at the drawing
+  // framebuffer's size and samples, made on first use; and what it shows.
+  GLuint backdrop_fbo = 0, backdrop_color = 0, backdrop_depth = 0;
+  std::optional<Scene> backdrop_scene;
+  Camera backdrop_camera;
   RendererPrograms programs;
   GLuint mesh_vao = 0, mesh_vbo = 0, overlay_vao = 0, overlay_vbo = 0;
   // Bytes each vertex buffer holds: its storage is kept and grown, not made anew each image
@@ -75,8 +81,14 @@ struct Renderer::Impl {
   }
   GLuint fontTexture(int font_px);
 
+  GLuint drawFramebuffer() const { return samples > 1 ? msaa_fbo : resolve_fbo; }
   void draw(const DrawList& list);
   void clear(const DrawList& list);
+  void drawItems(const DrawList& list);
+  void resolve();
+  void drawBackdrop(const Scene& backdrop, const Camera& cam);
+  void copyFramebuffer(GLuint from, GLuint to);
+  void readInto(RgbImage& out, int x_offset_px);
   template <class Vertex>
   void upload(GLuint vbo, std::size_t& capacity,
               const std::vector<const std::vector<Vertex>*>& batches);
@@ -127,11 +139,14 @@ void Renderer::Impl::init() {
 }
 
 void Renderer::Impl::releaseFramebuffers() {
-  const GLuint fbos[] = {msaa_fbo, resolve_fbo};
-  const GLuint rbs[] = {msaa_color, msaa_depth, resolve_color, resolve_depth};
-  gl->DeleteFramebuffers(2, fbos);
-  gl->DeleteRenderbuffers(4, rbs);
+  const GLuint fbos[] = {msaa_fbo, resolve_fbo, backdrop_fbo};
+  const GLuint rbs[] = {msaa_color,    msaa_depth,     resolve_color,
+                        resolve_depth, backdrop_color, backdrop_depth};
+  gl->DeleteFramebuffers(3, fbos);
+  gl->DeleteRenderbuffers(6, rbs);
   msaa_fbo = msaa_color = msaa_depth = resolve_fbo = resolve_color = resolve_depth = 0;
+  backdrop_fbo = backdrop_color = backdrop_depth = 0;
+  backdrop_scene.reset();
 }
 
 void Renderer::Impl::allocateFramebuffers() {
@@ -225,7 +240,7 @@ void Renderer::Impl::drawRange(std::size_t first, std::size_t count, bool blend)
 }
 
 void Renderer::Impl::clear(const DrawList& dl) {
-  gl->BindFramebuffer(GL_FRAMEBUFFER, samples > 1 ? msaa_fbo : resolve_fbo);
+  gl->BindFramebuffer(GL_FRAMEBUFFER, drawFramebuffer());
   gl->Viewport(0, 0, width, height);
   // With a ground rectangle the whole framebuffer is cleared to its colour (llvmpipe's fast
   // path) and the background is put back around it by scissored clears of the thin margins
@@ -261,6 +276,12 @@ void Renderer::Impl::useMeshProgram(const DrawList& dl) {
 
 void Renderer::Impl::draw(const DrawList& dl) {
   clear(dl);
+  drawItems(dl);
+  resolve();
+}
+
+// Draws into the drawing framebuffer, which is bound, over what it holds.
+void Renderer::Impl::drawItems(const DrawList& dl) {
   gl->BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   gl->Enable(GL_DEPTH_TEST);
   gl->DepthFunc(GL_LEQUAL);
@@ -306,13 +327,62 @@ void Renderer::Impl::draw(const DrawList& dl) {
   }
   gl->DepthMask(GL_TRUE);
   gl->BindVertexArray(0);
+}
 
+void Renderer::Impl::resolve() {
   if (samples > 1) {
     gl->BindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo);
     gl->BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo);
     gl->BlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   }
   gl->BindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo);
+}
+
+// Colour and depth, same size and samples: llvmpipe copies the memory (no shading).
+void Renderer::Impl::copyFramebuffer(GLuint from, GLuint to) {
+  gl->BindFramebuffer(GL_READ_FRAMEBUFFER, from);
+  gl->BindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
+  gl->BlitFramebuffer(0, 0, width, height, 0, 0, width, height,
+                      GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  gl->BindFramebuffer(GL_FRAMEBUFFER, drawFramebuffer());
+  gl->Viewport(0, 0, width, height);
+}
+
+// Leaves the drawing framebuffer bound and holding the backdrop, drawn now or copied back.
+void Renderer::Impl::drawBackdrop(const Scene& backdrop, const Camera& cam) {
+  const bool kept = backdrop_scene && backdrop_camera.view == cam.view &&
+                    backdrop_camera.projection == cam.projection &&
+                    backdrop_camera.perspective == cam.perspective && *backdrop_scene == backdrop;
+  if (kept) {
+    copyFramebuffer(backdrop_fbo, drawFramebuffer());
+    return;
+  }
+  if (backdrop_fbo == 0) {
+    auto storage = [&](GLuint& rb, GLenum format) {
+      gl->GenRenderbuffers(1, &rb);
+      gl->BindRenderbuffer(GL_RENDERBUFFER, rb);
+      gl->RenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0, format, width,
+                                         height);
+    };
+    gl->GenFramebuffers(1, &backdrop_fbo);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, backdrop_fbo);
+    storage(backdrop_color, GL_RGBA8);
+    gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                backdrop_color);
+    storage(backdrop_depth, GL_DEPTH_COMPONENT24);
+    gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                backdrop_depth);
+    if (gl->CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      throw Error("renderer: backdrop framebuffer is incomplete");
+    }
+  }
+  backdrop_scene.reset();  // until it is drawn and kept
+  tessellator.tessellate(backdrop, cam, {samples, def.light_direction, def.ambient}, fonts, list);
+  clear(list);
+  drawItems(list);
+  copyFramebuffer(drawFramebuffer(), backdrop_fbo);
+  backdrop_scene = backdrop;
+  backdrop_camera = cam;
 }
 
 Renderer::Renderer(const RenderDef& def) : Renderer(def, createOffscreenContext(def.context)) {}
@@ -385,27 +455,49 @@ void Renderer::render(const Scene& scene, const CameraDef& camera_def, RgbImage&
   renderInto(scene, camera_def, out, 0);
 }
 
+namespace {
+
+void checkFits(const RgbImage& out, int width, int height, int x_offset_px) {
+  if (out.height != height || x_offset_px < 0 || x_offset_px + width > out.width ||
+      out.pixels.size() != static_cast<std::size_t>(out.width) * out.height * 3) {
+    throw Error("renderer: a " + std::to_string(width) + "x" + std::to_string(height) +
+                " view does not fit at column " + std::to_string(x_offset_px) + " of a " +
+                std::to_string(out.width) + "x" + std::to_string(out.height) + " image");
+  }
+}
+
+}  // namespace
+
 void Renderer::renderInto(const Scene& scene, const CameraDef& camera_def, RgbImage& out,
                           int x_offset_px) {
-  if (out.height != impl_->height || x_offset_px < 0 || x_offset_px + impl_->width > out.width ||
-      out.pixels.size() != static_cast<std::size_t>(out.width) * out.height * 3) {
-    throw Error("renderer: a " + std::to_string(impl_->width) + "x" +
-                std::to_string(impl_->height) + " view does not fit at column " +
-                std::to_string(x_offset_px) + " of a " + std::to_string(out.width) + "x" +
-                std::to_string(out.height) + " image");
-  }
+  checkFits(out, impl_->width, impl_->height, x_offset_px);
   impl_->tessellator.tessellate(scene, camera(scene, camera_def), tessellationDef(), impl_->fonts,
                                 impl_->list);
   const CurrentContext current(*impl_->context);
   impl_->draw(impl_->list);
+  impl_->readInto(out, x_offset_px);
+}
+
+void Renderer::renderInto(const Scene& backdrop, const Scene& scene, const CameraDef& camera_def,
+                          RgbImage& out, int x_offset_px) {
+  checkFits(out, impl_->width, impl_->height, x_offset_px);
+  const Camera cam = camera(scene, camera_def);
+  const CurrentContext current(*impl_->context);
+  impl_->drawBackdrop(backdrop, cam);
+  impl_->tessellator.tessellate(scene, cam, tessellationDef(), impl_->fonts, impl_->list);
+  impl_->drawItems(impl_->list);
+  impl_->resolve();
+  impl_->readInto(out, x_offset_px);
+}
+
+void Renderer::Impl::readInto(RgbImage& out, int x_offset_px) {
   // llvmpipe reads RGBA with a plain copy but converts to RGB pixel by pixel (~10x slower):
   // read RGBA and drop alpha here.
-  const int w = impl_->width;
-  const int h = impl_->height;
-  std::vector<std::uint8_t>& rgba = impl_->rgba;
+  const int w = width;
+  const int h = height;
   rgba.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
-  impl_->gl->ReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-  checkGl(*impl_->gl, "render");
+  gl->ReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  checkGl(*gl, "render");
   for (int y = 0; y < h; ++y) {
     const std::uint8_t* src = rgba.data() + static_cast<std::size_t>(y) * w * 4;
     std::uint8_t* dst =

@@ -83,6 +83,19 @@ class Renderer {
   /// be height(): for views side by side in one image. Throws Error when it does not fit.
   void renderInto(const Scene& scene, const CameraDef& camera_def, RgbImage& out, int x_offset_px);
 
+  /// Draws `backdrop`, then `scene` over it, into columns [x_offset_px, x_offset_px + width())
+  /// of `out`: for films, whose lot stays while the robot moves (buildSceneLayers). The camera
+  /// frames `scene`, so give it the backdrop's extent. The backdrop's pixels and depth are kept,
+  /// and while the next call brings an equal backdrop through the same camera they are copied
+  /// back instead of drawn again: the image never depends on what was drawn before.
+  /// The picture is one scene's (appendScene) but for the order: all of the backdrop is drawn
+  /// before any of `scene`, so a front item lies over backdrop lines it touches where one scene
+  /// draws them over it (solid lines and soft edges go before translucent lines in one scene):
+  /// the arrows' shafts over the planned path, the robot's soft edge over the lines beside it. A
+  /// few dozen pixels of a 640x480 film frame differ from one scene's picture.
+  void renderInto(const Scene& backdrop, const Scene& scene, const CameraDef& camera_def,
+                  RgbImage& out, int x_offset_px);
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -95,6 +95,49 @@ TEST_F(FrameRecorderTest, FramesShowTheRobotWhereTheSampleSaysItIs) {
   EXPECT_EQ(img.at(static_cast<int>(p->x()), static_cast<int>(p->y())), def.style.robot);
 }
 
+// The top view keeps the lot's pixels from frame to frame; a touched obstacle must still turn
+// red, and a pushed one move, in the very frame that says so.
+TEST_F(FrameRecorderTest, FramesShowObstaclesTouchedAndPushed) {
+  FrameDef def;
+  def.out_dir = outputDir("FrameRecorderTest_pushed");
+  FrameRecorder rec(lot_, def);
+  const Obstacle& first = lot_.obstacles.front();
+  std::vector<Pose2> poses;
+  for (const Obstacle& o : lot_.obstacles)
+    poses.push_back({o.box.center.x(), o.box.center.y(), o.box.yaw});
+  FrameInput in;
+  in.pose = {1.0, 0.35, 0.4};
+  in.obstacle_poses = poses;
+  in.t_s = 0.0;
+  rec.addFrame(in);  // as in the scenario
+  in.t_s = 1.0 / def.fps;
+  in.contacts = {0};
+  rec.addFrame(in);  // touched
+  in.t_s = 2.0 / def.fps;
+  in.contacts = {};
+  in.obstacle_poses.front().x += 0.06;
+  rec.addFrame(in);  // pushed
+  rec.finish();
+
+  const SceneStyle style = def.style.scaled(styleScaleFor(def.height_px));
+  ViewState view;
+  view.robot = in.pose;
+  const Camera cam = makeCamera({}, buildScene(lot_, view, style), def.width_px, def.height_px);
+  auto colourAt = [&](int frame, double x, double y) {
+    const auto p = cam.project({x, y, first.height_m});
+    EXPECT_TRUE(p);
+    return readPng(rec.framePath(frame)).at(static_cast<int>(p->x()), static_cast<int>(p->y()));
+  };
+  const double x = first.box.center.x();
+  const double y = first.box.center.y();
+  const double edge = x + first.box.half_extents.x();  // the obstacle's right side (no yaw)
+  ASSERT_EQ(first.box.yaw, 0.0);
+  EXPECT_EQ(colourAt(0, x, y), style.colorFor(first.kind));
+  EXPECT_EQ(colourAt(1, x, y), style.contact);
+  EXPECT_EQ(colourAt(2, edge + 0.03, y), style.colorFor(first.kind));
+  EXPECT_NE(colourAt(0, edge + 0.03, y), style.colorFor(first.kind));
+}
+
 TEST_F(FrameRecorderTest, OutputDoesNotDependOnThreads) {
   for (PngCompression png :
        {PngCompression::kDefault, PngCompression::kFast, PngCompression::kStored}) {
