@@ -1,7 +1,8 @@
 #pragma once
 // PNG files of 8-bit RGB images. Frames (and by default every encodePng) are written with PNG
 // filter 0 (none) and zlib level 1, ten times faster than stb_image_write's own deflate for
-// files 15 % larger; for speed over size, a run-length deflate or no compression at all
+// files 15 % larger, in bands of rows that a PngEncoder copies from the last image it encoded
+// where they did not change; for speed over size, a run-length deflate or no compression at all
 // (PngCompression, docs/rendering.md). stb's deflate (level 8, best filter per row: small and
 // slow) is kept for the figures and so the benchmark can put them side by side. Encoding is
 // thread-safe; a PngEncoder keeps its zlib state and buffers for the next image.
@@ -16,7 +17,9 @@ namespace parksim {
 
 /// How PNGs are compressed: frames (FrameDef::png_compression) and figures (kSmall).
 enum class PngCompression {
-  /// zlib level 1: fast and small (~25 kB a 640x480 frame), chosen by measurement.
+  /// zlib level 1: fast and small (~25 kB a 640x480 frame), chosen by measurement. Bands of 32
+  /// rows are compressed each on its own, so a PngEncoder copies those of a film's frame that
+  /// the last frame already had.
   kDefault,
   /// Speed over size: repeats of the pixel before and the row above only, fixed Huffman codes
   /// (RunLengthDeflate.h). Several times faster to encode than kDefault; files about twice
@@ -36,9 +39,9 @@ const char* toString(PngCompression compression);
 PngCompression pngCompressionFromString(const std::string& name);
 
 /// Encodes PNGs (8-bit RGB; filter 0 but for kSmall), reusing its zlib state and buffers from one
-/// image to the next: for a thread that writes many frames. The bytes depend only on the image and
-/// the compression (kDefault gives exactly the bytes stb_image_write gives with its deflate routed
-/// to zlib's compress2 at level 1 and filter 0, as parksim wrote frames before).
+/// image to the next: for a thread that writes many frames. kDefault also keeps the last image
+/// and its compressed bands, and copies each band that is unchanged instead of compressing it.
+/// The bytes depend only on the image and the compression, never on what was encoded before.
 class PngEncoder {
  public:
   explicit PngEncoder(PngCompression compression = PngCompression::kDefault);

@@ -5,6 +5,8 @@
 
 #include <cstring>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "RenderTestUtil.h"
 #include "parksim/core/Error.h"
@@ -59,47 +61,77 @@ TEST(PngEncoderTest, EveryCompressionRoundTrips) {
   }
 }
 
-// What parksim wrote before it had its own encoder: stb_image_write with filter 0 and its
-// deflate routed to zlib's compress2 at level 1. Built here from the PNG specification.
-std::vector<unsigned char> referencePng(const RgbImage& img) {
-  const std::size_t row = static_cast<std::size_t>(img.width) * 3;
-  std::vector<unsigned char> filtered;
-  for (int y = 0; y < img.height; ++y) {
-    filtered.push_back(0);
-    filtered.insert(filtered.end(), img.pixels.begin() + static_cast<long>(y * row),
-                    img.pixels.begin() + static_cast<long>((y + 1) * row));
-  }
-  uLongf zlen = compressBound(static_cast<uLong>(filtered.size()));
-  std::vector<unsigned char> z(zlen);
-  EXPECT_EQ(compress2(z.data(), &zlen, filtered.data(), static_cast<uLong>(filtered.size()), 1),
-            Z_OK);
-  z.resize(zlen);
-  std::vector<unsigned char> png = {137, 80, 78, 71, 13, 10, 26, 10};
-  auto chunk = [&png](const char* tag, const std::vector<unsigned char>& data) {
-    const auto n = static_cast<std::uint32_t>(data.size());
-    for (int s = 24; s >= 0; s -= 8) png.push_back(static_cast<unsigned char>(n >> s));
-    const std::size_t from = png.size();
-    png.insert(png.end(), tag, tag + 4);
-    png.insert(png.end(), data.begin(), data.end());
-    const auto crc = static_cast<std::uint32_t>(
-        crc32(0, png.data() + from, static_cast<uInt>(png.size() - from)));
-    for (int s = 24; s >= 0; s -= 8) png.push_back(static_cast<unsigned char>(crc >> s));
-  };
-  std::vector<unsigned char> ihdr;
-  for (std::uint32_t v :
-       {static_cast<std::uint32_t>(img.width), static_cast<std::uint32_t>(img.height)}) {
-    for (int s = 24; s >= 0; s -= 8) ihdr.push_back(static_cast<unsigned char>(v >> s));
-  }
-  ihdr.insert(ihdr.end(), {8, 2, 0, 0, 0});
-  chunk("IHDR", ihdr);
-  chunk("IDAT", z);
-  chunk("IEND", {});
-  return png;
+// The zlib stream inside a PNG (one IDAT chunk, as the encoder writes), checked and inflated
+// by zlib itself: the deflate data and the Adler-32 at its end.
+std::vector<unsigned char> inflateIdat(const std::vector<unsigned char>& png, std::size_t raw) {
+  constexpr std::size_t kIdat = 8 + 25;  // signature, IHDR chunk
+  EXPECT_EQ(std::string(png.begin() + kIdat + 4, png.begin() + kIdat + 8), "IDAT");
+  const std::size_t n = (std::size_t{png[kIdat]} << 24) | (std::size_t{png[kIdat + 1]} << 16) |
+                        (std::size_t{png[kIdat + 2]} << 8) | png[kIdat + 3];
+  std::vector<unsigned char> out(raw);
+  uLongf out_len = static_cast<uLongf>(raw);
+  EXPECT_EQ(uncompress(out.data(), &out_len, png.data() + kIdat + 8, static_cast<uLong>(n)), Z_OK);
+  EXPECT_EQ(out_len, raw);
+  return out;
 }
 
-TEST(PngEncoderTest, DefaultWritesTheBytesOfZlibLevelOne) {
-  for (const RgbImage& img : {pattern(640, 480), pattern(173, 91), pattern(1, 1)}) {
-    EXPECT_EQ(encodePng(img), referencePng(img)) << img.width << "x" << img.height;
+// A film's frames: a fixed picture with a block moving across it and a counter-like change in
+// the top rows, as the robot and the overlay change.
+RgbImage filmFrame(int k) {
+  RgbImage img = pattern(640, 480);
+  for (int y = 200; y < 240; ++y) {
+    for (int x = 10 * k; x < 10 * k + 50; ++x) {
+      const std::size_t i = (static_cast<std::size_t>(y) * 640 + x) * 3;
+      img.pixels[i] = 240;
+      img.pixels[i + 1] = 140;
+      img.pixels[i + 2] = 30;
+    }
+  }
+  img.pixels[3 * (5 * 640 + k)] ^= 0xFF;
+  return img;
+}
+
+// kDefault's bands: every frame's bytes are those a fresh encoder gives, whatever the encoder
+// saw before (the same frames in another order, or other sizes between), and zlib reads them
+// back, checksum included.
+TEST(PngEncoderTest, DefaultBytesDoNotDependOnTheLastImage) {
+  PngEncoder warm;
+  std::vector<std::vector<unsigned char>> first;
+  for (int k = 0; k < 6; ++k) first.push_back(warm.encode(filmFrame(k)));
+  warm.encode(pattern(173, 91));
+  for (int k : {5, 3, 3, 0, 4, 1, 2}) {
+    const RgbImage img = filmFrame(k);
+    EXPECT_EQ(warm.encode(img), first[static_cast<std::size_t>(k)]) << "frame " << k;
+    EXPECT_EQ(encodePng(img), first[static_cast<std::size_t>(k)]) << "frame " << k;
+    const std::vector<unsigned char> raw =
+        inflateIdat(first[static_cast<std::size_t>(k)], (640 * 3 + 1) * 480);
+    for (int y = 0; y < 480; ++y) {
+      ASSERT_EQ(raw[static_cast<std::size_t>(y) * (640 * 3 + 1)], 0) << "filter byte, row " << y;
+      ASSERT_EQ(std::memcmp(raw.data() + static_cast<std::size_t>(y) * (640 * 3 + 1) + 1,
+                            img.pixels.data() + static_cast<std::size_t>(y) * 640 * 3, 640 * 3),
+                0)
+          << "row " << y;
+    }
+  }
+}
+
+// Bands cost little next to compressing the whole image as one stream at the same level.
+TEST(PngEncoderTest, DefaultIsAboutTheSizeOfZlibLevelOne) {
+  for (const RgbImage& img : {filmFrame(3), pattern(173, 91)}) {
+    std::vector<unsigned char> filtered;
+    const std::size_t row = static_cast<std::size_t>(img.width) * 3;
+    for (int y = 0; y < img.height; ++y) {
+      filtered.push_back(0);
+      filtered.insert(filtered.end(), img.pixels.begin() + static_cast<long>(y * row),
+                      img.pixels.begin() + static_cast<long>((y + 1) * row));
+    }
+    uLongf zlen = compressBound(static_cast<uLong>(filtered.size()));
+    std::vector<unsigned char> z(zlen);
+    ASSERT_EQ(compress2(z.data(), &zlen, filtered.data(), static_cast<uLong>(filtered.size()), 1),
+              Z_OK);
+    const std::size_t png = encodePng(img).size();
+    EXPECT_LT(static_cast<double>(png), 1.05 * static_cast<double>(zlen + 57))
+        << img.width << "x" << img.height;
   }
 }
 
