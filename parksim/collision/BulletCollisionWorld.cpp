@@ -17,6 +17,15 @@ namespace parksim {
 
 namespace {
 
+// Queries keep no contacts: small pools, not Bullet's default 4,096 contacts, which cost
+// ~20 ms a world to allocate and touch (beyond a pool Bullet takes the heap).
+btDefaultCollisionConstructionInfo smallPools() {
+  btDefaultCollisionConstructionInfo pools;
+  pools.m_defaultMaxPersistentManifoldPoolSize = 64;
+  pools.m_defaultMaxCollisionAlgorithmPoolSize = 64;
+  return pools;
+}
+
 // Broadphase bounds are float and Bullet rounds them; widening the query box by far more than
 // a float ulp at lot scale keeps every obstacle that could touch the footprint a candidate.
 constexpr double kBroadphasePad_m = 1e-5;
@@ -94,7 +103,7 @@ struct BulletCollisionWorld::Impl {
 
   // Members are destroyed in reverse order: the world first (it touches the objects' broadphase
   // proxies when it goes), then the objects, their shapes and the broadphase.
-  btDefaultCollisionConfiguration configuration;
+  btDefaultCollisionConfiguration configuration{smallPools()};
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
   std::vector<std::unique_ptr<btCollisionShape>> shapes;

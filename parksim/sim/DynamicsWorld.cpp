@@ -139,7 +139,12 @@ struct DynamicsWorld::Impl {
   }
 
   void buildWorld() {
-    config = std::make_unique<btDefaultCollisionConfiguration>();
+    // Pools for a robot and its lot's neighbours, not Bullet's default 4,096 contacts: those
+    // cost ~20 ms a world to allocate and touch, and beyond the pool Bullet takes the heap.
+    btDefaultCollisionConstructionInfo pools;
+    pools.m_defaultMaxPersistentManifoldPoolSize = 64;
+    pools.m_defaultMaxCollisionAlgorithmPoolSize = 64;
+    config = std::make_unique<btDefaultCollisionConfiguration>(pools);
     dispatcher = std::make_unique<btCollisionDispatcher>(config.get());
     if (model.solver == SolverKernel::kFast) sphere_box.emplace(*dispatcher);
     pair_filter = makeFixedObstaclePairFilter();
