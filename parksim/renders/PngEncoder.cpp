@@ -49,11 +49,12 @@ constexpr unsigned char kZlibHeader[2] = {0x78, 0x01};
 // (header, raw deflate, Adler-32), IEND. The filtered image (each row a 0 byte, filter "none",
 // then its pixels) is never assembled: rows go to deflate, or into stored blocks, as they are.
 struct PngEncoder::Impl {
-  // kDefault: what is kept of a band of the last image to copy it into the next.
+  // kDefault and kFast: what is kept of a band of the last image to copy it into the next.
   struct Band {
     std::size_t offset = 0;   // of its compressed bytes in the last output
     std::size_t length = 0;   // compressed bytes
     std::uint32_t adler = 1;  // of its filtered rows
+    bool changed = true;      // this image's rows differ from the last image's
   };
 
   PngCompression compression = PngCompression::kDefault;
@@ -62,12 +63,15 @@ struct PngEncoder::Impl {
   // Two outputs, used in turn: the last one stays readable while the next is made.
   std::vector<unsigned char> outs[2];
   int current = 0;
-  RgbImage last;                 // kDefault: the last image encoded (no pixels: none, or it failed)
-  std::vector<Band> band_cache;  // kDefault: the last image's bands
-  std::vector<unsigned char> filtered;  // kFast: the rows, each after its filter byte
-  std::uint32_t adler = 1;              // of the filtered rows, taken while they are in the cache
+  RgbImage last;                        // the last image encoded (no pixels: none, or it failed)
+  std::vector<Band> band_cache;         // the last image's bands
+  std::vector<unsigned char> filtered;  // kFast: the last image's rows, each after its filter byte
+  std::vector<unsigned char> band_bytes;  // kFast: one band's deflate blocks
+  std::uint32_t adler = 1;                // of the filtered rows, taken while they are in the cache
 
   void begin(const RgbImage& image, std::size_t idat_bound);
+  template <class CompressBand>
+  std::size_t encodeBands(const RgbImage& image, bool matches_row_above, CompressBand compress);
   std::size_t deflateRows(const RgbImage& image);
   std::size_t storeRows(const RgbImage& image);
   std::size_t runLengthRows(const RgbImage& image);
@@ -96,60 +100,54 @@ void PngEncoder::Impl::begin(const RgbImage& image, std::size_t idat_bound) {
   o[kIdatStart + 1] = kZlibHeader[1];
 }
 
-// kDefault: zlib level 1, band by band. Each band of kBandRows rows is a deflate stream of its
-// own (the state reset before it, ended by a sync flush on a byte boundary), so its compressed
-// bytes depend on its rows alone. A film's frames share most rows (the lot stays, the robot
-// moves): a band equal to the last image's is copied from the last output with its Adler-32,
-// not compressed again, and the bytes are the same as compressing it.
-std::size_t PngEncoder::Impl::deflateRows(const RgbImage& image) {
+// kDefault and kFast: the image in bands of kBandRows rows, each compressed on its own and ended
+// on a byte boundary (a sync flush), so its bytes depend on its rows alone and, where its
+// matches reach the row above (kFast), on the row before it. A film's frames share most rows
+// (the lot stays, the robot moves): a band that the last image had too is copied from the last
+// output with its Adler-32 instead of compressed, and the bytes are the same as compressing it.
+// `compress(y0, y1, o, end)` writes rows [y0, y1) at `o` (room up to `end`) and returns the
+// bytes written.
+template <class CompressBand>
+std::size_t PngEncoder::Impl::encodeBands(const RgbImage& image, bool matches_row_above,
+                                          CompressBand compress) {
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
-  const int bands = (image.height + kBandRows - 1) / kBandRows;
+  const auto bands = static_cast<std::size_t>((image.height + kBandRows - 1) / kBandRows);
   const bool same_size = last.width == image.width && last.height == image.height;
   last.width = last.height = 0;  // until this image is done
   if (!same_size) last.pixels.assign(image.pixels.size(), 0);
-  band_cache.resize(static_cast<std::size_t>(bands));
+  band_cache.resize(bands);
+  for (std::size_t b = 0; b < bands; ++b) {
+    const std::size_t first = b * kBandRows * row_bytes;
+    const std::size_t bytes = std::min(image.pixels.size() - first, kBandRows * row_bytes);
+    Band& band = band_cache[b];
+    band.changed =
+        !same_size || std::memcmp(image.pixels.data() + first, last.pixels.data() + first, bytes);
+    if (band.changed) std::memcpy(last.pixels.data() + first, image.pixels.data() + first, bytes);
+  }
   const std::vector<unsigned char>& last_out = outs[1 - current];
   unsigned char* const start = out().data() + kIdatStart + 2;
   unsigned char* o = start;
   const unsigned char* const end = out().data() + out().size() - 4 - 12;
-  unsigned char filter = 0;
-  for (int b = 0; b < bands; ++b) {
-    const int y0 = b * kBandRows;
+  for (std::size_t b = 0; b < bands; ++b) {
+    const int y0 = static_cast<int>(b) * kBandRows;
     const int y1 = std::min(image.height, y0 + kBandRows);
-    const std::size_t first = static_cast<std::size_t>(y0) * row_bytes;
-    const std::size_t bytes = static_cast<std::size_t>(y1 - y0) * row_bytes;
-    const unsigned char* rows = image.pixels.data() + first;
-    Band& band = band_cache[static_cast<std::size_t>(b)];
-    const std::size_t filtered_bytes = bytes + static_cast<std::size_t>(y1 - y0);
-    if (same_size && std::memcmp(rows, last.pixels.data() + first, bytes) == 0) {
-      std::memcpy(o, last_out.data() + band.offset, band.length);
-    } else {
-      if (deflateReset(&zs) != Z_OK) throw Error("PNG: zlib cannot reset its state");
-      zs.next_out = o;
-      zs.avail_out = static_cast<uInt>(end - o);
-      auto feed = [this](unsigned char* data, std::size_t n, int flush) {
-        zs.next_in = data;
-        zs.avail_in = static_cast<uInt>(n);
-        // The output has room for the bound of the whole image: all input is taken.
-        if (deflate(&zs, flush) != Z_OK || zs.avail_in != 0) {
-          throw Error("PNG: zlib failed to compress");
-        }
-      };
+    Band& band = band_cache[b];
+    if (band.changed || (matches_row_above && b > 0 && band_cache[b - 1].changed)) {
       band.adler = 1;
       for (int y = y0; y < y1; ++y) {
-        // zlib does not write through next_in; its interface is not const.
-        unsigned char* row = const_cast<unsigned char*>(image.pixels.data() + y * row_bytes);
-        feed(&filter, 1, Z_NO_FLUSH);
-        feed(row, row_bytes, y + 1 == y1 ? Z_SYNC_FLUSH : Z_NO_FLUSH);
         static constexpr unsigned char kFilterNone = 0;
-        band.adler = adler32(adler32(band.adler, &kFilterNone, 1), row, row_bytes);
+        band.adler = adler32(adler32(band.adler, &kFilterNone, 1),
+                             image.pixels.data() + y * row_bytes, row_bytes);
       }
-      band.length = static_cast<std::size_t>(zs.next_out - o);
-      std::memcpy(last.pixels.data() + first, rows, bytes);  // the others are equal already
+      band.length = compress(y0, y1, o, end);
+    } else {
+      std::memcpy(o, last_out.data() + band.offset, band.length);
     }
     band.offset = static_cast<std::size_t>(o - out().data());
     o += band.length;
-    adler = adler32_combine(adler, band.adler, static_cast<z_off_t>(filtered_bytes));
+    adler =
+        adler32_combine(adler, band.adler,
+                        static_cast<z_off_t>(static_cast<std::size_t>(y1 - y0) * (row_bytes + 1)));
   }
   // The last block: empty, fixed codes, final.
   o[0] = 0x03;
@@ -158,6 +156,32 @@ std::size_t PngEncoder::Impl::deflateRows(const RgbImage& image) {
   last.width = image.width;
   last.height = image.height;
   return static_cast<std::size_t>(o - start);
+}
+
+// kDefault: each band a raw deflate stream of zlib level 1 (the state reset before it).
+std::size_t PngEncoder::Impl::deflateRows(const RgbImage& image) {
+  const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
+  return encodeBands(image, false, [&](int y0, int y1, unsigned char* o, const unsigned char* end) {
+    if (deflateReset(&zs) != Z_OK) throw Error("PNG: zlib cannot reset its state");
+    zs.next_out = o;
+    zs.avail_out = static_cast<uInt>(end - o);
+    unsigned char filter = 0;
+    auto feed = [this](unsigned char* data, std::size_t n, int flush) {
+      zs.next_in = data;
+      zs.avail_in = static_cast<uInt>(n);
+      // The output has room for the bound of the whole image: all input is taken.
+      if (deflate(&zs, flush) != Z_OK || zs.avail_in != 0) {
+        throw Error("PNG: zlib failed to compress");
+      }
+    };
+    for (int y = y0; y < y1; ++y) {
+      // zlib does not write through next_in; its interface is not const.
+      unsigned char* row = const_cast<unsigned char*>(image.pixels.data() + y * row_bytes);
+      feed(&filter, 1, Z_NO_FLUSH);
+      feed(row, row_bytes, y + 1 == y1 ? Z_SYNC_FLUSH : Z_NO_FLUSH);
+    }
+    return static_cast<std::size_t>(zs.next_out - o);
+  });
 }
 
 // kStored: blocks of at most 65535 bytes (RFC 1951 3.2.4), copied straight from the rows.
@@ -199,23 +223,26 @@ std::size_t PngEncoder::Impl::storeRows(const RgbImage& image) {
   return static_cast<std::size_t>(o - start);
 }
 
-// kFast: the filtered image assembled (the encoder looks back across rows), then one block.
+// kFast: the filtered image kept (the encoder looks back across rows); each band a block of
+// the run-length deflate, which matches into the row above it.
 std::size_t PngEncoder::Impl::runLengthRows(const RgbImage& image) {
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
-  filtered.resize((row_bytes + 1) * static_cast<std::size_t>(image.height));
-  for (int y = 0; y < image.height; ++y) {
-    const unsigned char* row = image.pixels.data() + y * row_bytes;
-    unsigned char* dst = filtered.data() + y * (row_bytes + 1);
-    dst[0] = 0;
-    std::memcpy(dst + 1, row, row_bytes);
-    checksumRow(row, row_bytes);
-  }
-  const std::size_t start = kIdatStart + 2;
-  out().resize(start);
-  runLengthDeflate(filtered.data(), filtered.size(), 3, row_bytes + 1, out());
-  const std::size_t deflated = out().size() - start;
-  out().resize(out().size() + 4 + 4 + 12);  // Adler-32, CRC, IEND
-  return deflated;
+  const std::size_t stride = row_bytes + 1;
+  filtered.resize(stride * static_cast<std::size_t>(image.height));
+  return encodeBands(image, true, [&](int y0, int y1, unsigned char* o, const unsigned char* end) {
+    for (int y = y0; y < y1; ++y) {
+      unsigned char* dst = filtered.data() + y * stride;
+      dst[0] = 0;
+      std::memcpy(dst + 1, image.pixels.data() + y * row_bytes, row_bytes);
+    }
+    band_bytes.clear();
+    runLengthDeflate(filtered.data(), y0 * stride, y1 * stride, 3, stride, false, band_bytes);
+    if (band_bytes.size() > static_cast<std::size_t>(end - o)) {
+      throw Error("PNG: the run-length deflate outgrew its bound");
+    }
+    std::memcpy(o, band_bytes.data(), band_bytes.size());
+    return band_bytes.size();
+  });
 }
 
 // Adler-32 after the deflate data, then the IDAT length and CRC, then IEND.
@@ -275,13 +302,16 @@ const std::vector<unsigned char>& PngEncoder::encode(const RgbImage& image) {
   }
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
   const std::size_t filtered = (row_bytes + 1) * static_cast<std::size_t>(image.height);
-  // kDefault: each band's bound (deflateBound assumes no flush), its sync flush's empty stored
-  // block, and the final empty block.
+  // Banded: each band's bound (deflateBound assumes no flush; the run-length deflate spends at
+  // most 9 bits a byte), the block ends and sync flush, and the final empty block.
   const std::size_t band_filtered = (row_bytes + 1) * static_cast<std::size_t>(kBandRows);
   const std::size_t bands = (static_cast<std::size_t>(image.height) + kBandRows - 1) / kBandRows;
-  const std::size_t bound =
-      m.deflating ? bands * (deflateBound(&m.zs, static_cast<uLong>(band_filtered)) + 6) + 2
-                  : filtered + 5 * (filtered / 65535 + 1);
+  std::size_t bound = filtered + 5 * (filtered / 65535 + 1);  // kStored
+  if (m.compression == PngCompression::kDefault) {
+    bound = bands * (deflateBound(&m.zs, static_cast<uLong>(band_filtered)) + 6) + 2;
+  } else if (m.compression == PngCompression::kFast) {
+    bound = bands * (band_filtered / 8 * 9 + 16) + 2;
+  }
   m.current = 1 - m.current;
   m.begin(image, 2 + bound + 4);
   m.adler = 1;

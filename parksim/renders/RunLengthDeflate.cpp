@@ -122,18 +122,19 @@ std::size_t matchLength(const unsigned char* p, std::size_t distance, std::size_
 
 }  // namespace
 
-void runLengthDeflate(const unsigned char* data, std::size_t n, std::size_t pixel_bytes,
-                      std::size_t row_bytes, std::vector<unsigned char>& out) {
-  out.reserve(out.size() + n + n / 8 + 16);
+void runLengthDeflate(const unsigned char* data, std::size_t begin, std::size_t end,
+                      std::size_t pixel_bytes, std::size_t row_bytes, bool final,
+                      std::vector<unsigned char>& out) {
+  out.reserve(out.size() + (end - begin) + (end - begin) / 8 + 16);
   BitWriter bits(out);
-  bits.put(1, 1);  // BFINAL
-  bits.put(1, 2);  // BTYPE 01: fixed Huffman codes
+  bits.put(final ? 1 : 0, 1);  // BFINAL
+  bits.put(1, 2);              // BTYPE 01: fixed Huffman codes
   const std::size_t distances[2] = {pixel_bytes <= kMaxDistance ? pixel_bytes : 0,
                                     row_bytes <= kMaxDistance ? row_bytes : 0};
   const Code distance_codes[2] = {distanceCode(std::max<std::size_t>(distances[0], 1)),
                                   distanceCode(std::max<std::size_t>(distances[1], 1))};
-  for (std::size_t p = 0; p < n;) {
-    const std::size_t limit = std::min(kMaxMatch, n - p);
+  for (std::size_t p = begin; p < end;) {
+    const std::size_t limit = std::min(kMaxMatch, end - p);
     std::size_t best = 0;
     int which = 0;
     for (int k = 0; k < 2; ++k) {
@@ -157,6 +158,11 @@ void runLengthDeflate(const unsigned char* data, std::size_t n, std::size_t pixe
     }
   }
   bits.put(kTables.end_of_block.bits, kTables.end_of_block.length);
+  if (!final) {
+    bits.put(0, 3);  // BFINAL 0, BTYPE 00: stored, empty
+    bits.flush();    // to the byte boundary, then LEN 0 and NLEN 0xFFFF
+    for (unsigned char b : {0x00, 0x00, 0xFF, 0xFF}) out.push_back(b);
+  }
   bits.flush();
 }
 

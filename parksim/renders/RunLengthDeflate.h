@@ -11,9 +11,13 @@
 
 namespace parksim {
 
-/// Appends to `out` one final fixed-Huffman deflate block of `data` (`n` bytes), matching each
-/// position against `pixel_bytes` and `row_bytes` before it (each at most 32768; 0: not used).
-void runLengthDeflate(const unsigned char* data, std::size_t n, std::size_t pixel_bytes,
-                      std::size_t row_bytes, std::vector<unsigned char>& out);
+/// Appends to `out` a fixed-Huffman deflate block of data[begin, end), matching each position
+/// against `pixel_bytes` and `row_bytes` before it (each at most 32768; 0: not used), also in
+/// data before `begin`, which a reader has inflated by then. `final`: the stream's last block.
+/// Otherwise an empty stored block follows, so that the next block starts on a byte boundary
+/// (zlib's sync flush): blocks made apart can then be put one after the other.
+void runLengthDeflate(const unsigned char* data, std::size_t begin, std::size_t end,
+                      std::size_t pixel_bytes, std::size_t row_bytes, bool final,
+                      std::vector<unsigned char>& out);
 
 }  // namespace parksim

@@ -28,7 +28,7 @@ std::vector<unsigned char> inflateRaw(const std::vector<unsigned char>& in, std:
 std::vector<unsigned char> roundTrip(const std::vector<unsigned char>& data, std::size_t pixel,
                                      std::size_t row) {
   std::vector<unsigned char> packed = {0xAB};  // appended after what is there
-  runLengthDeflate(data.data(), data.size(), pixel, row, packed);
+  runLengthDeflate(data.data(), 0, data.size(), pixel, row, true, packed);
   EXPECT_EQ(packed[0], 0xAB);
   packed.erase(packed.begin());
   return inflateRaw(packed, data.size());
@@ -68,7 +68,7 @@ TEST(RunLengthDeflateTest, RepeatsCompressEveryLengthAndDistanceCode) {
   // Flat data: 258-byte matches, about 2 bytes each.
   const std::vector<unsigned char> flat(100000, 7);
   std::vector<unsigned char> packed;
-  runLengthDeflate(flat.data(), flat.size(), 3, 301, packed);
+  runLengthDeflate(flat.data(), 0, flat.size(), 3, 301, true, packed);
   EXPECT_LT(packed.size(), 1000u);
 }
 
@@ -77,6 +77,35 @@ TEST(RunLengthDeflateTest, DistancesBeyondTheWindowAreNotUsed) {
   for (std::size_t i = 0; i < data.size(); ++i) data[i] = static_cast<unsigned char>(i * 31 % 251);
   EXPECT_EQ(roundTrip(data, 3, 40000), data);
   EXPECT_EQ(roundTrip(data, 0, 0), data);
+}
+
+// PNG frames are written band by band: each band's blocks are made on their own (matching into
+// the bands before it) and put one after the other; zlib reads the whole.
+TEST(RunLengthDeflateTest, BandsMadeApartMakeOneStream) {
+  std::mt19937 rng(5);
+  const std::size_t row = 1 + 3 * 50;
+  std::vector<unsigned char> img;
+  for (int y = 0; y < 40; ++y) {
+    img.push_back(0);
+    for (int x = 0; x < 150; ++x)
+      img.push_back(y % 11 == 2 ? static_cast<unsigned char>(rng()) : 9);
+  }
+  std::vector<unsigned char> packed;
+  std::vector<std::vector<unsigned char>> bands;
+  for (std::size_t begin = 0; begin < img.size(); begin += 8 * row) {
+    std::vector<unsigned char> band;
+    runLengthDeflate(img.data(), begin, std::min(img.size(), begin + 8 * row), 3, row, false, band);
+    // A band ends on zlib's sync-flush marker, and so on a byte boundary.
+    ASSERT_GE(band.size(), 4u);
+    EXPECT_EQ(std::vector<unsigned char>(band.end() - 4, band.end()),
+              (std::vector<unsigned char>{0x00, 0x00, 0xFF, 0xFF}));
+    packed.insert(packed.end(), band.begin(), band.end());
+    bands.push_back(band);
+  }
+  runLengthDeflate(img.data(), img.size(), img.size(), 3, row, true, packed);  // empty, final
+  EXPECT_EQ(inflateRaw(packed, img.size()), img);
+  // A flat band after a flat row is a few bytes: its first row matches the row before it.
+  EXPECT_LT(bands[2].size(), 40u);
 }
 
 }  // namespace
