@@ -1,9 +1,10 @@
 // Frames per second of parksim's off-screen rendering on the study's head-in lot, with the robot
 // driving along an arc and its executed path growing:
-//   BM_Render/<view>/W/H      render and read back one frame (no file)
-//   BM_Png/<png>/W/H          encode one rendered frame: stb's deflate (png 3) against the
-//                             frames' PngCompression: default (0, zlib level 1), fast (1), stored
-//                             (2)
+//   BM_Render/<view>/W/H      render and read back one frame (no file); view 0 top, 1 3D
+//                             following the robot, 2 top as films draw it (the lot kept)
+//   BM_Png/<png>/W/H          encode a film's rendered frames in turn: stb's deflate (png 3)
+//                             against the frames' PngCompression: default (0, zlib level 1 in
+//                             bands), fast (1), stored (2)
 //   BM_Record/<view>/W/H/...  FrameRecorder end to end: render, encode on workers, write files
 //                             (enc: encoder threads; fresh: new files, or rewriting the last
 //                             iteration's, which this machine's ext4 does ten times faster;
@@ -48,7 +49,7 @@ struct Episode {
     for (int k = 0; k < 600; k += 2) planned.push_back(poseAt(k));
   }
 
-  Scene next(int k) {
+  SceneLayers nextLayers(int k) {
     executed.push_back(poseAt(k));
     if (executed.size() > 600) executed.erase(executed.begin());
     ViewState view;
@@ -57,11 +58,19 @@ struct Episode {
     view.planned_path = planned;
     view.executed_path = executed;
     view.overlay = Overlay{"head_in", k / 30.0, 0.0012, 0.004};
-    return buildScene(lot(), view, style);
+    return buildSceneLayers(lot(), view, style);
+  }
+
+  Scene next(int k) {
+    SceneLayers layers = nextLayers(k);
+    appendScene(layers.back, layers.front);
+    return std::move(layers.back);
   }
 };
 
-CameraDef cameraFor(int view) { return view == 0 ? CameraDef{} : FrameDef{}.camera_3d; }
+CameraDef cameraFor(int view) { return view == 1 ? FrameDef{}.camera_3d : CameraDef{}; }
+
+constexpr int kTopFilm = 2;  // BM_Render's top view drawn as films draw it: the lot kept
 
 void BM_Render(benchmark::State& state) {
   const int view = static_cast<int>(state.range(0));
@@ -73,14 +82,20 @@ void BM_Render(benchmark::State& state) {
   Episode episode(def.height_px);
   RgbImage image;
   int k = 0;
+  image.resize(def.width_px, def.height_px);
   for (auto _ : state) {
-    renderer.render(episode.next(k++), cameraFor(view), image);
+    if (view == kTopFilm) {
+      const SceneLayers layers = episode.nextLayers(k++);
+      renderer.renderInto(layers.back, layers.front, CameraDef{}, image, 0);
+    } else {
+      renderer.render(episode.next(k++), cameraFor(view), image);
+    }
     benchmark::DoNotOptimize(image.pixels.data());
   }
   state.counters["fps"] =
       benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
-  state.SetLabel(std::string(view == 0 ? "top" : "3d-follow") +
-                 (def.msaa_samples > 1 ? " msaa" : ""));
+  static const char* const kViews[] = {"top", "3d-follow", "top, lot kept"};
+  state.SetLabel(std::string(kViews[view]) + (def.msaa_samples > 1 ? " msaa" : ""));
 }
 
 constexpr int kStbPng = 3;  // BM_Png's stb_image_write with its own deflate, beside PngCompression
@@ -89,6 +104,8 @@ const char* pngLabel(int png) {
   return png == kStbPng ? "stb-default" : toString(static_cast<PngCompression>(png));
 }
 
+// Encodes a film: 30 successive frames in turn, as a recorder's encoder sees them (the default
+// copies the bands a frame shares with the one before).
 void BM_Png(benchmark::State& state) {
   const int png = static_cast<int>(state.range(0));
   RenderDef def;
@@ -96,11 +113,15 @@ void BM_Png(benchmark::State& state) {
   def.height_px = static_cast<int>(state.range(2));
   Renderer renderer(def);
   Episode episode(def.height_px);
-  RgbImage image;
-  renderer.render(episode.next(100), CameraDef{}, image);
+  std::vector<RgbImage> film(30);
+  for (std::size_t k = 0; k < film.size(); ++k) {
+    renderer.render(episode.next(100 + static_cast<int>(k)), CameraDef{}, film[k]);
+  }
   std::size_t bytes = 0;
+  std::size_t k = 0;
   PngEncoder encoder(png == kStbPng ? PngCompression::kDefault : static_cast<PngCompression>(png));
   for (auto _ : state) {
+    const RgbImage& image = film[k++ % film.size()];
     if (png == kStbPng) {
       const std::vector<unsigned char> out = encodePng(image, PngCompression::kSmall);
       bytes = out.size();
@@ -179,6 +200,7 @@ void BM_FirstFrame(benchmark::State& state) {
 BENCHMARK(BM_Render)
     ->ArgNames({"view", "w", "h", "msaa"})
     ->Args({0, 640, 480, 1})
+    ->Args({kTopFilm, 640, 480, 1})
     ->Args({0, 640, 480, 4})
     ->Args({0, 1280, 720, 1})
     ->Args({0, 1280, 720, 4})
