@@ -35,9 +35,9 @@ constexpr unsigned char kSignature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
 constexpr std::size_t kIdatStart = 8 + 12 + 13 + 8;  // signature, IHDR chunk, IDAT length and tag
 
 constexpr int kZlibLevel = 1;  // PngCompression::kDefault
-// kDefault compresses bands of this many rows, each on its own (PngEncoder::Impl::deflateRows).
-// Smaller bands leave more of a film's frame to copy from the last one; each band costs a block
-// header and a flush (~1.5 % of a frame's bytes at 32 rows).
+// kDefault and kFast compress bands of this many rows, each on its own (encodeBands). Smaller
+// bands leave more of a film's frame to copy from the last one; each band costs a block header
+// and a flush (~2 % of a film frame's bytes at 32 rows).
 constexpr int kBandRows = 32;
 // The zlib stream header (RFC 1950) zlib writes at level 1: deflate with a 32 kB window, level
 // field 0 ("fastest"; advisory, readers ignore it), check bits.
