@@ -129,9 +129,10 @@ void addFilmOptions(CLI::App& sub, RunOptions& o) {
       ->capture_default_str()
       ->check(CLI::IsMember({"top", "3d", "both"}));
   sub.add_option("--png-compression", o.png_compression,
-                 "frames' PNG compression: default (zlib level 1), fast (run-length: larger "
-                 "files, ~4x less encoding CPU), stored (uncompressed, 3 bytes a pixel), small "
-                 "(stb's deflate and filters, as the figures: ~15% smaller, ~8x more CPU)")
+                 "frames' PNG compression: default (zlib level 1), fast (run-length: about "
+                 "the same size on films, larger on busy images, ~60% of the encoding CPU), "
+                 "stored (uncompressed, 3 bytes a pixel), small (stb's deflate and filters, as "
+                 "the figures: ~15% smaller, ~40x more CPU)")
       ->capture_default_str()
       ->check(CLI::IsMember({"default", "fast", "stored", "small"}));
   o.gl_backend.addTo(sub);
