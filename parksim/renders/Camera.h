@@ -41,6 +41,8 @@ struct Camera {
   Eigen::Matrix4d viewProjection() const { return projection * view; }
   /// Pixel position of a world point; unset when it lies behind a perspective camera.
   std::optional<Eigen::Vector2d> project(const Eigen::Vector3d& world) const;
+
+  friend bool operator==(const Camera&, const Camera&) = default;
 };
 
 /// Places a camera for `scene` (its extent and focus) in an image of the given size.

@@ -61,6 +61,7 @@ struct Renderer::Impl {
   GLuint backdrop_fbo = 0, backdrop_color = 0, backdrop_depth = 0;
   std::optional<Scene> backdrop_scene;
   Camera backdrop_camera;
+  long backdrops_drawn = 0;
   RendererPrograms programs;
   GLuint mesh_vao = 0, mesh_vbo = 0, overlay_vao = 0, overlay_vbo = 0;
   // Bytes each vertex buffer holds: its storage is kept and grown, not made anew each image
@@ -83,6 +84,10 @@ struct Renderer::Impl {
   GLuint fontTexture(int font_px);
 
   GLuint drawFramebuffer() const { return samples > 1 ? msaa_fbo : resolve_fbo; }
+  TessellationDef tessellation() const { return {samples, def.light_direction, def.ambient}; }
+  void storage(GLuint& rb, GLenum format, int n);  // a renderbuffer of the image's size
+  void complete(const char* which);  // throws unless the bound framebuffer is complete
+  void releaseBackdrop();
   void draw(const DrawList& list);
   void clear(const DrawList& list);
   void drawItems(const DrawList& list);
@@ -140,32 +145,32 @@ void Renderer::Impl::init() {
 }
 
 void Renderer::Impl::releaseFramebuffers() {
-  const GLuint fbos[] = {msaa_fbo, resolve_fbo, backdrop_fbo};
-  const GLuint rbs[] = {msaa_color,    msaa_depth,     resolve_color,
-                        resolve_depth, backdrop_color, backdrop_depth};
-  gl->DeleteFramebuffers(3, fbos);
-  gl->DeleteRenderbuffers(6, rbs);
+  const GLuint fbos[] = {msaa_fbo, resolve_fbo};
+  const GLuint rbs[] = {msaa_color, msaa_depth, resolve_color, resolve_depth};
+  gl->DeleteFramebuffers(2, fbos);
+  gl->DeleteRenderbuffers(4, rbs);
   msaa_fbo = msaa_color = msaa_depth = resolve_fbo = resolve_color = resolve_depth = 0;
-  backdrop_fbo = backdrop_color = backdrop_depth = 0;
-  backdrop_scene.reset();
+  releaseBackdrop();
+}
+
+void Renderer::Impl::storage(GLuint& rb, GLenum format, int n) {
+  gl->GenRenderbuffers(1, &rb);
+  gl->BindRenderbuffer(GL_RENDERBUFFER, rb);
+  if (n > 1) {
+    gl->RenderbufferStorageMultisample(GL_RENDERBUFFER, n, format, width, height);
+  } else {
+    gl->RenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+  }
+}
+
+void Renderer::Impl::complete(const char* which) {
+  if (gl->CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    throw Error(std::string("renderer: ") + which + " framebuffer is incomplete");
+  }
 }
 
 void Renderer::Impl::allocateFramebuffers() {
   releaseFramebuffers();
-  auto storage = [&](GLuint& rb, GLenum format, int n) {
-    gl->GenRenderbuffers(1, &rb);
-    gl->BindRenderbuffer(GL_RENDERBUFFER, rb);
-    if (n > 1) {
-      gl->RenderbufferStorageMultisample(GL_RENDERBUFFER, n, format, width, height);
-    } else {
-      gl->RenderbufferStorage(GL_RENDERBUFFER, format, width, height);
-    }
-  };
-  auto complete = [this](const char* which) {
-    if (gl->CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      throw Error(std::string("renderer: ") + which + " framebuffer is incomplete");
-    }
-  };
   samples = std::clamp(def.msaa_samples, 1, std::max(1, static_cast<int>(max_samples)));
   gl->GenFramebuffers(1, &resolve_fbo);
   gl->BindFramebuffer(GL_FRAMEBUFFER, resolve_fbo);
@@ -208,7 +213,8 @@ GLuint Renderer::Impl::fontTexture(int font_px) {
 
 // One upload per buffer and image, before any draw: each batch is a range of the buffer, one
 // after the other. The last image's draws are finished (it was read back), so overwriting the
-// storage does not wait for them.
+// storage does not wait for them; a backdrop drawn just before is finished too, as it was
+// copied into its framebuffer.
 template <class Vertex>
 void Renderer::Impl::upload(GLuint vbo, std::size_t& capacity,
                             const std::vector<const std::vector<Vertex>*>& batches) {
@@ -351,39 +357,43 @@ void Renderer::Impl::copyFramebuffer(GLuint from, GLuint to) {
 
 // Leaves the drawing framebuffer bound and holding the backdrop, drawn now or copied back.
 void Renderer::Impl::drawBackdrop(const Scene& backdrop, const Camera& cam) {
-  const bool kept = backdrop_scene && backdrop_camera.view == cam.view &&
-                    backdrop_camera.projection == cam.projection &&
-                    backdrop_camera.perspective == cam.perspective && *backdrop_scene == backdrop;
-  if (kept) {
+  if (backdrop_scene && backdrop_camera == cam && *backdrop_scene == backdrop) {
     copyFramebuffer(backdrop_fbo, drawFramebuffer());
     return;
   }
+  backdrop_scene.reset();  // until it is drawn and kept
   if (backdrop_fbo == 0) {
-    auto storage = [&](GLuint& rb, GLenum format) {
-      gl->GenRenderbuffers(1, &rb);
-      gl->BindRenderbuffer(GL_RENDERBUFFER, rb);
-      gl->RenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0, format, width,
-                                         height);
-    };
     gl->GenFramebuffers(1, &backdrop_fbo);
     gl->BindFramebuffer(GL_FRAMEBUFFER, backdrop_fbo);
-    storage(backdrop_color, GL_RGBA8);
+    storage(backdrop_color, GL_RGBA8, samples);
     gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
                                 backdrop_color);
-    storage(backdrop_depth, GL_DEPTH_COMPONENT24);
+    storage(backdrop_depth, GL_DEPTH_COMPONENT24, samples);
     gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
                                 backdrop_depth);
-    if (gl->CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      throw Error("renderer: backdrop framebuffer is incomplete");
+    try {
+      complete("backdrop");
+    } catch (...) {
+      releaseBackdrop();
+      throw;
     }
   }
-  backdrop_scene.reset();  // until it is drawn and kept
-  tessellator.tessellate(backdrop, cam, {samples, def.light_direction, def.ambient}, fonts, list);
+  tessellator.tessellate(backdrop, cam, tessellation(), fonts, list);
   clear(list);
   drawItems(list);
   copyFramebuffer(drawFramebuffer(), backdrop_fbo);
+  checkGl(*gl, "backdrop");
   backdrop_scene = backdrop;
   backdrop_camera = cam;
+  ++backdrops_drawn;
+}
+
+void Renderer::Impl::releaseBackdrop() {
+  gl->DeleteFramebuffers(1, &backdrop_fbo);
+  const GLuint rbs[] = {backdrop_color, backdrop_depth};
+  gl->DeleteRenderbuffers(2, rbs);
+  backdrop_fbo = backdrop_color = backdrop_depth = 0;
+  backdrop_scene.reset();
 }
 
 Renderer::Renderer(const RenderDef& def) : Renderer(def, createOffscreenContext(def.context)) {}
@@ -445,9 +455,9 @@ Camera Renderer::camera(const Scene& scene, const CameraDef& camera_def) const {
   return makeCamera(camera_def, scene, impl_->width, impl_->height);
 }
 
-TessellationDef Renderer::tessellationDef() const {
-  return {impl_->samples, impl_->def.light_direction, impl_->def.ambient};
-}
+TessellationDef Renderer::tessellationDef() const { return impl_->tessellation(); }
+
+long Renderer::backdropsDrawn() const { return impl_->backdrops_drawn; }
 
 void Renderer::render(const Scene& scene, const CameraDef& camera_def, RgbImage& out) {
   if (out.width != impl_->width || out.height != impl_->height) {
@@ -482,14 +492,22 @@ void Renderer::renderInto(const Scene& scene, const CameraDef& camera_def, RgbIm
 void Renderer::renderInto(const Scene& backdrop, const Scene& scene, const CameraDef& camera_def,
                           RgbImage& out, int x_offset_px) {
   checkFits(out, impl_->width, impl_->height, x_offset_px);
+  if (scene.extent != backdrop.extent || scene.extent_top_m != backdrop.extent_top_m) {
+    throw Error("renderer: a scene drawn over a backdrop must have the backdrop's extent");
+  }
   const Camera cam = camera(scene, camera_def);
   const CurrentContext current(*impl_->context);
   impl_->drawBackdrop(backdrop, cam);
-  impl_->tessellator.tessellate(scene, cam, tessellationDef(), impl_->fonts, impl_->list);
+  TessellationDef front = tessellationDef();
+  front.ground_clear = false;  // nothing is cleared over the backdrop
+  impl_->tessellator.tessellate(scene, cam, front, impl_->fonts, impl_->list);
   impl_->drawItems(impl_->list);
   impl_->resolve();
   impl_->readInto(out, x_offset_px);
 }
+
+// readInto packs pixels with shifts that assume red in the lowest byte of a word.
+static_assert(std::endian::native == std::endian::little);
 
 void Renderer::Impl::readInto(RgbImage& out, int x_offset_px) {
   // llvmpipe reads RGBA with a plain copy but converts to RGB pixel by pixel (~10x slower):
@@ -506,7 +524,6 @@ void Renderer::Impl::readInto(RgbImage& out, int x_offset_px) {
     // Four pixels at a time, packed in two 64-bit words and stored as 12 bytes (little endian:
     // a pixel's red is its lowest byte): half the time of a 4-byte store per pixel, which took
     // 0.25 ms a 640x480 frame. The rest pixel by pixel.
-    static_assert(std::endian::native == std::endian::little);
     int x = 0;
     for (; x + 4 <= w; x += 4, src += 16, dst += 12) {
       std::uint64_t a;

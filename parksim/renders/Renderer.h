@@ -85,7 +85,8 @@ class Renderer {
 
   /// Draws `backdrop`, then `scene` over it, into columns [x_offset_px, x_offset_px + width())
   /// of `out`: for films, whose lot stays while the robot moves (buildSceneLayers). The camera
-  /// frames `scene`, so give it the backdrop's extent. The backdrop's pixels and depth are kept,
+  /// frames `scene`, whose extent must be the backdrop's (Error otherwise); its first polygon
+  /// is drawn, never taken for a ground to clear. The backdrop's pixels and depth are kept,
   /// and while the next call brings an equal backdrop through the same camera they are copied
   /// back instead of drawn again: the image never depends on what was drawn before.
   /// The picture is one scene's (appendScene) but for the order: all of the backdrop is drawn
@@ -95,6 +96,9 @@ class Renderer {
   /// few dozen pixels of a 640x480 film frame differ from one scene's picture.
   void renderInto(const Scene& backdrop, const Scene& scene, const CameraDef& camera_def,
                   RgbImage& out, int x_offset_px);
+
+  /// How many times a backdrop was drawn rather than copied back (once per change of it).
+  long backdropsDrawn() const;
 
  private:
   struct Impl;

@@ -70,7 +70,7 @@ void SceneTessellator::tessellate(const Scene& scene, const Camera& cam, const T
   // surface), is nothing but a coloured rectangle under everything else: a scissored clear
   // fills it several times faster than llvmpipe shades it. The pixel range follows the
   // rasterizer's rule (pixel centres inside), so the result is the same.
-  out.ground = groundRectangle(scene, cam);
+  out.ground = def.ground_clear ? groundRectangle(scene, cam) : std::nullopt;
   out.clear_color = out.ground ? scene.polygons.front().color : scene.background;
   for (std::size_t i = out.ground ? 1 : 0; i < scene.polygons.size(); ++i) {
     const ScenePolygon& p = scene.polygons[i];

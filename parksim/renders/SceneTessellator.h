@@ -27,6 +27,10 @@ struct TessellationDef {
   Eigen::Vector3d light_direction{0.35, -0.55, 0.75};
   /// Lit views: share of a face's colour independent of the light direction, 0..1.
   double ambient = 0.45;
+  /// A top view's first polygon, when it is an opaque axis-aligned rectangle (the lot), is
+  /// filled by the clear (DrawList::ground) instead of drawn. Off for a scene drawn over a
+  /// backdrop, which clears nothing.
+  bool ground_clear = true;
 };
 
 class SceneTessellator {

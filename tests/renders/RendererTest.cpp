@@ -7,6 +7,7 @@
 
 #include "RenderTestUtil.h"
 #include "parksim/core/Error.h"
+#include "parksim/renders/FrameRecorder.h"
 #include "parksim/renders/PngEncoder.h"
 #include "parksim/renders/SceneBuilder.h"
 
@@ -180,28 +181,61 @@ TEST_F(RendererTest, AKeptBackdropGivesTheImageOfAFreshOne) {
 
     const RgbImage a1 = renderLayers(renderer, a);
     const RgbImage b1 = renderLayers(renderer, b);  // a's backdrop, copied back
+    EXPECT_EQ(renderer.backdropsDrawn(), 1);
+    RgbImage whole;
+    renderer.render(buildScene(lot_, {}, style_), FrameDef{}.camera_3d, whole);  // as both views
+    const RgbImage b2 = renderLayers(renderer, b);
+    EXPECT_EQ(renderer.backdropsDrawn(), 1);
     const RgbImage pushed1 = renderLayers(renderer, pushed);
     const RgbImage a2 = renderLayers(renderer, a);
+    EXPECT_EQ(renderer.backdropsDrawn(), 3);
+    RgbImage framed(640, 480);  // the same backdrop through another camera: drawn anew
+    renderer.renderInto(a.back, a.front, {.fill = 0.8}, framed, 0);
+    EXPECT_EQ(renderer.backdropsDrawn(), 4);
     renderer.setSize(320, 240);
     const RgbImage small = renderLayers(renderer, a);
 
     EXPECT_NE(a1, b1);
+    EXPECT_EQ(b2, b1);
     EXPECT_NE(b1, pushed1);
     EXPECT_EQ(a2, a1);
     Renderer fresh(def);
     EXPECT_EQ(renderLayers(fresh, b), b1);
     EXPECT_EQ(renderLayers(fresh, pushed), pushed1);
+    RgbImage fresh_framed(640, 480);
+    fresh.renderInto(a.back, a.front, {.fill = 0.8}, fresh_framed, 0);
+    EXPECT_EQ(fresh_framed, framed);
     fresh.setSize(320, 240);
     EXPECT_EQ(renderLayers(fresh, a), small);
 
     // The pushed obstacle shows where it went, not where the kept backdrop had it.
     renderer.setSize(640, 480);
     const Obstacle& first = lot_.obstacles.front();
+    ASSERT_EQ(first.box.yaw, 0.0);  // its right side is along y
     const Eigen::Vector3d moved(first.box.center.x() + 0.05 + first.box.half_extents.x() - 0.01,
                                 first.box.center.y(), first.height_m);
     expectPatch(pushed1, pixelOf(renderer.camera(pushed.front, {}), moved), 1,
                 style_.colorFor(first.kind));
   }
+}
+
+// The front is drawn over the backdrop as it is: its first polygon, though a rectangle like
+// the lot's, is drawn (not left to a clear that never comes); a front framed apart is refused.
+TEST_F(RendererTest, TheFrontIsDrawnWholeOverItsOwnBackdrop) {
+  SceneLayers layers = filmLayers(lot_, style_, {0.35, 0.4, 0.3});
+  const Rgba8 patch{250, 0, 250, 255};
+  layers.front.polygons.insert(
+      layers.front.polygons.begin(),
+      ScenePolygon{{{1.0, 0.3}, {1.1, 0.3}, {1.1, 0.4}, {1.0, 0.4}}, 0.0009, patch});
+  RenderDef def;
+  def.msaa_samples = 1;
+  Renderer renderer(def);
+  const RgbImage img = renderLayers(renderer, layers);
+  expectPatch(img, pixelOf(renderer.camera(layers.front, {}), {1.05, 0.35, 0.0}), 3, patch);
+
+  layers.front.extent.x_max += 0.1;
+  RgbImage out(640, 480);
+  EXPECT_THROW(renderer.renderInto(layers.back, layers.front, {}, out, 0), Error);
 }
 
 // Drawing the backdrop first and the front over it is the whole scene's picture but for the
