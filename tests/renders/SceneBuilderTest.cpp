@@ -108,6 +108,7 @@ TEST(SceneBuilderTest, LayersSplitWhatStaysFromWhatMoves) {
 
   // The robot drives on, the overlay ticks: only the front changes.
   executed.push_back({0.2, 0.12, 0.1});
+  view.executed_path = executed;  // the vector moved
   view.robot = executed.back();
   view.reference = Pose2{0.21, 0.12, 0.1};
   view.overlay->time_s = 2.6;
