@@ -18,7 +18,7 @@ namespace parksim {
 namespace {
 
 // Queries keep no contacts: small pools, not Bullet's default 4,096 contacts, which cost
-// ~20 ms a world to allocate and touch (beyond a pool Bullet takes the heap).
+// ~20 ms of CPU a world to allocate and touch (beyond a pool Bullet takes the heap).
 btDefaultCollisionConstructionInfo smallPools() {
   btDefaultCollisionConstructionInfo pools;
   pools.m_defaultMaxPersistentManifoldPoolSize = 64;

@@ -78,9 +78,9 @@ struct FrameDef {
   /// PNG compression of the frames. kDefault (zlib level 1, chosen by measurement) is small
   /// (~25 kB a 640x480 frame); kFast (a run-length deflate) encodes in about 60 % of the CPU
   /// for files of about the same size on films, larger on busy images; both copy the bands of
-  /// rows a frame shares with the frame before. kStored writes the pixels uncompressed (0.92 MB a
-  /// frame: on a disk, slower to write than to compress). The bytes depend on this setting,
-  /// never on the threads. Numbers: docs/rendering.md.
+  /// rows a frame shares with the last frame its encoder thread wrote. kStored writes the pixels
+  /// uncompressed (0.92 MB a frame: on a disk, slower to write than to compress). The bytes depend
+  /// on this setting, never on the threads. Numbers: docs/rendering.md.
   PngCompression png_compression = PngCompression::kDefault;
   /// Most frames one recording may write (docs/limits.md): 50,000 frames are ~28 min of
   /// simulated time at 30 fps and ~1.5 min of rendering at 640x480.

@@ -25,13 +25,14 @@ enum class PngCompression {
   /// Speed over size: repeats of the pixel before and the row above only, fixed Huffman codes
   /// (RunLengthDeflate.h), in bands as kDefault. About 60 % of kDefault's CPU on a film's
   /// frames, a quarter on images that share nothing; files about kDefault's size on films
-  /// (0.9-1.05x), up to twice it on busy images.
+  /// (0.86-1.04x), up to twice it on busy images.
   kFast,
   /// No compression: 3 bytes a pixel (0.92 MB a 640x480 frame). Encoding costs only a copy,
   /// but on a disk, writing such files costs more than compressing them (docs/rendering.md).
   kStored,
   /// stb_image_write's own deflate (level 8) and the best PNG filter per row: the smallest
-  /// files, ~10x slower to encode than kDefault. For figures, written once each.
+  /// files, ~10x slower to encode than kDefault (~40x on films, whose bands kDefault copies).
+  /// For figures, written once each.
   kSmall,
 };
 

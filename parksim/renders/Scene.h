@@ -132,8 +132,9 @@ struct Scene {
   friend bool operator==(const Scene&, const Scene&) = default;
 };
 
-/// Appends `from`'s items after `into`'s, kind by kind, so `into` draws `from` over itself as
-/// one scene would; `from`'s focus replaces `into`'s when set. Background and extent are kept.
+/// Appends `from`'s items after `into`'s, kind by kind: the items of both in one scene, drawn
+/// in its order (kinds first, then list order). `from`'s focus replaces `into`'s when set;
+/// background and extent are kept.
 void appendScene(Scene& into, const Scene& from);
 
 /// Splits a polyline into dashes of `dash_m` separated by gaps of `gap_m` (lengths in the

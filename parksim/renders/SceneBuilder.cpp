@@ -191,7 +191,7 @@ SceneLayers buildSceneLayers(const Scenario& scenario, const ViewState& view,
   front.extent = back.extent;
   front.extent_top_m = back.extent_top_m;
   // The arrows are drawn after every line: they go to the front so the driven path stays
-  // under them, as in one front.
+  // under them, as in one scene.
   front.arrows = std::move(back.arrows);
   back.arrows.clear();
   for (const Trajectory& edge : view.tree_edges) {
