@@ -100,8 +100,10 @@ struct FrameInput {
   std::optional<Pose2> reference;  ///< planned pose at t_s: drawn as an outline
   double position_error_m = 0.0;   ///< shown in the overlay
   double heading_error_rad = 0.0;  ///< shown in the overlay
-  std::vector<Pose2>
-      obstacle_poses;         ///< box centre and yaw per obstacle; empty: as in the scenario
+  /// Box centre and yaw per obstacle; empty: as in the scenario. An obstacle is drawn anew
+  /// once it moved over 10 um or 1e-5 rad from where frames last showed it: resting bodies
+  /// creep by nanometres, which no pixel shows.
+  std::vector<Pose2> obstacle_poses;
   std::vector<int> contacts;  ///< obstacles touching the robot (scenario order)
 };
 
@@ -120,7 +122,10 @@ struct VideoOutcome {
 };
 
 struct RecordingResult {
-  int frames = 0;          ///< PNG files written
+  int frames = 0;  ///< PNG files written
+  /// Times the top view's lot was drawn, not kept from the frame before: 1 when no obstacle
+  /// moved or was touched (0 for the 3D view alone).
+  long lot_drawings = 0;
   std::string frames_dir;  ///< DIR/frames
   VideoOutcome video;      ///< episode.mp4
   VideoOutcome gif;        ///< episode.gif

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <utility>
+#include <vector>
 
 #include "RenderTestUtil.h"
 #include "parksim/core/Error.h"
@@ -117,7 +119,7 @@ TEST_F(FrameRecorderTest, FramesShowObstaclesTouchedAndPushed) {
   in.contacts = {};
   in.obstacle_poses.front().x += 0.06;
   rec.addFrame(in);  // pushed
-  rec.finish();
+  EXPECT_EQ(rec.finish().lot_drawings, 3);
 
   const SceneStyle style = def.style.scaled(styleScaleFor(def.height_px));
   ViewState view;
@@ -136,6 +138,40 @@ TEST_F(FrameRecorderTest, FramesShowObstaclesTouchedAndPushed) {
   EXPECT_EQ(colourAt(1, x, y), style.contact);
   EXPECT_EQ(colourAt(2, edge + 0.03, y), style.colorFor(first.kind));
   EXPECT_NE(colourAt(0, edge + 0.03, y), style.colorFor(first.kind));
+}
+
+// Resting bodies creep by nanometres in the simulation: frames show them where they were until
+// they moved more than 10 um, so the lot stays the same picture (and stays kept).
+TEST_F(FrameRecorderTest, ObstaclesCreepingInvisiblyAreShownWhereTheyRest) {
+  std::vector<Pose2> rest;
+  for (const Obstacle& o : lot_.obstacles) {
+    rest.push_back({o.box.center.x(), o.box.center.y(), o.box.yaw});
+  }
+  auto film = [&](const std::string& name, double creep_m) {
+    FrameDef def;
+    def.out_dir = outputDir(name);
+    FrameRecorder rec(lot_, def);
+    FrameInput in;
+    in.pose = {1.0, 0.35, 0.4};
+    in.obstacle_poses = rest;
+    for (int k = 0; k < 5; ++k) {
+      in.t_s = k / def.fps;
+      for (Pose2& p : in.obstacle_poses) p.x += creep_m;
+      rec.addFrame(in);
+    }
+    const RecordingResult result = rec.finish();
+    std::vector<std::vector<char>> frames;
+    for (int k = 0; k < 5; ++k) frames.push_back(fileBytes(rec.framePath(k)));
+    return std::pair{frames, result.lot_drawings};
+  };
+  const auto [still, still_drawings] = film("FrameRecorderTest_still", 0.0);
+  const auto [creeping, creeping_drawings] = film("FrameRecorderTest_creeping", 1.5e-6);
+  const auto [moving, moving_drawings] = film("FrameRecorderTest_moving", 2e-3);
+  for (int k = 0; k < 5; ++k) EXPECT_EQ(creeping[k], still[k]) << "frame " << k;
+  EXPECT_NE(moving[4], still[4]);
+  EXPECT_EQ(still_drawings, 1);
+  EXPECT_EQ(creeping_drawings, 1);  // 7.5 um in all
+  EXPECT_EQ(moving_drawings, 5);
 }
 
 TEST_F(FrameRecorderTest, OutputDoesNotDependOnThreads) {
