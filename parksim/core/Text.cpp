@@ -98,4 +98,10 @@ std::string escapeText(std::string_view text) {
   return out;
 }
 
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  return list;
+}
+
 }  // namespace parksim

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace parksim {
 
@@ -24,5 +25,8 @@ bool isPrintableUtf8(std::string_view text);
 /// `text` with every control character and every byte that is not part of valid UTF-8
 /// replaced by an escape (`\n`, `\t`, `\\x1b`, ...); printable UTF-8 passes unchanged.
 std::string escapeText(std::string_view text);
+
+/// `names` joined by ", ": the choices an error message lists ("ideal, lab, odometry").
+std::string joinNames(const std::vector<std::string>& names);
 
 }  // namespace parksim

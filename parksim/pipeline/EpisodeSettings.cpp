@@ -7,6 +7,7 @@
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
+#include "parksim/core/Text.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/sim/Episode.h"
 
@@ -22,9 +23,7 @@ std::string poseText(const Pose2& p) {
 void checkRealismName(const std::string& name) {
   const std::vector<std::string> choices = realismChoices();
   if (std::find(choices.begin(), choices.end(), name) != choices.end()) return;
-  std::string list;
-  for (const std::string& c : choices) list += (list.empty() ? "" : ", ") + c;
-  throw Error("realism: unknown value '" + name + "' (expected one of " + list + ")");
+  throw Error("realism: unknown value '" + name + "' (expected one of " + joinNames(choices) + ")");
 }
 
 // A given plan must start where the world starts (within 1 mm and 0.5 deg, the planner's own

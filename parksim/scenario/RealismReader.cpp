@@ -5,6 +5,7 @@
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/Text.h"
 #include "parksim/scenario/RealismSections.h"
 
 namespace parksim {
@@ -122,9 +123,7 @@ RealismDef readRealism(const YamlField& field) {
     const std::string name = f->text();
     const std::vector<std::string> presets = realismPresetNames();
     if (std::find(presets.begin(), presets.end(), name) == presets.end()) {
-      std::string list;
-      for (const std::string& p : presets) list += (list.empty() ? "" : ", ") + p;
-      f->fail("unknown preset \"" + name + "\"; expected one of: " + list);
+      f->fail("unknown preset \"" + name + "\"; expected one of: " + joinNames(presets));
     }
     d = presetRealism(name);
   }

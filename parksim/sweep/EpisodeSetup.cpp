@@ -5,6 +5,7 @@
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/Text.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/realism/RealismDef.h"
 
@@ -18,9 +19,8 @@ Pose2 applyOffset(const Pose2& pose, const PoseOffset& o) {
 void requireOneOf(const std::string& what, const std::string& value,
                   const std::vector<std::string>& allowed) {
   if (std::find(allowed.begin(), allowed.end(), value) != allowed.end()) return;
-  std::string list;
-  for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
-  throw Error(what + ": unknown value '" + value + "' (this build has: " + list + ")");
+  throw Error(what + ": unknown value '" + value + "' (this build has: " + joinNames(allowed) +
+              ")");
 }
 
 }  // namespace
