@@ -343,25 +343,21 @@ void FrameRecorder::Impl::render(const FrameInput& in) {
   view.overlay = Overlay{scenario.name, in.t_s, in.position_error_m, in.heading_error_rad};
   // The top view keeps the lot's pixels while only the robot moves (Renderer's backdrop); the
   // following 3D camera sees the lot from a new place every frame.
-  std::optional<SceneLayers> layers;
-  std::optional<Scene> whole;
-  if (def.view != FrameView::k3d) layers = buildSceneLayers(scenario, view, style);
-  if (def.view == FrameView::k3d) whole = buildScene(scenario, view, style);
-  if (def.view == FrameView::kBoth) {
-    whole = layers->back;
-    appendScene(*whole, layers->front);
+  const SceneLayers layers = buildSceneLayers(scenario, view, style);
+  std::optional<Scene> whole;  // the 3D view's
+  if (def.view != FrameView::kTop) {
+    whole = layers.back;
+    appendScene(*whole, layers.front);
   }
 
   std::unique_ptr<RgbImage> image = queue->acquire();
   try {
     const CameraDef top{};
     switch (def.view) {
-      case FrameView::kTop:
-        renderer->renderInto(layers->back, layers->front, top, *image, 0);
-        break;
+      case FrameView::kTop: renderer->renderInto(layers.back, layers.front, top, *image, 0); break;
       case FrameView::k3d: renderer->renderInto(*whole, def.camera_3d, *image, 0); break;
       case FrameView::kBoth:
-        renderer->renderInto(layers->back, layers->front, top, *image, 0);
+        renderer->renderInto(layers.back, layers.front, top, *image, 0);
         renderer->renderInto(*whole, def.camera_3d, *image, def.width_px);
         break;
     }

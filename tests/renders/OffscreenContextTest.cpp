@@ -93,12 +93,8 @@ Scene lotFrame(const Scenario& lot) {
   static const std::vector<Pose2> planned = {
       {0.1, 0.1, 1.2}, {0.3, 0.4, 0.6}, {0.8, 0.45, 0.0}, {1.2, 0.3, -0.8}, {1.5, 0.04, -1.5}};
   static const std::vector<Pose2> executed = {{0.1, 0.1, 1.2}, {0.31, 0.41, 0.6}};
-  ViewState view;
-  view.robot = Pose2{0.31, 0.41, 0.6};
-  view.reference = Pose2{0.3, 0.4, 0.62};
-  view.planned_path = planned;
-  view.executed_path = executed;
-  view.overlay = Overlay{"backend test", 1.25, 0.0012, 0.004};
+  const ViewState view = rendertest::drivingView(planned, executed, {0.3, 0.4, 0.62},
+                                                 {"backend test", 1.25, 0.0012, 0.004});
   const FrameDef frames;
   return buildScene(lot, view, frames.style);
 }

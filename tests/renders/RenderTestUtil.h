@@ -5,10 +5,12 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Geometry.h"
 #include "parksim/core/Scenario.h"
+#include "parksim/renders/SceneBuilder.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim::rendertest {
@@ -23,6 +25,19 @@ inline Obstacle box(std::string name, ObstacleKind kind, double cx, double cy, d
   o.box.yaw = degToRad(yaw_deg);
   o.height_m = height;
   return o;
+}
+
+/// A drive in progress: the robot at the driven path's end, its reference pose, the paths and
+/// an overlay. The spans point at `planned` and `executed`, which must outlive the view.
+inline ViewState drivingView(const std::vector<Pose2>& planned, const std::vector<Pose2>& executed,
+                             const Pose2& reference, const Overlay& overlay) {
+  ViewState view;
+  view.robot = executed.back();
+  view.reference = reference;
+  view.planned_path = planned;
+  view.executed_path = executed;
+  view.overlay = overlay;
+  return view;
 }
 
 /// The study's lot in outline: a wall with a gap, an island, two parked robots.

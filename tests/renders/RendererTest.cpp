@@ -146,16 +146,13 @@ SceneLayers filmLayers(const Scenario& lot, const SceneStyle& style, const Pose2
       {0.2, 0.3, 0.0}, {0.5, 0.45, 0.3}, {0.9, 0.5, 0.0}, {1.3, 0.45, -0.3}};
   std::vector<Pose2> executed = {{0.2, 0.3, 0.0}, {0.3, 0.35, 0.2}, robot};
   std::vector<Pose2> obstacles;
-  for (const Obstacle& o : lot.obstacles)
+  for (const Obstacle& o : lot.obstacles) {
     obstacles.push_back({o.box.center.x(), o.box.center.y(), o.box.yaw});
+  }
   obstacles.front().x += obstacle_shift;
-  ViewState view;
-  view.robot = robot;
-  view.reference = Pose2{robot.x + 0.01, robot.y, robot.theta};
-  view.planned_path = planned;
-  view.executed_path = executed;
+  ViewState view = rendertest::drivingView(
+      planned, executed, {robot.x + 0.01, robot.y, robot.theta}, {"film", 1.25, 0.001, 0.01});
   view.obstacle_poses = obstacles;
-  view.overlay = Overlay{"film", 1.25, 0.001, 0.01};
   return buildSceneLayers(lot, view, style);
 }
 

@@ -9,6 +9,7 @@
 namespace parksim {
 namespace {
 
+using rendertest::drivingView;
 using rendertest::testLot;
 
 TEST(SceneBuilderTest, LotSceneHasOneBoxPerObstacleInItsKindsColour) {
@@ -52,12 +53,7 @@ TEST(SceneBuilderTest, ViewStateAddsRobotPathsAndOverlay) {
   const SceneStyle style;
   const std::vector<Pose2> planned = {{0.1, 0.1, 0.0}, {0.2, 0.1, 0.0}, {0.3, 0.2, 0.5}};
   const std::vector<Pose2> executed = {{0.1, 0.1, 0.0}, {0.15, 0.1, 0.0}};
-  ViewState view;
-  view.robot = Pose2{0.15, 0.1, 0.0};
-  view.reference = Pose2{0.16, 0.1, 0.0};
-  view.planned_path = planned;
-  view.executed_path = executed;
-  view.overlay = Overlay{"lot", 2.5, 0.004, 0.01};
+  ViewState view = drivingView(planned, executed, {0.16, 0.1, 0.0}, {"lot", 2.5, 0.004, 0.01});
   const Scene lot = buildLotScene(s, style);
   const Scene scene = buildScene(s, view, style);
   // Body and two wheels.
@@ -92,12 +88,7 @@ TEST(SceneBuilderTest, LayersSplitWhatStaysFromWhatMoves) {
   const SceneStyle style;
   const std::vector<Pose2> planned = {{0.1, 0.1, 0.0}, {0.2, 0.1, 0.0}, {0.3, 0.2, 0.5}};
   std::vector<Pose2> executed = {{0.1, 0.1, 0.0}, {0.15, 0.1, 0.0}};
-  ViewState view;
-  view.robot = Pose2{0.15, 0.1, 0.0};
-  view.reference = Pose2{0.16, 0.1, 0.0};
-  view.planned_path = planned;
-  view.executed_path = executed;
-  view.overlay = Overlay{"lot", 2.5, 0.004, 0.01};
+  ViewState view = drivingView(planned, executed, {0.16, 0.1, 0.0}, {"lot", 2.5, 0.004, 0.01});
   const SceneLayers first = buildSceneLayers(s, view, style);
   Scene whole = first.back;
   appendScene(whole, first.front);
