@@ -83,7 +83,7 @@ std::string framePathIn(const std::string& dir, int index) {
 // (its inode search skips recently deleted inodes), rewriting one that exists ~0.05 ms, and a
 // rename always creates. So a second recording into the same directory rewrites its frames. A
 // frame is never left half-written unless the process dies while writing it.
-void writeFrame(const std::string& path, const std::vector<unsigned char>& bytes) {
+void writeFrame(const std::string& path, std::span<const unsigned char> bytes) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw Error(path + ": cannot write: " + std::strerror(errno));
   std::size_t done = 0;
@@ -125,21 +125,21 @@ void removeFramesFrom(const std::string& dir, int first) {
 class EncodeQueue {
  public:
   EncodeQueue(int threads, int depth, int width, int height, PngCompression png) {
-    for (int i = 0; i < depth; ++i) free_.push_back(std::make_unique<RgbImage>(width, height));
+    for (int i = 0; i < depth; ++i) free_.push_back(std::make_unique<RgbaImage>(width, height));
     for (int i = 0; i < threads; ++i) workers_.emplace_back([this, png] { work(png); });
   }
 
   ~EncodeQueue() { stop(); }
 
-  std::unique_ptr<RgbImage> acquire() {
+  std::unique_ptr<RgbaImage> acquire() {
     std::unique_lock lock(mutex_);
     free_cv_.wait(lock, [this] { return !free_.empty(); });
-    std::unique_ptr<RgbImage> image = std::move(free_.back());
+    std::unique_ptr<RgbaImage> image = std::move(free_.back());
     free_.pop_back();
     return image;
   }
 
-  void submit(std::string path, std::unique_ptr<RgbImage> image) {
+  void submit(std::string path, std::unique_ptr<RgbaImage> image) {
     {
       std::lock_guard lock(mutex_);
       jobs_.push_back({std::move(path), std::move(image)});
@@ -147,7 +147,7 @@ class EncodeQueue {
     job_cv_.notify_one();
   }
 
-  void release(std::unique_ptr<RgbImage> image) {
+  void release(std::unique_ptr<RgbaImage> image) {
     {
       std::lock_guard lock(mutex_);
       free_.push_back(std::move(image));
@@ -181,7 +181,7 @@ class EncodeQueue {
  private:
   struct Job {
     std::string path;
-    std::unique_ptr<RgbImage> image;
+    std::unique_ptr<RgbaImage> image;
   };
 
   void work(PngCompression png) {
@@ -217,7 +217,7 @@ class EncodeQueue {
   mutable std::mutex mutex_;
   std::condition_variable job_cv_, free_cv_, idle_cv_;
   std::deque<Job> jobs_;
-  std::vector<std::unique_ptr<RgbImage>> free_;
+  std::vector<std::unique_ptr<RgbaImage>> free_;
   std::vector<std::thread> workers_;
   int busy_ = 0;
   bool stopping_ = false;
@@ -350,7 +350,7 @@ void FrameRecorder::Impl::render(const FrameInput& in) {
     appendScene(*whole, layers.front);
   }
 
-  std::unique_ptr<RgbImage> image = queue->acquire();
+  std::unique_ptr<RgbaImage> image = queue->acquire();
   try {
     const CameraDef top{};
     switch (def.view) {

@@ -1,6 +1,7 @@
 #pragma once
-// An 8-bit RGB image, rows top to bottom, no padding: what the renderer reads back and the PNG
-// encoder writes.
+// 8-bit images, rows top to bottom, no padding: RGB, what the renderer gives and the PNG encoder
+// writes; RGBA, as the GL reads back, which films hand to their encoders as it is (the alpha is
+// dropped there, only from the rows that changed since the last frame).
 
 #include <cstddef>
 #include <cstdint>
@@ -29,5 +30,24 @@ struct RgbImage {
 
   friend bool operator==(const RgbImage&, const RgbImage&) = default;
 };
+
+struct RgbaImage {
+  int width = 0;   ///< pixels
+  int height = 0;  ///< pixels
+  /// width * height * 4 bytes, row-major from the top-left pixel; the alpha bytes carry nothing.
+  std::vector<std::uint8_t> pixels;
+
+  RgbaImage() = default;
+  RgbaImage(int w, int h);
+
+  /// Resizes (contents unspecified after a size change).
+  void resize(int w, int h);
+
+  /// The image without its alpha.
+  RgbImage rgb() const;
+};
+
+/// Copies `count` pixels from RGBA `src` to RGB `dst`, dropping alpha.
+void rgbaToRgb(const std::uint8_t* src, std::uint8_t* dst, std::size_t count);
 
 }  // namespace parksim

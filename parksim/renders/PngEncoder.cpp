@@ -28,12 +28,21 @@ void put32(unsigned char* p, std::uint32_t v) {
 // One IDAT chunk holds the image: its length field and zlib's counters (uInt) are 32 bits.
 constexpr std::size_t kMaxPixelBytes = std::size_t{1} << 30;
 
-void checkImage(const RgbImage& image) {
+// An image as given to encode: RGB or RGBA rows.
+struct Pixels {
+  const std::uint8_t* data = nullptr;
+  std::size_t size = 0;  // bytes
+  int width = 0;
+  int height = 0;
+  int channels = 3;
+};
+
+void checkImage(const Pixels& image) {
   if (image.width <= 0 || image.height <= 0 ||
-      image.pixels.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
+      image.size != static_cast<std::size_t>(image.width) * image.height * image.channels) {
     throw Error("PNG: image has no pixels or a wrong buffer size");
   }
-  if (image.pixels.size() > kMaxPixelBytes) {
+  if (static_cast<std::size_t>(image.width) * image.height * 3 > kMaxPixelBytes) {
     throw Error("PNG: " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                 " is more than 1 GiB of pixels");
   }
@@ -76,21 +85,30 @@ struct PngEncoder::Impl {
   PngCompression compression = PngCompression::kDefault;
   z_stream zs{};
   bool deflating = false;  // zs initialized (kDefault)
-  // Two outputs, used in turn: the last one stays readable while the next is made.
+  // Two outputs, used in turn: the last one stays readable while the next is made. They only
+  // grow, and out_size says how much is the PNG: growing a vector zeroes its new bytes, a
+  // megabyte (the bound) a frame had it been shrunk to the PNG's size.
   std::vector<unsigned char> outs[2];
+  std::size_t out_size[2] = {0, 0};
   int current = 0;
-  RgbImage last;                        // the last image encoded (no pixels: none, or it failed)
+  RgbImage last;  // the last image encoded, RGB (no size: none, or it failed)
+  // kDefault and kFast: the last image as it came when it was RGBA (last_channels 4), so only
+  // the bands that changed are converted to RGB.
+  std::vector<std::uint8_t> last_rgba;
+  int last_channels = 0;
+  RgbImage rgb;                         // kStored and kSmall: the image as RGB, when it is not
   std::vector<Band> band_cache;         // the last image's bands
   std::vector<unsigned char> filtered;  // kFast: the last image's rows, each after its filter byte
   std::vector<unsigned char> band_bytes;  // kFast: one band's deflate blocks
   std::uint32_t adler = 1;                // of the filtered rows
 
-  void begin(const RgbImage& image, std::size_t idat_bound);
+  std::span<const unsigned char> encode(const Pixels& image);
+  void begin(const Pixels& image, std::size_t idat_bound);
   template <class CompressBand>
-  std::size_t encodeBands(const RgbImage& image, bool matches_row_above, CompressBand compress);
-  std::size_t deflateRows(const RgbImage& image);
-  std::size_t storeRows(const RgbImage& image);
-  std::size_t runLengthRows(const RgbImage& image);
+  std::size_t encodeBands(const Pixels& image, bool matches_row_above, CompressBand compress);
+  std::size_t deflateRows(const Pixels& image);
+  std::size_t storeRows(const Pixels& image);
+  std::size_t runLengthRows(const Pixels& image);
   void checksumRow(const unsigned char* row, std::size_t row_bytes) {
     adler = filteredRowAdler(adler, row, row_bytes);
   }
@@ -98,8 +116,9 @@ struct PngEncoder::Impl {
   std::vector<unsigned char>& out() { return outs[current]; }
 };
 
-void PngEncoder::Impl::begin(const RgbImage& image, std::size_t idat_bound) {
-  out().resize(kIdatStart + idat_bound + 4 + 12);
+void PngEncoder::Impl::begin(const Pixels& image, std::size_t idat_bound) {
+  const std::size_t capacity = kIdatStart + idat_bound + 4 + 12;
+  if (out().size() < capacity) out().resize(capacity);
   unsigned char* o = out().data();
   std::memcpy(o, kSignature, 8);
   put32(o + 8, 13);
@@ -120,24 +139,34 @@ void PngEncoder::Impl::begin(const RgbImage& image, std::size_t idat_bound) {
 // matches reach the row above (kFast), on the row before it. A film's frames share most rows
 // (the lot stays, the robot moves): a band that the last image had too is copied from the last
 // output with its Adler-32 instead of compressed, and the bytes are the same as compressing it.
-// `compress(y0, y1, o, end)` writes rows [y0, y1) at `o` (room up to `end`) and returns the
-// bytes written.
+// An RGBA image is compared as it came, and only its changed bands are converted to RGB.
+// `compress(y0, y1, o, end)` writes rows [y0, y1) of `last` (by then this image, RGB) at `o`
+// (room up to `end`) and returns the bytes written.
 template <class CompressBand>
-std::size_t PngEncoder::Impl::encodeBands(const RgbImage& image, bool matches_row_above,
+std::size_t PngEncoder::Impl::encodeBands(const Pixels& image, bool matches_row_above,
                                           CompressBand compress) {
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
+  const std::size_t in_row_bytes = static_cast<std::size_t>(image.width) * image.channels;
   const auto bands = static_cast<std::size_t>((image.height + kBandRows - 1) / kBandRows);
-  const bool same_size = last.width == image.width && last.height == image.height;
+  const bool same_size =
+      last.width == image.width && last.height == image.height && last_channels == image.channels;
   last.width = last.height = 0;  // until this image is done
-  if (!same_size) last.pixels.assign(image.pixels.size(), 0);
+  if (!same_size) {
+    last.pixels.assign(row_bytes * static_cast<std::size_t>(image.height), 0);
+    if (image.channels == 4) last_rgba.assign(image.size, 0);
+  }
+  std::vector<std::uint8_t>& kept = image.channels == 4 ? last_rgba : last.pixels;
   band_cache.resize(bands);
   for (std::size_t b = 0; b < bands; ++b) {
-    const std::size_t first = b * kBandRows * row_bytes;
-    const std::size_t bytes = std::min(image.pixels.size() - first, kBandRows * row_bytes);
+    const std::size_t first = b * kBandRows * in_row_bytes;
+    const std::size_t bytes = std::min(image.size - first, kBandRows * in_row_bytes);
     Band& band = band_cache[b];
-    band.changed =
-        !same_size || std::memcmp(image.pixels.data() + first, last.pixels.data() + first, bytes);
-    if (band.changed) std::memcpy(last.pixels.data() + first, image.pixels.data() + first, bytes);
+    band.changed = !same_size || std::memcmp(image.data + first, kept.data() + first, bytes);
+    if (!band.changed) continue;
+    std::memcpy(kept.data() + first, image.data + first, bytes);
+    if (image.channels == 4) {
+      rgbaToRgb(image.data + first, last.pixels.data() + b * kBandRows * row_bytes, bytes / 4);
+    }
   }
   const std::vector<unsigned char>& last_out = outs[1 - current];
   unsigned char* const start = out().data() + kIdatStart + 2;
@@ -150,7 +179,7 @@ std::size_t PngEncoder::Impl::encodeBands(const RgbImage& image, bool matches_ro
     if (band.changed || (matches_row_above && b > 0 && band_cache[b - 1].changed)) {
       band.adler = 1;
       for (int y = y0; y < y1; ++y) {
-        band.adler = filteredRowAdler(band.adler, image.pixels.data() + y * row_bytes, row_bytes);
+        band.adler = filteredRowAdler(band.adler, last.pixels.data() + y * row_bytes, row_bytes);
       }
       band.length = compress(y0, y1, o, end);
     } else {
@@ -168,11 +197,12 @@ std::size_t PngEncoder::Impl::encodeBands(const RgbImage& image, bool matches_ro
   o += 2;
   last.width = image.width;
   last.height = image.height;
+  last_channels = image.channels;
   return static_cast<std::size_t>(o - start);
 }
 
 // kDefault: each band a raw deflate stream of zlib level 1 (the state reset before it).
-std::size_t PngEncoder::Impl::deflateRows(const RgbImage& image) {
+std::size_t PngEncoder::Impl::deflateRows(const Pixels& image) {
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
   return encodeBands(image, false, [&](int y0, int y1, unsigned char* o, const unsigned char* end) {
     if (deflateReset(&zs) != Z_OK) throw Error("PNG: zlib cannot reset its state");
@@ -188,8 +218,7 @@ std::size_t PngEncoder::Impl::deflateRows(const RgbImage& image) {
       }
     };
     for (int y = y0; y < y1; ++y) {
-      // zlib does not write through next_in; its interface is not const.
-      unsigned char* row = const_cast<unsigned char*>(image.pixels.data() + y * row_bytes);
+      unsigned char* row = last.pixels.data() + y * row_bytes;
       feed(&filter, 1, Z_NO_FLUSH);
       feed(row, row_bytes, y + 1 == y1 ? Z_SYNC_FLUSH : Z_NO_FLUSH);
     }
@@ -200,7 +229,7 @@ std::size_t PngEncoder::Impl::deflateRows(const RgbImage& image) {
 }
 
 // kStored: blocks of at most 65535 bytes (RFC 1951 3.2.4), copied straight from the rows.
-std::size_t PngEncoder::Impl::storeRows(const RgbImage& image) {
+std::size_t PngEncoder::Impl::storeRows(const Pixels& image) {
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
   const std::size_t total = (row_bytes + 1) * static_cast<std::size_t>(image.height);
   unsigned char* o = out().data() + kIdatStart + 2;
@@ -223,12 +252,12 @@ std::size_t PngEncoder::Impl::storeRows(const RgbImage& image) {
         continue;
       }
       const std::size_t n = std::min(left, row_bytes + 1 - in_row);
-      std::memcpy(o, image.pixels.data() + row * row_bytes + (in_row - 1), n);
+      std::memcpy(o, image.data + row * row_bytes + (in_row - 1), n);
       o += n;
       left -= n;
       in_row += n;
       if (in_row == row_bytes + 1) {
-        checksumRow(image.pixels.data() + row * row_bytes, row_bytes);
+        checksumRow(image.data + row * row_bytes, row_bytes);
         in_row = 0;
         ++row;
       }
@@ -240,7 +269,7 @@ std::size_t PngEncoder::Impl::storeRows(const RgbImage& image) {
 
 // kFast: the filtered image kept (the encoder looks back across rows); each band a block of
 // the run-length deflate, which matches into the row above it.
-std::size_t PngEncoder::Impl::runLengthRows(const RgbImage& image) {
+std::size_t PngEncoder::Impl::runLengthRows(const Pixels& image) {
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
   const std::size_t stride = row_bytes + 1;
   filtered.resize(stride * static_cast<std::size_t>(image.height));
@@ -248,7 +277,7 @@ std::size_t PngEncoder::Impl::runLengthRows(const RgbImage& image) {
     for (int y = y0; y < y1; ++y) {
       unsigned char* dst = filtered.data() + y * stride;
       dst[0] = 0;
-      std::memcpy(dst + 1, image.pixels.data() + y * row_bytes, row_bytes);
+      std::memcpy(dst + 1, last.pixels.data() + y * row_bytes, row_bytes);
     }
     band_bytes.clear();
     runLengthDeflate(filtered.data(), y0 * stride, y1 * stride, 3, stride, false, band_bytes);
@@ -271,7 +300,7 @@ void PngEncoder::Impl::finish(std::size_t deflated) {
   static constexpr unsigned char kEnd[12] = {0,   0,   0,    0,    'I',  'E',
                                              'N', 'D', 0xAE, 0x42, 0x60, 0x82};
   std::memcpy(o + crc_at + 4, kEnd, 12);
-  out().resize(crc_at + 4 + 12);
+  out_size[current] = crc_at + 4 + 12;
 }
 
 const char* toString(PngCompression compression) {
@@ -308,12 +337,34 @@ PngEncoder::~PngEncoder() {
   if (impl_->deflating) deflateEnd(&impl_->zs);
 }
 
-const std::vector<unsigned char>& PngEncoder::encode(const RgbImage& image) {
+std::span<const unsigned char> PngEncoder::encode(const RgbImage& image) {
+  return impl_->encode({image.pixels.data(), image.pixels.size(), image.width, image.height, 3});
+}
+
+std::span<const unsigned char> PngEncoder::encode(const RgbaImage& image) {
+  return impl_->encode({image.pixels.data(), image.pixels.size(), image.width, image.height, 4});
+}
+
+std::span<const unsigned char> PngEncoder::Impl::encode(const Pixels& image) {
   checkImage(image);
-  Impl& m = *impl_;
-  if (m.compression == PngCompression::kSmall) {
-    m.out() = detail::encodePngStbDefault(image);
-    return m.out();
+  const bool banded =
+      compression == PngCompression::kDefault || compression == PngCompression::kFast;
+  // The others read RGB rows as they are; they keep nothing from one image to the next.
+  Pixels whole = image;
+  if (!banded && (image.channels == 4 || compression == PngCompression::kSmall)) {
+    rgb.resize(image.width, image.height);
+    if (image.channels == 4) {
+      rgbaToRgb(image.data, rgb.pixels.data(),
+                static_cast<std::size_t>(image.width) * image.height);
+    } else {
+      std::memcpy(rgb.pixels.data(), image.data, image.size);
+    }
+    whole = {rgb.pixels.data(), rgb.pixels.size(), image.width, image.height, 3};
+  }
+  if (compression == PngCompression::kSmall) {
+    out() = detail::encodePngStbDefault(rgb);
+    out_size[current] = out().size();
+    return {out().data(), out_size[current]};
   }
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
   const std::size_t filtered = (row_bytes + 1) * static_cast<std::size_t>(image.height);
@@ -322,39 +373,39 @@ const std::vector<unsigned char>& PngEncoder::encode(const RgbImage& image) {
   const std::size_t band_filtered = (row_bytes + 1) * static_cast<std::size_t>(kBandRows);
   const std::size_t bands = (static_cast<std::size_t>(image.height) + kBandRows - 1) / kBandRows;
   std::size_t bound = filtered + 5 * (filtered / 65535 + 1);  // kStored
-  if (m.compression == PngCompression::kDefault) {
-    bound = bands * (deflateBound(&m.zs, static_cast<uLong>(band_filtered)) + 6) + 2;
-  } else if (m.compression == PngCompression::kFast) {
+  if (compression == PngCompression::kDefault) {
+    bound = bands * (deflateBound(&zs, static_cast<uLong>(band_filtered)) + 6) + 2;
+  } else if (compression == PngCompression::kFast) {
     bound = bands * (band_filtered / 8 * 9 + 16) + 2;
   }
   // The banded compressions copy from the last output: write the other buffer.
-  const bool banded =
-      m.compression == PngCompression::kDefault || m.compression == PngCompression::kFast;
-  if (banded) m.current = 1 - m.current;
+  if (banded) current = 1 - current;
   try {
-    m.begin(image, 2 + bound + 4);
-    m.adler = 1;
-    switch (m.compression) {
-      case PngCompression::kDefault: m.finish(m.deflateRows(image)); break;
-      case PngCompression::kFast: m.finish(m.runLengthRows(image)); break;
-      case PngCompression::kStored: m.finish(m.storeRows(image)); break;
+    begin(image, 2 + bound + 4);
+    adler = 1;
+    switch (compression) {
+      case PngCompression::kDefault: finish(deflateRows(image)); break;
+      case PngCompression::kFast: finish(runLengthRows(image)); break;
+      case PngCompression::kStored: finish(storeRows(whole)); break;
       case PngCompression::kSmall: break;  // above
     }
   } catch (...) {
     // Half an image: nothing of it, nor of the image before, may be copied into the next.
-    m.last.width = m.last.height = 0;
+    last.width = last.height = 0;
     throw;
   }
-  return m.out();
+  return {out().data(), out_size[current]};
 }
 
 std::vector<unsigned char> encodePng(const RgbImage& image, PngCompression compression) {
   PngEncoder encoder(compression);
-  return encoder.encode(image);
+  const std::span<const unsigned char> bytes = encoder.encode(image);
+  return {bytes.begin(), bytes.end()};
 }
 
 void writePng(const std::string& path, const RgbImage& image, PngCompression compression) {
-  const std::vector<unsigned char> bytes = encodePng(image, compression);
+  PngEncoder encoder(compression);
+  const std::span<const unsigned char> bytes = encoder.encode(image);
   writeFileAtomically(path,
                       std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }

@@ -9,6 +9,7 @@
 // image.
 
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -54,7 +55,10 @@ class PngEncoder {
 
   /// The PNG file bytes of `image`, valid until the next call. Throws Error when the image has
   /// no pixels or a wrong buffer size.
-  const std::vector<unsigned char>& encode(const RgbImage& image);
+  std::span<const unsigned char> encode(const RgbImage& image);
+  /// The same for an image read back with its alpha, which the PNG drops: a film's frames come
+  /// so, and only the bands that changed are converted (the bytes are encode(image.rgb())'s).
+  std::span<const unsigned char> encode(const RgbaImage& image);
 
  private:
   struct Impl;

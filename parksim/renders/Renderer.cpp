@@ -1,9 +1,7 @@
 #include "parksim/renders/Renderer.h"
 
 #include <algorithm>
-#include <bit>
 #include <cstdint>
-#include <cstring>
 #include <map>
 #include <optional>
 #include <string>
@@ -94,7 +92,8 @@ struct Renderer::Impl {
   void resolve();
   void drawBackdrop(const Scene& backdrop, const Camera& cam);
   void copyFramebuffer(GLuint from, GLuint to);
-  void readInto(RgbImage& out, int x_offset_px);
+  // The resolved image, RGBA, into `dst` whose rows are row_length_px pixels apart.
+  void readRgba(std::uint8_t* dst, int row_length_px);
   template <class Vertex>
   void upload(GLuint vbo, std::size_t& capacity,
               const std::vector<const std::vector<Vertex>*>& batches);
@@ -463,14 +462,23 @@ void Renderer::render(const Scene& scene, const CameraDef& camera_def, RgbImage&
   if (out.width != impl_->width || out.height != impl_->height) {
     out.resize(impl_->width, impl_->height);
   }
-  renderInto(scene, camera_def, out, 0);
+  impl_->tessellator.tessellate(scene, camera(scene, camera_def), tessellationDef(), impl_->fonts,
+                                impl_->list);
+  const CurrentContext current(*impl_->context);
+  impl_->draw(impl_->list);
+  // llvmpipe reads RGBA with a plain copy but converts to RGB pixel by pixel (~10x slower):
+  // read RGBA and drop alpha here.
+  impl_->rgba.resize(static_cast<std::size_t>(out.width) * out.height * 4);
+  impl_->readRgba(impl_->rgba.data(), out.width);
+  rgbaToRgb(impl_->rgba.data(), out.pixels.data(),
+            static_cast<std::size_t>(out.width) * out.height);
 }
 
 namespace {
 
-void checkFits(const RgbImage& out, int width, int height, int x_offset_px) {
+void checkFits(const RgbaImage& out, int width, int height, int x_offset_px) {
   if (out.height != height || x_offset_px < 0 || x_offset_px + width > out.width ||
-      out.pixels.size() != static_cast<std::size_t>(out.width) * out.height * 3) {
+      out.pixels.size() != static_cast<std::size_t>(out.width) * out.height * 4) {
     throw Error("renderer: a " + std::to_string(width) + "x" + std::to_string(height) +
                 " view does not fit at column " + std::to_string(x_offset_px) + " of a " +
                 std::to_string(out.width) + "x" + std::to_string(out.height) + " image");
@@ -479,18 +487,18 @@ void checkFits(const RgbImage& out, int width, int height, int x_offset_px) {
 
 }  // namespace
 
-void Renderer::renderInto(const Scene& scene, const CameraDef& camera_def, RgbImage& out,
+void Renderer::renderInto(const Scene& scene, const CameraDef& camera_def, RgbaImage& out,
                           int x_offset_px) {
   checkFits(out, impl_->width, impl_->height, x_offset_px);
   impl_->tessellator.tessellate(scene, camera(scene, camera_def), tessellationDef(), impl_->fonts,
                                 impl_->list);
   const CurrentContext current(*impl_->context);
   impl_->draw(impl_->list);
-  impl_->readInto(out, x_offset_px);
+  impl_->readRgba(out.pixels.data() + static_cast<std::size_t>(x_offset_px) * 4, out.width);
 }
 
 void Renderer::renderInto(const Scene& backdrop, const Scene& scene, const CameraDef& camera_def,
-                          RgbImage& out, int x_offset_px) {
+                          RgbaImage& out, int x_offset_px) {
   checkFits(out, impl_->width, impl_->height, x_offset_px);
   if (scene.extent != backdrop.extent || scene.extent_top_m != backdrop.extent_top_m) {
     throw Error("renderer: a scene drawn over a backdrop must have the backdrop's extent");
@@ -503,40 +511,14 @@ void Renderer::renderInto(const Scene& backdrop, const Scene& scene, const Camer
   impl_->tessellator.tessellate(scene, cam, front, impl_->fonts, impl_->list);
   impl_->drawItems(impl_->list);
   impl_->resolve();
-  impl_->readInto(out, x_offset_px);
+  impl_->readRgba(out.pixels.data() + static_cast<std::size_t>(x_offset_px) * 4, out.width);
 }
 
-// readInto packs pixels with shifts that assume red in the lowest byte of a word.
-static_assert(std::endian::native == std::endian::little);
-
-void Renderer::Impl::readInto(RgbImage& out, int x_offset_px) {
-  // llvmpipe reads RGBA with a plain copy but converts to RGB pixel by pixel (~10x slower):
-  // read RGBA and drop alpha here.
-  const int w = width;
-  const int h = height;
-  rgba.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
-  gl->ReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+void Renderer::Impl::readRgba(std::uint8_t* dst, int row_length_px) {
+  gl->PixelStorei(GL_PACK_ROW_LENGTH, row_length_px);
+  gl->ReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, dst);
+  gl->PixelStorei(GL_PACK_ROW_LENGTH, 0);
   checkGl(*gl, "render");
-  for (int y = 0; y < h; ++y) {
-    const std::uint8_t* src = rgba.data() + static_cast<std::size_t>(y) * w * 4;
-    std::uint8_t* dst =
-        out.pixels.data() + (static_cast<std::size_t>(y) * out.width + x_offset_px) * 3;
-    // Four pixels at a time, packed in two 64-bit words and stored as 12 bytes (little endian:
-    // a pixel's red is its lowest byte): half the time of a 4-byte store per pixel, which took
-    // 0.25 ms a 640x480 frame. The rest pixel by pixel.
-    int x = 0;
-    for (; x + 4 <= w; x += 4, src += 16, dst += 12) {
-      std::uint64_t a;
-      std::uint64_t b;
-      std::memcpy(&a, src, 8);
-      std::memcpy(&b, src + 8, 8);
-      const std::uint64_t lo = (a & 0xFFFFFFu) | ((a >> 8) & 0xFFFFFF000000u) | (b << 48);
-      const auto hi = static_cast<std::uint32_t>(((b >> 16) & 0xFFu) | ((b >> 24) & 0xFFFFFF00u));
-      std::memcpy(dst, &lo, 8);
-      std::memcpy(dst + 8, &hi, 4);
-    }
-    for (; x < w; ++x, src += 4, dst += 3) std::memcpy(dst, src, 3);
-  }
 }
 
 }  // namespace parksim

@@ -80,8 +80,9 @@ class Renderer {
   void render(const Scene& scene, const CameraDef& camera_def, RgbImage& out);
 
   /// Draws `scene` into columns [x_offset_px, x_offset_px + width()) of `out`, whose height must
-  /// be height(): for views side by side in one image. Throws Error when it does not fit.
-  void renderInto(const Scene& scene, const CameraDef& camera_def, RgbImage& out, int x_offset_px);
+  /// be height(): for views side by side in one image. Throws Error when it does not fit. RGBA,
+  /// as the GL reads back: a film's frame costs its caller a copy and no conversion.
+  void renderInto(const Scene& scene, const CameraDef& camera_def, RgbaImage& out, int x_offset_px);
 
   /// Draws `backdrop`, then `scene` over it, into columns [x_offset_px, x_offset_px + width())
   /// of `out`: for films, whose lot stays while the robot moves (buildSceneLayers). The camera
@@ -95,7 +96,7 @@ class Renderer {
   /// the arrows' shafts over the planned path, the robot's soft edge over the lines beside it. A
   /// few dozen pixels of a 640x480 film frame differ from one scene's picture.
   void renderInto(const Scene& backdrop, const Scene& scene, const CameraDef& camera_def,
-                  RgbImage& out, int x_offset_px);
+                  RgbaImage& out, int x_offset_px);
 
   /// How many times a backdrop was drawn rather than copied back (once per change of it).
   long backdropsDrawn() const;

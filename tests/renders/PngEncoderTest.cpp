@@ -5,6 +5,7 @@
 
 #include <cstring>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +27,20 @@ RgbImage pattern(int w, int h) {
     }
   }
   return img;
+}
+
+std::vector<unsigned char> bytesOf(std::span<const unsigned char> bytes) {
+  return {bytes.begin(), bytes.end()};
+}
+
+// `img` with an alpha byte after each pixel, which the PNG must not depend on.
+RgbaImage withAlpha(const RgbImage& img, std::uint8_t alpha_seed) {
+  RgbaImage out(img.width, img.height);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(img.width) * img.height; ++i) {
+    std::memcpy(&out.pixels[4 * i], &img.pixels[3 * i], 3);
+    out.pixels[4 * i + 3] = static_cast<std::uint8_t>(alpha_seed + i * 37);
+  }
+  return out;
 }
 
 TEST(PngEncoderTest, RoundTripsThroughStbImage) {
@@ -51,7 +66,7 @@ TEST(PngEncoderTest, EveryCompressionRoundTrips) {
          {pattern(1, 1), pattern(173, 91), pattern(640, 480), pattern(9, 3)}) {
       const std::string path = rendertest::outputDir("PngEncoderTest_" + std::string(toString(c))) +
                                "/" + std::to_string(img.width) + ".png";
-      const std::vector<unsigned char>& bytes = encoder.encode(img);
+      const std::vector<unsigned char> bytes = bytesOf(encoder.encode(img));
       std::FILE* f = std::fopen(path.c_str(), "wb");
       ASSERT_NE(f, nullptr);
       std::fwrite(bytes.data(), 1, bytes.size(), f);
@@ -121,13 +136,13 @@ TEST(PngEncoderTest, BandedBytesDoNotDependOnTheLastImage) {
     SCOPED_TRACE(std::string(toString(c)) + ", " + std::to_string(height) + " rows");
     PngEncoder warm(c);
     std::vector<std::vector<unsigned char>> first;
-    for (int k = 0; k < 6; ++k) first.push_back(warm.encode(filmFrame(k, height)));
+    for (int k = 0; k < 6; ++k) first.push_back(bytesOf(warm.encode(filmFrame(k, height))));
     warm.encode(pattern(173, 91));
     const std::size_t stride = 640 * 3 + 1;
     for (int k : {5, 3, 3, 0, 4, 1, 2}) {
       const RgbImage img = filmFrame(k, height);
       const auto& expected = first[static_cast<std::size_t>(k)];
-      EXPECT_EQ(warm.encode(img), expected) << "frame " << k;
+      EXPECT_EQ(bytesOf(warm.encode(img)), expected) << "frame " << k;
       EXPECT_EQ(encodePng(img, c), expected) << "frame " << k;
       const std::vector<unsigned char> raw =
           inflateIdat(expected, stride * static_cast<std::size_t>(height));
@@ -139,9 +154,29 @@ TEST(PngEncoderTest, BandedBytesDoNotDependOnTheLastImage) {
             << "row " << y;
       }
     }
-    const std::vector<unsigned char> noisy = warm.encode(noise);
+    const std::vector<unsigned char> noisy = bytesOf(warm.encode(noise));
     EXPECT_EQ(noisy, encodePng(noise, c));
     EXPECT_EQ(inflateIdat(noisy, (640 * 3 + 1) * 480).size(), (640u * 3 + 1) * 480);
+  }
+}
+
+// Films hand their encoders RGBA as read back: the bytes are the RGB image's whatever the alpha,
+// for every compression, on an encoder that saw RGB and RGBA images of other frames before; a
+// frame that differs from the last in alpha only is still right.
+TEST(PngEncoderTest, RgbaImagesGiveTheirRgbImagesBytes) {
+  for (PngCompression c : kAll) {
+    SCOPED_TRACE(toString(c));
+    PngEncoder warm(c);
+    for (int k : {0, 1, 1, 4, 2}) {
+      const RgbImage rgb = filmFrame(k, 470);
+      const std::vector<unsigned char> expected = encodePng(rgb, c);
+      EXPECT_EQ(bytesOf(warm.encode(withAlpha(rgb, 0))), expected) << "frame " << k;
+      EXPECT_EQ(bytesOf(warm.encode(withAlpha(rgb, 99))), expected) << "alpha only, " << k;
+      if (k == 4) EXPECT_EQ(bytesOf(warm.encode(rgb)), expected) << "RGB between";
+    }
+    const RgbImage odd = pattern(173, 91);
+    EXPECT_EQ(bytesOf(warm.encode(withAlpha(odd, 7))), encodePng(odd, c));
+    EXPECT_EQ(withAlpha(odd, 7).rgb(), odd);
   }
 }
 

@@ -157,9 +157,9 @@ SceneLayers filmLayers(const Scenario& lot, const SceneStyle& style, const Pose2
 }
 
 RgbImage renderLayers(Renderer& renderer, const SceneLayers& layers) {
-  RgbImage img(renderer.width(), renderer.height());
+  RgbaImage img(renderer.width(), renderer.height());
   renderer.renderInto(layers.back, layers.front, {}, img, 0);
-  return img;
+  return img.rgb();
 }
 
 // The kept backdrop is an optimisation only: whatever the renderer drew before, a film's frame
@@ -186,7 +186,7 @@ TEST_F(RendererTest, AKeptBackdropGivesTheImageOfAFreshOne) {
     const RgbImage pushed1 = renderLayers(renderer, pushed);
     const RgbImage a2 = renderLayers(renderer, a);
     EXPECT_EQ(renderer.backdropsDrawn(), 3);
-    RgbImage framed(640, 480);  // the same backdrop through another camera: drawn anew
+    RgbaImage framed(640, 480);  // the same backdrop through another camera: drawn anew
     renderer.renderInto(a.back, a.front, {.fill = 0.8}, framed, 0);
     EXPECT_EQ(renderer.backdropsDrawn(), 4);
     renderer.setSize(320, 240);
@@ -199,9 +199,9 @@ TEST_F(RendererTest, AKeptBackdropGivesTheImageOfAFreshOne) {
     Renderer fresh(def);
     EXPECT_EQ(renderLayers(fresh, b), b1);
     EXPECT_EQ(renderLayers(fresh, pushed), pushed1);
-    RgbImage fresh_framed(640, 480);
+    RgbaImage fresh_framed(640, 480);
     fresh.renderInto(a.back, a.front, {.fill = 0.8}, fresh_framed, 0);
-    EXPECT_EQ(fresh_framed, framed);
+    EXPECT_EQ(fresh_framed.rgb(), framed.rgb());
     fresh.setSize(320, 240);
     EXPECT_EQ(renderLayers(fresh, a), small);
 
@@ -231,7 +231,7 @@ TEST_F(RendererTest, TheFrontIsDrawnWholeOverItsOwnBackdrop) {
   expectPatch(img, pixelOf(renderer.camera(layers.front, {}), {1.05, 0.35, 0.0}), 3, patch);
 
   layers.front.extent.x_max += 0.1;
-  RgbImage out(640, 480);
+  RgbaImage out(640, 480);
   EXPECT_THROW(renderer.renderInto(layers.back, layers.front, {}, out, 0), Error);
 }
 
@@ -304,13 +304,21 @@ TEST_F(RendererTest, ViewsGoSideBySide) {
   const Scene scene = buildScene(lot_, view, style_);
   RgbImage single;
   renderer_->render(scene, {}, single);
-  RgbImage wide(1280, 480);
-  renderer_->renderInto(scene, {CameraMode::kFollow}, wide, 640);
-  renderer_->renderInto(scene, {}, wide, 0);
-  for (int y = 0; y < 480; y += 7) {
-    for (int x = 0; x < 640; x += 5) ASSERT_EQ(wide.at(x, y), single.at(x, y));
+  RgbImage follow;
+  renderer_->render(scene, {CameraMode::kFollow}, follow);
+  RgbaImage wide_rgba(1280, 480);
+  renderer_->renderInto(scene, {CameraMode::kFollow}, wide_rgba, 640);
+  renderer_->renderInto(scene, {}, wide_rgba, 0);
+  const RgbImage wide = wide_rgba.rgb();
+  for (int y = 0; y < 480; ++y) {
+    for (int x = 0; x < 640; ++x) {
+      ASSERT_EQ(wide.at(x, y), single.at(x, y));
+      ASSERT_EQ(wide.at(640 + x, y), follow.at(x, y));
+    }
   }
-  EXPECT_THROW(renderer_->renderInto(scene, {}, wide, 700), Error);
+  EXPECT_THROW(renderer_->renderInto(scene, {}, wide_rgba, 700), Error);
+  RgbaImage short_rgba(1280, 479);
+  EXPECT_THROW(renderer_->renderInto(scene, {}, short_rgba, 0), Error);
 }
 
 TEST_F(RendererTest, SavesAPictureForHumans) {
