@@ -33,7 +33,8 @@ void addOutputFlags(CLI::App& app, OutputOptions& output, const std::string& ver
 
 /// Process set-up every program does first: past a file-size limit (ulimit -f) a write then
 /// fails with EFBIG and is reported like any other write error, instead of the process dying
-/// with a partial file.
+/// with a partial file; and llvmpipe rasterizes in the drawing thread (LP_NUM_THREADS=0)
+/// unless the environment already sets LP_NUM_THREADS.
 void startProgram();
 
 /// Parses the command line. Returns the exit code to end with when parsing ended the program

@@ -116,6 +116,25 @@ TEST_F(GlBackendCli, OptionBeatsEnvironmentAndBothBackendsFilmTheSameBytes) {
   EXPECT_GT(files, 20);
 }
 
+// The program has llvmpipe rasterize in its drawing thread unless LP_NUM_THREADS says otherwise
+// (cli::startProgram); frames and figures are the same bytes with rasterizer threads.
+TEST_F(GlBackendCli, LlvmpipeThreadsDoNotChangeTheBytes) {
+  const EnvVar env("PARKSIM_GL_BACKEND", nullptr);
+  const EnvVar threads("LP_NUM_THREADS", nullptr);
+  ASSERT_EQ(film("default", "--view both").exit_code, 0);
+  threads.set("3");
+  ASSERT_EQ(film("threads", "--view both").exit_code, 0);
+  int files = 0;
+  for (const char* sub : {"frames", "figures"}) {
+    for (const auto& e : fs::directory_iterator(dir_ / "default" / sub)) {
+      const fs::path other = dir_ / "threads" / sub / e.path().filename();
+      EXPECT_EQ(slurp(e.path()), slurp(other)) << other;
+      ++files;
+    }
+  }
+  EXPECT_GT(files, 20);
+}
+
 // glvnd's libEGL without a vendor library: EGL cannot make a context.
 TEST_F(GlBackendCli, WithoutEglAutoFallsBackToOsMesaAndEglAloneExitsWithThree) {
   const EnvVar env("PARKSIM_GL_BACKEND", nullptr);

@@ -1,0 +1,28 @@
+#include "parksim/cli/Program.h"
+
+#include <stdlib.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+
+namespace parksim::cli {
+namespace {
+
+// llvmpipe rasterizes in the drawing thread unless the user chose its threads: the program's
+// default, never over the user's word.
+TEST(ProgramTest, StartProgramKeepsTheUsersLlvmpipeThreads) {
+  ::unsetenv("LP_NUM_THREADS");
+  startProgram();
+  ASSERT_NE(std::getenv("LP_NUM_THREADS"), nullptr);
+  EXPECT_EQ(std::string(std::getenv("LP_NUM_THREADS")), "0");
+
+  ::setenv("LP_NUM_THREADS", "3", 1);
+  startProgram();
+  EXPECT_EQ(std::string(std::getenv("LP_NUM_THREADS")), "3");
+  ::unsetenv("LP_NUM_THREADS");
+}
+
+}  // namespace
+}  // namespace parksim::cli
