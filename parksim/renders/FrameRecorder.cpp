@@ -1,16 +1,12 @@
 #include "parksim/renders/FrameRecorder.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <condition_variable>
 #include <cstdio>
-#include <cstring>
 #include <deque>
+#include <exception>
 #include <filesystem>
 #include <mutex>
 #include <regex>
@@ -19,6 +15,7 @@
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
+#include "parksim/renders/EncodeQueue.h"
 #include "parksim/renders/PngEncoder.h"
 #include "parksim/renders/Process.h"
 #include "parksim/renders/Renderer.h"
@@ -78,33 +75,6 @@ std::string framePathIn(const std::string& dir, int index) {
   return dir + "/" + name;
 }
 
-// Frames are written in place, not through a temporary file and a rename as other outputs are:
-// creating a file costs ~0.6 ms of kernel time on an ext4 that has seen many files come and go
-// (its inode search skips recently deleted inodes), rewriting one that exists ~0.05 ms, and a
-// rename always creates. So a second recording into the same directory rewrites its frames. A
-// frame is never left half-written unless the process dies while writing it.
-void writeFrame(const std::string& path, std::span<const unsigned char> bytes) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw Error(path + ": cannot write: " + std::strerror(errno));
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const std::string reason = std::strerror(errno);
-      ::close(fd);
-      ::unlink(path.c_str());
-      throw Error(path + ": write failed: " + reason);
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  if (::close(fd) != 0) {
-    const std::string reason = std::strerror(errno);
-    ::unlink(path.c_str());
-    throw Error(path + ": write failed: " + reason);
-  }
-}
-
 // Removes frame files (six digits .png) numbered `first` and above: an earlier, longer recording
 // into the same directory must not add its tail to this one's video.
 void removeFramesFrom(const std::string& dir, int first) {
@@ -119,110 +89,6 @@ void removeFramesFrom(const std::string& dir, int first) {
     }
   }
 }
-
-// Images travel from the renderer to the encoders and back through a fixed pool, so a steady
-// recording allocates nothing per frame and never runs more than queue_depth frames ahead.
-class EncodeQueue {
- public:
-  EncodeQueue(int threads, int depth, int width, int height, PngCompression png) {
-    for (int i = 0; i < depth; ++i) free_.push_back(std::make_unique<RgbaImage>(width, height));
-    for (int i = 0; i < threads; ++i) workers_.emplace_back([this, png] { work(png); });
-  }
-
-  ~EncodeQueue() { stop(); }
-
-  std::unique_ptr<RgbaImage> acquire() {
-    std::unique_lock lock(mutex_);
-    free_cv_.wait(lock, [this] { return !free_.empty(); });
-    std::unique_ptr<RgbaImage> image = std::move(free_.back());
-    free_.pop_back();
-    return image;
-  }
-
-  void submit(std::string path, std::unique_ptr<RgbaImage> image) {
-    {
-      std::lock_guard lock(mutex_);
-      jobs_.push_back({std::move(path), std::move(image)});
-    }
-    job_cv_.notify_one();
-  }
-
-  void release(std::unique_ptr<RgbaImage> image) {
-    {
-      std::lock_guard lock(mutex_);
-      free_.push_back(std::move(image));
-    }
-    free_cv_.notify_one();
-  }
-
-  /// Blocks until every submitted frame is written.
-  void drain() {
-    std::unique_lock lock(mutex_);
-    idle_cv_.wait(lock, [this] { return jobs_.empty() && busy_ == 0; });
-  }
-
-  void stop() {
-    {
-      std::lock_guard lock(mutex_);
-      stopping_ = true;
-    }
-    job_cv_.notify_all();
-    for (std::thread& t : workers_) {
-      if (t.joinable()) t.join();
-    }
-  }
-
-  /// The first write error, if any.
-  std::string error() const {
-    std::lock_guard lock(mutex_);
-    return error_;
-  }
-
- private:
-  struct Job {
-    std::string path;
-    std::unique_ptr<RgbaImage> image;
-  };
-
-  void work(PngCompression png) {
-    // One encoder per thread: its zlib state and buffers serve every frame.
-    PngEncoder encoder(png);
-    while (true) {
-      Job job;
-      {
-        std::unique_lock lock(mutex_);
-        job_cv_.wait(lock, [this] { return stopping_ || !jobs_.empty(); });
-        if (jobs_.empty()) return;  // stopping, and nothing left to write
-        job = std::move(jobs_.front());
-        jobs_.pop_front();
-        ++busy_;
-      }
-      std::string failure;
-      try {
-        writeFrame(job.path, encoder.encode(*job.image));
-      } catch (const std::exception& e) {
-        failure = e.what();
-      }
-      {
-        std::lock_guard lock(mutex_);
-        if (!failure.empty() && error_.empty()) error_ = failure;
-        free_.push_back(std::move(job.image));
-        --busy_;
-      }
-      free_cv_.notify_one();
-      idle_cv_.notify_all();
-    }
-  }
-
-  mutable std::mutex mutex_;
-  std::condition_variable job_cv_, free_cv_, idle_cv_;
-  std::deque<Job> jobs_;
-  std::vector<std::unique_ptr<RgbaImage>> free_;
-  std::vector<std::thread> workers_;
-  int busy_ = 0;
-  bool stopping_ = false;
-  std::string error_;
-};
 
 // How far an obstacle moves before frames show it moved: 1/300 of a pixel at the default
 // 640x480 view of a 1.9 m lot, under one level of a soft edge's colour.
@@ -292,33 +158,137 @@ VideoOutcome runFfmpeg(const std::string& ffmpeg_name, const std::string& out_di
 
 }  // namespace
 
+// What the caller hands the drawing thread, in order: a plan to draw from now on, or a sample
+// and the frames due from it.
+struct DrawJob {
+  std::optional<std::vector<Pose2>> planned;  // setPlan: the planned path, and the tree
+  std::vector<Trajectory> tree;
+  FrameInput input;
+  bool extends_path = false;  // input.pose joins the driven path
+  int first_frame = 0;        // frames first_frame .. first_frame + frames - 1 show input
+  int frames = 0;
+};
+
+// Samples the caller may hand the drawing thread ahead of it: the simulation runs on while
+// frames are drawn, its memory bounded.
+constexpr std::size_t kMaxDrawJobs = 256;
+
 struct FrameRecorder::Impl {
   Scenario scenario;
   FrameDef def;
   SceneStyle style;
   std::string frames_dir;
-  std::unique_ptr<Renderer> renderer;
+  std::string gl_description;
   std::unique_ptr<EncodeQueue> queue;
 
+  // The caller's side: which frames are due, and what was last taken.
+  std::optional<double> t0;
+  int next_frame = 0;
+  std::optional<FrameInput> last;
+  std::optional<Pose2> last_executed;  // the driven path's last pose
+  bool last_rendered = false;
+  bool finished = false;
+
+  // The drawing thread's side: it alone uses the renderer (made by the constructor, which
+  // reports a missing GL there) and what frames show.
+  std::unique_ptr<Renderer> renderer;
   std::vector<Pose2> planned;
   std::vector<Trajectory> tree;
   std::vector<Pose2> executed;
   std::vector<Pose2> shown_obstacles;  // obstacle poses as drawn
 
-  std::optional<double> t0;
-  int next_frame = 0;
-  std::optional<FrameInput> last;
-  bool last_rendered = false;
-  bool finished = false;
+  // Between the two.
+  std::thread drawer;
+  std::mutex mutex;
+  std::condition_variable job_cv, room_cv, idle_cv;
+  std::deque<DrawJob> jobs;
+  bool drawing = false;  // a job is being drawn
+  bool stopping = false;
+  std::exception_ptr draw_failure;  // the first error drawing; later jobs are dropped
 
-  void render(const FrameInput& in);
-  void throwIfFailed() const {
+  void post(DrawJob job);
+  void drawLoop();
+  void draw(const DrawJob& job);
+  void render(const FrameInput& in, int index);
+  void waitDrawn();
+  void stopDrawing();
+  void throwIfFailed() {
+    {
+      std::lock_guard lock(mutex);
+      if (draw_failure) std::rethrow_exception(draw_failure);
+    }
     const std::string error = queue->error();
     if (!error.empty()) throw Error("frames: " + error);
   }
 };
 
-void FrameRecorder::Impl::render(const FrameInput& in) {
+void FrameRecorder::Impl::post(DrawJob job) {
+  {
+    std::unique_lock lock(mutex);
+    room_cv.wait(lock, [this] { return jobs.size() < kMaxDrawJobs || draw_failure; });
+    if (draw_failure) std::rethrow_exception(draw_failure);
+    jobs.push_back(std::move(job));
+  }
+  job_cv.notify_one();
+}
+
+void FrameRecorder::Impl::drawLoop() {
+  while (true) {
+    DrawJob job;
+    {
+      std::unique_lock lock(mutex);
+      job_cv.wait(lock, [this] { return stopping || !jobs.empty(); });
+      if (jobs.empty()) return;
+      job = std::move(jobs.front());
+      jobs.pop_front();
+      drawing = true;
+    }
+    room_cv.notify_one();
+    std::exception_ptr failure;
+    try {
+      draw(job);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    {
+      std::lock_guard lock(mutex);
+      drawing = false;
+      if (failure) {
+        draw_failure = failure;
+        jobs.clear();
+      }
+    }
+    room_cv.notify_all();
+    idle_cv.notify_all();
+    if (failure) return;
+  }
+}
+
+void FrameRecorder::Impl::draw(const DrawJob& job) {
+  if (job.planned) {
+    planned = *job.planned;
+    tree = job.tree;
+  }
+  if (job.extends_path) executed.push_back(job.input.pose);
+  for (int k = 0; k < job.frames; ++k) render(job.input, job.first_frame + k);
+}
+
+void FrameRecorder::Impl::waitDrawn() {
+  std::unique_lock lock(mutex);
+  idle_cv.wait(lock, [this] { return (jobs.empty() && !drawing) || draw_failure; });
+  if (draw_failure) std::rethrow_exception(draw_failure);
+}
+
+void FrameRecorder::Impl::stopDrawing() {
+  {
+    std::lock_guard lock(mutex);
+    stopping = true;
+  }
+  job_cv.notify_all();
+  if (drawer.joinable()) drawer.join();
+}
+
+void FrameRecorder::Impl::render(const FrameInput& in, int index) {
   ViewState view;
   view.robot = in.pose;
   view.reference = in.reference;
@@ -365,8 +335,7 @@ void FrameRecorder::Impl::render(const FrameInput& in) {
     queue->release(std::move(image));
     throw;
   }
-  queue->submit(framePathIn(frames_dir, next_frame), std::move(image));
-  ++next_frame;
+  queue->submit(framePathIn(frames_dir, index), std::move(image));
 }
 
 FrameRecorder::FrameRecorder(const Scenario& scenario, const FrameDef& def)
@@ -393,19 +362,31 @@ FrameRecorder::FrameRecorder(const Scenario& scenario, const FrameDef& def)
   render_def.msaa_samples = def.msaa_samples;
   render_def.context = def.context;
   impl_->renderer = std::make_unique<Renderer>(render_def);
+  impl_->gl_description = impl_->renderer->description();
   const int image_width = def.view == FrameView::kBoth ? 2 * def.width_px : def.width_px;
   impl_->queue =
       std::make_unique<EncodeQueue>(def.encode_threads, def.queue_depth + def.encode_threads,
                                     image_width, def.height_px, def.png_compression);
+  // Frames are drawn on a thread of their own, so the caller's simulation goes on meanwhile.
+  impl_->drawer = std::thread([m = impl_.get()] { m->drawLoop(); });
 }
 
 FrameRecorder::~FrameRecorder() {
-  if (impl_ && impl_->queue) impl_->queue->stop();
+  if (!impl_) return;
+  {
+    std::lock_guard lock(impl_->mutex);
+    impl_->jobs.clear();  // not drawn: finish() was not called, or failed
+  }
+  impl_->stopDrawing();
+  if (impl_->queue) impl_->queue->stop();
 }
 
 void FrameRecorder::setPlan(const Trajectory& planned, std::span<const Trajectory> tree_edges) {
-  impl_->planned = samplePath(planned, impl_->scenario.robot);
-  impl_->tree.assign(tree_edges.begin(), tree_edges.end());
+  if (impl_->finished) throw Error("frames: setPlan after finish");
+  DrawJob job;
+  job.planned = samplePath(planned, impl_->scenario.robot);
+  job.tree.assign(tree_edges.begin(), tree_edges.end());
+  impl_->post(std::move(job));
 }
 
 int FrameRecorder::addFrame(const FrameInput& input) {
@@ -418,26 +399,31 @@ int FrameRecorder::addFrame(const FrameInput& input) {
                 formatFps(m.last->t_s) + " s)");
   }
   if (!m.t0) m.t0 = input.t_s;
+  DrawJob job;
   // Extend the driven path only where the robot moved, so standing still adds nothing.
-  if (m.executed.empty() || positionDistance(m.executed.back(), input.pose) > 5e-4 ||
-      headingDistance(m.executed.back(), input.pose) > 0.02) {
-    m.executed.push_back(input.pose);
-  }
+  job.extends_path = !m.last_executed || positionDistance(*m.last_executed, input.pose) > 5e-4 ||
+                     headingDistance(*m.last_executed, input.pose) > 0.02;
+  if (job.extends_path) m.last_executed = input.pose;
   m.last = input;
   m.last_rendered = false;
   // A frame is due once the sample reaches its time, give or take rounding of the caller's
   // clock (k * dt summed in floating point can fall a hair short of k / fps).
   const double slack = 1e-6 / m.def.fps;
-  int rendered = 0;
+  job.first_frame = m.next_frame;
   while (input.t_s + slack >= *m.t0 + m.next_frame / m.def.fps) {
     if (m.next_frame >= m.def.max_frames) {
       throw Error("frames: more than the limit of " + std::to_string(m.def.max_frames) +
                   " frames (docs/limits.md)");
     }
-    m.render(input);
-    m.last_rendered = true;
-    ++rendered;
+    ++m.next_frame;
+    ++job.frames;
   }
+  const int rendered = job.frames;
+  if (job.frames > 0 || job.extends_path) {
+    job.input = input;
+    m.post(std::move(job));
+  }
+  m.last_rendered = rendered > 0;
   return rendered;
 }
 
@@ -445,7 +431,15 @@ RecordingResult FrameRecorder::finish() {
   Impl& m = *impl_;
   if (m.finished) throw Error("frames: finish called twice");
   m.finished = true;
-  if (m.last && !m.last_rendered) m.render(*m.last);
+  if (m.last && !m.last_rendered) {
+    DrawJob job;
+    job.input = *m.last;
+    job.first_frame = m.next_frame++;
+    job.frames = 1;
+    m.post(std::move(job));
+  }
+  m.waitDrawn();
+  m.stopDrawing();
   m.queue->drain();
   m.queue->stop();
   m.throwIfFailed();
@@ -472,7 +466,7 @@ RecordingResult FrameRecorder::finish() {
 
 int FrameRecorder::frames() const { return impl_->next_frame; }
 
-std::string FrameRecorder::glDescription() const { return impl_->renderer->description(); }
+std::string FrameRecorder::glDescription() const { return impl_->gl_description; }
 
 std::string FrameRecorder::framePath(int index) const {
   return framePathIn(impl_->frames_dir, index);

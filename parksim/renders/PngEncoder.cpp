@@ -367,12 +367,12 @@ std::span<const unsigned char> PngEncoder::Impl::encode(const Pixels& image) {
     return {out().data(), out_size[current]};
   }
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
-  const std::size_t filtered = (row_bytes + 1) * static_cast<std::size_t>(image.height);
+  const std::size_t filtered_bytes = (row_bytes + 1) * static_cast<std::size_t>(image.height);
   // Banded: each band's bound (deflateBound assumes no flush; the run-length deflate spends at
   // most 9 bits a byte), the block ends and sync flush, and the final empty block.
   const std::size_t band_filtered = (row_bytes + 1) * static_cast<std::size_t>(kBandRows);
   const std::size_t bands = (static_cast<std::size_t>(image.height) + kBandRows - 1) / kBandRows;
-  std::size_t bound = filtered + 5 * (filtered / 65535 + 1);  // kStored
+  std::size_t bound = filtered_bytes + 5 * (filtered_bytes / 65535 + 1);  // kStored
   if (compression == PngCompression::kDefault) {
     bound = bands * (deflateBound(&zs, static_cast<uLong>(band_filtered)) + 6) + 2;
   } else if (compression == PngCompression::kFast) {
