@@ -170,8 +170,11 @@ struct DrawJob {
 };
 
 // Samples the caller may hand the drawing thread ahead of it: the simulation runs on while
-// frames are drawn, its memory bounded.
+// frames are drawn, its memory bounded. A caller that found the queue full waits until it is
+// half empty, so the two threads do not wake each other for every frame (a wake-up costs
+// more than a frame's simulation).
 constexpr std::size_t kMaxDrawJobs = 256;
+constexpr std::size_t kResumeDrawJobs = kMaxDrawJobs / 2;
 
 struct FrameRecorder::Impl {
   Scenario scenario;
@@ -225,7 +228,9 @@ struct FrameRecorder::Impl {
 void FrameRecorder::Impl::post(DrawJob job) {
   {
     std::unique_lock lock(mutex);
-    room_cv.wait(lock, [this] { return jobs.size() < kMaxDrawJobs || draw_failure; });
+    if (jobs.size() >= kMaxDrawJobs) {
+      room_cv.wait(lock, [this] { return jobs.size() <= kResumeDrawJobs || draw_failure; });
+    }
     if (draw_failure) std::rethrow_exception(draw_failure);
     jobs.push_back(std::move(job));
   }
@@ -235,6 +240,7 @@ void FrameRecorder::Impl::post(DrawJob job) {
 void FrameRecorder::Impl::drawLoop() {
   while (true) {
     DrawJob job;
+    bool resume = false;  // the caller may go on
     {
       std::unique_lock lock(mutex);
       job_cv.wait(lock, [this] { return stopping || !jobs.empty(); });
@@ -242,14 +248,16 @@ void FrameRecorder::Impl::drawLoop() {
       job = std::move(jobs.front());
       jobs.pop_front();
       drawing = true;
+      resume = jobs.size() == kResumeDrawJobs;
     }
-    room_cv.notify_one();
+    if (resume) room_cv.notify_one();
     std::exception_ptr failure;
     try {
       draw(job);
     } catch (...) {
       failure = std::current_exception();
     }
+    bool idle = false;
     {
       std::lock_guard lock(mutex);
       drawing = false;
@@ -257,9 +265,10 @@ void FrameRecorder::Impl::drawLoop() {
         draw_failure = failure;
         jobs.clear();
       }
+      idle = jobs.empty();
     }
-    room_cv.notify_all();
-    idle_cv.notify_all();
+    if (failure) room_cv.notify_all();
+    if (idle) idle_cv.notify_all();
     if (failure) return;
   }
 }
