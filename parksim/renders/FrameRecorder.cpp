@@ -169,12 +169,21 @@ struct DrawJob {
   int frames = 0;
 };
 
-// Samples the caller may hand the drawing thread ahead of it: the simulation runs on while
-// frames are drawn, its memory bounded. A caller that found the queue full waits until it is
-// half empty, so the two threads do not wake each other for every frame (a wake-up costs
-// more than a frame's simulation).
-constexpr std::size_t kMaxDrawJobs = 256;
-constexpr std::size_t kResumeDrawJobs = kMaxDrawJobs / 2;
+// What the caller may hand the drawing thread ahead of it: the simulation runs on while the GL
+// context is made (~0.2 s; a 999-frame film's simulation takes ~0.08 s) and while frames are
+// drawn, its memory bounded. A caller that found the queue full waits until it is half empty,
+// so the two threads do not wake each other for every frame (a wake-up costs more than a
+// frame's simulation).
+constexpr std::size_t kMaxDrawJobs = 2048;
+constexpr std::size_t kMaxDrawBytes = std::size_t{32} << 20;
+
+std::size_t bytesOf(const DrawJob& job) {
+  std::size_t bytes = sizeof(DrawJob) + job.input.obstacle_poses.size() * sizeof(Pose2) +
+                      job.input.contacts.size() * sizeof(int);
+  if (job.planned) bytes += job.planned->size() * sizeof(Pose2);
+  for (const Trajectory& edge : job.tree) bytes += edge.points.size() * sizeof(TrajectoryPoint);
+  return bytes;
+}
 
 struct FrameRecorder::Impl {
   Scenario scenario;
@@ -192,8 +201,8 @@ struct FrameRecorder::Impl {
   bool last_rendered = false;
   bool finished = false;
 
-  // The drawing thread's side: it alone uses the renderer (made by the constructor, which
-  // reports a missing GL there) and what frames show.
+  // The drawing thread's side: it alone makes and uses the renderer, and keeps what frames show.
+  RenderDef render_def;
   std::unique_ptr<Renderer> renderer;
   std::vector<Pose2> planned;
   std::vector<Trajectory> tree;
@@ -203,14 +212,18 @@ struct FrameRecorder::Impl {
   // Between the two.
   std::thread drawer;
   std::mutex mutex;
-  std::condition_variable job_cv, room_cv, idle_cv;
+  std::condition_variable job_cv, room_cv, idle_cv, ready_cv;
   std::deque<DrawJob> jobs;
-  bool drawing = false;  // a job is being drawn
+  std::size_t queued_bytes = 0;  // bytesOf the jobs
+  bool caller_waiting = false;   // for room in the queue
+  bool ready = false;            // the renderer is made, or failed
+  bool drawing = false;          // a job is being drawn
   bool stopping = false;
   std::exception_ptr draw_failure;  // the first error drawing; later jobs are dropped
 
   void post(DrawJob job);
   void drawLoop();
+  void waitReady();  // until the renderer is made; throws when it could not be
   void draw(const DrawJob& job);
   void render(const FrameInput& in, int index);
   void waitDrawn();
@@ -226,19 +239,42 @@ struct FrameRecorder::Impl {
 };
 
 void FrameRecorder::Impl::post(DrawJob job) {
+  const std::size_t bytes = bytesOf(job);
   {
     std::unique_lock lock(mutex);
-    if (jobs.size() >= kMaxDrawJobs) {
-      room_cv.wait(lock, [this] { return jobs.size() <= kResumeDrawJobs || draw_failure; });
+    if (jobs.size() >= kMaxDrawJobs || queued_bytes >= kMaxDrawBytes) {
+      caller_waiting = true;
+      room_cv.wait(lock, [this] {
+        return (jobs.size() <= kMaxDrawJobs / 2 && queued_bytes <= kMaxDrawBytes / 2) ||
+               draw_failure;
+      });
+      caller_waiting = false;
     }
     if (draw_failure) std::rethrow_exception(draw_failure);
     jobs.push_back(std::move(job));
+    queued_bytes += bytes;
   }
   job_cv.notify_one();
 }
 
 void FrameRecorder::Impl::drawLoop() {
-  while (true) {
+  std::exception_ptr failure;
+  try {
+    renderer = std::make_unique<Renderer>(render_def);
+    gl_description = renderer->description();
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  {
+    std::lock_guard lock(mutex);
+    ready = true;
+    draw_failure = failure;
+    if (failure) jobs.clear();
+  }
+  ready_cv.notify_all();
+  room_cv.notify_all();
+  idle_cv.notify_all();
+  while (!failure) {
     DrawJob job;
     bool resume = false;  // the caller may go on
     {
@@ -247,11 +283,12 @@ void FrameRecorder::Impl::drawLoop() {
       if (jobs.empty()) return;
       job = std::move(jobs.front());
       jobs.pop_front();
+      queued_bytes -= bytesOf(job);
       drawing = true;
-      resume = jobs.size() == kResumeDrawJobs;
+      resume =
+          caller_waiting && jobs.size() <= kMaxDrawJobs / 2 && queued_bytes <= kMaxDrawBytes / 2;
     }
     if (resume) room_cv.notify_one();
-    std::exception_ptr failure;
     try {
       draw(job);
     } catch (...) {
@@ -269,8 +306,13 @@ void FrameRecorder::Impl::drawLoop() {
     }
     if (failure) room_cv.notify_all();
     if (idle) idle_cv.notify_all();
-    if (failure) return;
   }
+}
+
+void FrameRecorder::Impl::waitReady() {
+  std::unique_lock lock(mutex);
+  ready_cv.wait(lock, [this] { return ready; });
+  if (draw_failure) std::rethrow_exception(draw_failure);
 }
 
 void FrameRecorder::Impl::draw(const DrawJob& job) {
@@ -365,18 +407,17 @@ FrameRecorder::FrameRecorder(const Scenario& scenario, const FrameDef& def)
   impl_->frames_dir = def.out_dir + "/frames";
   ensureDirectory(impl_->frames_dir);
 
-  RenderDef render_def;
+  RenderDef& render_def = impl_->render_def;
   render_def.width_px = def.width_px;
   render_def.height_px = def.height_px;
   render_def.msaa_samples = def.msaa_samples;
   render_def.context = def.context;
-  impl_->renderer = std::make_unique<Renderer>(render_def);
-  impl_->gl_description = impl_->renderer->description();
   const int image_width = def.view == FrameView::kBoth ? 2 * def.width_px : def.width_px;
   impl_->queue =
       std::make_unique<EncodeQueue>(def.encode_threads, def.queue_depth + def.encode_threads,
                                     image_width, def.height_px, def.png_compression);
-  // Frames are drawn on a thread of their own, so the caller's simulation goes on meanwhile.
+  // Frames are drawn on a thread of their own, which first makes the renderer (loads the GL
+  // libraries, compiles the shaders): the caller's simulation goes on meanwhile.
   impl_->drawer = std::thread([m = impl_.get()] { m->drawLoop(); });
 }
 
@@ -449,6 +490,7 @@ RecordingResult FrameRecorder::finish() {
   }
   m.waitDrawn();
   m.stopDrawing();
+  m.waitReady();  // a recording without a sample never drew
   m.queue->drain();
   m.queue->stop();
   m.throwIfFailed();
@@ -475,7 +517,10 @@ RecordingResult FrameRecorder::finish() {
 
 int FrameRecorder::frames() const { return impl_->next_frame; }
 
-std::string FrameRecorder::glDescription() const { return impl_->gl_description; }
+std::string FrameRecorder::glDescription() const {
+  impl_->waitReady();
+  return impl_->gl_description;
+}
 
 std::string FrameRecorder::framePath(int index) const {
   return framePathIn(impl_->frames_dir, index);

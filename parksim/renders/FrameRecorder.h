@@ -9,9 +9,10 @@
 //   RecordingResult r = rec.finish();             // waits for the files; runs ffmpeg if asked
 //   print r.message
 //
-// The GL context, framebuffers and image buffers are made once. PNGs are encoded and written
-// on worker threads while the next frame renders; file names come from the frame index, so the
-// files and their bytes do not depend on the threading.
+// The GL context, framebuffers and image buffers are made once. Frames are drawn on a thread of
+// the recorder's own, from the samples in the order given, while the caller simulates on; PNGs
+// are encoded and written on worker threads while the next frame renders. File names come from
+// the frame index, so the files and their bytes do not depend on the threading.
 
 #include <memory>
 #include <optional>
@@ -135,9 +136,12 @@ struct RecordingResult {
 
 class FrameRecorder {
  public:
-  /// Creates DIR/frames, the renderer and the encoder threads. Frames of an earlier recording
-  /// into the same directory are overwritten, and finish() removes those beyond this one's. Throws
-  /// Error on a bad definition, an unwritable directory or when no GL context can be made.
+  /// Creates DIR/frames and the encoder threads, and starts the drawing thread, which first
+  /// makes the renderer (GL context, shaders) while the caller goes on. Frames of an earlier
+  /// recording into the same directory are overwritten, and finish() removes those beyond this
+  /// one's. Throws Error on a bad definition or an unwritable directory; when no GL context can
+  /// be made, the next call after the drawing thread found it out throws that error
+  /// (EnvironmentError): addFrame, setPlan, glDescription or finish.
   FrameRecorder(const Scenario& scenario, const FrameDef& def);
   /// Waits for pending files (errors are dropped: call finish() to see them).
   ~FrameRecorder();
@@ -150,8 +154,9 @@ class FrameRecorder {
 
   /// Takes one sample. Frames are due at t0 + k / fps, t0 being the first sample's time; every
   /// due frame up to this sample's time is rendered from it (a sparse caller gets repeated
-  /// frames, a dense one has samples skipped). Returns the number of frames rendered. Throws
-  /// Error when a previous frame could not be written or t_s goes backwards.
+  /// frames, a dense one has samples skipped). Returns the number of frames due from it, which
+  /// the drawing thread draws. Throws Error when t_s goes backwards or is not finite, or when an
+  /// earlier frame could not be drawn or written.
   int addFrame(const FrameInput& input);
 
   /// Renders the last sample if it came after the last frame (so the film ends at the final

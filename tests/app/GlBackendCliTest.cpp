@@ -147,6 +147,13 @@ TEST_F(GlBackendCli, WithoutEglAutoFallsBackToOsMesaAndEglAloneExitsWithThree) {
   EXPECT_EQ(egl.out.rfind("parksim: error: EGL: ", 0), 0u) << egl.out;
   EXPECT_EQ(egl.out.find('\n'), egl.out.size() - 1) << egl.out;  // one line
   EXPECT_FALSE(fs::exists(never));
+  // A film finds it out on its drawing thread, while the simulation goes on: the same error,
+  // and nothing written.
+  const CliRun film_egl = runParksim("run " + world("head_in.yaml") +
+                                     " --frames --gl-backend egl --out " + never.string());
+  EXPECT_EQ(film_egl.exit_code, 3) << film_egl.out;
+  EXPECT_EQ(film_egl.out, egl.out);
+  EXPECT_FALSE(fs::exists(never));
 
   const CliRun fallback = film("auto", "");
   if (fallback.out.find("built without OSMesa") != std::string::npos) {

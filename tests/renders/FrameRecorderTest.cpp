@@ -296,6 +296,42 @@ TEST_F(FrameRecorderTest, StaleFramesOfAnEarlierRecordingAreRemoved) {
   EXPECT_EQ(readPng(def.out_dir + "/frames/000000.png").width, 64);  // rewritten, not stale
 }
 
+// A caller far ahead of the drawing thread (thousands of samples while the GL context is still
+// being made) waits for room and loses nothing: every frame is there, in order, and drawn from
+// its own sample.
+TEST_F(FrameRecorderTest, ACallerFarAheadOfTheDrawingWaitsAndLosesNothing) {
+  FrameDef def;
+  def.fps = 100.0;
+  def.width_px = 32;
+  def.height_px = 24;
+  def.png_compression = PngCompression::kStored;
+  def.out_dir = outputDir("FrameRecorderTest_ahead");
+  FrameRecorder rec(lot_, def);
+  const int samples = 5000;  // more than the drawing thread takes ahead (2048)
+  for (int k = 0; k < samples; ++k) {
+    FrameInput in;
+    in.t_s = k / 100.0;
+    in.pose = {0.2 + 1.4 * k / samples, 0.4, 0.0};
+    ASSERT_EQ(rec.addFrame(in), 1) << k;
+  }
+  EXPECT_EQ(rec.finish().frames, samples);
+  // The robot crosses the lot left to right, and each frame is its own sample's: what a fresh
+  // recorder draws from that sample alone (at this size the driven path and the overlay's
+  // text are below a pixel).
+  for (int k : {1000, 2500, samples - 1}) {
+    FrameDef one = def;
+    one.out_dir = outputDir("FrameRecorderTest_ahead_" + std::to_string(k));
+    FrameRecorder fresh(lot_, one);
+    FrameInput in;
+    in.t_s = k / 100.0;
+    in.pose = {0.2 + 1.4 * k / samples, 0.4, 0.0};
+    fresh.addFrame(in);
+    fresh.finish();
+    EXPECT_EQ(readPng(rec.framePath(k)), readPng(fresh.framePath(0))) << k;
+    EXPECT_NE(readPng(rec.framePath(k)), readPng(rec.framePath(0))) << k;
+  }
+}
+
 TEST_F(FrameRecorderTest, BadDefinitionsThrow) {
   FrameDef def;
   def.out_dir = outputDir("FrameRecorderTest_bad");
