@@ -1,6 +1,7 @@
 #include "parksim/renders/EncodeQueue.h"
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -95,6 +96,7 @@ std::string EncodeQueue::error() const {
 }
 
 void EncodeQueue::work(PngCompression png) {
+  pthread_setname_np(pthread_self(), "parksim-png");  // for top -H and profilers
   // One encoder per thread: its zlib state and buffers serve every frame.
   PngEncoder encoder(png);
   while (true) {

@@ -1,5 +1,7 @@
 #include "parksim/renders/FrameRecorder.h"
 
+#include <pthread.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -258,6 +260,7 @@ void FrameRecorder::Impl::post(DrawJob job) {
 }
 
 void FrameRecorder::Impl::drawLoop() {
+  pthread_setname_np(pthread_self(), "parksim-draw");  // for top -H and profilers
   std::exception_ptr failure;
   try {
     renderer = std::make_unique<Renderer>(render_def);
