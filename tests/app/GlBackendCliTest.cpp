@@ -67,6 +67,18 @@ class GlBackendCli : public ::testing::Test {
     const auto m = nlohmann::json::parse(slurp(dir_ / name / "metrics.json"));
     return m.value("provenance.gl", "");
   }
+  // Every frame and figure of film `a` has the bytes of film `b`'s file of that name.
+  void expectSameFrameAndFigureBytes(const std::string& a, const std::string& b) {
+    int files = 0;
+    for (const char* sub : {"frames", "figures"}) {
+      for (const auto& e : fs::directory_iterator(dir_ / a / sub)) {
+        const fs::path other = dir_ / b / sub / e.path().filename();
+        EXPECT_EQ(slurp(e.path()), slurp(other)) << other;
+        ++files;
+      }
+    }
+    EXPECT_GT(files, 20);
+  }
   fs::path dir_;
 };
 
@@ -105,15 +117,7 @@ TEST_F(GlBackendCli, OptionBeatsEnvironmentAndBothBackendsFilmTheSameBytes) {
   ASSERT_EQ(film("option", "--gl-backend egl").exit_code, 0);
   EXPECT_EQ(glOf("option").rfind("EGL ", 0), 0u) << glOf("option");
 
-  int files = 0;
-  for (const char* sub : {"frames", "figures"}) {
-    for (const auto& e : fs::directory_iterator(dir_ / "osmesa" / sub)) {
-      const fs::path other = dir_ / "auto" / sub / e.path().filename();
-      EXPECT_EQ(slurp(e.path()), slurp(other)) << other;
-      ++files;
-    }
-  }
-  EXPECT_GT(files, 20);
+  expectSameFrameAndFigureBytes("osmesa", "auto");
 }
 
 // The program has llvmpipe rasterize in its drawing thread unless LP_NUM_THREADS says otherwise
@@ -124,15 +128,7 @@ TEST_F(GlBackendCli, LlvmpipeThreadsDoNotChangeTheBytes) {
   ASSERT_EQ(film("default", "--view both").exit_code, 0);
   threads.set("3");
   ASSERT_EQ(film("threads", "--view both").exit_code, 0);
-  int files = 0;
-  for (const char* sub : {"frames", "figures"}) {
-    for (const auto& e : fs::directory_iterator(dir_ / "default" / sub)) {
-      const fs::path other = dir_ / "threads" / sub / e.path().filename();
-      EXPECT_EQ(slurp(e.path()), slurp(other)) << other;
-      ++files;
-    }
-  }
-  EXPECT_GT(files, 20);
+  expectSameFrameAndFigureBytes("default", "threads");
 }
 
 // glvnd's libEGL without a vendor library: EGL cannot make a context.
