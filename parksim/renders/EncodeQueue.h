@@ -1,8 +1,8 @@
 #pragma once
-// The PNG encoder threads of a film: images travel from the drawing thread to the encoders and
-// back through a fixed pool, so a steady recording allocates nothing per frame and never runs
-// more than its depth ahead. Each encoder keeps its PngEncoder (zlib state, the last image's
-// bands) for every frame it writes.
+// Internal to parksim_render (not installed). The PNG encoder threads of a film: images travel from
+// the drawing thread to the encoders and back through a fixed pool, so a steady recording allocates
+// nothing per frame and never runs more than its depth ahead. Each encoder keeps its PngEncoder
+// (zlib state, the last image's bands) for every frame it writes.
 
 #include <condition_variable>
 #include <deque>

@@ -3,6 +3,7 @@
 #include <pthread.h>
 
 #include <algorithm>
+#include <atomic>
 #include <charconv>
 #include <cmath>
 #include <condition_variable>
@@ -158,8 +159,6 @@ VideoOutcome runFfmpeg(const std::string& ffmpeg_name, const std::string& out_di
   return outcome;
 }
 
-}  // namespace
-
 // What the caller hands the drawing thread, in order: a plan to draw from now on, or a sample
 // and the frames due from it.
 struct DrawJob {
@@ -187,6 +186,8 @@ std::size_t bytesOf(const DrawJob& job) {
   return bytes;
 }
 
+}  // namespace
+
 struct FrameRecorder::Impl {
   Scenario scenario;
   FrameDef def;
@@ -206,6 +207,7 @@ struct FrameRecorder::Impl {
   // The drawing thread's side: it alone makes and uses the renderer, and keeps what frames show.
   RenderDef render_def;
   std::unique_ptr<Renderer> renderer;
+  long lot_drawings = 0;  // the renderer's backdropsDrawn(), when it ended
   std::vector<Pose2> planned;
   std::vector<Trajectory> tree;
   std::vector<Pose2> executed;
@@ -216,12 +218,12 @@ struct FrameRecorder::Impl {
   std::mutex mutex;
   std::condition_variable job_cv, room_cv, idle_cv, ready_cv;
   std::deque<DrawJob> jobs;
-  std::size_t queued_bytes = 0;  // bytesOf the jobs
-  bool caller_waiting = false;   // for room in the queue
-  bool ready = false;            // the renderer is made, or failed
-  bool drawing = false;          // a job is being drawn
-  bool stopping = false;
-  std::exception_ptr draw_failure;  // the first error drawing; later jobs are dropped
+  std::size_t queued_bytes = 0;        // bytesOf the jobs
+  bool caller_waiting = false;         // for room in the queue
+  bool ready = false;                  // the renderer is made, or failed
+  bool drawing = false;                // a job is being drawn
+  std::atomic<bool> stopping = false;  // read while drawing: a recorder destroyed stops early
+  std::exception_ptr draw_failure;     // the first error drawing; later jobs are dropped
 
   void post(DrawJob job);
   void drawLoop();
@@ -260,6 +262,16 @@ void FrameRecorder::Impl::post(DrawJob job) {
 }
 
 void FrameRecorder::Impl::drawLoop() {
+  // The renderer ends on the thread that used it (its context is current there), and what
+  // finish() reports of it is kept.
+  struct ReleaseRenderer {
+    Impl& m;
+    ~ReleaseRenderer() {
+      if (!m.renderer) return;
+      m.lot_drawings = m.renderer->backdropsDrawn();
+      m.renderer.reset();
+    }
+  } release{*this};
   pthread_setname_np(pthread_self(), "parksim-draw");  // for top -H and profilers
   std::exception_ptr failure;
   try {
@@ -272,7 +284,10 @@ void FrameRecorder::Impl::drawLoop() {
     std::lock_guard lock(mutex);
     ready = true;
     draw_failure = failure;
-    if (failure) jobs.clear();
+    if (failure) {
+      jobs.clear();
+      queued_bytes = 0;
+    }
   }
   ready_cv.notify_all();
   room_cv.notify_all();
@@ -304,6 +319,7 @@ void FrameRecorder::Impl::drawLoop() {
       if (failure) {
         draw_failure = failure;
         jobs.clear();
+        queued_bytes = 0;
       }
       idle = jobs.empty();
     }
@@ -324,7 +340,7 @@ void FrameRecorder::Impl::draw(const DrawJob& job) {
     tree = job.tree;
   }
   if (job.extends_path) executed.push_back(job.input.pose);
-  for (int k = 0; k < job.frames; ++k) render(job.input, job.first_frame + k);
+  for (int k = 0; k < job.frames && !stopping; ++k) render(job.input, job.first_frame + k);
 }
 
 void FrameRecorder::Impl::waitDrawn() {
@@ -429,6 +445,7 @@ FrameRecorder::~FrameRecorder() {
   {
     std::lock_guard lock(impl_->mutex);
     impl_->jobs.clear();  // not drawn: finish() was not called, or failed
+    impl_->queued_bytes = 0;
   }
   impl_->stopDrawing();
   if (impl_->queue) impl_->queue->stop();
@@ -451,33 +468,34 @@ int FrameRecorder::addFrame(const FrameInput& input) {
     throw Error("frames: sample time went backwards (" + formatFps(input.t_s) + " s after " +
                 formatFps(m.last->t_s) + " s)");
   }
-  if (!m.t0) m.t0 = input.t_s;
+  const double t0 = m.t0.value_or(input.t_s);
+  // A frame is due once the sample reaches its time, give or take rounding of the caller's
+  // clock (k * dt summed in floating point can fall a hair short of k / fps). Counted before
+  // anything changes: past the limit, the recorder stays as it was.
+  const double slack = 1e-6 / m.def.fps;
   DrawJob job;
+  job.first_frame = m.next_frame;
+  while (input.t_s + slack >= t0 + (m.next_frame + job.frames) / m.def.fps) {
+    if (m.next_frame + job.frames >= m.def.max_frames) {
+      throw Error("frames: more than the limit of " + std::to_string(m.def.max_frames) +
+                  " frames (docs/limits.md)");
+    }
+    ++job.frames;
+  }
+  m.t0 = t0;
+  m.next_frame += job.frames;
   // Extend the driven path only where the robot moved, so standing still adds nothing.
   job.extends_path = !m.last_executed || positionDistance(*m.last_executed, input.pose) > 5e-4 ||
                      headingDistance(*m.last_executed, input.pose) > 0.02;
   if (job.extends_path) m.last_executed = input.pose;
   m.last = input;
-  m.last_rendered = false;
-  // A frame is due once the sample reaches its time, give or take rounding of the caller's
-  // clock (k * dt summed in floating point can fall a hair short of k / fps).
-  const double slack = 1e-6 / m.def.fps;
-  job.first_frame = m.next_frame;
-  while (input.t_s + slack >= *m.t0 + m.next_frame / m.def.fps) {
-    if (m.next_frame >= m.def.max_frames) {
-      throw Error("frames: more than the limit of " + std::to_string(m.def.max_frames) +
-                  " frames (docs/limits.md)");
-    }
-    ++m.next_frame;
-    ++job.frames;
-  }
-  const int rendered = job.frames;
+  m.last_rendered = job.frames > 0;
+  const int due = job.frames;
   if (job.frames > 0 || job.extends_path) {
     job.input = input;
     m.post(std::move(job));
   }
-  m.last_rendered = rendered > 0;
-  return rendered;
+  return due;
 }
 
 RecordingResult FrameRecorder::finish() {
@@ -501,7 +519,7 @@ RecordingResult FrameRecorder::finish() {
 
   RecordingResult result;
   result.frames = m.next_frame;
-  result.lot_drawings = m.renderer->backdropsDrawn();
+  result.lot_drawings = m.lot_drawings;
   result.frames_dir = m.frames_dir;
   result.message = std::to_string(result.frames) + " frames: " + m.frames_dir + "/" +
                    (result.frames > 0 ? "000000.png ..." : "(none)");

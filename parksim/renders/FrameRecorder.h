@@ -71,9 +71,8 @@ struct FrameDef {
   /// view's edges are then smoothed by the renderer itself. 4 is full MSAA, about 3x slower on
   /// llvmpipe (docs/rendering.md).
   int msaa_samples = 1;
-  /// PNG encoder threads (>= 1). One keeps a 2-core machine busy: the caller's thread and
-  /// llvmpipe's render while it encodes. A second one measured slower (more CPU per frame
-  /// from contention with llvmpipe's threads).
+  /// PNG encoder threads (>= 1). One keeps a 2-core machine busy: the drawing thread renders
+  /// while it encodes. A second one measured slower (more CPU per frame from contention).
   int encode_threads = 1;
   int queue_depth = 3;  ///< frames rendered ahead of the encoders (>= 1)
   /// PNG compression of the frames. kDefault (zlib level 1, chosen by measurement) is small
@@ -143,13 +142,17 @@ class FrameRecorder {
   /// be made, the next call after the drawing thread found it out throws that error
   /// (EnvironmentError): addFrame, setPlan, glDescription or finish.
   FrameRecorder(const Scenario& scenario, const FrameDef& def);
-  /// Waits for pending files (errors are dropped: call finish() to see them).
+  /// Drops the samples not drawn yet and waits for the frames being written (errors are
+  /// dropped): without finish(), which frames exist depends on timing. Call finish() for a
+  /// whole film and its errors.
   ~FrameRecorder();
 
   FrameRecorder(const FrameRecorder&) = delete;
   FrameRecorder& operator=(const FrameRecorder&) = delete;
 
   /// The planned path (drawn in every frame) and the tree's edges (drawn when show_tree).
+  /// Frames due after this call show it. Throws Error after finish(), or the drawing thread's
+  /// error (as addFrame).
   void setPlan(const Trajectory& planned, std::span<const Trajectory> tree_edges = {});
 
   /// Takes one sample. Frames are due at t0 + k / fps, t0 being the first sample's time; every
@@ -163,10 +166,11 @@ class FrameRecorder {
   /// pose), waits until every PNG is written, removes frame files an earlier, longer recording
   /// left behind, then runs ffmpeg when video or gif is set. A
   /// missing or failing ffmpeg is reported in the result, not thrown. Throws Error when a frame
-  /// could not be written. Call once; addFrame afterwards throws.
+  /// could not be drawn or written, or no GL context could be made (EnvironmentError). Call
+  /// once; addFrame afterwards throws.
   RecordingResult finish();
 
-  /// Frames rendered so far.
+  /// Frames due so far: drawn, or handed to the drawing thread.
   int frames() const;
   /// The GL context's description (Renderer::description), for provenance.
   std::string glDescription() const;

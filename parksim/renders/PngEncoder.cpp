@@ -96,7 +96,7 @@ struct PngEncoder::Impl {
   // the bands that changed are converted to RGB.
   std::vector<std::uint8_t> last_rgba;
   int last_channels = 0;
-  RgbImage rgb;                         // kStored and kSmall: the image as RGB, when it is not
+  RgbImage rgb;                         // kStored and kSmall: an RGBA image as RGB
   std::vector<Band> band_cache;         // the last image's bands
   std::vector<unsigned char> filtered;  // kFast: the last image's rows, each after its filter byte
   std::vector<unsigned char> band_bytes;  // kFast: one band's deflate blocks
@@ -338,7 +338,15 @@ PngEncoder::~PngEncoder() {
 }
 
 std::span<const unsigned char> PngEncoder::encode(const RgbImage& image) {
-  return impl_->encode({image.pixels.data(), image.pixels.size(), image.width, image.height, 3});
+  Impl& m = *impl_;
+  const Pixels pixels{image.pixels.data(), image.pixels.size(), image.width, image.height, 3};
+  if (m.compression == PngCompression::kSmall) {  // stb takes the image as it is
+    checkImage(pixels);
+    m.out() = detail::encodePngStbDefault(image);
+    m.out_size[m.current] = m.out().size();
+    return {m.out().data(), m.out_size[m.current]};
+  }
+  return m.encode(pixels);
 }
 
 std::span<const unsigned char> PngEncoder::encode(const RgbaImage& image) {
@@ -349,16 +357,12 @@ std::span<const unsigned char> PngEncoder::Impl::encode(const Pixels& image) {
   checkImage(image);
   const bool banded =
       compression == PngCompression::kDefault || compression == PngCompression::kFast;
-  // The others read RGB rows as they are; they keep nothing from one image to the next.
+  // The others read RGB rows as they are; they keep nothing from one image to the next. (An RGB
+  // image for kSmall went to stb in encode(const RgbImage&).)
   Pixels whole = image;
-  if (!banded && (image.channels == 4 || compression == PngCompression::kSmall)) {
+  if (!banded && image.channels == 4) {
     rgb.resize(image.width, image.height);
-    if (image.channels == 4) {
-      rgbaToRgb(image.data, rgb.pixels.data(),
-                static_cast<std::size_t>(image.width) * image.height);
-    } else {
-      std::memcpy(rgb.pixels.data(), image.data, image.size);
-    }
+    rgbaToRgb(image.data, rgb.pixels.data(), static_cast<std::size_t>(image.width) * image.height);
     whole = {rgb.pixels.data(), rgb.pixels.size(), image.width, image.height, 3};
   }
   if (compression == PngCompression::kSmall) {

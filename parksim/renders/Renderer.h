@@ -1,6 +1,6 @@
 #pragma once
-// Draws a Scene through a camera into an RGB image, off screen. One renderer owns one GL
-// context and its framebuffers, vertex buffers and font textures, and reuses them for every
+// Draws a Scene through a camera into an RGB image (films: RGBA), off screen. One renderer owns one
+// GL context and its framebuffers, vertex buffers and font textures, and reuses them for every
 // image it draws: per frame it tessellates the scene into a DrawList without GL
 // (SceneTessellator.h), uploads the vertices, draws and reads back.
 //

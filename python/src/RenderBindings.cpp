@@ -310,7 +310,11 @@ void bindFrameRecorder(py::module_& m) {
            py::arg("world"))
       .def(
           "set_plan",
-          [](FrameRecorder& r, const py::handle& plan) { r.setPlan(trajectoryFrom(plan)); },
+          [](FrameRecorder& r, const py::handle& plan) {
+            const Trajectory trajectory = trajectoryFrom(plan);
+            py::gil_scoped_release release;  // waits while the drawing thread's queue is full
+            r.setPlan(trajectory);
+          },
           py::arg("plan"))
       .def(
           "add_frame",
@@ -331,7 +335,8 @@ void bindFrameRecorder(py::module_& m) {
           py::arg("t"), py::arg("pose"), py::arg("reference") = py::none(),
           py::arg("obstacle_poses") = py::none(), py::arg("contacts") = std::vector<int>{},
           py::arg("pos_err") = 0.0, py::arg("heading_err") = 0.0,
-          "Takes one sample (frames are due every 1/fps of t); returns frames rendered.")
+          "Takes one sample (frames are due every 1/fps of t); returns the frames due from it, "
+          "which the recorder's drawing thread draws.")
       .def(
           "finish",
           [](FrameRecorder& r) {

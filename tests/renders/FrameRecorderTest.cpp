@@ -315,6 +315,11 @@ TEST_F(FrameRecorderTest, ACallerFarAheadOfTheDrawingWaitsAndLosesNothing) {
     ASSERT_EQ(rec.addFrame(in), 1) << k;
   }
   EXPECT_EQ(rec.finish().frames, samples);
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(def.out_dir + "/frames")) {
+    files += e.path().extension() == ".png";
+  }
+  EXPECT_EQ(files, samples);
   // The robot crosses the lot left to right, and each frame is its own sample's: what a fresh
   // recorder draws from that sample alone (at this size the driven path and the overlay's
   // text are below a pixel).
@@ -330,6 +335,35 @@ TEST_F(FrameRecorderTest, ACallerFarAheadOfTheDrawingWaitsAndLosesNothing) {
     EXPECT_EQ(readPng(rec.framePath(k)), readPng(fresh.framePath(0))) << k;
     EXPECT_NE(readPng(rec.framePath(k)), readPng(rec.framePath(0))) << k;
   }
+}
+
+// The GL context is made on the drawing thread: when none can be made, the caller hears it from
+// its next call, even one waiting for room in the queue, with the renderer's own error; and the
+// recorder ends without hanging.
+TEST_F(FrameRecorderTest, NoGlContextIsReportedByTheNextCall) {
+  FrameDef def;
+  def.out_dir = outputDir("FrameRecorderTest_no_gl");
+  def.context.gl_major = 99;  // no backend makes an OpenGL 99 context
+  {
+    FrameRecorder rec(lot_, def);
+    EXPECT_THROW(rec.glDescription(), Error);
+    EXPECT_THROW(rec.setPlan(plan_), Error);
+    EXPECT_THROW(rec.finish(), Error);
+  }
+  FrameRecorder rec(lot_, def);
+  int k = 0;
+  try {
+    for (; k < 10'000; ++k) {  // more than the queue holds: a call waits, then hears it
+      FrameInput in;
+      in.t_s = k / 30.0;
+      in.pose = {0.3, 0.3, 0.0};
+      rec.addFrame(in);
+    }
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("99"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(k, 10'000);
+  EXPECT_THROW(rec.finish(), Error);
 }
 
 TEST_F(FrameRecorderTest, BadDefinitionsThrow) {

@@ -172,8 +172,16 @@ TEST(PngEncoderTest, RgbaImagesGiveTheirRgbImagesBytes) {
       const std::vector<unsigned char> expected = encodePng(rgb, c);
       EXPECT_EQ(bytesOf(warm.encode(withAlpha(rgb, 0))), expected) << "frame " << k;
       EXPECT_EQ(bytesOf(warm.encode(withAlpha(rgb, 99))), expected) << "alpha only, " << k;
-      if (k == 4) EXPECT_EQ(bytesOf(warm.encode(rgb)), expected) << "RGB between";
+      if (k == 4) {
+        EXPECT_EQ(bytesOf(warm.encode(rgb)), expected) << "RGB between";
+      }
     }
+    // RGBA, RGB, then the first RGBA again, alpha and all: compared with the RGBA image kept
+    // from before the RGB one, it would look unchanged.
+    const RgbaImage first = withAlpha(filmFrame(0, 470), 5);
+    EXPECT_EQ(bytesOf(warm.encode(first)), encodePng(filmFrame(0, 470), c));
+    EXPECT_EQ(bytesOf(warm.encode(filmFrame(3, 470))), encodePng(filmFrame(3, 470), c));
+    EXPECT_EQ(bytesOf(warm.encode(first)), encodePng(filmFrame(0, 470), c)) << "RGBA again";
     const RgbImage odd = pattern(173, 91);
     EXPECT_EQ(bytesOf(warm.encode(withAlpha(odd, 7))), encodePng(odd, c));
     EXPECT_EQ(withAlpha(odd, 7).rgb(), odd);
