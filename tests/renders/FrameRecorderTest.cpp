@@ -366,6 +366,36 @@ TEST_F(FrameRecorderTest, NoGlContextIsReportedByTheNextCall) {
   EXPECT_THROW(rec.finish(), Error);
 }
 
+// A sample that would pass max_frames is refused and changes nothing: the frames before it are
+// the film, whole, with no gap.
+TEST_F(FrameRecorderTest, TheFrameLimitLeavesTheRecorderAsItWas) {
+  FrameDef def;
+  def.fps = 10.0;
+  def.width_px = 32;
+  def.height_px = 24;
+  def.max_frames = 5;
+  def.out_dir = outputDir("FrameRecorderTest_limit");
+  FrameRecorder rec(lot_, def);
+  FrameInput in;
+  for (int k = 0; k < 5; ++k) {
+    in.t_s = k / 10.0;
+    in.pose = {0.3 + 0.1 * k, 0.4, 0.0};
+    ASSERT_EQ(rec.addFrame(in), 1);
+  }
+  in.t_s = 0.72;  // frames 5, 6 and 7 due
+  try {
+    rec.addFrame(in);
+    FAIL() << "past the limit";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("more than the limit of 5 frames"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(rec.frames(), 5);
+  EXPECT_EQ(rec.finish().frames, 5);
+  for (int k = 0; k < 5; ++k) EXPECT_TRUE(std::filesystem::exists(rec.framePath(k))) << k;
+  EXPECT_FALSE(std::filesystem::exists(rec.framePath(5)));
+}
+
 TEST_F(FrameRecorderTest, BadDefinitionsThrow) {
   FrameDef def;
   def.out_dir = outputDir("FrameRecorderTest_bad");
