@@ -87,6 +87,10 @@ struct Renderer::Impl {
   void complete(const char* which);  // throws unless the bound framebuffer is complete
   void releaseBackdrop();
   void draw(const DrawList& list);
+  void drawWhole(const Scene& scene, const Camera& cam) {  // render() and renderInto(scene)
+    tessellator.tessellate(scene, cam, tessellation(), fonts, list);
+    draw(list);
+  }
   void clear(const DrawList& list);
   void drawItems(const DrawList& list);
   void resolve();
@@ -462,10 +466,8 @@ void Renderer::render(const Scene& scene, const CameraDef& camera_def, RgbImage&
   if (out.width != impl_->width || out.height != impl_->height) {
     out.resize(impl_->width, impl_->height);
   }
-  impl_->tessellator.tessellate(scene, camera(scene, camera_def), tessellationDef(), impl_->fonts,
-                                impl_->list);
   const CurrentContext current(*impl_->context);
-  impl_->draw(impl_->list);
+  impl_->drawWhole(scene, camera(scene, camera_def));
   // llvmpipe reads RGBA with a plain copy but converts to RGB pixel by pixel (~10x slower):
   // read RGBA and drop alpha here.
   impl_->rgba.resize(static_cast<std::size_t>(out.width) * out.height * 4);
@@ -490,10 +492,8 @@ void checkFits(const RgbaImage& out, int width, int height, int x_offset_px) {
 void Renderer::renderInto(const Scene& scene, const CameraDef& camera_def, RgbaImage& out,
                           int x_offset_px) {
   checkFits(out, impl_->width, impl_->height, x_offset_px);
-  impl_->tessellator.tessellate(scene, camera(scene, camera_def), tessellationDef(), impl_->fonts,
-                                impl_->list);
   const CurrentContext current(*impl_->context);
-  impl_->draw(impl_->list);
+  impl_->drawWhole(scene, camera(scene, camera_def));
   impl_->readRgba(out.pixels.data() + static_cast<std::size_t>(x_offset_px) * 4, out.width);
 }
 
