@@ -45,6 +45,16 @@ int record(FrameRecorder& rec, const Scenario& s, const Trajectory& plan) {
   return frames;
 }
 
+// A recorder's definition: frames into outputDir(name), at fps, of width x height pixels.
+FrameDef filmDef(const std::string& name, double fps, int width_px, int height_px) {
+  FrameDef def;
+  def.fps = fps;
+  def.width_px = width_px;
+  def.height_px = height_px;
+  def.out_dir = outputDir(name);
+  return def;
+}
+
 class FrameRecorderTest : public ::testing::Test {
  protected:
   Scenario lot_ = testLot();
@@ -52,11 +62,7 @@ class FrameRecorderTest : public ::testing::Test {
 };
 
 TEST_F(FrameRecorderTest, WritesValidChangingFramesAtTheFrameRate) {
-  FrameDef def;
-  def.fps = 10.0;
-  def.width_px = 320;
-  def.height_px = 240;
-  def.out_dir = outputDir("FrameRecorderTest_rate");
+  FrameDef def = filmDef("FrameRecorderTest_rate", 10.0, 320, 240);
   FrameRecorder rec(lot_, def);
   rec.setPlan(plan_);
   const int rendered = record(rec, lot_, plan_);
@@ -214,11 +220,7 @@ TEST_F(FrameRecorderTest, OutputDoesNotDependOnThreads) {
 }
 
 TEST_F(FrameRecorderTest, SparseSamplesRepeatFramesAndTheLastSampleEndsTheFilm) {
-  FrameDef def;
-  def.fps = 10.0;
-  def.width_px = 160;
-  def.height_px = 120;
-  def.out_dir = outputDir("FrameRecorderTest_sparse");
+  FrameDef def = filmDef("FrameRecorderTest_sparse", 10.0, 160, 120);
   FrameRecorder rec(lot_, def);
   FrameInput in;
   in.t_s = 1.0;
@@ -238,13 +240,9 @@ TEST_F(FrameRecorderTest, MissingFfmpegIsReportedNotThrown) {
   const char* old_path = std::getenv("PATH");
   const std::string saved = old_path != nullptr ? old_path : "";
   setenv("PATH", empty_bin.c_str(), 1);
-  FrameDef def;
-  def.fps = 10.0;
-  def.width_px = 160;
-  def.height_px = 120;
+  FrameDef def = filmDef("FrameRecorderTest_noffmpeg", 10.0, 160, 120);
   def.video = true;
   def.gif = true;
-  def.out_dir = outputDir("FrameRecorderTest_noffmpeg");
   RecordingResult result;
   {
     FrameRecorder rec(lot_, def);
@@ -300,12 +298,8 @@ TEST_F(FrameRecorderTest, StaleFramesOfAnEarlierRecordingAreRemoved) {
 // being made) waits for room and loses nothing: every frame is there, in order, and drawn from
 // its own sample.
 TEST_F(FrameRecorderTest, ACallerFarAheadOfTheDrawingWaitsAndLosesNothing) {
-  FrameDef def;
-  def.fps = 100.0;
-  def.width_px = 32;
-  def.height_px = 24;
+  FrameDef def = filmDef("FrameRecorderTest_ahead", 100.0, 32, 24);
   def.png_compression = PngCompression::kStored;
-  def.out_dir = outputDir("FrameRecorderTest_ahead");
   FrameRecorder rec(lot_, def);
   const int samples = 5000;  // more than the drawing thread takes ahead (2048)
   for (int k = 0; k < samples; ++k) {
@@ -369,12 +363,8 @@ TEST_F(FrameRecorderTest, NoGlContextIsReportedByTheNextCall) {
 // A sample that would pass max_frames is refused and changes nothing: the frames before it are
 // the film, whole, with no gap.
 TEST_F(FrameRecorderTest, TheFrameLimitLeavesTheRecorderAsItWas) {
-  FrameDef def;
-  def.fps = 10.0;
-  def.width_px = 32;
-  def.height_px = 24;
+  FrameDef def = filmDef("FrameRecorderTest_limit", 10.0, 32, 24);
   def.max_frames = 5;
-  def.out_dir = outputDir("FrameRecorderTest_limit");
   FrameRecorder rec(lot_, def);
   FrameInput in;
   for (int k = 0; k < 5; ++k) {
