@@ -47,6 +47,14 @@ struct RgbaImage {
   RgbImage rgb() const;
 };
 
+/// Rows [begin, end) of an image: what a film's frame changed (Renderer::renderChanges), so the
+/// other rows need no read-back, comparison or conversion.
+struct RowSpan {
+  int begin = 0;
+  int end = 0;
+  friend bool operator==(const RowSpan&, const RowSpan&) = default;
+};
+
 /// Copies `count` pixels from RGBA `src` to RGB `dst`, dropping alpha.
 void rgbaToRgb(const std::uint8_t* src, std::uint8_t* dst, std::size_t count);
 

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -35,6 +37,8 @@ struct Pixels {
   int width = 0;
   int height = 0;
   int channels = 3;
+  // Set: only these rows are read, the others are the last image's (PngEncoder::encode).
+  std::optional<std::span<const RowSpan>> changed;
 };
 
 void checkImage(const Pixels& image) {
@@ -156,16 +160,36 @@ std::size_t PngEncoder::Impl::encodeBands(const Pixels& image, bool matches_row_
     if (image.channels == 4) last_rgba.assign(image.size, 0);
   }
   std::vector<std::uint8_t>& kept = image.channels == 4 ? last_rgba : last.pixels;
-  band_cache.resize(bands);
-  for (std::size_t b = 0; b < bands; ++b) {
-    const std::size_t first = b * kBandRows * in_row_bytes;
-    const std::size_t bytes = std::min(image.size - first, kBandRows * in_row_bytes);
-    Band& band = band_cache[b];
-    band.changed = !same_size || std::memcmp(image.data + first, kept.data() + first, bytes);
-    if (!band.changed) continue;
+  // Rows [y0, y1) as they came: compared with the last image's and, where they differ, kept
+  // and converted. True when they differ.
+  const auto take = [&](int y0, int y1) {
+    const std::size_t first = static_cast<std::size_t>(y0) * in_row_bytes;
+    const std::size_t bytes = static_cast<std::size_t>(y1 - y0) * in_row_bytes;
+    if (same_size && std::memcmp(image.data + first, kept.data() + first, bytes) == 0) {
+      return false;
+    }
     std::memcpy(kept.data() + first, image.data + first, bytes);
     if (image.channels == 4) {
-      rgbaToRgb(image.data + first, last.pixels.data() + b * kBandRows * row_bytes, bytes / 4);
+      rgbaToRgb(image.data + first, last.pixels.data() + static_cast<std::size_t>(y0) * row_bytes,
+                bytes / 4);
+    }
+    return true;
+  };
+  band_cache.resize(bands);
+  std::size_t span = 0;  // the first changed span that may reach this band
+  for (std::size_t b = 0; b < bands; ++b) {
+    const int y0 = static_cast<int>(b) * kBandRows;
+    const int y1 = std::min(image.height, y0 + kBandRows);
+    Band& band = band_cache[b];
+    if (!image.changed) {
+      band.changed = take(y0, y1);
+      continue;
+    }
+    band.changed = false;
+    const std::span<const RowSpan> rows = *image.changed;
+    while (span < rows.size() && rows[span].end <= y0) ++span;
+    for (std::size_t k = span; k < rows.size() && rows[k].begin < y1; ++k) {
+      band.changed |= take(std::max(y0, rows[k].begin), std::min(y1, rows[k].end));
     }
   }
   const std::vector<unsigned char>& last_out = outs[1 - current];
@@ -339,7 +363,8 @@ PngEncoder::~PngEncoder() {
 
 std::span<const unsigned char> PngEncoder::encode(const RgbImage& image) {
   Impl& m = *impl_;
-  const Pixels pixels{image.pixels.data(), image.pixels.size(), image.width, image.height, 3};
+  const Pixels pixels{image.pixels.data(), image.pixels.size(), image.width, image.height, 3,
+                      std::nullopt};
   if (m.compression == PngCompression::kSmall) {  // stb takes the image as it is
     checkImage(pixels);
     m.out() = detail::encodePngStbDefault(image);
@@ -350,7 +375,30 @@ std::span<const unsigned char> PngEncoder::encode(const RgbImage& image) {
 }
 
 std::span<const unsigned char> PngEncoder::encode(const RgbaImage& image) {
-  return impl_->encode({image.pixels.data(), image.pixels.size(), image.width, image.height, 4});
+  return impl_->encode(
+      {image.pixels.data(), image.pixels.size(), image.width, image.height, 4, std::nullopt});
+}
+
+std::span<const unsigned char> PngEncoder::encode(const RgbaImage& image,
+                                                  std::span<const RowSpan> changed) {
+  int end = 0;
+  for (const RowSpan& rows : changed) {
+    if (rows.begin < end || rows.end <= rows.begin || rows.end > image.height) {
+      throw Error("PNG: changed rows must be sorted, apart and inside the image");
+    }
+    end = rows.end;
+  }
+  if (impl_->compression != PngCompression::kDefault &&
+      impl_->compression != PngCompression::kFast) {
+    throw Error(std::string("PNG: ") + toString(impl_->compression) +
+                " compression keeps no last image to take unchanged rows from");
+  }
+  const Impl& m = *impl_;
+  if (m.last.width != image.width || m.last.height != image.height || m.last_channels != 4) {
+    throw Error("PNG: changed rows need the last image, of the same size");
+  }
+  return impl_->encode(
+      {image.pixels.data(), image.pixels.size(), image.width, image.height, 4, changed});
 }
 
 std::span<const unsigned char> PngEncoder::Impl::encode(const Pixels& image) {
@@ -363,7 +411,7 @@ std::span<const unsigned char> PngEncoder::Impl::encode(const Pixels& image) {
   if (!banded && image.channels == 4) {
     rgb.resize(image.width, image.height);
     rgbaToRgb(image.data, rgb.pixels.data(), static_cast<std::size_t>(image.width) * image.height);
-    whole = {rgb.pixels.data(), rgb.pixels.size(), image.width, image.height, 3};
+    whole = {rgb.pixels.data(), rgb.pixels.size(), image.width, image.height, 3, std::nullopt};
   }
   if (compression == PngCompression::kSmall) {
     out() = detail::encodePngStbDefault(rgb);

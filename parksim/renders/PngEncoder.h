@@ -59,6 +59,12 @@ class PngEncoder {
   /// The same for an image read back with its alpha, which the PNG drops: a film's frames come
   /// so, and only the bands that changed are converted (the bytes are encode(image.rgb())'s).
   std::span<const unsigned char> encode(const RgbaImage& image);
+  /// The same for the next frame of a film, of which only rows `changed` (sorted and apart,
+  /// Renderer::renderChanges) are read: the others are the last image's. Throws Error when
+  /// there is no last image of this size (or encoding it failed), for kStored and kSmall, which
+  /// keep none, and for rows out of order or outside the image. The bytes are those of
+  /// encode() of the whole frame.
+  std::span<const unsigned char> encode(const RgbaImage& image, std::span<const RowSpan> changed);
 
  private:
   struct Impl;

@@ -188,6 +188,94 @@ TEST(PngEncoderTest, RgbaImagesGiveTheirRgbImagesBytes) {
   }
 }
 
+// The rows of `b` that differ from `a`'s, as sorted spans.
+std::vector<RowSpan> rowsThatDiffer(const RgbImage& a, const RgbImage& b) {
+  std::vector<RowSpan> spans;
+  const std::size_t row = static_cast<std::size_t>(a.width) * 3;
+  for (int y = 0; y < a.height; ++y) {
+    const std::size_t at = static_cast<std::size_t>(y) * row;
+    if (std::memcmp(a.pixels.data() + at, b.pixels.data() + at, row) == 0) continue;
+    if (!spans.empty() && spans.back().end == y) {
+      spans.back().end = y + 1;
+    } else {
+      spans.push_back({y, y + 1});
+    }
+  }
+  return spans;
+}
+
+// `img` with alpha, where only rows `spans` hold its pixels: the others are noise, which an
+// encoder told which rows changed must never read.
+RgbaImage onlyRows(const RgbImage& img, const std::vector<RowSpan>& spans) {
+  RgbaImage out = withAlpha(img, 3);
+  std::vector<bool> valid(static_cast<std::size_t>(img.height), false);
+  for (const RowSpan& s : spans) {
+    for (int y = s.begin; y < s.end; ++y) valid[static_cast<std::size_t>(y)] = true;
+  }
+  std::uint32_t x = 777;
+  for (int y = 0; y < img.height; ++y) {
+    if (valid[static_cast<std::size_t>(y)]) continue;
+    for (int i = 0; i < img.width * 4; ++i) {
+      x = x * 1664525u + 1013904223u;
+      out.pixels[static_cast<std::size_t>(y) * img.width * 4 + i] =
+          static_cast<std::uint8_t>(x >> 24);
+    }
+  }
+  return out;
+}
+
+// A film's next frame with only its changed rows valid (Renderer::renderChanges) has the bytes
+// of the whole frame, whether the rows are exactly those that changed, more, or none.
+TEST(PngEncoderTest, ChangedRowsGiveTheWholeFramesBytes) {
+  for (PngCompression c : {PngCompression::kDefault, PngCompression::kFast}) {
+    SCOPED_TRACE(toString(c));
+    PngEncoder encoder(c);
+    RgbImage last = filmFrame(0, 470);
+    encoder.encode(withAlpha(last, 1));
+    for (int k : {1, 2, 2, 4, 3, 0}) {
+      const RgbImage next = filmFrame(k, 470);
+      const std::vector<RowSpan> exact = rowsThatDiffer(last, next);
+      if (last == next) {
+        EXPECT_TRUE(exact.empty());
+      }
+      EXPECT_EQ(bytesOf(encoder.encode(onlyRows(next, exact), exact)), encodePng(next, c))
+          << "frame " << k;
+      last = next;
+    }
+    // More rows than changed, across band boundaries; then frame 2 in place of frame 0.
+    const std::vector<RowSpan> wide = {{0, 5}, {30, 97}, {400, 470}};
+    const RgbImage frame0 = filmFrame(0, 470);
+    EXPECT_EQ(bytesOf(encoder.encode(onlyRows(frame0, wide), wide)), encodePng(frame0, c));
+    const RgbImage frame2 = filmFrame(2, 470);
+    const std::vector<RowSpan> rows = rowsThatDiffer(frame0, frame2);
+    ASSERT_FALSE(rows.empty());
+    EXPECT_EQ(bytesOf(encoder.encode(onlyRows(frame2, rows), rows)), encodePng(frame2, c));
+  }
+}
+
+TEST(PngEncoderTest, ChangedRowsNeedTheLastImageAndSortedRows) {
+  const RgbaImage frame = withAlpha(filmFrame(0, 470), 0);
+  const std::vector<RowSpan> some = {{10, 20}};
+  PngEncoder fresh(PngCompression::kFast);
+  EXPECT_THROW(fresh.encode(frame, some), Error);  // nothing to take the other rows from
+  fresh.encode(withAlpha(filmFrame(0, 480), 0));
+  EXPECT_THROW(fresh.encode(frame, some), Error);  // the last image had another size
+  fresh.encode(frame);
+  for (const std::vector<RowSpan>& bad :
+       {std::vector<RowSpan>{{20, 30}, {10, 15}}, std::vector<RowSpan>{{10, 20}, {15, 25}},
+        std::vector<RowSpan>{{5, 5}}, std::vector<RowSpan>{{460, 471}},
+        std::vector<RowSpan>{{-1, 3}}}) {
+    EXPECT_THROW(fresh.encode(frame, bad), Error);
+  }
+  EXPECT_EQ(bytesOf(fresh.encode(frame, some)), encodePng(filmFrame(0, 470), PngCompression::kFast))
+      << "a refused call leaves the last image usable";
+  for (PngCompression c : {PngCompression::kStored, PngCompression::kSmall}) {
+    PngEncoder keeps_nothing(c);
+    keeps_nothing.encode(frame);
+    EXPECT_THROW(keeps_nothing.encode(frame, some), Error) << toString(c);
+  }
+}
+
 // Bands cost little next to compressing the whole image as one stream at the same level: ~2 %
 // on rendered frames; up to 10 % here, where the image shrinks to 3 % and each band's block
 // header weighs more.
