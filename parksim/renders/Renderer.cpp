@@ -10,6 +10,7 @@
 
 #include "parksim/core/Error.h"
 #include "parksim/renders/DrawList.h"
+#include "parksim/renders/DrawListChange.h"
 #include "parksim/renders/FontCache.h"
 #include "parksim/renders/GlFunctions.h"
 #include "parksim/renders/RendererPrograms.h"
@@ -71,6 +72,10 @@ struct Renderer::Impl {
   // Kept between images, so steady-state drawing does not allocate.
   SceneTessellator tessellator;
   DrawList list;
+  // The front last drawn over the kept backdrop, while the drawing framebuffer still holds that
+  // image (front_kept): renderChanges draws only where the next front differs from it.
+  DrawList last_front;
+  bool front_kept = false;
   std::vector<std::uint8_t> rgba;  // read-back buffer
 
   void init();
@@ -92,12 +97,20 @@ struct Renderer::Impl {
     draw(list);
   }
   void clear(const DrawList& list);
-  void drawItems(const DrawList& list);
+  // `upload` false: the list's vertices are in the buffers already (drawn once this image).
+  void drawItems(const DrawList& list, bool upload = true);
   void resolve();
+  void resolveRect(const PixelRect& r);
+  bool backdropKept(const Scene& backdrop, const Camera& cam) const {
+    return backdrop_scene && backdrop_camera == cam && *backdrop_scene == backdrop;
+  }
   void drawBackdrop(const Scene& backdrop, const Camera& cam);
   void copyFramebuffer(GLuint from, GLuint to);
-  // The resolved image, RGBA, into `dst` whose rows are row_length_px pixels apart.
-  void readRgba(std::uint8_t* dst, int row_length_px);
+  void copyRect(GLuint from, GLuint to, const PixelRect& r);
+  // The resolved image, RGBA, into `dst` whose rows are row_length_px pixels apart; or only
+  // rows [y0, y1), into the same places.
+  void readRgba(std::uint8_t* dst, int row_length_px) { readRows(dst, row_length_px, 0, height); }
+  void readRows(std::uint8_t* dst, int row_length_px, int y0, int y1);
   template <class Vertex>
   void upload(GLuint vbo, std::size_t& capacity,
               const std::vector<const std::vector<Vertex>*>& batches);
@@ -173,6 +186,7 @@ void Renderer::Impl::complete(const char* which) {
 }
 
 void Renderer::Impl::allocateFramebuffers() {
+  front_kept = false;
   releaseFramebuffers();
   samples = std::clamp(def.msaa_samples, 1, std::max(1, static_cast<int>(max_samples)));
   gl->GenFramebuffers(1, &resolve_fbo);
@@ -250,6 +264,7 @@ void Renderer::Impl::drawRange(std::size_t first, std::size_t count, bool blend)
 }
 
 void Renderer::Impl::clear(const DrawList& dl) {
+  front_kept = false;
   gl->BindFramebuffer(GL_FRAMEBUFFER, drawFramebuffer());
   gl->Viewport(0, 0, width, height);
   // With a ground rectangle the whole framebuffer is cleared to its colour (llvmpipe's fast
@@ -291,7 +306,7 @@ void Renderer::Impl::draw(const DrawList& dl) {
 }
 
 // Draws into the drawing framebuffer, which is bound, over what it holds.
-void Renderer::Impl::drawItems(const DrawList& dl) {
+void Renderer::Impl::drawItems(const DrawList& dl, bool upload_vertices) {
   gl->BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   gl->Enable(GL_DEPTH_TEST);
   gl->DepthFunc(GL_LEQUAL);
@@ -299,16 +314,20 @@ void Renderer::Impl::drawItems(const DrawList& dl) {
 
   if (!dl.mesh.empty() || !dl.mesh_blend.empty()) {
     useMeshProgram(dl);
-    mesh_batches.assign({&dl.mesh, &dl.mesh_blend});
-    upload(mesh_vbo, mesh_capacity, mesh_batches);
+    if (upload_vertices) {
+      mesh_batches.assign({&dl.mesh, &dl.mesh_blend});
+      upload(mesh_vbo, mesh_capacity, mesh_batches);
+    }
     gl->BindVertexArray(mesh_vao);
     drawRange(0, dl.mesh.size(), false);
     drawRange(dl.mesh.size(), dl.mesh_blend.size(), true);
   }
   // Lines, text boxes and glyphs share the overlay buffer, in that order.
-  overlay_batches.assign({&dl.lines, &dl.lines_blend, &dl.text_boxes});
-  for (const GlyphBatch& batch : dl.glyphs) overlay_batches.push_back(&batch.vertices);
-  upload(overlay_vbo, overlay_capacity, overlay_batches);
+  if (upload_vertices) {
+    overlay_batches.assign({&dl.lines, &dl.lines_blend, &dl.text_boxes});
+    for (const GlyphBatch& batch : dl.glyphs) overlay_batches.push_back(&batch.vertices);
+    upload(overlay_vbo, overlay_capacity, overlay_batches);
+  }
   gl->BindVertexArray(overlay_vao);
   std::size_t first = 0;
   if (!dl.lines.empty() || !dl.lines_blend.empty()) {
@@ -348,8 +367,18 @@ void Renderer::Impl::resolve() {
   gl->BindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo);
 }
 
+void Renderer::Impl::resolveRect(const PixelRect& r) {
+  if (samples > 1) {
+    gl->BindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo);
+    gl->BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo);
+    gl->BlitFramebuffer(r.x, r.y, r.x + r.width, r.y + r.height, r.x, r.y, r.x + r.width,
+                        r.y + r.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+}
+
 // Colour and depth, same size and samples: llvmpipe copies the memory (no shading).
 void Renderer::Impl::copyFramebuffer(GLuint from, GLuint to) {
+  front_kept = false;
   gl->BindFramebuffer(GL_READ_FRAMEBUFFER, from);
   gl->BindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
   gl->BlitFramebuffer(0, 0, width, height, 0, 0, width, height,
@@ -358,9 +387,17 @@ void Renderer::Impl::copyFramebuffer(GLuint from, GLuint to) {
   gl->Viewport(0, 0, width, height);
 }
 
+// A rectangle of it, explicitly rather than scissored: llvmpipe then copies the memory.
+void Renderer::Impl::copyRect(GLuint from, GLuint to, const PixelRect& r) {
+  gl->BindFramebuffer(GL_READ_FRAMEBUFFER, from);
+  gl->BindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
+  gl->BlitFramebuffer(r.x, r.y, r.x + r.width, r.y + r.height, r.x, r.y, r.x + r.width,
+                      r.y + r.height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+}
+
 // Leaves the drawing framebuffer bound and holding the backdrop, drawn now or copied back.
 void Renderer::Impl::drawBackdrop(const Scene& backdrop, const Camera& cam) {
-  if (backdrop_scene && backdrop_camera == cam && *backdrop_scene == backdrop) {
+  if (backdropKept(backdrop, cam)) {
     copyFramebuffer(backdrop_fbo, drawFramebuffer());
     return;
   }
@@ -512,11 +549,64 @@ void Renderer::renderInto(const Scene& backdrop, const Scene& scene, const Camer
   impl_->drawItems(impl_->list);
   impl_->resolve();
   impl_->readRgba(out.pixels.data() + static_cast<std::size_t>(x_offset_px) * 4, out.width);
+  std::swap(impl_->list, impl_->last_front);
+  impl_->front_kept = true;
 }
 
-void Renderer::Impl::readRgba(std::uint8_t* dst, int row_length_px) {
+std::vector<RowSpan> Renderer::renderChanges(const Scene& backdrop, const Scene& scene,
+                                             const CameraDef& camera_def, RgbaImage& out,
+                                             int x_offset_px) {
+  Impl& m = *impl_;
+  const Camera cam = camera(scene, camera_def);
+  if (!m.front_kept || !m.backdropKept(backdrop, cam)) {
+    renderInto(backdrop, scene, camera_def, out, x_offset_px);
+    return {{0, m.height}};
+  }
+  checkFits(out, m.width, m.height, x_offset_px);
+  const CurrentContext current(*m.context);
+  TessellationDef front = tessellationDef();
+  front.ground_clear = false;
+  m.tessellator.tessellate(scene, cam, front, m.fonts, m.list);
+  const std::vector<PixelRect> rects = changedRects(m.last_front, m.list);
+  // Each rectangle gets the backdrop back, then the whole front drawn inside it: the same
+  // pixels as drawing everything, as a pixel's value depends only on what covers it.
+  for (std::size_t i = 0; i < rects.size(); ++i) {
+    const PixelRect& r = rects[i];
+    m.copyRect(m.backdrop_fbo, m.drawFramebuffer(), r);
+    m.gl->BindFramebuffer(GL_FRAMEBUFFER, m.drawFramebuffer());
+    m.gl->Viewport(0, 0, m.width, m.height);
+    m.gl->Enable(GL_SCISSOR_TEST);
+    m.gl->Scissor(r.x, r.y, r.width, r.height);
+    m.drawItems(m.list, i == 0);
+    m.gl->Disable(GL_SCISSOR_TEST);
+    m.resolveRect(r);
+  }
+  std::vector<RowSpan> rows;
+  for (const PixelRect& r : rects) rows.push_back({r.y, r.y + r.height});
+  std::sort(rows.begin(), rows.end(),
+            [](const RowSpan& a, const RowSpan& b) { return a.begin < b.begin; });
+  std::vector<RowSpan> merged;
+  for (const RowSpan& s : rows) {
+    if (!merged.empty() && s.begin <= merged.back().end) {
+      merged.back().end = std::max(merged.back().end, s.end);
+    } else {
+      merged.push_back(s);
+    }
+  }
+  m.gl->BindFramebuffer(GL_READ_FRAMEBUFFER, m.resolve_fbo);
+  for (const RowSpan& s : merged) {
+    m.readRows(out.pixels.data() + static_cast<std::size_t>(x_offset_px) * 4, out.width, s.begin,
+               s.end);
+  }
+  checkGl(*m.gl, "render");
+  std::swap(m.list, m.last_front);
+  return merged;
+}
+
+void Renderer::Impl::readRows(std::uint8_t* dst, int row_length_px, int y0, int y1) {
   gl->PixelStorei(GL_PACK_ROW_LENGTH, row_length_px);
-  gl->ReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, dst);
+  gl->ReadPixels(0, y0, width, y1 - y0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 dst + static_cast<std::size_t>(y0) * static_cast<std::size_t>(row_length_px) * 4);
   gl->PixelStorei(GL_PACK_ROW_LENGTH, 0);
   checkGl(*gl, "render");
 }

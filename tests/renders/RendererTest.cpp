@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <vector>
 
@@ -213,6 +214,73 @@ TEST_F(RendererTest, AKeptBackdropGivesTheImageOfAFreshOne) {
                                 first.box.center.y(), first.height_m);
     expectPatch(pushed1, pixelOf(renderer.camera(pushed.front, {}), moved), 1,
                 style_.colorFor(first.kind));
+  }
+}
+
+// A film drawn by renderChanges, with its rows gathered as an encoder does, is the film drawn
+// whole: as the robot drives (its driven path growing, the overlay's time and errors
+// changing), after an obstacle was pushed, and after another scene was drawn in between. Rows
+// renderChanges did not return are noise in its image, so nothing depends on them.
+TEST_F(RendererTest, ChangedRowsGiveTheImageOfAWholeDraw) {
+  for (int samples : {1, 4}) {
+    SCOPED_TRACE(samples);
+    RenderDef def;
+    def.msaa_samples = samples;
+    def.width_px = 320;
+    def.height_px = 240;
+    Renderer changes(def);
+    Renderer whole(def);
+    const std::vector<Pose2> planned = {{0.1, 0.1, 1.57}, {0.6, 0.6, 0.0}, {1.4, 0.3, -1.0}};
+    std::vector<Pose2> executed = {{0.1, 0.1, 1.57}};
+    RgbaImage kept(320, 240);  // the film's frame as its encoder holds it
+    long rows_read = 0;
+    for (int k = 1; k <= 24; ++k) {
+      SCOPED_TRACE(k);
+      const double s = 0.04 * k;
+      executed.push_back({0.1 + s, 0.1 + 0.5 * s, 1.57 - 0.05 * k});
+      ViewState view = rendertest::drivingView(planned, executed, executed.back(),
+                                               {"film", 0.1 * k, 0.001 * k, 0.01 * (k % 5)});
+      std::vector<Pose2> obstacles;
+      for (const Obstacle& o : lot_.obstacles) {
+        obstacles.push_back({o.box.center.x(), o.box.center.y(), o.box.yaw});
+      }
+      if (k >= 12) obstacles.front().x += 0.05;  // pushed: a new backdrop
+      view.obstacle_poses = obstacles;
+      const SceneLayers layers = buildSceneLayers(lot_, view, style_);
+      if (k == 18) {  // something else drawn: nothing to build on
+        RgbImage other;
+        changes.render(buildScene(lot_, {}, style_), FrameDef{}.camera_3d, other);
+      }
+
+      RgbaImage scratch(320, 240);
+      std::fill(scratch.pixels.begin(), scratch.pixels.end(), std::uint8_t{0x5A});
+      const std::vector<RowSpan> rows =
+          changes.renderChanges(layers.back, layers.front, {}, scratch, 0);
+      int previous_end = -1;
+      int step_rows = 0;
+      for (const RowSpan& r : rows) {
+        ASSERT_LT(previous_end, r.begin);  // sorted and apart
+        ASSERT_LT(r.begin, r.end);
+        ASSERT_LE(r.end, 240);
+        previous_end = r.end;
+        const std::size_t row_bytes = 320 * 4;
+        std::copy_n(scratch.pixels.begin() + static_cast<std::ptrdiff_t>(r.begin * row_bytes),
+                    static_cast<std::size_t>(r.end - r.begin) * row_bytes,
+                    kept.pixels.begin() + static_cast<std::ptrdiff_t>(r.begin * row_bytes));
+        step_rows += r.end - r.begin;
+      }
+      rows_read += step_rows;
+      if (k == 1 || k == 12 || k == 18) {
+        EXPECT_EQ(rows, (std::vector<RowSpan>{{0, 240}}));
+      } else {
+        EXPECT_GT(step_rows, 0);
+        EXPECT_LT(step_rows, 180) << "a step changes some rows, not all";
+      }
+      RgbaImage expected(320, 240);
+      whole.renderInto(layers.back, layers.front, {}, expected, 0);
+      ASSERT_EQ(kept.rgb(), expected.rgb());
+    }
+    EXPECT_LT(rows_read, 24 * 240 / 2);
   }
 }
 
