@@ -43,7 +43,9 @@ void writeFrame(const std::string& path, std::span<const unsigned char> bytes) {
 
 }  // namespace
 
-EncodeQueue::EncodeQueue(int threads, int depth, int width, int height, PngCompression png) {
+EncodeQueue::EncodeQueue(int threads, int depth, int width, int height, PngCompression png)
+    : takes_changed_rows_(threads == 1 &&
+                          (png == PngCompression::kDefault || png == PngCompression::kFast)) {
   for (int i = 0; i < depth; ++i) free_.push_back(std::make_unique<RgbaImage>(width, height));
   for (int i = 0; i < threads; ++i) workers_.emplace_back([this, png] { work(png); });
 }
@@ -61,7 +63,17 @@ std::unique_ptr<RgbaImage> EncodeQueue::acquire() {
 void EncodeQueue::submit(std::string path, std::unique_ptr<RgbaImage> image) {
   {
     std::lock_guard lock(mutex_);
-    jobs_.push_back({std::move(path), std::move(image)});
+    jobs_.push_back({std::move(path), std::move(image), std::nullopt});
+  }
+  job_cv_.notify_one();
+}
+
+void EncodeQueue::submit(std::string path, std::unique_ptr<RgbaImage> image,
+                         std::vector<RowSpan> changed) {
+  if (!takes_changed_rows_) throw Error("frames: this encoder takes whole images only");
+  {
+    std::lock_guard lock(mutex_);
+    jobs_.push_back({std::move(path), std::move(image), std::move(changed)});
   }
   job_cv_.notify_one();
 }
@@ -111,7 +123,8 @@ void EncodeQueue::work(PngCompression png) {
     }
     std::string failure;
     try {
-      writeFrame(job.path, encoder.encode(*job.image));
+      writeFrame(job.path, job.changed ? encoder.encode(*job.image, *job.changed)
+                                       : encoder.encode(*job.image));
     } catch (const std::exception& e) {
       failure = e.what();
     }

@@ -8,6 +8,7 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -29,6 +30,12 @@ class EncodeQueue {
   std::unique_ptr<RgbaImage> acquire();
   /// Encodes `image` to `path` on an encoder thread; the image then returns to the pool.
   void submit(std::string path, std::unique_ptr<RgbaImage> image);
+  /// Whether submit may say which rows changed: one encoder, so it encodes the frames in order,
+  /// with a compression that keeps the last image (PngEncoder::encode with rows).
+  bool takesChangedRows() const { return takes_changed_rows_; }
+  /// submit for the frame after the last one submitted, of which only rows `changed` are
+  /// valid in `image`: the others are the last frame's. Only when takesChangedRows().
+  void submit(std::string path, std::unique_ptr<RgbaImage> image, std::vector<RowSpan> changed);
   /// Puts back an image acquired and not submitted.
   void release(std::unique_ptr<RgbaImage> image);
   /// Blocks until every submitted frame is written.
@@ -42,6 +49,7 @@ class EncodeQueue {
   struct Job {
     std::string path;
     std::unique_ptr<RgbaImage> image;
+    std::optional<std::vector<RowSpan>> changed;  // unset: the whole image
   };
 
   void work(PngCompression png);
@@ -51,6 +59,7 @@ class EncodeQueue {
   std::deque<Job> jobs_;
   std::vector<std::unique_ptr<RgbaImage>> free_;
   std::vector<std::thread> workers_;
+  bool takes_changed_rows_ = false;
   int busy_ = 0;
   bool stopping_ = false;
   std::string error_;

@@ -391,8 +391,25 @@ void FrameRecorder::Impl::render(const FrameInput& in, int index) {
   }
 
   std::unique_ptr<RgbaImage> image = queue->acquire();
+  const CameraDef top{};
+  if (def.view == FrameView::kTop && queue->takesChangedRows()) {
+    // Only the rows the front changed are drawn, read back and compared: the encoder holds the
+    // rest from the last frame.
+    std::vector<RowSpan> changed;
+    try {
+      changed = renderer->renderChanges(layers.back, layers.front, top, *image, 0);
+    } catch (...) {
+      queue->release(std::move(image));
+      throw;
+    }
+    if (changed.size() == 1 && changed[0] == RowSpan{0, image->height}) {
+      queue->submit(framePathIn(frames_dir, index), std::move(image));
+    } else {
+      queue->submit(framePathIn(frames_dir, index), std::move(image), std::move(changed));
+    }
+    return;
+  }
   try {
-    const CameraDef top{};
     switch (def.view) {
       case FrameView::kTop: renderer->renderInto(layers.back, layers.front, top, *image, 0); break;
       case FrameView::k3d: renderer->renderInto(*whole, def.camera_3d, *image, 0); break;
