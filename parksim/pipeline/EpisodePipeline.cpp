@@ -51,16 +51,23 @@ std::unique_ptr<FrameRecorder> makeRecorder(const EpisodeRequest& request, const
   return recorder;
 }
 
+// Waits for the film, showing the frames written against all of them.
+RecordingResult finishFilm(const EpisodeRequest& request, FrameRecorder& recorder) {
+  if (!request.progress.frames) return recorder.finish();
+  return recorder.finish(
+      [&](long written) { request.progress.frames(written, recorder.frames()); });
+}
+
 // Drives the plan under one noise seed; `recorder` (optional) films it.
 EpisodeResult drive(const EpisodeRequest& request, const Trajectory& plan,
                     const ExecutionDef& execution, FrameRecorder* recorder) {
   if (recorder == nullptr) return runEpisode(request.world->scenario, plan, execution);
   const double fps = request.film.frames.fps;
   const long expected = static_cast<long>(plan.duration() * fps) + 1;
-  long frames = 0;
   const EpisodeObserver observer = [&](const EpisodeSample& sample) {
     recorder->addFrame(frameInput(sample));
-    if (request.progress.frames) request.progress.frames(++frames, expected);
+    // Written, not handed over: the drawing may be far behind the simulation.
+    if (request.progress.frames) request.progress.frames(recorder->framesWritten(), expected);
   };
   return runEpisode(request.world->scenario, plan, execution, observer, 1.0 / fps);
 }
@@ -151,7 +158,7 @@ RecordingResult filmFailure(const EpisodeRequest& request, const EpisodeOutcome&
   ExecutionDef execution = out.execution;
   execution.csv_stride_steps = kFirstAndLastRowOnly;
   (void)drive(request, out.trajectory, execution, recorder.get());
-  return recorder->finish();
+  return finishFilm(request, *recorder);
 }
 
 void drawFigures(const EpisodeRequest& request, EpisodeOutcome& out) {
@@ -227,7 +234,7 @@ EpisodeOutcome runEpisodePipeline(const EpisodeRequest& request) {
   out.metrics = metricsOf(request, out, recorder.get());
   if (keepsFiles(request, out.verdict)) writeFiles(request, out);
   if (recorder) {
-    out.recording = recorder->finish();
+    out.recording = finishFilm(request, *recorder);
     recorder.reset();
     film_lock = {};
   } else if (request.film.when == FilmWhen::kOnFailure && !out.verdict.met()) {

@@ -102,6 +102,11 @@ void EncodeQueue::stop() {
   }
 }
 
+long EncodeQueue::written() const {
+  std::lock_guard lock(mutex_);
+  return written_;
+}
+
 std::string EncodeQueue::error() const {
   std::lock_guard lock(mutex_);
   return error_;
@@ -131,6 +136,7 @@ void EncodeQueue::work(PngCompression png) {
     {
       std::lock_guard lock(mutex_);
       if (!failure.empty() && error_.empty()) error_ = failure;
+      if (failure.empty()) ++written_;
       free_.push_back(std::move(job.image));
       --busy_;
     }

@@ -44,6 +44,8 @@ class EncodeQueue {
   void stop();
   /// The first write error, if any.
   std::string error() const;
+  /// Frames written so far.
+  long written() const;
 
  private:
   struct Job {
@@ -60,6 +62,7 @@ class EncodeQueue {
   std::vector<std::unique_ptr<RgbaImage>> free_;
   std::vector<std::thread> workers_;
   bool takes_changed_rows_ = false;
+  long written_ = 0;
   int busy_ = 0;
   bool stopping_ = false;
   std::string error_;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <cstdio>
@@ -231,6 +232,8 @@ struct FrameRecorder::Impl {
   void draw(const DrawJob& job);
   void render(const FrameInput& in, int index);
   void waitDrawn();
+  // waitDrawn for at most `timeout`; true when drawn.
+  bool waitDrawnFor(std::chrono::milliseconds timeout);
   void stopDrawing();
   void throwIfFailed() {
     {
@@ -347,6 +350,14 @@ void FrameRecorder::Impl::waitDrawn() {
   std::unique_lock lock(mutex);
   idle_cv.wait(lock, [this] { return (jobs.empty() && !drawing) || draw_failure; });
   if (draw_failure) std::rethrow_exception(draw_failure);
+}
+
+bool FrameRecorder::Impl::waitDrawnFor(std::chrono::milliseconds timeout) {
+  std::unique_lock lock(mutex);
+  const bool done = idle_cv.wait_for(lock, timeout,
+                                     [this] { return (jobs.empty() && !drawing) || draw_failure; });
+  if (draw_failure) std::rethrow_exception(draw_failure);
+  return done;
 }
 
 void FrameRecorder::Impl::stopDrawing() {
@@ -515,7 +526,7 @@ int FrameRecorder::addFrame(const FrameInput& input) {
   return due;
 }
 
-RecordingResult FrameRecorder::finish() {
+RecordingResult FrameRecorder::finish(const std::function<void(long written)>& progress) {
   Impl& m = *impl_;
   if (m.finished) throw Error("frames: finish called twice");
   m.finished = true;
@@ -526,10 +537,16 @@ RecordingResult FrameRecorder::finish() {
     job.frames = 1;
     m.post(std::move(job));
   }
-  m.waitDrawn();
+  if (progress) {
+    // A display only: what is written does not depend on when it is looked at.
+    while (!m.waitDrawnFor(std::chrono::milliseconds(100))) progress(m.queue->written());
+  } else {
+    m.waitDrawn();
+  }
   m.stopDrawing();
   m.waitReady();  // a recording without a sample never drew
   m.queue->drain();
+  if (progress) progress(m.queue->written());
   m.queue->stop();
   m.throwIfFailed();
   removeFramesFrom(m.frames_dir, m.next_frame);
@@ -554,6 +571,8 @@ RecordingResult FrameRecorder::finish() {
 }
 
 int FrameRecorder::frames() const { return impl_->next_frame; }
+
+long FrameRecorder::framesWritten() const { return impl_->queue->written(); }
 
 std::string FrameRecorder::glDescription() const {
   impl_->waitReady();

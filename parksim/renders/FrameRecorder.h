@@ -14,6 +14,7 @@
 // are encoded and written on worker threads while the next frame renders. File names come from
 // the frame index, so the files and their bytes do not depend on the threading.
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -167,11 +168,15 @@ class FrameRecorder {
   /// left behind, then runs ffmpeg when video or gif is set. A
   /// missing or failing ffmpeg is reported in the result, not thrown. Throws Error when a frame
   /// could not be drawn or written, or no GL context could be made (EnvironmentError). Call
-  /// once; addFrame afterwards throws.
-  RecordingResult finish();
+  /// once; addFrame afterwards throws. `progress`, when given, is called on this thread with
+  /// the frames written so far while it waits for them (about ten times a second), and once
+  /// with all of them.
+  RecordingResult finish(const std::function<void(long written)>& progress = {});
 
   /// Frames due so far: drawn, or handed to the drawing thread.
   int frames() const;
+  /// Frames drawn and written so far (the drawing thread may be well behind frames()).
+  long framesWritten() const;
   /// The GL context's description (Renderer::description), for provenance.
   std::string glDescription() const;
   /// Path of frame `index`: DIR/frames/%06d.png.

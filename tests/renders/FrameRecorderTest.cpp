@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -82,6 +84,24 @@ TEST_F(FrameRecorderTest, WritesValidChangingFramesAtTheFrameRate) {
   }
   EXPECT_EQ(changed, 40);  // the robot moves and the clock runs in every frame
   EXPECT_FALSE(std::filesystem::exists(rec.framePath(41)));
+}
+
+// Progress counts frames written, not samples handed over: the drawing thread may be far
+// behind. finish() reports the count while it waits, ending with every frame.
+TEST_F(FrameRecorderTest, FinishReportsTheFramesWritten) {
+  FrameDef def = filmDef("FrameRecorderTest_progress", 10.0, 320, 240);
+  FrameRecorder rec(lot_, def);
+  rec.setPlan(plan_);
+  EXPECT_EQ(rec.framesWritten(), 0);
+  const int due = record(rec, lot_, plan_);
+  EXPECT_LE(rec.framesWritten(), due);
+  std::vector<long> reported;
+  const RecordingResult result = rec.finish([&](long written) { reported.push_back(written); });
+  ASSERT_FALSE(reported.empty());
+  EXPECT_TRUE(std::is_sorted(reported.begin(), reported.end()));
+  EXPECT_EQ(reported.back(), result.frames);
+  EXPECT_EQ(rec.framesWritten(), result.frames);
+  EXPECT_EQ(result.frames, 41);
 }
 
 TEST_F(FrameRecorderTest, FramesShowTheRobotWhereTheSampleSaysItIs) {
