@@ -30,7 +30,10 @@ bool touches(const PixelRect& a, const PixelRect& b) {
 class RectSet {
  public:
   RectSet(int width, int height, const DrawListChangeDef& def)
-      : width_(width), height_(height), def_(def) {}
+      : width_(width),
+        height_(height),
+        margin_px_(std::clamp(def.margin_px, 0, 64)),
+        max_rects_(std::clamp(def.max_rects, 1, 64)) {}
 
   // A triangle whose vertices are at these clip-space positions changed.
   void addTriangle(const Eigen::Vector4f (&clip)[3]) {
@@ -49,7 +52,7 @@ class RectSet {
       x1 = std::max(x1, x);
       y1 = std::max(y1, y);
     }
-    const auto m = static_cast<float>(def_.margin_px);
+    const auto m = static_cast<float>(margin_px_);
     const auto w = static_cast<float>(width_);
     const auto h = static_cast<float>(height_);
     if (x1 + m <= 0.0f || y1 + m <= 0.0f || x0 - m >= w || y0 - m >= h) return;  // off the image
@@ -68,7 +71,7 @@ class RectSet {
   std::vector<PixelRect> result() {
     if (everything_) return {{0, 0, width_, height_}};
     mergeTouching();
-    while (static_cast<int>(rects_.size()) > std::max(1, def_.max_rects)) mergeCheapestPair();
+    while (static_cast<int>(rects_.size()) > max_rects_) mergeCheapestPair();
     return rects_;
   }
 
@@ -82,7 +85,7 @@ class RectSet {
     }
     // A scattered change would make a long list; beyond a few times the rectangles wanted, the
     // new one joins the rectangle it grows least.
-    if (static_cast<int>(rects_.size()) >= 4 * std::max(1, def_.max_rects)) {
+    if (static_cast<int>(rects_.size()) >= 4 * max_rects_) {
       auto best = std::min_element(rects_.begin(), rects_.end(), [&](const auto& a, const auto& b) {
         return area(unite(a, r)) - area(a) < area(unite(b, r)) - area(b);
       });
@@ -129,7 +132,8 @@ class RectSet {
 
   int width_;
   int height_;
-  DrawListChangeDef def_;
+  int margin_px_;
+  int max_rects_;
   bool everything_ = false;
   std::vector<PixelRect> rects_;
 };
@@ -170,7 +174,7 @@ void diffBatch(const std::vector<Vertex>& before, const std::vector<Vertex>& aft
                const Eigen::Matrix4f& view_proj, int lookahead, RectSet& rects) {
   const std::size_t nb = before.size() / 3;
   const std::size_t na = after.size() / 3;
-  const auto window = static_cast<std::size_t>(std::max(0, lookahead));
+  const auto window = static_cast<std::size_t>(std::clamp(lookahead, 0, 1024));
   std::size_t i = 0, j = 0;
   while (i < nb && j < na && !rects.everything()) {
     if (sameTriangle(before, i, after, j)) {
@@ -179,7 +183,8 @@ void diffBatch(const std::vector<Vertex>& before, const std::vector<Vertex>& aft
       continue;
     }
     std::size_t dropped = 0, added = 0;  // 0: not found within the window
-    for (std::size_t k = 1; k <= window && (dropped == 0 || added == 0); ++k) {
+    const std::size_t reach = std::min(window, std::max(nb - i, na - j));
+    for (std::size_t k = 1; k <= reach && (dropped == 0 || added == 0); ++k) {
       if (dropped == 0 && i + k < nb && sameTriangle(before, i + k, after, j)) dropped = k;
       if (added == 0 && j + k < na && sameTriangle(before, i, after, j + k)) added = k;
     }

@@ -17,19 +17,19 @@ namespace parksim {
 struct DrawListChangeDef {
   /// At most this many rectangles; nearest ones are merged beyond it. Each costs the renderer a
   /// copy, a scissored draw of the whole list and a read-back.
-  int max_rects = 4;
+  int max_rects = 4;  // 1 to 64
   /// Triangles looked ahead for one that was left out or put in (a path that grew, a glyph
   /// that changed width); a larger window finds more in common and costs more on a mismatch.
-  int lookahead = 32;
+  int lookahead = 32;  // 0 to 1024
   /// Pixels added on every side of a triangle's bounds: a rasterizer snaps vertices to its
   /// sub-pixel grid and a line's soft edge lies on its outermost pixel.
-  int margin_px = 2;
+  int margin_px = 2;  // 0 to 64
 };
 
 /// Rectangles (image pixels, from the top-left corner) outside which `before` and `after`,
 /// each drawn over the same pixels, give the same image. Empty: the images are equal. The whole
 /// image when the lists differ in size or uniforms (camera, light), or when a changed vertex
-/// lies behind the camera. Rectangles may overlap.
+/// lies behind the camera. The rectangles neither overlap nor touch.
 std::vector<PixelRect> changedRects(const DrawList& before, const DrawList& after,
                                     const DrawListChangeDef& def = {});
 

@@ -70,7 +70,10 @@ void EncodeQueue::submit(std::string path, std::unique_ptr<RgbaImage> image) {
 
 void EncodeQueue::submit(std::string path, std::unique_ptr<RgbaImage> image,
                          std::vector<RowSpan> changed) {
-  if (!takes_changed_rows_) throw Error("frames: this encoder takes whole images only");
+  if (!takes_changed_rows_) {
+    release(std::move(image));
+    throw Error("frames: this encoder takes whole images only");
+  }
   {
     std::lock_guard lock(mutex_);
     jobs_.push_back({std::move(path), std::move(image), std::move(changed)});

@@ -169,8 +169,8 @@ class FrameRecorder {
   /// missing or failing ffmpeg is reported in the result, not thrown. Throws Error when a frame
   /// could not be drawn or written, or no GL context could be made (EnvironmentError). Call
   /// once; addFrame afterwards throws. `progress`, when given, is called on this thread with
-  /// the frames written so far while it waits for them (about ten times a second), and once
-  /// with all of them.
+  /// the frames written so far while it waits for the drawing (about ten times a second), and
+  /// once more when the encoders are done (then with all frames, unless one failed to write).
   RecordingResult finish(const std::function<void(long written)>& progress = {});
 
   /// Frames due so far: drawn, or handed to the drawing thread.

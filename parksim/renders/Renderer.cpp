@@ -524,6 +524,44 @@ void checkFits(const RgbaImage& out, int width, int height, int x_offset_px) {
   }
 }
 
+void checkLayers(const Scene& backdrop, const Scene& scene) {
+  if (scene.extent != backdrop.extent || scene.extent_top_m != backdrop.extent_top_m) {
+    throw Error("renderer: a scene drawn over a backdrop must have the backdrop's extent");
+  }
+}
+
+// The rows of `rects`, sorted and merged where they meet.
+std::vector<RowSpan> rowsOf(const std::vector<PixelRect>& rects) {
+  std::vector<RowSpan> rows;
+  for (const PixelRect& r : rects) rows.push_back({r.y, r.y + r.height});
+  std::sort(rows.begin(), rows.end(),
+            [](const RowSpan& a, const RowSpan& b) { return a.begin < b.begin; });
+  std::vector<RowSpan> merged;
+  for (const RowSpan& s : rows) {
+    if (!merged.empty() && s.begin <= merged.back().end) {
+      merged.back().end = std::max(merged.back().end, s.end);
+    } else {
+      merged.push_back(s);
+    }
+  }
+  return merged;
+}
+
+// The scissor test on while it lives: whatever throws, later clears and copies are whole.
+class Scissor {
+ public:
+  Scissor(const GlFunctions& gl, const PixelRect& r) : gl_(gl) {
+    gl_.Enable(GL_SCISSOR_TEST);
+    gl_.Scissor(r.x, r.y, r.width, r.height);
+  }
+  ~Scissor() { gl_.Disable(GL_SCISSOR_TEST); }
+  Scissor(const Scissor&) = delete;
+  Scissor& operator=(const Scissor&) = delete;
+
+ private:
+  const GlFunctions& gl_;
+};
+
 }  // namespace
 
 void Renderer::renderInto(const Scene& scene, const CameraDef& camera_def, RgbaImage& out,
@@ -537,9 +575,7 @@ void Renderer::renderInto(const Scene& scene, const CameraDef& camera_def, RgbaI
 void Renderer::renderInto(const Scene& backdrop, const Scene& scene, const CameraDef& camera_def,
                           RgbaImage& out, int x_offset_px) {
   checkFits(out, impl_->width, impl_->height, x_offset_px);
-  if (scene.extent != backdrop.extent || scene.extent_top_m != backdrop.extent_top_m) {
-    throw Error("renderer: a scene drawn over a backdrop must have the backdrop's extent");
-  }
+  checkLayers(backdrop, scene);
   const Camera cam = camera(scene, camera_def);
   const CurrentContext current(*impl_->context);
   impl_->drawBackdrop(backdrop, cam);
@@ -557,17 +593,21 @@ std::vector<RowSpan> Renderer::renderChanges(const Scene& backdrop, const Scene&
                                              const CameraDef& camera_def, RgbaImage& out,
                                              int x_offset_px) {
   Impl& m = *impl_;
+  checkFits(out, m.width, m.height, x_offset_px);
+  checkLayers(backdrop, scene);
   const Camera cam = camera(scene, camera_def);
   if (!m.front_kept || !m.backdropKept(backdrop, cam)) {
     renderInto(backdrop, scene, camera_def, out, x_offset_px);
     return {{0, m.height}};
   }
-  checkFits(out, m.width, m.height, x_offset_px);
   const CurrentContext current(*m.context);
   TessellationDef front = tessellationDef();
   front.ground_clear = false;
   m.tessellator.tessellate(scene, cam, front, m.fonts, m.list);
   const std::vector<PixelRect> rects = changedRects(m.last_front, m.list);
+  // Until this image is whole, the framebuffer holds neither front: an error below must not
+  // leave the next call building on it.
+  m.front_kept = false;
   // Each rectangle gets the backdrop back, then the whole front drawn inside it: the same
   // pixels as drawing everything, as a pixel's value depends only on what covers it.
   for (std::size_t i = 0; i < rects.size(); ++i) {
@@ -575,24 +615,13 @@ std::vector<RowSpan> Renderer::renderChanges(const Scene& backdrop, const Scene&
     m.copyRect(m.backdrop_fbo, m.drawFramebuffer(), r);
     m.gl->BindFramebuffer(GL_FRAMEBUFFER, m.drawFramebuffer());
     m.gl->Viewport(0, 0, m.width, m.height);
-    m.gl->Enable(GL_SCISSOR_TEST);
-    m.gl->Scissor(r.x, r.y, r.width, r.height);
-    m.drawItems(m.list, i == 0);
-    m.gl->Disable(GL_SCISSOR_TEST);
+    {
+      const Scissor scissor(*m.gl, r);
+      m.drawItems(m.list, i == 0);
+    }
     m.resolveRect(r);
   }
-  std::vector<RowSpan> rows;
-  for (const PixelRect& r : rects) rows.push_back({r.y, r.y + r.height});
-  std::sort(rows.begin(), rows.end(),
-            [](const RowSpan& a, const RowSpan& b) { return a.begin < b.begin; });
-  std::vector<RowSpan> merged;
-  for (const RowSpan& s : rows) {
-    if (!merged.empty() && s.begin <= merged.back().end) {
-      merged.back().end = std::max(merged.back().end, s.end);
-    } else {
-      merged.push_back(s);
-    }
-  }
+  const std::vector<RowSpan> merged = rowsOf(rects);
   m.gl->BindFramebuffer(GL_READ_FRAMEBUFFER, m.resolve_fbo);
   for (const RowSpan& s : merged) {
     m.readRows(out.pixels.data() + static_cast<std::size_t>(x_offset_px) * 4, out.width, s.begin,
@@ -600,6 +629,7 @@ std::vector<RowSpan> Renderer::renderChanges(const Scene& backdrop, const Scene&
   }
   checkGl(*m.gl, "render");
   std::swap(m.list, m.last_front);
+  m.front_kept = true;
   return merged;
 }
 

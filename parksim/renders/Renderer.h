@@ -99,11 +99,12 @@ class Renderer {
                   RgbaImage& out, int x_offset_px);
 
   /// renderInto(backdrop, scene, ...) for a film's next frame: only the rows that can differ
-  /// from the image the last such call drew are drawn and read back into `out`, and returned,
-  /// sorted and apart. `out`'s other rows are not written: they are the last image's, which the
-  /// caller keeps (a film's PNG encoder does). All rows when there is nothing to build on: the
-  /// first call, a new size, backdrop or camera, or anything else drawn since. The rows written
-  /// are renderInto's bytes.
+  /// from the image the last renderChanges or renderInto(backdrop, scene, ...) drew are drawn
+  /// and read back into `out`, and returned, sorted and apart. `out`'s other rows are not
+  /// written: they are that last image's, which the caller keeps at the same x_offset_px (a
+  /// film's PNG encoder does). All rows when there is nothing to build on: the first call, a new
+  /// size, backdrop or camera, or anything else drawn since. The rows written are renderInto's
+  /// bytes. Throws Error as renderInto does.
   std::vector<RowSpan> renderChanges(const Scene& backdrop, const Scene& scene,
                                      const CameraDef& camera_def, RgbaImage& out, int x_offset_px);
 

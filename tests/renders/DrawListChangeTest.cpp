@@ -163,6 +163,26 @@ TEST_F(DrawListChangeTest, ScatteredChangesStayFewAndCovered) {
   }
 }
 
+// Settings out of range are held to their bounds: no hang, no list without end.
+TEST_F(DrawListChangeTest, SettingsAreBounded) {
+  for (int i = 0; i < 200; ++i) addTriangle(list_.lines, (i * 37) % 190, (i * 53) % 90, 3.0f);
+  DrawList after = list_;
+  for (OverlayVertex& v : after.lines) v.pos[0] += 0.001f;  // every triangle moved
+  DrawListChangeDef wild;
+  wild.max_rects = 1 << 30;
+  wild.lookahead = 1 << 30;
+  wild.margin_px = 1 << 30;
+  const std::vector<PixelRect> rects = changedRects(list_, after, wild);
+  ASSERT_FALSE(rects.empty());
+  EXPECT_LE(rects.size(), 64u);
+  for (const PixelRect& r : rects) {
+    EXPECT_GE(r.x, 0);
+    EXPECT_LE(r.x + r.width, 200);
+  }
+  wild.max_rects = -5;
+  EXPECT_EQ(changedRects(list_, after, wild).size(), 1u);
+}
+
 TEST_F(DrawListChangeTest, RectanglesStayOnTheImage) {
   addTriangle(list_.lines, -50, -50, 60);  // reaches in from above the top-left corner
   DrawList after = list_;
