@@ -34,9 +34,10 @@ install(TARGETS ${parksim_module_targets} parksim_library
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/parksim/
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/parksim
   FILES_MATCHING PATTERN "*.h"
-  # Internal to parksim_render: the GL headers, and a film's encoder threads.
+  # Internal to parksim_render: the GL headers, the renderer's state, a film's encoder threads.
   PATTERN "GlFunctions.h" EXCLUDE
   PATTERN "RendererPrograms.h" EXCLUDE
+  PATTERN "RendererImpl.h" EXCLUDE
   PATTERN "EncodeQueue.h" EXCLUDE)
 install(EXPORT parksimTargets NAMESPACE parksim:: DESTINATION ${PARKSIM_CMAKE_DIR})
 

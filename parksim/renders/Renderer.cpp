@@ -2,121 +2,25 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <map>
-#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
 
 #include "parksim/core/Error.h"
-#include "parksim/renders/DrawList.h"
-#include "parksim/renders/DrawListChange.h"
-#include "parksim/renders/FontCache.h"
-#include "parksim/renders/GlFunctions.h"
-#include "parksim/renders/RendererPrograms.h"
-#include "parksim/renders/SceneTessellator.h"
+#include "parksim/renders/RendererImpl.h"
+
+// The context, framebuffers, buffers and shaders, and drawing a DrawList; a film's layered view
+// is in RendererLayers.cpp.
 
 namespace parksim {
 
 namespace {
-
-// The context is current on the calling thread while the guard lives and released after, so a
-// renderer may move between threads (one at a time): EGL refuses to make a context current while
-// it is still current on another thread. Releasing costs nothing measurable next to a frame.
-class CurrentContext {
- public:
-  explicit CurrentContext(OffscreenContext& context) : context_(context) {
-    if (!context_.isCurrent()) context_.makeCurrent();
-  }
-  ~CurrentContext() { context_.releaseCurrent(); }
-  CurrentContext(const CurrentContext&) = delete;
-  CurrentContext& operator=(const CurrentContext&) = delete;
-
- private:
-  OffscreenContext& context_;
-};
 
 void clearColor(const GlFunctions& gl, const Rgba8& c) {
   gl.ClearColor(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f);
 }
 
 }  // namespace
-
-struct Renderer::Impl {
-  RenderDef def;
-  std::unique_ptr<OffscreenContext> context;
-  const GlFunctions* gl = nullptr;  // the context's entry points
-  FontCache fonts;
-  std::map<int, GLuint> font_textures;  // by the atlas's pixel height
-
-  int width = 0;
-  int height = 0;
-  int samples = 1;
-  GLint max_samples = 1;
-  GLuint msaa_fbo = 0, msaa_color = 0, msaa_depth = 0;
-  GLuint resolve_fbo = 0, resolve_color = 0, resolve_depth = 0;
-  // The kept backdrop (renderInto with a backdrop): its colour and depth at the drawing
-  // framebuffer's size and samples, made on first use; and what it shows.
-  GLuint backdrop_fbo = 0, backdrop_color = 0, backdrop_depth = 0;
-  std::optional<Scene> backdrop_scene;
-  Camera backdrop_camera;
-  long backdrops_drawn = 0;
-  RendererPrograms programs;
-  GLuint mesh_vao = 0, mesh_vbo = 0, overlay_vao = 0, overlay_vbo = 0;
-  // Bytes each vertex buffer holds: its storage is kept and grown, not made anew each image
-  // (llvmpipe allocates and zeroes new storage, page by page).
-  std::size_t mesh_capacity = 0, overlay_capacity = 0;
-  std::vector<const std::vector<MeshVertex>*> mesh_batches;
-  std::vector<const std::vector<OverlayVertex>*> overlay_batches;
-
-  // Kept between images, so steady-state drawing does not allocate.
-  SceneTessellator tessellator;
-  DrawList list;
-  // The front last drawn over the kept backdrop, while the drawing framebuffer still holds that
-  // image (front_kept): renderChanges draws only where the next front differs from it.
-  DrawList last_front;
-  bool front_kept = false;
-  std::vector<std::uint8_t> rgba;  // read-back buffer
-
-  void init();
-  void allocateFramebuffers();
-  void releaseFramebuffers();
-  void ensureCurrent() {
-    if (!context->isCurrent()) context->makeCurrent();
-  }
-  GLuint fontTexture(int font_px);
-
-  GLuint drawFramebuffer() const { return samples > 1 ? msaa_fbo : resolve_fbo; }
-  TessellationDef tessellation() const { return {samples, def.light_direction, def.ambient}; }
-  void storage(GLuint& rb, GLenum format, int n);  // a renderbuffer of the image's size
-  void complete(const char* which);  // throws unless the bound framebuffer is complete
-  void releaseBackdrop();
-  void draw(const DrawList& list);
-  void drawWhole(const Scene& scene, const Camera& cam) {  // render() and renderInto(scene)
-    tessellator.tessellate(scene, cam, tessellation(), fonts, list);
-    draw(list);
-  }
-  void clear(const DrawList& list);
-  // `upload` false: the list's vertices are in the buffers already (drawn once this image).
-  void drawItems(const DrawList& list, bool upload = true);
-  void resolve();
-  void resolveRect(const PixelRect& r);
-  bool backdropKept(const Scene& backdrop, const Camera& cam) const {
-    return backdrop_scene && backdrop_camera == cam && *backdrop_scene == backdrop;
-  }
-  void drawBackdrop(const Scene& backdrop, const Camera& cam);
-  void copyFramebuffer(GLuint from, GLuint to);
-  void copyRect(GLuint from, GLuint to, const PixelRect& r);
-  // The resolved image, RGBA, into `dst` whose rows are row_length_px pixels apart; or only
-  // rows [y0, y1), into the same places.
-  void readRgba(std::uint8_t* dst, int row_length_px) { readRows(dst, row_length_px, 0, height); }
-  void readRows(std::uint8_t* dst, int row_length_px, int y0, int y1);
-  template <class Vertex>
-  void upload(GLuint vbo, std::size_t& capacity,
-              const std::vector<const std::vector<Vertex>*>& batches);
-  void drawRange(std::size_t first, std::size_t count, bool blend);
-  void useMeshProgram(const DrawList& list);
-};
 
 void Renderer::Impl::init() {
   const char* version = reinterpret_cast<const char*>(gl->GetString(GL_VERSION));
@@ -358,15 +262,6 @@ void Renderer::Impl::drawItems(const DrawList& dl, bool upload_vertices) {
   gl->BindVertexArray(0);
 }
 
-void Renderer::Impl::resolve() {
-  if (samples > 1) {
-    gl->BindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo);
-    gl->BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo);
-    gl->BlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  }
-  gl->BindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo);
-}
-
 void Renderer::Impl::resolveRect(const PixelRect& r) {
   if (samples > 1) {
     gl->BindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo);
@@ -376,18 +271,13 @@ void Renderer::Impl::resolveRect(const PixelRect& r) {
   }
 }
 
-// Colour and depth, same size and samples: llvmpipe copies the memory (no shading).
-void Renderer::Impl::copyFramebuffer(GLuint from, GLuint to) {
-  front_kept = false;
-  gl->BindFramebuffer(GL_READ_FRAMEBUFFER, from);
-  gl->BindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
-  gl->BlitFramebuffer(0, 0, width, height, 0, 0, width, height,
-                      GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  gl->BindFramebuffer(GL_FRAMEBUFFER, drawFramebuffer());
-  gl->Viewport(0, 0, width, height);
+void Renderer::Impl::resolve() {
+  resolveRect({0, 0, width, height});
+  gl->BindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo);
 }
 
-// A rectangle of it, explicitly rather than scissored: llvmpipe then copies the memory.
+// Colour and depth, same size and samples, of the whole image or a rectangle given explicitly
+// (not scissored): llvmpipe then copies the memory, with no shading.
 void Renderer::Impl::copyRect(GLuint from, GLuint to, const PixelRect& r) {
   gl->BindFramebuffer(GL_READ_FRAMEBUFFER, from);
   gl->BindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
@@ -395,45 +285,11 @@ void Renderer::Impl::copyRect(GLuint from, GLuint to, const PixelRect& r) {
                       r.y + r.height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
 }
 
-// Leaves the drawing framebuffer bound and holding the backdrop, drawn now or copied back.
-void Renderer::Impl::drawBackdrop(const Scene& backdrop, const Camera& cam) {
-  if (backdropKept(backdrop, cam)) {
-    copyFramebuffer(backdrop_fbo, drawFramebuffer());
-    return;
-  }
-  backdrop_scene.reset();  // until it is drawn and kept
-  if (backdrop_fbo == 0) {
-    gl->GenFramebuffers(1, &backdrop_fbo);
-    gl->BindFramebuffer(GL_FRAMEBUFFER, backdrop_fbo);
-    storage(backdrop_color, GL_RGBA8, samples);
-    gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                                backdrop_color);
-    storage(backdrop_depth, GL_DEPTH_COMPONENT24, samples);
-    gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
-                                backdrop_depth);
-    try {
-      complete("backdrop");
-    } catch (...) {
-      releaseBackdrop();
-      throw;
-    }
-  }
-  tessellator.tessellate(backdrop, cam, tessellation(), fonts, list);
-  clear(list);
-  drawItems(list);
-  copyFramebuffer(drawFramebuffer(), backdrop_fbo);
-  checkGl(*gl, "backdrop");
-  backdrop_scene = backdrop;
-  backdrop_camera = cam;
-  ++backdrops_drawn;
-}
-
-void Renderer::Impl::releaseBackdrop() {
-  gl->DeleteFramebuffers(1, &backdrop_fbo);
-  const GLuint rbs[] = {backdrop_color, backdrop_depth};
-  gl->DeleteRenderbuffers(2, rbs);
-  backdrop_fbo = backdrop_color = backdrop_depth = 0;
-  backdrop_scene.reset();
+void Renderer::Impl::copyFramebuffer(GLuint from, GLuint to) {
+  front_kept = false;
+  copyRect(from, to, {0, 0, width, height});
+  gl->BindFramebuffer(GL_FRAMEBUFFER, drawFramebuffer());
+  gl->Viewport(0, 0, width, height);
 }
 
 Renderer::Renderer(const RenderDef& def) : Renderer(def, createOffscreenContext(def.context)) {}
@@ -497,8 +353,6 @@ Camera Renderer::camera(const Scene& scene, const CameraDef& camera_def) const {
 
 TessellationDef Renderer::tessellationDef() const { return impl_->tessellation(); }
 
-long Renderer::backdropsDrawn() const { return impl_->backdrops_drawn; }
-
 void Renderer::render(const Scene& scene, const CameraDef& camera_def, RgbImage& out) {
   if (out.width != impl_->width || out.height != impl_->height) {
     out.resize(impl_->width, impl_->height);
@@ -513,8 +367,6 @@ void Renderer::render(const Scene& scene, const CameraDef& camera_def, RgbImage&
             static_cast<std::size_t>(out.width) * out.height);
 }
 
-namespace {
-
 void checkFits(const RgbaImage& out, int width, int height, int x_offset_px) {
   if (out.height != height || x_offset_px < 0 || x_offset_px + width > out.width ||
       out.pixels.size() != static_cast<std::size_t>(out.width) * out.height * 4) {
@@ -524,113 +376,12 @@ void checkFits(const RgbaImage& out, int width, int height, int x_offset_px) {
   }
 }
 
-void checkLayers(const Scene& backdrop, const Scene& scene) {
-  if (scene.extent != backdrop.extent || scene.extent_top_m != backdrop.extent_top_m) {
-    throw Error("renderer: a scene drawn over a backdrop must have the backdrop's extent");
-  }
-}
-
-// The rows of `rects`, sorted and merged where they meet.
-std::vector<RowSpan> rowsOf(const std::vector<PixelRect>& rects) {
-  std::vector<RowSpan> rows;
-  for (const PixelRect& r : rects) rows.push_back({r.y, r.y + r.height});
-  std::sort(rows.begin(), rows.end(),
-            [](const RowSpan& a, const RowSpan& b) { return a.begin < b.begin; });
-  std::vector<RowSpan> merged;
-  for (const RowSpan& s : rows) {
-    if (!merged.empty() && s.begin <= merged.back().end) {
-      merged.back().end = std::max(merged.back().end, s.end);
-    } else {
-      merged.push_back(s);
-    }
-  }
-  return merged;
-}
-
-// The scissor test on while it lives: whatever throws, later clears and copies are whole.
-class Scissor {
- public:
-  Scissor(const GlFunctions& gl, const PixelRect& r) : gl_(gl) {
-    gl_.Enable(GL_SCISSOR_TEST);
-    gl_.Scissor(r.x, r.y, r.width, r.height);
-  }
-  ~Scissor() { gl_.Disable(GL_SCISSOR_TEST); }
-  Scissor(const Scissor&) = delete;
-  Scissor& operator=(const Scissor&) = delete;
-
- private:
-  const GlFunctions& gl_;
-};
-
-}  // namespace
-
 void Renderer::renderInto(const Scene& scene, const CameraDef& camera_def, RgbaImage& out,
                           int x_offset_px) {
   checkFits(out, impl_->width, impl_->height, x_offset_px);
   const CurrentContext current(*impl_->context);
   impl_->drawWhole(scene, camera(scene, camera_def));
   impl_->readRgba(out.pixels.data() + static_cast<std::size_t>(x_offset_px) * 4, out.width);
-}
-
-void Renderer::renderInto(const Scene& backdrop, const Scene& scene, const CameraDef& camera_def,
-                          RgbaImage& out, int x_offset_px) {
-  checkFits(out, impl_->width, impl_->height, x_offset_px);
-  checkLayers(backdrop, scene);
-  const Camera cam = camera(scene, camera_def);
-  const CurrentContext current(*impl_->context);
-  impl_->drawBackdrop(backdrop, cam);
-  TessellationDef front = tessellationDef();
-  front.ground_clear = false;  // nothing is cleared over the backdrop
-  impl_->tessellator.tessellate(scene, cam, front, impl_->fonts, impl_->list);
-  impl_->drawItems(impl_->list);
-  impl_->resolve();
-  impl_->readRgba(out.pixels.data() + static_cast<std::size_t>(x_offset_px) * 4, out.width);
-  std::swap(impl_->list, impl_->last_front);
-  impl_->front_kept = true;
-}
-
-std::vector<RowSpan> Renderer::renderChanges(const Scene& backdrop, const Scene& scene,
-                                             const CameraDef& camera_def, RgbaImage& out,
-                                             int x_offset_px) {
-  Impl& m = *impl_;
-  checkFits(out, m.width, m.height, x_offset_px);
-  checkLayers(backdrop, scene);
-  const Camera cam = camera(scene, camera_def);
-  if (!m.front_kept || !m.backdropKept(backdrop, cam)) {
-    renderInto(backdrop, scene, camera_def, out, x_offset_px);
-    return {{0, m.height}};
-  }
-  const CurrentContext current(*m.context);
-  TessellationDef front = tessellationDef();
-  front.ground_clear = false;
-  m.tessellator.tessellate(scene, cam, front, m.fonts, m.list);
-  const std::vector<PixelRect> rects = changedRects(m.last_front, m.list);
-  // Until this image is whole, the framebuffer holds neither front: an error below must not
-  // leave the next call building on it.
-  m.front_kept = false;
-  // Each rectangle gets the backdrop back, then the whole front drawn inside it: the same
-  // pixels as drawing everything, as a pixel's value depends only on what covers it.
-  for (std::size_t i = 0; i < rects.size(); ++i) {
-    const PixelRect& r = rects[i];
-    m.copyRect(m.backdrop_fbo, m.drawFramebuffer(), r);
-    m.gl->BindFramebuffer(GL_FRAMEBUFFER, m.drawFramebuffer());
-    m.gl->Viewport(0, 0, m.width, m.height);
-    {
-      const Scissor scissor(*m.gl, r);
-      m.drawItems(m.list, i == 0);
-    }
-    m.resolveRect(r);
-  }
-  const std::vector<RowSpan> merged = rowsOf(rects);
-  m.gl->BindFramebuffer(GL_READ_FRAMEBUFFER, m.resolve_fbo);
-  for (const RowSpan& s : merged) {
-    m.readRows(out.pixels.data() + static_cast<std::size_t>(x_offset_px) * 4, out.width, s.begin,
-               s.end);
-  }
-  checkGl(*m.gl, "render");
-  std::swap(m.list, m.last_front);
-  m.front_kept = true;
-  return merged;
 }
 
 void Renderer::Impl::readRows(std::uint8_t* dst, int row_length_px, int y0, int y1) {
