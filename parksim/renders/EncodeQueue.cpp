@@ -44,8 +44,7 @@ void writeFrame(const std::string& path, std::span<const unsigned char> bytes) {
 }  // namespace
 
 EncodeQueue::EncodeQueue(int threads, int depth, int width, int height, PngCompression png)
-    : takes_changed_rows_(threads == 1 &&
-                          (png == PngCompression::kDefault || png == PngCompression::kFast)) {
+    : takes_changed_rows_(threads == 1 && keepsLastImage(png)) {
   for (int i = 0; i < depth; ++i) free_.push_back(std::make_unique<RgbaImage>(width, height));
   for (int i = 0; i < threads; ++i) workers_.emplace_back([this, png] { work(png); });
 }
@@ -61,11 +60,7 @@ std::unique_ptr<RgbaImage> EncodeQueue::acquire() {
 }
 
 void EncodeQueue::submit(std::string path, std::unique_ptr<RgbaImage> image) {
-  {
-    std::lock_guard lock(mutex_);
-    jobs_.push_back({std::move(path), std::move(image), std::nullopt});
-  }
-  job_cv_.notify_one();
+  push({std::move(path), std::move(image), std::nullopt});
 }
 
 void EncodeQueue::submit(std::string path, std::unique_ptr<RgbaImage> image,
@@ -74,9 +69,13 @@ void EncodeQueue::submit(std::string path, std::unique_ptr<RgbaImage> image,
     release(std::move(image));
     throw Error("frames: this encoder takes whole images only");
   }
+  push({std::move(path), std::move(image), std::move(changed)});
+}
+
+void EncodeQueue::push(Job job) {
   {
     std::lock_guard lock(mutex_);
-    jobs_.push_back({std::move(path), std::move(image), std::move(changed)});
+    jobs_.push_back(std::move(job));
   }
   job_cv_.notify_one();
 }

@@ -54,6 +54,7 @@ class EncodeQueue {
     std::optional<std::vector<RowSpan>> changed;  // unset: the whole image
   };
 
+  void push(Job job);
   void work(PngCompression png);
 
   mutable std::mutex mutex_;

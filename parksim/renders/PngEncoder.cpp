@@ -327,6 +327,10 @@ void PngEncoder::Impl::finish(std::size_t deflated) {
   out_size[current] = crc_at + 4 + 12;
 }
 
+bool keepsLastImage(PngCompression compression) {
+  return compression == PngCompression::kDefault || compression == PngCompression::kFast;
+}
+
 const char* toString(PngCompression compression) {
   switch (compression) {
     case PngCompression::kDefault: return "default";
@@ -388,8 +392,7 @@ std::span<const unsigned char> PngEncoder::encode(const RgbaImage& image,
     }
     end = rows.end;
   }
-  if (impl_->compression != PngCompression::kDefault &&
-      impl_->compression != PngCompression::kFast) {
+  if (!keepsLastImage(impl_->compression)) {
     throw Error(std::string("PNG: ") + toString(impl_->compression) +
                 " compression keeps no last image to take unchanged rows from");
   }
@@ -403,8 +406,7 @@ std::span<const unsigned char> PngEncoder::encode(const RgbaImage& image,
 
 std::span<const unsigned char> PngEncoder::Impl::encode(const Pixels& image) {
   checkImage(image);
-  const bool banded =
-      compression == PngCompression::kDefault || compression == PngCompression::kFast;
+  const bool banded = keepsLastImage(compression);
   // The others read RGB rows as they are; they keep nothing from one image to the next. (An RGB
   // image for kSmall went to stb in encode(const RgbImage&).)
   Pixels whole = image;

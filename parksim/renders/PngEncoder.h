@@ -37,6 +37,10 @@ enum class PngCompression {
   kSmall,
 };
 
+/// Whether a PngEncoder keeps the last image it encoded (kDefault and kFast, which compress in
+/// bands and copy the unchanged ones), so that it can be told which rows changed.
+bool keepsLastImage(PngCompression compression);
+
 /// "default", "fast", "stored", "small".
 const char* toString(PngCompression compression);
 /// Parses what toString gives; throws Error naming the four otherwise.

@@ -269,7 +269,10 @@ TEST(PngEncoderTest, ChangedRowsNeedTheLastImageAndSortedRows) {
   }
   EXPECT_EQ(bytesOf(fresh.encode(frame, some)), encodePng(filmFrame(0, 470), PngCompression::kFast))
       << "a refused call leaves the last image usable";
+  EXPECT_TRUE(keepsLastImage(PngCompression::kFast));
+  EXPECT_TRUE(keepsLastImage(PngCompression::kDefault));
   for (PngCompression c : {PngCompression::kStored, PngCompression::kSmall}) {
+    EXPECT_FALSE(keepsLastImage(c)) << toString(c);
     PngEncoder keeps_nothing(c);
     keeps_nothing.encode(frame);
     EXPECT_THROW(keeps_nothing.encode(frame, some), Error) << toString(c);
