@@ -17,7 +17,8 @@ namespace parksim::app {
 using enum cli::ExitCode;  // kExitOk, ..., shared with parksim-bench (parksim/cli/Program.h)
 
 /// The exit code of a single-episode command (plan, run) for its verdict: met 0, plan_failed
-/// 1, contact, goal_missed and tolerance_missed 4.
+/// 1, contact, goal_missed and tolerance_missed 4, plan_invalid 5, planner_error and
+/// controller_error 6.
 int exitCodeFor(EpisodeStatus status);
 
 using cli::OutputOptions;  // -q, -v and --progress, which every command takes

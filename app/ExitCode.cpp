@@ -6,6 +6,9 @@ int exitCodeFor(EpisodeStatus status) {
   switch (status) {
     case EpisodeStatus::kMet: return kExitOk;
     case EpisodeStatus::kPlanFailed: return kExitUnsolved;
+    case EpisodeStatus::kPlanInvalid: return kExitPlanInvalid;
+    case EpisodeStatus::kPlannerError:
+    case EpisodeStatus::kControllerError: return kExitUserCodeFailed;
     case EpisodeStatus::kContact:
     case EpisodeStatus::kGoalMissed:
     case EpisodeStatus::kToleranceMissed: return kExitToleranceNotMet;

@@ -19,6 +19,8 @@ enum ExitCode : int {
   kExitInternal = 3,         ///< a bug or an environment failure (out of memory, no OpenGL, ...)
   kExitToleranceNotMet = 4,  ///< run: goal or tracking tolerance missed, or a contact;
                              ///< compare: a regression
+  kExitPlanInvalid = 5,      ///< plan, run: a plan parksim did not make failed its check
+  kExitUserCodeFailed = 6,   ///< plan, run: the user's planner or controller failed
 };
 
 /// -q, -v and --progress, which every command takes.

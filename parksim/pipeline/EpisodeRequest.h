@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 
+#include "parksim/core/ParamMap.h"
 #include "parksim/core/TrackingTolerance.h"
 #include "parksim/core/Trajectory.h"
 #include "parksim/planner/PlanScenario.h"
@@ -91,6 +92,8 @@ struct PipelineProgress {
 /// and the command line's options state them without building a whole request.
 inline constexpr const char* kDefaultRealism = "world";
 inline constexpr std::uint64_t kDefaultNoiseSeed = 1;
+/// The default controller: parksim's tracking controller (sim/TrackingController.h).
+inline constexpr const char* kDefaultController = "tracking";
 
 /// A FigureDef that draws nothing (an EpisodeRequest's default).
 inline FigureDef noFigures() {
@@ -111,6 +114,11 @@ struct EpisodeRequest {
   std::optional<Trajectory> given_plan;
   /// Where given_plan came from, for messages and metrics.json ("plan_source").
   std::string given_plan_source;
+
+  /// The controller that drives the plan in closed-loop tracking, by its registered name (a
+  /// built-in or a plugin's), and its parameters (ParamMap.h).
+  std::string controller = kDefaultController;
+  ParamMap controller_params;
 
   /// false: plan only (`parksim plan`, `parksim render`); the verdict is met when solved.
   bool drive = true;

@@ -24,6 +24,9 @@ const char* toString(EpisodeStatus status) {
   switch (status) {
     case EpisodeStatus::kMet: return "met";
     case EpisodeStatus::kPlanFailed: return "plan_failed";
+    case EpisodeStatus::kPlanInvalid: return "plan_invalid";
+    case EpisodeStatus::kPlannerError: return "planner_error";
+    case EpisodeStatus::kControllerError: return "controller_error";
     case EpisodeStatus::kContact: return "contact";
     case EpisodeStatus::kGoalMissed: return "goal_missed";
     case EpisodeStatus::kToleranceMissed: return "tolerance_missed";
@@ -32,8 +35,10 @@ const char* toString(EpisodeStatus status) {
 }
 
 std::vector<EpisodeStatus> allEpisodeStatuses() {
-  return {EpisodeStatus::kMet, EpisodeStatus::kPlanFailed, EpisodeStatus::kContact,
-          EpisodeStatus::kGoalMissed, EpisodeStatus::kToleranceMissed};
+  return {
+      EpisodeStatus::kMet,          EpisodeStatus::kPlanFailed,      EpisodeStatus::kPlanInvalid,
+      EpisodeStatus::kPlannerError, EpisodeStatus::kControllerError, EpisodeStatus::kContact,
+      EpisodeStatus::kGoalMissed,   EpisodeStatus::kToleranceMissed};
 }
 
 EpisodeStatus episodeStatusFromString(const std::string& name) {

@@ -22,8 +22,16 @@ namespace parksim {
 
 /// Outcome classes, in the order they are judged: the first that applies is the status.
 enum class EpisodeStatus {
-  kMet,              ///< "met": solved, driven, within every bound
-  kPlanFailed,       ///< "plan_failed": no plan, so nothing was driven
+  kMet,         ///< "met": solved, driven, within every bound
+  kPlanFailed,  ///< "plan_failed": no plan, so nothing was driven
+  /// "plan_invalid": a plan parksim did not make (a user planner's, a plan file) failed the
+  /// check before driving (collision, lot bounds, speed or acceleration limits); not driven
+  kPlanInvalid,
+  /// "planner_error": the user's planner threw, returned garbage, crashed or ran out of time
+  kPlannerError,
+  /// "controller_error": the user's controller threw, returned NaN or out-of-range commands,
+  /// crashed or ran out of time
+  kControllerError,
   kContact,          ///< "contact": more contact events than TrackingTolerance::max_contacts
   kGoalMissed,       ///< "goal_missed": outside the scenario's goal tolerance at the end
   kToleranceMissed,  ///< "tolerance_missed": a TrackingTolerance bound exceeded

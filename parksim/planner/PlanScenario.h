@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "parksim/core/FootprintChecker.h"
+#include "parksim/core/ParamMap.h"
 #include "parksim/core/Scenario.h"
 #include "parksim/planner/BalkcomMasonSteering.h"
 #include "parksim/planner/HybridAStar.h"
@@ -63,6 +64,8 @@ struct PlanSetup {
                      .max_iterations = kAutoIterations,
                      .smooth = true,
                      .smoothing_attempts = 300};
+  /// Parameters of the selected planner by name (ParamMap.h), for the planner to read.
+  ParamMap planner_params;
   SteeringKind steering_kind = SteeringKind::kBalkcomMason;
   /// Move-to-pose parameters; its to-goal tolerance is taken from the scenario's goal region,
   /// scaled by goal_tolerance_fraction.
