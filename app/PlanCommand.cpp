@@ -38,8 +38,8 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
     cli::OutputDir out(opt->out);
     request.out_dir = out.path();
     const PlanSetup setup = resolvedPlanSetup(request.plan, request.world->scenario);
-    cli::Progress progress(std::string("planning (") + toString(setup.planner.kind) + ")",
-                           std::max(1, setup.planner.max_iterations),
+    cli::Progress progress(std::string("planning (") + setup.planner + ")",
+                           std::max(1, setup.search.max_iterations),
                            cli::progressWanted(output.progress, output.quiet));
     request.progress.plan = cli::planProgress(progress);
     const EpisodeOutcome outcome = runEpisodePipeline(request);
@@ -55,8 +55,8 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
     std::printf(
         "solved %s with %s (seed %llu): %d iterations, %d tree nodes, path %.3f m, %.1f s of "
         "motion, planned in %.2f ms\nwrote %s/trajectory.csv and %s/plan.json\n",
-        cli::printable(request.world->scenario.name).c_str(), toString(setup.planner.kind),
-        static_cast<unsigned long long>(setup.planner.seed), result.stats.iterations,
+        cli::printable(request.world->scenario.name).c_str(), cli::printable(setup.planner).c_str(),
+        static_cast<unsigned long long>(setup.search.seed), result.stats.iterations,
         result.stats.tree_size, result.trajectory.pathLength(robot), result.trajectory.duration(),
         1e3 * result.stats.times.total_s, dir.c_str(), dir.c_str());
     return kExitOk;

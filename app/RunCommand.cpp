@@ -261,6 +261,12 @@ void printVerdict(const EpisodeOutcome& out) {
     prefix = std::to_string(n - out.realisationsMet()) + " of " + std::to_string(n) +
              " realisations failed; first (noise seed " + std::to_string(seed) + "): ";
   }
+  // Statuses whose reason does not say what failed carry their name.
+  const EpisodeStatus s = out.verdict.status;
+  if (s == EpisodeStatus::kPlanInvalid || s == EpisodeStatus::kPlannerError ||
+      s == EpisodeStatus::kControllerError) {
+    prefix += std::string(toString(s)) + ": ";
+  }
   std::fprintf(stderr, "parksim run: %s%s\n", prefix.c_str(),
                printable(out.verdict.reason).c_str());
 }
@@ -285,9 +291,10 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     request.out_dir = out.path();
     const bool show = cli::progressWanted(output.progress, output.quiet);
     const Scenario& scenario = request.world->scenario;
-    const PlanSetup setup = resolvedPlanSetup(request.plan, scenario);
-    cli::Progress planning(std::string("planning (") + toString(setup.planner.kind) + ")",
-                           std::max(1, setup.planner.max_iterations), show && !request.given_plan);
+    const PlanSetup setup =
+        resolvedPlanSetup(request.plan, scenario, componentsOf(request).planners);
+    cli::Progress planning(std::string("planning (") + setup.planner + ")",
+                           std::max(1, setup.search.max_iterations), show && !request.given_plan);
     request.progress.plan = cli::planProgress(planning);
     std::unique_ptr<cli::Progress> frames;
     request.progress.frames = [&frames, show](long done, long expected) {

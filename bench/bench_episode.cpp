@@ -40,8 +40,8 @@ Scenario world(long index, long solver_iterations) {
 
 PlanSetup setup() {
   PlanSetup p;
-  p.planner.seed = 1;
-  p.planner.record_tree = false;
+  p.search.seed = 1;
+  p.search.record_tree = false;
   return p;
 }
 

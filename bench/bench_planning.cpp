@@ -90,26 +90,27 @@ Options parse(int argc, char** argv) {
 // The configurations to run on `scenario`, seed left to the caller.
 std::vector<PlanSetup> configurations(const Options& o, const Scenario& scenario) {
   PlanSetup base;
-  base.planner.record_tree = false;
+  base.search.record_tree = false;
   if (o.configs == "default") return {base};
   if (o.configs == "previous") {
     PlanSetup previous = base;
-    previous.planner.kind = PlannerKind::kHybridAStar;
-    previous.planner.smooth = false;
-    previous.planner.smoothing_attempts = 100;
+    previous.planner = "hybrid-a-star";
+    previous.search.smooth = false;
+    previous.search.smoothing_attempts = 100;
     previous.steering_kind = SteeringKind::kReedsShepp;
     previous.timing_period_s = 0.1;
     previous.start_jerk_radps3 = 0.0;
     return {previous};
   }
   std::vector<PlanSetup> out;
-  for (PlannerKind kind : allPlannerKinds()) {
+  for (const std::string& name : builtInPlanners().names()) {
+    const PlannerInfo& info = builtInPlanners().find(name).info;
     PlanSetup s = base;
-    s.planner.kind = kind;
-    s.planner.smooth = true;
-    s.planner.max_iterations = o.budget_scale * defaultIterationBudget(kind, scenario.lot);
-    s.planner.smoothing_attempts *= o.budget_scale;
-    if (!plannerUsesSteering(kind)) {
+    s.planner = name;
+    s.search.smooth = true;
+    s.search.max_iterations = o.budget_scale * defaultIterationBudget(info, scenario);
+    s.search.smoothing_attempts *= o.budget_scale;
+    if (!info.uses_steering) {
       out.push_back(s);
       continue;
     }
@@ -120,8 +121,8 @@ std::vector<PlanSetup> configurations(const Options& o, const Scenario& scenario
     }
   }
   PlanSetup anytime = base;
-  anytime.planner.max_time_s = o.anytime_s;
-  anytime.planner.smoothing_attempts *= o.budget_scale;
+  anytime.search.max_time_s = o.anytime_s;
+  anytime.search.smoothing_attempts *= o.budget_scale;
   out.push_back(anytime);
   return out;
 }
@@ -157,7 +158,7 @@ int run(const Options& o) {
       for (const PlanSetup& config : configs) {
         bench::ParksimRunDef def;
         def.setup = config;
-        def.setup.planner.seed = static_cast<std::uint64_t>(seed);
+        def.setup.search.seed = static_cast<std::uint64_t>(seed);
         records.push_back(bench::runParksim(scenario, world, def));
         const bench::BenchRecord& r = records.back();
         std::fprintf(stderr, "%s %s %s %s seed %d: %s %.3f s in %.1f ms\n", r.scenario.c_str(),

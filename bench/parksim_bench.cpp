@@ -70,10 +70,6 @@ struct BenchOptions {
   std::string ompl_log;
 };
 
-// Planners that keep improving their path until their budget ends get a second, time-budgeted
-// run per seed for the path length they reach in --anytime-s.
-bool isAnytime(PlannerKind kind) { return kind == PlannerKind::kRrtStar; }
-
 double loadAverage() {
   double load[1] = {0.0};
   return getloadavg(load, 1) == 1 ? load[0] : -1.0;
@@ -120,7 +116,7 @@ using cli::OutputOptions;
 
 // What one bench runs: the option lists parsed, the worlds read, every budget checked.
 struct BenchPlan {
-  std::vector<PlannerKind> kinds;
+  std::vector<std::string> planners;
   std::vector<SteeringKind> steerings;
   std::vector<bool> smoothing;
   std::vector<OmplPlanner> ompl_planners;
@@ -134,9 +130,12 @@ BenchPlan benchPlanFrom(const BenchOptions& o) {
   if (o.seeds < 1) throw Error("--seeds must be at least 1");
   BenchPlan b;
   if (o.planners.empty()) {
-    b.kinds = allPlannerKinds();
+    b.planners = builtInPlanners().names();
   } else if (o.planners != std::vector<std::string>{"none"}) {  // "none": OMPL alone
-    for (const std::string& name : o.planners) b.kinds.push_back(plannerKindFromString(name));
+    for (const std::string& name : o.planners) {
+      (void)builtInPlanners().find(name);  // an unknown name fails here, before any run
+      b.planners.push_back(name);
+    }
   }
   if (o.steerings.empty()) {
     b.steerings = allSteeringKinds();
@@ -173,22 +172,25 @@ void runParksimPlanners(const BenchOptions& o, const BenchPlan& b, const Scenari
                         const BulletCollisionWorld& world, int seed, const PathCheckDef& check,
                         std::vector<BenchRecord>& all) {
   for (std::size_t si = 0; si < b.steerings.size(); ++si) {
-    for (PlannerKind kind : b.kinds) {
-      if (!plannerUsesSteering(kind) && si > 0) continue;
+    for (const std::string& name : b.planners) {
+      const PlannerInfo& info = builtInPlanners().find(name).info;
+      if (!info.uses_steering && si > 0) continue;
       for (bool smooth : b.smoothing) {
         ParksimRunDef def;
         def.setup.steering_kind = b.steerings[si];
-        def.setup.planner.kind = kind;
-        def.setup.planner.seed = static_cast<std::uint64_t>(seed);
-        def.setup.planner.max_iterations = b.max_iterations;
-        def.setup.planner.max_time_s = o.time_limit_s;
-        def.setup.planner.record_tree = false;
-        def.setup.planner.smooth = smooth;
+        def.setup.planner = name;
+        def.setup.search.seed = static_cast<std::uint64_t>(seed);
+        def.setup.search.max_iterations = b.max_iterations;
+        def.setup.search.max_time_s = o.time_limit_s;
+        def.setup.search.record_tree = false;
+        def.setup.search.smooth = smooth;
         def.check = check;
         all.push_back(runParksim(scenario, world, def));
-        if (isAnytime(kind)) {
-          def.setup.planner.max_iterations = INT_MAX;
-          def.setup.planner.max_time_s = o.anytime_s;
+        // Planners that keep improving their path until their budget ends get a second,
+        // time-budgeted run per seed for the path length they reach in --anytime-s.
+        if (info.anytime) {
+          def.setup.search.max_iterations = INT_MAX;
+          def.setup.search.max_time_s = o.anytime_s;
           all.push_back(runParksim(scenario, world, def));
         }
       }

@@ -15,7 +15,7 @@ double threadCpuSeconds() {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-std::string budgetName(const PlannerDef& planner) {
+std::string budgetName(const SearchDef& planner) {
   std::string name;
   // INT_MAX iterations is how a purely time-budgeted run is asked for: leave it out.
   if (planner.max_iterations < INT_MAX) {
@@ -49,19 +49,21 @@ BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& wor
   const double cpu = threadCpuSeconds() - cpu0;
   BenchRecord r;
   r.library = "parksim";
-  r.planner = toString(def.setup.planner.kind);
-  if (def.setup.planner.smooth) r.planner += "+smooth";
+  r.planner = def.setup.planner;
+  if (def.setup.search.smooth) r.planner += "+smooth";
   // The A* planners drive their own motion primitives and analytic curves, whatever the
   // steering.
-  switch (def.setup.planner.kind) {
-    case PlannerKind::kHybridAStar: r.space = "primitives+reeds-shepp"; break;
-    case PlannerKind::kTimeAStar: r.space = "primitives+balkcom-mason"; break;
-    default: r.space = toString(def.setup.steering_kind); break;
+  if (def.setup.planner == "hybrid-a-star") {
+    r.space = "primitives+reeds-shepp";
+  } else if (def.setup.planner == "time-a-star") {
+    r.space = "primitives+balkcom-mason";
+  } else {
+    r.space = toString(def.setup.steering_kind);
   }
   r.scenario = scenario.name;
-  r.seed = def.setup.planner.seed;
+  r.seed = def.setup.search.seed;
   // The budget as planned: an automatic one resolved for this lot.
-  r.budget = budgetName(resolvedPlanSetup(def.setup, scenario).planner);
+  r.budget = budgetName(resolvedPlanSetup(def.setup, scenario).search);
   r.solved = result.solved();
   r.status = toString(result.status);
   r.time_total_s = result.stats.times.total_s;

@@ -25,7 +25,7 @@ BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& wor
 
 /// "iterations=N", "time=Ss" or both joined with '+': what ends a parksim run. INT_MAX
 /// iterations (a run budgeted by time alone) is left out.
-std::string budgetName(const PlannerDef& planner);
+std::string budgetName(const SearchDef& planner);
 
 /// CPU time the calling thread has used, s.
 double threadCpuSeconds();

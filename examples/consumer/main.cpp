@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
     // One call: plan, drive, judge, with parksim's defaults (those of `parksim run`).
     parksim::EpisodeRequest request;
     request.world = std::make_shared<const parksim::World>(parksim::loadWorld(argv[1]));
-    if (argc > 2) request.plan.planner.seed = std::strtoull(argv[2], nullptr, 10);
+    if (argc > 2) request.plan.search.seed = std::strtoull(argv[2], nullptr, 10);
     const parksim::EpisodeOutcome outcome = parksim::runEpisodePipeline(request);
     if (!outcome.driven()) {
       std::fprintf(stderr, "park: %s\n", outcome.verdict.reason.c_str());

@@ -5,6 +5,8 @@
 #include "parksim/cli/Validators.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
+#include "parksim/core/ParamSet.h"
+#include "parksim/core/Text.h"
 
 namespace parksim::cli {
 
@@ -19,9 +21,14 @@ std::string namesOf(const std::vector<Kind>& kinds) {
 
 }  // namespace
 
-void PlanCliOptions::addTo(CLI::App& sub) {
-  sub.add_option("--planner", planner, "one of: " + namesOf(allPlannerKinds()))
+void PlanCliOptions::addTo(CLI::App& sub, const PlannerRegistry& planners) {
+  sub.add_option("--planner", planner,
+                 "planner by name: " + joinNames(planners.names()) +
+                     " (or a plugin's: --plugin); `parksim planners` lists them with their "
+                     "parameters")
       ->capture_default_str();
+  sub.add_option("--planner-param", planner_params,
+                 "NAME=VALUE: a parameter of the selected planner (repeatable)");
   sub.add_option("--steering", steering,
                  "steering function, one of: " + namesOf(allSteeringKinds()))
       ->capture_default_str();
@@ -72,15 +79,19 @@ int parseIterationBudget(const std::string& text, const std::string& option) {
 
 PlanSetup PlanCliOptions::toSetup() const {
   PlanSetup setup;
-  setup.planner.kind = plannerKindFromString(planner);
-  setup.planner.seed = seed;
-  setup.planner.max_iterations = parseIterationBudget(max_iterations);
-  setup.planner.max_time_s = time_limit_s;
+  setup.planner = planner;
+  for (const std::string& text : planner_params) {
+    auto [name, value] = splitParamAssignment(text, "--planner-param");
+    setup.planner_params[name] = canonicalParamText(value);
+  }
+  setup.search.seed = seed;
+  setup.search.max_iterations = parseIterationBudget(max_iterations);
+  setup.search.max_time_s = time_limit_s;
   setup.timing = timingKindFromString(timing);
   setup.feedback_headroom = feedback_headroom;
   setup.reeds_shepp.turning_radius_m = turning_radius_m;
-  setup.planner.smooth = smooth;
-  setup.planner.smoothing_attempts = smoothing_attempts;
+  setup.search.smooth = smooth;
+  setup.search.smoothing_attempts = smoothing_attempts;
   setup.steering_kind = steeringKindFromString(steering);
   return setup;
 }

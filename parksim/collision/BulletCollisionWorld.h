@@ -55,7 +55,7 @@ class BulletCollisionWorld final : public FootprintChecker {
   bool isFree(const Pose2& pose, double margin_m = 0.0) const override;
 
   /// Names of the obstacles the footprint penetrates, in scenario order (empty when free).
-  std::vector<std::string> overlapping(const Pose2& pose, double margin_m = 0.0) const;
+  std::vector<std::string> overlapping(const Pose2& pose, double margin_m = 0.0) const override;
 
   /// Distance from the footprint (no margin) to the nearest obstacle in the plane, m: 0 when
   /// touching or overlapping, +infinity when there are no obstacles. Computed exactly in double

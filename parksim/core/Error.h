@@ -20,4 +20,19 @@ class EnvironmentError : public Error {
   using Error::Error;
 };
 
+/// Code a user brought (a plugin's, a Python object's or a command's planner or controller)
+/// failed: it threw, returned something unusable (NaN, a malformed plan, commands out of range),
+/// ran out of its time, or its process died. Not an Error: the input was fine, and an episode
+/// ends in planner_error or controller_error for it (pipeline/Verdict.h) while a sweep goes on.
+class UserCodeError : public std::runtime_error {
+ public:
+  enum class Component { kPlanner, kController };
+  UserCodeError(Component component, const std::string& what)
+      : std::runtime_error(what), component_(component) {}
+  Component component() const { return component_; }
+
+ private:
+  Component component_;
+};
+
 }  // namespace parksim

@@ -10,8 +10,8 @@ namespace parksim {
 
 std::string planCaption(const Scenario& scenario, const PlanSetup& setup,
                         const PlanResult& result) {
-  const std::string head = scenario.name + ", " + toString(setup.planner.kind) + " (seed " +
-                           std::to_string(setup.planner.seed) + "): ";
+  const std::string head =
+      scenario.name + ", " + setup.planner + " (seed " + std::to_string(setup.search.seed) + "): ";
   if (result.solved()) {
     const int cusps = result.trajectory.cusps(scenario.robot);
     return head + std::to_string(result.stats.tree_size) + " tree nodes, path " +
@@ -23,8 +23,8 @@ std::string planCaption(const Scenario& scenario, const PlanSetup& setup,
 }
 
 PlanFigure planFigure(const Scenario& scenario, const PlanSetup& setup, const PlanResult& result) {
-  return {toString(setup.planner.kind), planCaption(scenario, setup, result), result.trajectory,
-          result.waypoints, result.tree_edges};
+  return {setup.planner, planCaption(scenario, setup, result), result.trajectory, result.waypoints,
+          result.tree_edges};
 }
 
 SteeringExample steeringExample(const Scenario& scenario, const std::optional<Pose2>& target) {

@@ -22,24 +22,53 @@ namespace {
 // first and the last row are recorded.
 constexpr int kFirstAndLastRowOnly = INT_MAX / 2;
 
+// A plan parksim did not make (a file's, a user planner's) is checked before it is driven:
+// one that fails is never driven (plan_invalid).
+void checkForeignPlan(const Scenario& scenario, const BulletCollisionWorld& collision,
+                      const PlanSetup& setup, EpisodeOutcome& out) {
+  if (const std::optional<PlanViolation> v =
+          checkPlan(scenario, collision, out.trajectory, setup.validation)) {
+    out.verdict = planInvalidVerdict(*v);
+  }
+}
+
 // Plans, or takes the given plan. Sets the trajectory to drive, the plan's summary, and the
-// plan_failed verdict when the planner found nothing.
+// verdict when there is nothing to drive: plan_failed when the planner found nothing,
+// planner_error when a user's planner failed, plan_invalid when a plan parksim did not make
+// fails its check.
 void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
   const Scenario& scenario = request.world->scenario;
+  const BulletCollisionWorld collision(scenario);
   if (request.given_plan) {
     out.trajectory = *request.given_plan;
     out.plan_summary = trajectorySummary(scenario, out.trajectory);
     if (!request.given_plan_source.empty()) out.plan_summary["source"] = request.given_plan_source;
+    checkForeignPlan(scenario, collision, out.plan_setup, out);
     return;
   }
-  const BulletCollisionWorld collision(scenario);
-  out.plan = planScenario(scenario, collision, out.plan_setup, request.progress.plan);
-  out.plan_summary = planSummary(scenario, out.plan_setup, *out.plan);
-  if (out.plan->solved()) {
-    out.trajectory = out.plan->trajectory;
-  } else {
-    out.verdict = planFailedVerdict(*out.plan);
+  const Components& components = componentsOf(request);
+  try {
+    out.plan = planScenario(scenario, collision, out.plan_setup, request.progress.plan,
+                            components.planners);
+  } catch (const UserCodeError& e) {
+    out.verdict = userCodeVerdict(e);
+    return;
   }
+  out.plan_summary = planSummary(scenario, out.plan_setup, *out.plan);
+  if (!out.plan->solved()) {
+    out.verdict = planFailedVerdict(*out.plan);
+    return;
+  }
+  out.trajectory = out.plan->trajectory;
+  if (!components.planners.find(out.plan_setup.planner).info.built_in) {
+    checkForeignPlan(scenario, collision, out.plan_setup, out);
+  }
+}
+
+// The controller of one realisation: a fresh one from the registry (closed loop).
+EpisodeController controllerFor(const EpisodeRequest& request) {
+  const ControllerEntry& entry = componentsOf(request).controllers.find(request.controller);
+  return {entry.make(request.controller_params), entry.info.name, entry.info.built_in};
 }
 
 // A recorder filming into the request's directory, with the plan drawn.
@@ -61,7 +90,10 @@ RecordingResult finishFilm(const EpisodeRequest& request, FrameRecorder& recorde
 // Drives the plan under one noise seed; `recorder` (optional) films it.
 EpisodeResult drive(const EpisodeRequest& request, const Trajectory& plan,
                     const ExecutionDef& execution, FrameRecorder* recorder) {
-  if (recorder == nullptr) return runEpisode(request.world->scenario, plan, execution);
+  if (recorder == nullptr) {
+    return runEpisode(request.world->scenario, plan, execution, {}, 1.0 / 30.0,
+                      controllerFor(request));
+  }
   const double fps = request.film.frames.fps;
   const long expected = static_cast<long>(plan.duration() * fps) + 1;
   const EpisodeObserver observer = [&](const EpisodeSample& sample) {
@@ -69,7 +101,8 @@ EpisodeResult drive(const EpisodeRequest& request, const Trajectory& plan,
     // Written, not handed over: the drawing may be far behind the simulation.
     if (request.progress.frames) request.progress.frames(recorder->framesWritten(), expected);
   };
-  return runEpisode(request.world->scenario, plan, execution, observer, 1.0 / fps);
+  return runEpisode(request.world->scenario, plan, execution, observer, 1.0 / fps,
+                    controllerFor(request));
 }
 
 // Every realisation, each judged; the first is kept whole (and filmed when asked).
@@ -85,7 +118,8 @@ void driveStage(const EpisodeRequest& request, const EpisodeSettings& settings,
     ExecutionDef again = settings.execution;
     again.noise_seed = settings.execution.noise_seed + static_cast<std::uint64_t>(i);
     again.csv_stride_steps = kFirstAndLastRowOnly;
-    const EpisodeMetrics m = runEpisode(scenario, out.trajectory, again).metrics;
+    const EpisodeMetrics m =
+        runEpisode(scenario, out.trajectory, again, {}, 1.0 / 30.0, controllerFor(request)).metrics;
     out.realisations.push_back(
         {again.noise_seed, m, judgeEpisode(scenario, settings.tolerance, m)});
   }
@@ -213,7 +247,7 @@ EpisodeOutcome runEpisodePipeline(const EpisodeRequest& request) {
   out.world = request.world;
   out.plan_setup = settings.plan;
   planStage(request, out);
-  if (out.verdict.status == EpisodeStatus::kPlanFailed || !request.drive) {
+  if (!out.verdict.met() || !request.drive) {
     if (keepsFiles(request, out.verdict)) writeFiles(request, out);
     return out;
   }

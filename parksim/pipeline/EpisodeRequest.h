@@ -20,6 +20,7 @@
 #include "parksim/core/TrackingTolerance.h"
 #include "parksim/core/Trajectory.h"
 #include "parksim/planner/PlanScenario.h"
+#include "parksim/plugin/Components.h"
 #include "parksim/renders/Figures.h"
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/results/ExecutedFile.h"
@@ -115,6 +116,9 @@ struct EpisodeRequest {
   /// Where given_plan came from, for messages and metrics.json ("plan_source").
   std::string given_plan_source;
 
+  /// The planners and controllers plan.planner and `controller` are looked up in: parksim's own
+  /// and the plugins a front-end loaded (plugin/Components.h). Null: parksim's own.
+  std::shared_ptr<const Components> components;
   /// The controller that drives the plan in closed-loop tracking, by its registered name (a
   /// built-in or a plugin's), and its parameters (ParamMap.h).
   std::string controller = kDefaultController;

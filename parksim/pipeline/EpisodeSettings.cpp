@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
 #include "parksim/core/Text.h"
+#include "parksim/planner/PlanCheck.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/sim/Episode.h"
 
@@ -32,6 +35,9 @@ void checkGivenPlan(const EpisodeRequest& request, const Scenario& scenario) {
   const std::string& source =
       request.given_plan_source.empty() ? std::string("plan") : request.given_plan_source;
   if (request.given_plan->points.empty()) throw Error(source + ": the plan has no points");
+  if (const std::optional<std::string> problem = malformedPlan(*request.given_plan)) {
+    throw Error(source + ": " + *problem);
+  }
   const Pose2& first = request.given_plan->points.front().pose;
   if (positionDistance(first, scenario.start) > 0.001 ||
       headingDistance(first, scenario.start) > degToRad(0.5)) {
@@ -52,7 +58,7 @@ EpisodeSettings resolveSettings(const EpisodeRequest& request) {
   checkRealismName(request.realism);
   const World& world = *request.world;
   EpisodeSettings s;
-  s.plan = resolvedPlanSetup(request.plan, world.scenario);
+  s.plan = resolvedPlanSetup(request.plan, world.scenario, componentsOf(request).planners);
   s.execution = request.execution;
   if (request.realism != "world") {
     s.execution.realism = presetRealism(request.realism);
@@ -94,8 +100,17 @@ void checkEpisodeRequest(const EpisodeRequest& request) {
       }
     }
   } else {
-    checkPlanningLimits(scenario, settings.plan);
+    checkPlanningLimits(scenario, settings.plan, componentsOf(request).planners);
+    // Unknown parameters and bad values are the input's fault: refused before any work.
+    (void)componentsOf(request).planners.make(settings.plan.planner, settings.plan.planner_params);
   }
+  if (request.drive && settings.execution.tracking == TrackingMode::kClosed) {
+    (void)componentsOf(request).controllers.make(request.controller, request.controller_params);
+  }
+}
+
+const Components& componentsOf(const EpisodeRequest& request) {
+  return request.components ? *request.components : *builtInComponents();
 }
 
 }  // namespace parksim

@@ -21,15 +21,19 @@ struct EpisodeSettings {
 inline constexpr int kMaxRealisations = 10'000;
 
 /// Checks everything about `request` that needs no planning or simulation: a world, a known
-/// realism, realisations and success fraction in range, a given plan that starts at the
-/// world's start and whose episode stays within the step and frame limits, a planning setup
-/// within the planning limits. Throws Error with one line naming the value (and the plan file).
-/// runEpisodePipeline calls it first; front-ends call it before they create an output
+/// realism, realisations and success fraction in range, a given plan that is well-formed
+/// (PlanCheck.h's malformedPlan), starts at the world's start and whose episode stays within the
+/// step and frame limits, a planning setup within the planning limits, a registered planner and
+/// controller that accept their parameters. Throws Error with one line naming the value (and the
+/// plan file). runEpisodePipeline calls it first; front-ends call it before they create an output
 /// directory, so bad input writes nothing.
 void checkEpisodeRequest(const EpisodeRequest& request);
 
 /// The settings `request` runs with. Throws Error on an unknown realism.
 EpisodeSettings resolveSettings(const EpisodeRequest& request);
+
+/// The planners and controllers `request` selects from (request.components, or parksim's own).
+const Components& componentsOf(const EpisodeRequest& request);
 
 /// The executed-row stride for `rate_hz` rows per simulated second at `time_step_s` (1 for
 /// rate 0: every step).

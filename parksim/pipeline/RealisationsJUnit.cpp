@@ -10,10 +10,10 @@ std::vector<JUnitProperty> episodeProperties(const EpisodeOutcome& out, std::uin
   const PlanSetup& p = out.plan_setup;
   std::vector<JUnitProperty> props = {{"world", out.world->scenario.name},
                                       {"world_file", out.world->scenario.source_path},
-                                      {"planner", toString(p.planner.kind)},
+                                      {"planner", p.planner},
                                       {"steering", toString(p.steering_kind)},
-                                      {"seed", std::to_string(p.planner.seed)},
-                                      {"max_iterations", std::to_string(p.planner.max_iterations)},
+                                      {"seed", std::to_string(p.search.seed)},
+                                      {"max_iterations", std::to_string(p.search.max_iterations)},
                                       {"timing", toString(p.timing)},
                                       {"tracking", toString(out.execution.tracking)},
                                       {"realism", out.execution.realism.name},
@@ -36,8 +36,7 @@ std::string metricsText(const EpisodeMetrics& m) {
 JUnitReport realisationsJUnit(const EpisodeOutcome& out) {
   const std::string realism = out.driven() ? out.execution.realism.name : "-";
   JUnitSuite suite;
-  suite.name =
-      out.world->scenario.name + " / " + toString(out.plan_setup.planner.kind) + " / " + realism;
+  suite.name = out.world->scenario.name + " / " + out.plan_setup.planner + " / " + realism;
   suite.properties = {{"verdict", toString(out.verdict.status)},
                       {"realisations", std::to_string(out.realisations.size())},
                       {"realisations_met", std::to_string(out.realisationsMet())}};

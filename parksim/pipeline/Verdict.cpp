@@ -55,8 +55,19 @@ Verdict planFailedVerdict(const PlanResult& plan) {
           std::string("unsolved plan (") + toString(plan.status) + "): " + plan.message};
 }
 
+Verdict planInvalidVerdict(const PlanViolation& violation) {
+  return {EpisodeStatus::kPlanInvalid, violation.reason};
+}
+
+Verdict userCodeVerdict(const UserCodeError& error) {
+  return {error.component() == UserCodeError::Component::kPlanner ? EpisodeStatus::kPlannerError
+                                                                  : EpisodeStatus::kControllerError,
+          error.what()};
+}
+
 Verdict judgeEpisode(const Scenario& scenario, const TrackingTolerance& tolerance,
                      const EpisodeMetrics& m) {
+  if (!m.controller_error.empty()) return {EpisodeStatus::kControllerError, m.controller_error};
   if (m.contacts > tolerance.max_contacts) {
     std::string reason = "touched " + m.first_contact_body + " at " +
                          formatFixed(m.first_contact_t_s, 3) + " s (" +

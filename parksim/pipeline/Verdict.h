@@ -13,8 +13,10 @@
 #include <string>
 #include <vector>
 
+#include "parksim/core/Error.h"
 #include "parksim/core/Scenario.h"
 #include "parksim/core/TrackingTolerance.h"
+#include "parksim/planner/PlanCheck.h"
 #include "parksim/planner/PlanResult.h"
 #include "parksim/sim/Episode.h"
 
@@ -56,7 +58,16 @@ struct Verdict {
 /// The verdict on a plan that was not solved ("unsolved plan (iteration_limit): ...").
 Verdict planFailedVerdict(const PlanResult& plan);
 
-/// The verdict on a driven episode: contacts beyond tolerance.max_contacts, then the scenario's
+/// The verdict on a plan that failed its check before driving (planner/PlanCheck.h):
+/// "plan_invalid: at t = 5.210 s (...) the footprint overlaps dropped_box".
+Verdict planInvalidVerdict(const PlanViolation& violation);
+
+/// The verdict on user code that failed (core/Error.h's UserCodeError): planner_error or
+/// controller_error with its message.
+Verdict userCodeVerdict(const UserCodeError& error);
+
+/// The verdict on a driven episode: a controller that failed (metrics.controller_error), then
+/// contacts beyond tolerance.max_contacts, then the scenario's
 /// goal tolerance (metrics.goal_reached), then every other bound of `tolerance`.
 Verdict judgeEpisode(const Scenario& scenario, const TrackingTolerance& tolerance,
                      const EpisodeMetrics& metrics);

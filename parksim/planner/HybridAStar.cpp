@@ -42,7 +42,7 @@ struct Node {
 
 HybridAStar::HybridAStar(const RobotDef& robot, const LotBounds& lot,
                          const ReedsSheppSteering& reeds_shepp, const MotionValidator& validator,
-                         const PlannerDef& def, const HybridAStarDef& hybrid)
+                         const SearchDef& def, const HybridAStarDef& hybrid)
     : robot_(robot),
       lot_(lot),
       reeds_shepp_(reeds_shepp),
@@ -71,7 +71,7 @@ namespace {
 class Search {
  public:
   Search(const RobotDef& robot, const LotBounds& lot, const ReedsSheppSteering& reeds_shepp,
-         const MotionValidator& validator, const PlannerDef& def, const HybridAStarDef& hybrid,
+         const MotionValidator& validator, const SearchDef& def, const HybridAStarDef& hybrid,
          const PlanProgress& progress)
       : robot_(robot),
         lot_(lot),
@@ -102,7 +102,7 @@ class Search {
   const LotBounds& lot_;
   const ReedsSheppSteering& reeds_shepp_;
   const MotionValidator& validator_;
-  const PlannerDef& def_;
+  const SearchDef& def_;
   const HybridAStarDef& hybrid_;
   const PlanProgress& progress_;
   const Clock::time_point t_begin_;
@@ -272,7 +272,7 @@ void Search::search() {
       nodes_.push_back({p, 0.0, -1, -1, 0, false});
     }
     while (!open_.empty() && expansions_ < def_.max_iterations) {
-      if (def_.max_time_s > 0.0 && seconds(t_begin_) > def_.max_time_s) {
+      if ((def_.max_time_s > 0.0 && seconds(t_begin_) > def_.max_time_s) || def_.cancelled()) {
         timed_out_ = true;
         break;
       }
@@ -351,6 +351,11 @@ PlanResult Search::run(const Pose2& start, const GoalRegion& goal) {
   st.tree_size = static_cast<int>(nodes_.size());
   st.goal_tree_size = static_cast<int>(roots.size());
   if (reached_from_ < 0) {
+    if (def_.cancelled()) {
+      return finish(PlanStatus::kCancelled,
+                    "cancelled before a collision-free trajectory to "
+                    "the goal was found");
+    }
     if (timed_out_) {
       return finish(PlanStatus::kTimeLimit, "no collision-free trajectory to the goal within " +
                                                 std::to_string(def_.max_time_s) + " s");

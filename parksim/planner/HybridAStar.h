@@ -17,8 +17,9 @@
 #include "parksim/core/RobotDef.h"
 #include "parksim/core/Scenario.h"
 #include "parksim/planner/MotionValidator.h"
+#include "parksim/planner/PlanResult.h"
 #include "parksim/planner/ReedsSheppSteering.h"
-#include "parksim/planner/TreePlanner.h"
+#include "parksim/planner/SearchDef.h"
 
 namespace parksim {
 
@@ -62,7 +63,7 @@ class HybridAStar {
   /// `reeds_shepp` supplies the turning radius (of primitives and curves) and the analytic
   /// expansion; `def.max_iterations` bounds node expansions, `def.max_time_s` wall time.
   HybridAStar(const RobotDef& robot, const LotBounds& lot, const ReedsSheppSteering& reeds_shepp,
-              const MotionValidator& validator, const PlannerDef& def,
+              const MotionValidator& validator, const SearchDef& def,
               const HybridAStarDef& hybrid = {});
 
   /// `progress`, when set, is told of every node expansion.
@@ -74,7 +75,7 @@ class HybridAStar {
   LotBounds lot_;
   const ReedsSheppSteering& reeds_shepp_;
   const MotionValidator& validator_;
-  PlannerDef def_;
+  SearchDef def_;
   HybridAStarDef hybrid_;
 };
 

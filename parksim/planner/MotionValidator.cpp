@@ -28,9 +28,8 @@ bool MotionValidator::isValid(const Pose2& pose) const {
   return checker_.isFree(pose, 0.5 * def_.resolution_m);
 }
 
-bool MotionValidator::isValid(const Trajectory& traj) const {
+long MotionValidator::prepare(const Trajectory& traj) const {
   const std::vector<TrajectoryPoint>& pts = traj.points;
-  if (pts.empty()) return true;
   // Sample poses along each period's arc so densely that no footprint point moves more than the
   // resolution between two of them; the last pose closes the list.
   periods_.clear();
@@ -44,17 +43,30 @@ bool MotionValidator::isValid(const Trajectory& traj) const {
     periods_.push_back({tw, dt, n, total});
     total += n;
   }
-  const long count = total + 1;
-  // Sample `idx`; `period` only moves forward, as indices do within one pass below.
-  auto sample = [&](long idx, std::size_t& period) {
-    if (idx == total) return pts.back().pose;
-    while (periods_[period].first + periods_[period].samples <= idx) ++period;
-    const Period& p = periods_[period];
-    const long k = idx - p.first;
-    return k == 0 ? pts[period].pose
-                  : integrateExact(pts[period].pose, p.twist,
-                                   p.dt * static_cast<double>(k) / static_cast<double>(p.samples));
-  };
+  return total + 1;
+}
+
+Pose2 MotionValidator::sample(const Trajectory& traj, long idx, std::size_t& period,
+                              double* t_s) const {
+  const std::vector<TrajectoryPoint>& pts = traj.points;
+  const long total = static_cast<long>(traj.points.size()) == 1
+                         ? 0
+                         : periods_.back().first + periods_.back().samples;
+  if (idx == total) {
+    if (t_s != nullptr) *t_s = pts.back().t_s;
+    return pts.back().pose;
+  }
+  while (periods_[period].first + periods_[period].samples <= idx) ++period;
+  const Period& p = periods_[period];
+  const long k = idx - p.first;
+  const double dt = p.dt * static_cast<double>(k) / static_cast<double>(p.samples);
+  if (t_s != nullptr) *t_s = pts[period].t_s + dt;
+  return k == 0 ? pts[period].pose : integrateExact(pts[period].pose, p.twist, dt);
+}
+
+bool MotionValidator::isValid(const Trajectory& traj) const {
+  if (traj.points.empty()) return true;
+  const long count = prepare(traj);
   // Check every kCoarsestStride-th sample first, then halve the stride. These are the same
   // checks as in order, with the same answer, but a footprint that overlaps an obstacle does so
   // over many consecutive samples, so collisions show after few queries.
@@ -62,10 +74,23 @@ bool MotionValidator::isValid(const Trajectory& traj) const {
     const bool first_pass = stride == kCoarsestStride;
     std::size_t period = 0;
     for (long idx = first_pass ? 0 : stride; idx < count; idx += first_pass ? stride : 2 * stride) {
-      if (!isValid(sample(idx, period))) return false;
+      if (!isValid(sample(traj, idx, period))) return false;
     }
   }
   return true;
+}
+
+std::optional<MotionValidator::Failure> MotionValidator::firstFailure(
+    const Trajectory& traj) const {
+  if (traj.points.empty()) return std::nullopt;
+  const long count = prepare(traj);
+  std::size_t period = 0;
+  for (long idx = 0; idx < count; ++idx) {
+    double t = 0.0;
+    const Pose2 pose = sample(traj, idx, period, &t);
+    if (!isValid(pose)) return Failure{t, pose, !insideLot(pose)};
+  }
+  return std::nullopt;
 }
 
 }  // namespace parksim

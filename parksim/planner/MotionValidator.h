@@ -8,6 +8,7 @@
 // resolution_m / 2 for the same reason: the study's lot has no boundary walls, and without this a
 // trajectory could leave the lot to get around its obstacles.
 
+#include <optional>
 #include <vector>
 
 #include "parksim/core/FootprintChecker.h"
@@ -32,6 +33,15 @@ class MotionValidator {
   /// The samples are checked coarse to fine (every 64th first), which finds collisions early;
   /// the answer does not depend on the order.
   bool isValid(const Trajectory& traj) const;
+
+  /// Where the trajectory first fails the same check, in time order (every sample), or nothing
+  /// when isValid(traj) holds: for saying where a plan goes wrong (PlanCheck.h).
+  struct Failure {
+    double t_s = 0.0;          ///< time of the first invalid sample, on the trajectory's clock, s
+    Pose2 pose;                ///< the pose there
+    bool outside_lot = false;  ///< the reference point leaves the lot (less the margin)
+  };
+  std::optional<Failure> firstFailure(const Trajectory& traj) const;
 
   /// The check made for a single state: grown footprint free, reference point inside the lot.
   bool isValid(const Pose2& pose) const;
@@ -61,6 +71,11 @@ class MotionValidator {
     long first;   // index of its first sample in the trajectory
   };
   static constexpr long kCoarsestStride = 64;
+  /// Fills periods_ for `traj` (non-empty); returns the number of samples.
+  long prepare(const Trajectory& traj) const;
+  /// Sample `idx` of the trajectory prepare() was last given, and its time; `period` only
+  /// moves forward, as indices do within one pass.
+  Pose2 sample(const Trajectory& traj, long idx, std::size_t& period, double* t_s = nullptr) const;
   mutable std::vector<Period> periods_;
 };
 

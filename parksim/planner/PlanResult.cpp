@@ -9,6 +9,7 @@ const char* toString(PlanStatus status) {
     case PlanStatus::kTimeLimit: return "time_limit";
     case PlanStatus::kInvalidStart: return "invalid_start";
     case PlanStatus::kInvalidGoal: return "invalid_goal";
+    case PlanStatus::kCancelled: return "cancelled";
   }
   return "?";
 }

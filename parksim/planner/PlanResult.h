@@ -17,6 +17,7 @@ enum class PlanStatus {
   kTimeLimit,       ///< no valid trajectory to the goal within max_time_s
   kInvalidStart,    ///< the start footprint collides
   kInvalidGoal,     ///< the goal footprint collides (in every accepted heading)
+  kCancelled,       ///< SearchDef::cancel was set before a trajectory to the goal was found
 };
 
 const char* toString(PlanStatus status);

@@ -1,7 +1,6 @@
 #include "parksim/planner/PlanScenario.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -11,6 +10,7 @@
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
 #include "parksim/planner/FreeSpaceBound.h"
+#include "parksim/planner/PlanCheck.h"
 #include "parksim/planner/SpeedProfile.h"
 
 namespace parksim {
@@ -39,7 +39,8 @@ SteeringKind steeringKindFromString(const std::string& name) {
   throw Error("unknown steering '" + name + "' (expected one of " + known + ")");
 }
 
-void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup) {
+void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup,
+                         const PlannerRegistry& registry) {
   const RobotDef& robot = scenario.robot;
   auto refuse = [](const std::string& what, double periods) {
     throw Error(what + " needs " + formatGeneral(periods, 3) +
@@ -106,7 +107,7 @@ void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup) {
   // The tree planners steer between samples anywhere in the lot; the A* planners' moves and
   // expansions follow the problem (their search window grows from the start and the goal), so
   // for them the move that bounds a trajectory is the one from the start to the goal.
-  const bool across_lot = plannerUsesSteering(setup.planner.kind);
+  const bool across_lot = registry.find(setup.planner).info.uses_steering;
   const double length =
       across_lot ? diagonal : positionDistance(scenario.start, scenario.goal.pose);
   const double cross = restToRestPeriods(length, wheel_max * r, wheel_step * r, period_s);
@@ -133,30 +134,21 @@ TimingKind timingKindFromString(const std::string& name) {
   throw Error("unknown timing '" + name + "' (expected one of time-optimal, study)");
 }
 
-int defaultIterationBudget(PlannerKind kind, const LotBounds& lot) {
-  // Its window, not the lot, sets the size of its search.
-  if (kind == PlannerKind::kTimeAStar) return 200000;
-  const double base = kind == PlannerKind::kHybridAStar ? 20000.0 : 2000.0;
-  const double area = (lot.x_max_m - lot.x_min_m) * (lot.y_max_m - lot.y_min_m);
-  // Capped so that a lot of kilometres still gets a bounded search (and no int overflow).
-  constexpr double kMaxDefaultBudget = 1'000'000.0;
-  return static_cast<int>(
-      std::min(kMaxDefaultBudget, std::ceil(base * std::max(1.0, area / kStudyLotAreaM2))));
-}
+const SearchDef& PlanningProblem::search() const { return setup.search; }
 
-PlanSetup resolvedPlanSetup(const PlanSetup& setup, const Scenario& scenario) {
+const ParamMap& PlanningProblem::params() const { return setup.planner_params; }
+
+PlanSetup resolvedPlanSetup(const PlanSetup& setup, const Scenario& scenario,
+                            const PlannerRegistry& registry) {
   PlanSetup resolved = setup;
-  if (resolved.planner.max_iterations == kAutoIterations) {
-    resolved.planner.max_iterations = defaultIterationBudget(setup.planner.kind, scenario.lot);
+  if (resolved.search.max_iterations == kAutoIterations) {
+    resolved.search.max_iterations =
+        defaultIterationBudget(registry.find(setup.planner).info, scenario);
   }
   return resolved;
 }
 
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 std::unique_ptr<SteeringFunction> makeSteering(const Scenario& scenario, const PlanSetup& setup) {
   switch (setup.steering_kind) {
@@ -204,28 +196,32 @@ std::optional<PlanResult> placementFailure(const Scenario& scenario, const PlanS
   return std::nullopt;
 }
 
-// Smooths a tree planner's or Hybrid A*'s plan along its exact geometry (PathSmoother.h) and
-// times it at `limits`; keeps the plan as it was unless the result validates as a whole.
-void smoothPlan(const Scenario& scenario, const MotionValidator& validator, const PlanSetup& setup,
-                const TimingLimits& limits, PlanResult& result) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const long before = validator.queries();
-  const PathSmoother smoother(scenario.robot, validator, limits, setup.smoothing);
-  // Its own stream, seeded by the planner's seed: the planner's draws stay as they were.
-  std::mt19937_64 rng(setup.planner.seed ^ 0x5e1ec7edULL);
-  PathSmoothingStats stats;
-  const Pose2 start = result.trajectory.points.front().pose;
-  const std::vector<PathPiece> pieces = smoother.smooth(
-      start, pathPieces(result.trajectory), setup.planner.smoothing_attempts, rng, &stats);
-  Trajectory timed = timePieces(start, pieces, scenario.robot, limits);
-  if (validator.isValid(timed)) {
-    result.trajectory = std::move(timed);
-    result.stats.smoothing_shortcuts += stats.shortcuts;
-    result.stats.smoothing_fillets += stats.fillets;
+// A user's planner, whose failures are its own (UserCodeError), not the input's: anything it
+// throws, and a solved result without a trajectory that can even be checked.
+PlanResult solveUserPlanner(Planner& planner, const PlannerInfo& info,
+                            const PlanningProblem& problem) {
+  const auto failed = [&](const std::string& what) {
+    return UserCodeError(UserCodeError::Component::kPlanner, "planner " + info.name + " " + what);
+  };
+  PlanResult result;
+  try {
+    result = planner.solve(problem);
+  } catch (const UserCodeError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw failed(std::string("threw: ") + e.what());
+  } catch (...) {
+    throw failed("threw something that is not a std::exception");
   }
-  result.stats.collision_queries += validator.queries() - before;
-  result.stats.times.smoothing_s += secondsSince(t0);
-  result.stats.times.total_s += secondsSince(t0);
+  if (result.solved()) {
+    if (std::optional<std::string> problem_text = malformedPlan(result.trajectory)) {
+      throw failed("returned an unusable plan: " + *problem_text);
+    }
+  } else {
+    // Unsolved plans carry no trajectory to drive.
+    result.trajectory = {};
+  }
+  return result;
 }
 
 // The plan's bounds: its own geometry's (durationLowerBound) and the free-space optimum's.
@@ -244,72 +240,30 @@ void setBounds(const Scenario& scenario, const TimingLimits& limits, PlanResult&
 }  // namespace
 
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
-                        const PlanSetup& requested, const PlanProgress& progress) {
-  const PlanSetup setup = resolvedPlanSetup(requested, scenario);
-  checkPlanningLimits(scenario, setup);
+                        const PlanSetup& requested, const PlanProgress& progress,
+                        const PlannerRegistry& registry) {
+  const PlannerEntry& entry = registry.find(requested.planner);
+  const PlanSetup setup = resolvedPlanSetup(requested, scenario, registry);
+  checkPlanningLimits(scenario, setup, registry);
   const std::unique_ptr<SteeringFunction> steering = makeSteering(scenario, setup);
   if (!(setup.feedback_headroom >= 0.0 && setup.feedback_headroom < 1.0)) {
     throw Error("planScenario: feedback_headroom must be in [0, 1)");
   }
   if (!(setup.timing_period_s > 0.0)) throw Error("planScenario: timing_period_s must be > 0");
+  // Its parameters are checked before anything else is done (a bad one is the input's fault).
+  const std::unique_ptr<Planner> planner = entry.make(setup.planner_params);
   if (std::optional<PlanResult> failed = placementFailure(scenario, setup)) return *failed;
   const MotionValidator validator(checker, scenario.robot, scenario.lot, setup.validation);
   const TimingLimits limits = timingLimits(scenario.robot, setup.feedback_headroom,
                                            setup.timing_period_s, setup.start_jerk_radps3);
-  const bool time_optimal = setup.timing == TimingKind::kTimeOptimal;
+  const PlanningProblem problem{scenario, checker, validator, *steering, setup, limits, progress};
   PlanResult result;
-  if (setup.planner.kind == PlannerKind::kTimeAStar) {
-    // Smooths and times its plans itself, at the limits.
-    const TimeAStar planner(scenario.robot, scenario.lot, validator, setup.planner,
-                            setup.time_a_star, limits, setup.smoothing, &scenario.obstacles);
-    result = planner.solve(scenario.start, scenario.goal, progress);
-    if (result.solved()) setBounds(scenario, limits, result);
-    return result;
-  }
-  if (setup.planner.kind == PlannerKind::kHybridAStar) {
-    const ReedsSheppSteering curves(scenario.robot, setup.reeds_shepp);
-    const HybridAStar planner(scenario.robot, scenario.lot, curves, validator, setup.planner,
-                              setup.hybrid_a_star);
-    result = planner.solve(scenario.start, scenario.goal, progress);
+  if (entry.info.built_in) {
+    result = planner->solve(problem);
   } else {
-    // With time-optimal timing, smoothing follows the plan's geometry (smoothPlan below); with
-    // the study's timing the tree planner smooths with its own steering.
-    PlannerDef def = setup.planner;
-    if (time_optimal) def.smooth = false;
-    const TreePlanner planner(scenario.robot, scenario.lot, *steering, validator, def);
-    result = planner.solve(scenario.start, scenario.goal, progress);
+    result = solveUserPlanner(*planner, entry.info, problem);
   }
-  if (!result.solved()) return result;
-  const CostWeights w{setup.planner.reverse_penalty, setup.planner.cusp_penalty_m};
-  // Hybrid A* times its own plan; smoothed under study timing, it keeps that timing's limits.
-  const bool smooth_geometry =
-      setup.planner.smooth && (time_optimal || setup.planner.kind == PlannerKind::kHybridAStar);
-  if (smooth_geometry) {
-    const TimingLimits own = time_optimal
-                                 ? limits
-                                 : TimingLimits{scenario.robot.max_wheel_speed_radps,
-                                                scenario.robot.max_wheel_accel_radps2, 0.1};
-    smoothPlan(scenario, validator, setup, own, result);
-  }
-  const auto t0 = std::chrono::steady_clock::now();
-  if (time_optimal) {
-    const long before = validator.queries();
-    Trajectory timed = retime(result.trajectory, scenario.robot, limits);
-    if (validator.isValid(timed)) result.trajectory = std::move(timed);
-    result.stats.collision_queries += validator.queries() - before;
-  }
-  result.cost = trajectoryCost(result.trajectory, scenario.robot, w);
-  // Re-timing keeps the geometry (the cost moves by rounding only); smoothing changes it.
-  if (!result.cost_history.empty() &&
-      std::abs(result.cost - result.cost_history.back().cost) > 1e-9) {
-    result.cost_history.push_back(
-        {result.stats.times.total_s, result.stats.iterations, result.cost});
-  } else if (!result.cost_history.empty()) {
-    result.cost_history.back().cost = result.cost;
-  }
-  setBounds(scenario, limits, result);
-  result.stats.times.timing_s = secondsSince(t0);
-  result.stats.times.total_s += result.stats.times.timing_s;
+  if (result.solved()) setBounds(scenario, limits, result);
   return result;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// Plans a scenario end to end: the selected planner and steering function, gap-free motion
-// validation against the given footprint checker, smoothing, timing and the plan's bounds.
+// Plans a scenario end to end: the planner selected by name (Planner.h, PlannerRegistry.h) on
+// a problem made of the world, the gap-free motion validation against the given footprint
+// checker, the selected steering function and the timing limits; then the plan's bounds.
 
 #include <string>
 #include <vector>
@@ -9,14 +10,13 @@
 #include "parksim/core/ParamMap.h"
 #include "parksim/core/Scenario.h"
 #include "parksim/planner/BalkcomMasonSteering.h"
-#include "parksim/planner/HybridAStar.h"
 #include "parksim/planner/MotionValidator.h"
 #include "parksim/planner/MoveToPoseSteering.h"
 #include "parksim/planner/PathSmoother.h"
+#include "parksim/planner/PlannerRegistry.h"
 #include "parksim/planner/ReedsSheppSteering.h"
 #include "parksim/planner/RotateTranslateRotateSteering.h"
-#include "parksim/planner/TimeAStar.h"
-#include "parksim/planner/TreePlanner.h"
+#include "parksim/planner/SearchDef.h"
 
 namespace parksim {
 
@@ -49,23 +49,21 @@ const char* toString(TimingKind kind);
 /// Parses "time-optimal" or "study"; throws Error otherwise.
 TimingKind timingKindFromString(const std::string& name);
 
-/// planner.max_iterations: the budget chosen for the lot (defaultIterationBudget), resolved
-/// when the plan is made (resolvedPlanSetup).
-inline constexpr int kAutoIterations = 0;
-
 /// parksim's planning defaults, the same for every front-end (the command line, sweeps, Python,
 /// the episode pipeline): time-a-star (Hybrid A* in time, TimeAStar.h) with smoothing and the
 /// automatic budget, balkcom-mason steering for the tree planners, time-optimal timing with 20%
-/// feedback headroom and rows every 0.02 s.
+/// feedback headroom and rows every 0.02 s. What only one planner reads is that planner's
+/// parameter (planner_params), with its default in its own Def.
 struct PlanSetup {
-  /// max_iterations kAutoIterations (the default): defaultIterationBudget(kind, lot). smooth:
-  /// PathSmoother.h after every planner (time-a-star smooths each path it finds itself).
-  PlannerDef planner{.kind = PlannerKind::kTimeAStar,
-                     .max_iterations = kAutoIterations,
-                     .smooth = true,
-                     .smoothing_attempts = 300};
-  /// Parameters of the selected planner by name (ParamMap.h), for the planner to read.
+  /// The planner by its registered name (PlannerRegistry.h): a built-in one or a plugin's.
+  std::string planner = "time-a-star";
+  /// Parameters of the selected planner by name (ParamMap.h), applied by its factory; an
+  /// unknown name is an error.
   ParamMap planner_params;
+  /// Seed, budget (kAutoIterations: the planner's budget for the lot), wall time, cancel flag,
+  /// cost weights and smoothing: PlanFinishing.h smooths every built-in plan (time-a-star smooths
+  /// each path it finds itself).
+  SearchDef search;
   SteeringKind steering_kind = SteeringKind::kBalkcomMason;
   /// Move-to-pose parameters; its to-goal tolerance is taken from the scenario's goal region,
   /// scaled by goal_tolerance_fraction.
@@ -80,11 +78,7 @@ struct PlanSetup {
   ReedsSheppDef reeds_shepp;
   /// Balkcom-Mason steering parameters.
   BalkcomMasonDef balkcom_mason;
-  /// Hybrid A* parameters (planner.kind == kHybridAStar; it ignores steering_kind).
-  HybridAStarDef hybrid_a_star;
-  /// Hybrid A* in time (planner.kind == kTimeAStar; it ignores steering_kind).
-  TimeAStarDef time_a_star;
-  /// Smoothing (planner.smooth) with time-optimal timing, for every planner; with study timing
+  /// Smoothing (search.smooth) with time-optimal timing, for every planner; with study timing
   /// the tree planners use their own shortcut smoothing (ShortcutSmoother.h).
   PathSmootherDef smoothing;
   MotionValidatorDef validation;
@@ -103,33 +97,30 @@ struct PlanSetup {
   double start_jerk_radps3 = 100.0;
 };
 
-/// Area of the study's lot (1.8 x 1.2 m), the unit of the default budget's scaling, m^2.
-inline constexpr double kStudyLotAreaM2 = 1.8 * 1.2;
-
-/// The default iteration budget of `kind` on `lot`: the base budget (tree planners: the study's
-/// 2000 iterations; hybrid-a-star: 20000 node expansions) times max(1, lot area / study lot
-/// area), rounded up, so budgets grow with the space to search. time-a-star searches a window
-/// around the start and the goal whatever the lot (SearchWindow.h): 200000 expansions per
-/// search, for any lot.
-int defaultIterationBudget(PlannerKind kind, const LotBounds& lot);
-
-/// `setup` with its automatic choices made for `scenario`: an iteration budget of
-/// kAutoIterations becomes defaultIterationBudget(kind, lot). planScenario plans with this, and
-/// result files record it.
-PlanSetup resolvedPlanSetup(const PlanSetup& setup, const Scenario& scenario);
+/// `setup` with its automatic choices made for `scenario`: a budget of kAutoIterations becomes
+/// the planner's default budget for the lot (PlannerRegistry.h). planScenario plans with this,
+/// and result files record it. Throws Error when `registry` has no such planner.
+PlanSetup resolvedPlanSetup(const PlanSetup& setup, const Scenario& scenario,
+                            const PlannerRegistry& registry = builtInPlanners());
 
 /// Refuses, before any work, a setup whose steering would build unbounded trajectories in this
 /// scenario: rotate-translate-rotate profiles (a straight move across the lot's diagonal, a
 /// half turn, braking from full speed) or a move-to-pose trajectory longer than
 /// kMaxProfilePeriods control periods. Throws Error with one line naming the values and the
 /// limit (docs/limits.md). planScenario calls it first.
-void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup);
+void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup,
+                         const PlannerRegistry& registry = builtInPlanners());
 
-/// Plans with the selected planner and steering, smooths the plan (planner.smooth), then times
-/// it as `timing` says (the re-timed trajectory is validated again; if rounding ever made it
-/// fail, the planner's own timing is kept) and sets its duration lower bound and the free-space
-/// bound. `progress` is passed to the planner.
+/// Plans with the selected planner (found in `registry` by setup.planner, its parameters
+/// applied) and steering: resolves the setup, checks its limits, refuses an invalid start or
+/// goal as a status, hands the planner its problem (Planner.h) and sets a solved plan's duration
+/// lower bound and free-space bound. parksim's planners smooth and time their plans themselves
+/// (PlanFinishing.h). A planner that is not built in and throws, or returns a solved result
+/// without a usable trajectory (empty, non-finite, times not increasing), raises
+/// UserCodeError (core/Error.h); its plan, solved or not, is checked later (PlanCheck.h).
+/// `progress` is passed to the planner.
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
-                        const PlanSetup& setup, const PlanProgress& progress = {});
+                        const PlanSetup& setup, const PlanProgress& progress = {},
+                        const PlannerRegistry& registry = builtInPlanners());
 
 }  // namespace parksim

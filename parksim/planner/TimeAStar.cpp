@@ -31,7 +31,7 @@ double seconds(Clock::time_point since) {
 class Solve {
  public:
   Solve(const RobotDef& robot, const LotBounds& lot, const MotionValidator& validator,
-        const PlannerDef& def, const TimeAStarDef& search, const TimingLimits& limits,
+        const SearchDef& def, const TimeAStarDef& search, const TimingLimits& limits,
         const PathSmootherDef& smoothing, const std::vector<Obstacle>* obstacles,
         const PlanProgress& progress)
       : robot_(robot),
@@ -60,7 +60,7 @@ class Solve {
   const RobotDef& robot_;
   const LotBounds& lot_;
   const MotionValidator& validator_;
-  const PlannerDef& def_;
+  const SearchDef& def_;
   const TimeAStarDef& search_;
   TimingLimits limits_;
   PathSmoother smoother_;
@@ -103,6 +103,7 @@ TimeSearchOutcome Solve::search(const Pose2& start, const Pose2& goal,
     config.deadline = t_begin_ + std::chrono::duration_cast<Clock::duration>(
                                      std::chrono::duration<double>(def_.max_time_s));
   }
+  config.cancel = def_.cancel;
   config.progress = &progress_;
   config.progress_budget = def_.max_iterations;
   const bool backward = search_.from_goal;
@@ -191,6 +192,11 @@ PlanResult Solve::run(const Pose2& start, const GoalRegion& goal) {
     break;
   }
   if (!found()) {
+    if (def_.cancelled()) {
+      return finish(PlanStatus::kCancelled,
+                    "cancelled before a collision-free trajectory to "
+                    "the goal was found");
+    }
     if (last == TimeSearchOutcome::Status::kTimeLimit) {
       return finish(PlanStatus::kTimeLimit, "no collision-free trajectory to the goal within " +
                                                 std::to_string(def_.max_time_s) + " s");
@@ -230,7 +236,7 @@ PlanResult Solve::run(const Pose2& start, const GoalRegion& goal) {
 }  // namespace
 
 TimeAStar::TimeAStar(const RobotDef& robot, const LotBounds& lot, const MotionValidator& validator,
-                     const PlannerDef& def, const TimeAStarDef& search, const TimingLimits& limits,
+                     const SearchDef& def, const TimeAStarDef& search, const TimingLimits& limits,
                      const PathSmootherDef& smoothing, const std::vector<Obstacle>* obstacles)
     : robot_(robot),
       lot_(lot),

@@ -15,7 +15,7 @@
 // goal (SearchWindow.h), so the problem, not the lot, sets their size.
 //
 // The path found is then smoothed (PathSmoother.h) and timed at the limits
-// (TimeOptimalTiming.h). Anytime: with a wall-time budget (PlannerDef::max_time_s) it searches
+// (TimeOptimalTiming.h). Anytime: with a wall-time budget (SearchDef::max_time_s) it searches
 // again with smaller heuristic weights down to 1 (restarting weighted A*, Richter, Thayer and
 // Ruml 2010) and smooths each new path with fresh random shortcuts, until the budget ends,
 // keeping the fastest plan and recording every improvement in cost_history. Without one it makes
@@ -29,9 +29,10 @@
 #include "parksim/core/Scenario.h"
 #include "parksim/planner/MotionValidator.h"
 #include "parksim/planner/PathSmoother.h"
+#include "parksim/planner/PlanResult.h"
+#include "parksim/planner/SearchDef.h"
 #include "parksim/planner/SearchWindow.h"
 #include "parksim/planner/TimeOptimalTiming.h"
-#include "parksim/planner/TreePlanner.h"
 
 namespace parksim {
 
@@ -86,7 +87,7 @@ class TimeAStar {
   /// `obstacles`, when given, make the heuristic's grid from their shapes (FootprintFit.h)
   /// rather than from footprint queries: the same answers at a tenth of the cost.
   TimeAStar(const RobotDef& robot, const LotBounds& lot, const MotionValidator& validator,
-            const PlannerDef& def, const TimeAStarDef& search, const TimingLimits& limits,
+            const SearchDef& def, const TimeAStarDef& search, const TimingLimits& limits,
             const PathSmootherDef& smoothing = {},
             const std::vector<Obstacle>* obstacles = nullptr);
 
@@ -98,7 +99,7 @@ class TimeAStar {
   RobotDef robot_;
   LotBounds lot_;
   const MotionValidator& validator_;
-  PlannerDef def_;
+  SearchDef def_;
   TimeAStarDef search_;
   TimingLimits limits_;
   PathSmootherDef smoothing_;

@@ -318,7 +318,8 @@ TimeSearchOutcome Search::run(bool backward) {
         out_.nodes += static_cast<long>(nodes_.size());
         return std::move(out_);
       }
-      if (Clock::now() > c_.deadline) {
+      if (Clock::now() > c_.deadline ||
+          (c_.cancel != nullptr && c_.cancel->load(std::memory_order_relaxed))) {
         out_.status = TimeSearchOutcome::Status::kTimeLimit;
         out_.nodes += static_cast<long>(nodes_.size());
         return std::move(out_);

@@ -3,6 +3,7 @@
 // the search). Coarse first; when that expands every reachable cell of the window, once more
 // with the fine zone around the poses it grows from, and once more with that zone twice as fine.
 
+#include <atomic>
 #include <chrono>
 #include <vector>
 
@@ -36,6 +37,8 @@ struct TimeSearchConfig {
   long max_expansions = 0;
   /// Wall-time end of the search; time_point::max() for none.
   std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+  /// Stops the search like the deadline when set and true (SearchDef::cancel).
+  const std::atomic<bool>* cancel = nullptr;
   const PlanProgress* progress = nullptr;
   long progress_offset = 0;  ///< expansions of earlier searches, for the progress display
   long progress_budget = 0;

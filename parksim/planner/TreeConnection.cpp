@@ -22,7 +22,7 @@ void TreeSearch::connectToGoal(int s) {
   }
   const Node& from = start_tree_[s];
   const Node& to = goal_tree_[g];
-  if (def_.kind == PlannerKind::kRrt &&
+  if (def_.variant == TreeVariant::kRrt &&
       goal_tree_.distance(from.pose, to.pose) > def_.connect_radius_m) {
     return;
   }

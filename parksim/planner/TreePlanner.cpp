@@ -93,7 +93,7 @@ PlanResult TreeSearch::run(const PlanProgress& progress) {
   connectToGoal(0);
   bool timed_out = false;
   for (int it = 0; it < def_.max_iterations && (optimize_ || !solved_); ++it) {
-    if (def_.max_time_s > 0.0 && elapsed() > def_.max_time_s) {
+    if ((def_.max_time_s > 0.0 && elapsed() > def_.max_time_s) || def_.cancelled()) {
       timed_out = true;
       break;
     }
@@ -129,6 +129,11 @@ PlanResult TreeSearch::run(const PlanProgress& progress) {
   }
   if (!solved_) {
     result_.cost_history.clear();
+    if (timed_out && def_.cancelled()) {
+      return finish(PlanStatus::kCancelled,
+                    "cancelled before a collision-free trajectory to "
+                    "the goal was found");
+    }
     if (timed_out) {
       return finish(PlanStatus::kTimeLimit, "no collision-free trajectory to the goal within " +
                                                 std::to_string(def_.max_time_s) + " s");
@@ -151,11 +156,8 @@ PlanResult TreeSearch::run(const PlanProgress& progress) {
 
 TreePlanner::TreePlanner(const RobotDef& robot, const LotBounds& lot,
                          const SteeringFunction& steering, const MotionValidator& validator,
-                         const PlannerDef& def)
+                         const TreePlannerDef& def)
     : robot_(robot), lot_(lot), steering_(steering), validator_(validator), def_(def) {
-  if (def.kind == PlannerKind::kHybridAStar) {
-    throw Error("planner: hybrid-a-star is not a tree planner (use HybridAStar)");
-  }
   if (def.max_iterations < 0) throw Error("planner: max_iterations must be >= 0");
   if (!(def.goal_bias >= 0.0 && def.goal_bias <= 1.0)) {
     throw Error("planner: goal_bias must be in [0, 1]");

@@ -18,7 +18,9 @@
 //   until max_iterations (or max_time_s) and records each improvement in cost_history. With
 //   informed_sampling it is Informed RRT*: once solved, it samples only where a cheaper path
 //   could pass.
-// Any of them may be followed by shortcut smoothing (ShortcutSmoother.h).
+// Any of them may be followed by shortcut smoothing (ShortcutSmoother.h: `smooth`, with the
+// study's timing; with time-optimal timing the registered planners smooth along the plan's
+// geometry instead, PlanFinishing.h).
 //
 // Exact junctions. Start-tree edges start at their parent's pose with the parent's arrival
 // wheel speeds, and a node's pose is the exact end of its edge. Edges into nodes that other
@@ -41,30 +43,24 @@
 #include "parksim/planner/MotionValidator.h"
 #include "parksim/planner/PathCost.h"
 #include "parksim/planner/PlanResult.h"
-#include "parksim/planner/PlannerKind.h"
+#include "parksim/planner/SearchDef.h"
 #include "parksim/planner/SteeringFunction.h"
 
 namespace parksim {
 
-struct PlannerDef {
-  PlannerKind kind = PlannerKind::kRrtGoalConnect;
-  std::uint64_t seed = 1;         ///< seeds the planner's own RNG (std::mt19937_64)
-  int max_iterations = 2000;      ///< iteration budget (the study's max_step)
+/// The tree planner's variants (the comment above); registered as "rrt", "rrt-goal-connect",
+/// "rrt-star" and "rrt-connect" (TreePlanners.cpp).
+enum class TreeVariant { kRrt, kRrtGoalConnect, kRrtStar, kRrtConnect };
+
+/// The tree planner's own parameters, on top of the search settings every planner shares.
+struct TreePlannerDef : SearchDef {
+  TreeVariant variant = TreeVariant::kRrtGoalConnect;
   double goal_bias = 0.05;        ///< probability of sampling a goal pose instead of a random one
   double connect_radius_m = 0.1;  ///< kRrt: SE(2) distance to the goal that triggers a to-goal try
   /// Length that turns heading into distance in the SE(2) metric, m: poses are embedded as
   /// (x, y, l cos theta, l sin theta). 0 selects the footprint radius, so a heading change moves
   /// the metric by the chord the farthest footprint corner travels.
   double heading_length_m = 0.0;
-  /// Wall-time budget, s; 0 = none. For benchmarks only: results then depend on machine load,
-  /// so tests and reproducible runs use max_iterations alone.
-  double max_time_s = 0.0;
-  bool record_tree = true;  ///< keep every tree edge in the result (for figures)
-
-  /// Path cost = length + reverse_penalty * length driven backwards + cusp_penalty_m * cusps.
-  /// RRT* minimises it, smoothing accepts only shortcuts that lower it; every plan reports it.
-  double reverse_penalty = 1.0;  ///< extra cost per metre driven in reverse, m per m
-  double cusp_penalty_m = 0.1;   ///< cost of one change of driving direction, m
 
   /// kRrtStar and the goal tree of kRrtConnect: a new node lies at most this far (SE(2) metric)
   /// from the tree node nearest to its sample, m.
@@ -78,17 +74,12 @@ struct PlannerDef {
   /// plus to the goal is below the best cost (Informed RRT*'s ellipse; no path through the
   /// others can be cheaper, since the cost is at least the length).
   bool informed_sampling = true;
-
-  /// Shortcut smoothing after the planner (study 3(c)(3)); uses the planner's RNG, so it is
-  /// seeded by `seed` too.
-  bool smooth = false;
-  int smoothing_attempts = 100;  ///< random shortcuts tried
 };
 
 class TreePlanner {
  public:
   TreePlanner(const RobotDef& robot, const LotBounds& lot, const SteeringFunction& steering,
-              const MotionValidator& validator, const PlannerDef& def);
+              const MotionValidator& validator, const TreePlannerDef& def);
 
   /// `progress`, when set, is told of every iteration.
   PlanResult solve(const Pose2& start, const GoalRegion& goal,
@@ -99,7 +90,7 @@ class TreePlanner {
   LotBounds lot_;
   const SteeringFunction& steering_;
   const MotionValidator& validator_;
-  PlannerDef def_;
+  TreePlannerDef def_;
 };
 
 }  // namespace parksim

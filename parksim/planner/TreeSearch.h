@@ -30,7 +30,7 @@ inline constexpr int kInformedSampleTries = 100;
 class TreeSearch {
  public:
   TreeSearch(const RobotDef& robot, const LotBounds& lot, const SteeringFunction& steering,
-             const MotionValidator& validator, const PlannerDef& def, const Pose2& start,
+             const MotionValidator& validator, const TreePlannerDef& def, const Pose2& start,
              const GoalRegion& goal)
       : robot_(robot),
         lot_(lot),
@@ -43,8 +43,8 @@ class TreeSearch {
         rng_(def.seed),
         start_tree_(headingLength()),
         goal_tree_(headingLength()),
-        bidirectional_(def.kind == PlannerKind::kRrtConnect),
-        optimize_(def.kind == PlannerKind::kRrtStar),
+        bidirectional_(def.variant == TreeVariant::kRrtConnect),
+        optimize_(def.variant == TreeVariant::kRrtStar),
         t_begin_(Clock::now()) {}
 
   PlanResult run(const PlanProgress& progress);
@@ -82,7 +82,7 @@ class TreeSearch {
   const LotBounds& lot_;
   const SteeringFunction& steering_;
   const MotionValidator& validator_;
-  const PlannerDef& def_;
+  const TreePlannerDef& def_;
   const CostWeights weights_;
   const Pose2 start_;
   const GoalRegion goal_;

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <optional>
+#include <string>
 #include <utility>
 
 #include "parksim/core/Angle.h"
@@ -92,8 +94,10 @@ double checkEpisodeLimits(const Scenario& scenario, const Trajectory& plan,
 }
 
 struct Episode::Impl {
-  Impl(const Scenario& s, const Trajectory& plan, const ExecutionDef& d, const SimModelDef& m)
+  Impl(const Scenario& s, const Trajectory& plan, const ExecutionDef& d, const SimModelDef& m,
+       EpisodeController c)
       : scenario(s),
+        controller(std::move(c)),
         def(validated(s, plan, d)),
         build(drawRobotBuild(d.realism, d.noise_seed)),
         origin(localFrameOrigin(plan.points.front().pose, m.local_frame_grid_m)),
@@ -113,10 +117,13 @@ struct Episode::Impl {
       validateRealism(d.realism);
       loop.emplace(d.realism, d.noise_seed, build, s.robot, plan.points.front().pose, dt);
     }
+    if (!controller.controller) controller.controller = std::make_unique<TrackingController>();
+    resetController(plan);
     measure(WheelSpeeds{});
   }
 
   Scenario scenario;
+  EpisodeController controller;
   ExecutionDef def;
   RobotBuild build;
   // The plan and the controller live in the same lot-local frame as Bullet (DynamicsWorld),
@@ -137,6 +144,10 @@ struct Episode::Impl {
 
   std::vector<ExecutedRow> rows;
   ExecutedRow current;
+  std::string controller_error;
+  // Encoder readings and time at the last control tick (the realism's measured wheel speeds).
+  WheelSpeeds tick_encoders;
+  double tick_t = 0.0;
   long steps_at_rest = 0;
   bool finished = false;
   bool at_rest = false;
@@ -188,29 +199,95 @@ struct Episode::Impl {
     if (k % def.csv_stride_steps == 0 || finished) rows.push_back(row);
   }
 
-  // The tracking controller's command for the step about to start (ideal robot).
-  WheelSpeeds command() const {
-    const long k = world.steps();
-    // Wheel speeds are held per control period; the step's midpoint picks the period without
-    // depending on how k * dt rounds at a period boundary.
-    const double mid = planTime(k) + 0.5 * dt;
-    if (def.tracking == TrackingMode::kOpen) return reference.wheelsAt(mid);
-    return trackingCommand(world.robot().local_pose, reference.poseAt(planTime(k)),
-                           reference.twistAt(mid), def.gains, scenario.robot);
+  void resetController(const Trajectory& plan) {
+    ControllerSetup setup{scenario, plan};
+    setup.period_s = loop ? loop->holdPeriod() : dt;
+    setup.latency_s = loop ? loop->def.control.latency_s : 0.0;
+    setup.estimated_pose = loop && loop->def.estimator.kind != EstimatorKind::kTruth;
+    if (controller.built_in) {
+      controller.controller->reset(setup);
+      return;
+    }
+    guarded([&] { controller.controller->reset(setup); }, "reset");
   }
 
-  // The realism controller's command at a control tick: from its estimate (or the truth),
-  // held from the tick plus the latency for one hold period.
-  WheelSpeeds realismCommand() const {
-    const RealismLoop& r = *loop;
+  // The controller's input at the step about to start. Wheel speeds are held per control
+  // period; the middle of the interval the command acts over picks the plan's period without
+  // depending on how k * dt rounds at a period boundary. Poses in the lot frame.
+  ControllerInput controllerInput() {
     const long k = world.steps();
-    const double hold_mid = planTime(k) + r.def.control.latency_s + 0.5 * r.holdPeriod();
-    if (def.tracking == TrackingMode::kOpen) return reference.wheelsAt(hold_mid);
-    const Pose2 estimate = r.def.estimator.kind == EstimatorKind::kTruth
-                               ? world.robot().local_pose
-                               : local(r.estimator.pose());
-    return trackingCommand(estimate, reference.poseAt(planTime(k)), reference.twistAt(hold_mid),
-                           def.gains, scenario.robot);
+    const RobotState& state = world.robot();
+    ControllerInput in;
+    in.tick = loop ? loop->next_tick : k;
+    in.t_s = static_cast<double>(k) * dt;
+    in.reference = lotFrame(reference.poseAt(planTime(k)));
+    in.plan_ended = k >= plan_steps;
+    double act_mid = planTime(k) + 0.5 * dt;
+    if (loop) {
+      const RealismLoop& r = *loop;
+      act_mid = planTime(k) + r.def.control.latency_s + 0.5 * r.holdPeriod();
+      in.pose = r.def.estimator.kind == EstimatorKind::kTruth ? lotFrame(state.local_pose)
+                                                              : r.estimator.pose();
+      in.encoders_rad = r.encoder;
+      const double since = in.t_s - tick_t;
+      if (since > 0.0) {
+        in.wheel_speeds_radps = {(r.encoder.left_radps - tick_encoders.left_radps) / since,
+                                 (r.encoder.right_radps - tick_encoders.right_radps) / since};
+      }
+      tick_encoders = r.encoder;
+      tick_t = in.t_s;
+    } else {
+      in.pose = lotFrame(state.local_pose);
+      in.encoders_rad = state.wheel_angles;
+      in.wheel_speeds_radps = state.wheels;
+    }
+    in.reference_twist = reference.twistAt(act_mid);
+    in.feedforward = reference.wheelsAt(act_mid);
+    return in;
+  }
+
+  // The command for the step about to start (the ideal robot), or at a realism's control tick:
+  // the plan's wheel speeds open loop, the controller's closed loop.
+  WheelSpeeds command() {
+    if (def.tracking == TrackingMode::kOpen) {
+      const long k = world.steps();
+      const double mid = loop ? planTime(k) + loop->def.control.latency_s + 0.5 * loop->holdPeriod()
+                              : planTime(k) + 0.5 * dt;
+      return reference.wheelsAt(mid);
+    }
+    const ControllerInput in = controllerInput();
+    if (controller.built_in) return controller.controller->command(in);
+    WheelSpeeds out;
+    guarded([&] { out = controller.controller->command(in); }, "command");
+    if (!controller_error.empty()) return {};
+    const double limit = scenario.robot.max_wheel_speed_radps;
+    const auto bad = [&](double w) { return !(std::abs(w) <= limit * (1.0 + 1e-9)); };
+    if (bad(out.left_radps) || bad(out.right_radps)) {
+      fail("returned (" + formatGeneral(out.left_radps, 6) + ", " +
+           formatGeneral(out.right_radps, 6) + ") rad/s at t = " + formatFixed(in.t_s, 3) + " s: " +
+           (std::isfinite(out.left_radps) && std::isfinite(out.right_radps)
+                ? "beyond robot.max_wheel_speed_radps " + formatGeneral(limit)
+                : std::string("not a number")));
+      return {};
+    }
+    return out;
+  }
+
+  // Runs a user's controller call; what it throws ends the episode with a controller error.
+  template <class F>
+  void guarded(F&& call, const char* what) {
+    try {
+      call();
+    } catch (const std::exception& e) {
+      fail(std::string("threw in ") + what + " at t = " +
+           formatFixed(static_cast<double>(world.steps()) * dt, 3) + " s: " + e.what());
+    } catch (...) {
+      fail(std::string("threw something that is not a std::exception in ") + what);
+    }
+  }
+
+  void fail(const std::string& why) {
+    if (controller_error.empty()) controller_error = "controller " + controller.name + " " + why;
   }
 
   // One step, driven by the tracking controller or by `external`: with a realism, `external`
@@ -219,13 +296,18 @@ struct Episode::Impl {
   void advance(const std::optional<WheelSpeeds>& external) {
     if (loop) {
       const long k = world.steps();
-      if (loop->controlDue(k)) loop->tick(k, external ? *external : realismCommand());
+      if (loop->controlDue(k)) {
+        const WheelSpeeds cmd = external ? *external : command();
+        if (endOnControllerError()) return;
+        loop->tick(k, cmd);
+      }
       loop->actuate(k, world);
       world.step();
       loop->sense(world);
       measure(loop->setpoint);
     } else {
       const WheelSpeeds cmd = external ? *external : command();
+      if (endOnControllerError()) return;
       world.setWheelTargets(cmd);
       world.step();
       measure(cmd);
@@ -248,6 +330,14 @@ struct Episode::Impl {
                 "values are outside what the simulation can integrate");
   }
 
+  // A controller that failed ends the episode where it failed, the record kept.
+  bool endOnControllerError() {
+    if (controller_error.empty()) return false;
+    finished = true;
+    if (rows.empty() || rows.back().t_s != current.t_s) rows.push_back(current);
+    return true;
+  }
+
   void timed(const std::optional<WheelSpeeds>& external) {
     if (finished) return;
     const auto start = std::chrono::steady_clock::now();
@@ -257,9 +347,10 @@ struct Episode::Impl {
 };
 
 Episode::Episode(const Scenario& scenario, const Trajectory& plan, const ExecutionDef& def,
-                 const SimModelDef& model) {
+                 const SimModelDef& model, EpisodeController controller) {
   if (plan.points.empty()) throw Error("simulation: the plan has no points");
-  impl_ = std::make_unique<Impl>(scenario, plan, def, model);
+  impl_ = std::make_unique<Impl>(scenario, plan, def, model, std::move(controller));
+  impl_->endOnControllerError();  // a reset that failed
 }
 
 Episode::~Episode() = default;
@@ -268,9 +359,7 @@ void Episode::step() { impl_->timed(std::nullopt); }
 
 void Episode::step(const WheelSpeeds& command) { impl_->timed(command); }
 
-WheelSpeeds Episode::controllerCommand() const {
-  return impl_->loop ? impl_->realismCommand() : impl_->command();
-}
+WheelSpeeds Episode::controllerCommand() { return impl_->command(); }
 
 bool Episode::finished() const { return impl_->finished; }
 
@@ -296,6 +385,8 @@ EpisodeMetrics Episode::metrics() const {
   const Impl& d = *impl_;
   EpisodeMetrics m;
   m.tracking = d.def.tracking;
+  m.controller = d.controller.name;
+  m.controller_error = d.controller_error;
   d.statistics.report(m);
   m.final_pos_err_m = d.current.pos_err_m;
   m.final_heading_err_deg = radToDeg(std::abs(d.current.heading_err_rad));

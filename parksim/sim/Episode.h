@@ -17,6 +17,7 @@
 #include "parksim/core/Pose2.h"
 #include "parksim/core/Scenario.h"
 #include "parksim/core/Trajectory.h"
+#include "parksim/sim/Controller.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/EpisodeMetrics.h"
 #include "parksim/sim/ExecutedRow.h"
@@ -39,6 +40,17 @@ struct EpisodeSample {
 /// Called at a fixed rate of simulated time (see runEpisode).
 using EpisodeObserver = std::function<void(const EpisodeSample&)>;
 
+/// The controller an episode's closed-loop tracking asks for commands (Controller.h).
+struct EpisodeController {
+  /// Null: parksim's tracking controller with its default parameters.
+  std::unique_ptr<Controller> controller;
+  std::string name = "tracking";  ///< its registered name, for metrics and messages
+  /// False for a user's controller: its commands are checked (finite, within the wheel-speed
+  /// limit) and what it throws or gets wrong ends the episode with a controller error
+  /// (EpisodeMetrics::controller_error) instead of propagating.
+  bool built_in = true;
+};
+
 /// Physics steps the episode of `plan` may take at most: (plan duration + max_stop_time_s) /
 /// the scenario's time step, rounded up. Throws Error, naming the values and the limit, when
 /// that exceeds def.max_steps, or when the plan or the time step is unusable; so a tiny
@@ -50,15 +62,16 @@ class Episode {
  public:
   /// Builds the world with the robot at the plan's first pose. Copies its inputs. Throws Error
   /// on an empty or non-increasing plan or a bad definition.
+  /// `controller` drives closed-loop tracking (reset here, with the plan).
   Episode(const Scenario& scenario, const Trajectory& plan, const ExecutionDef& def = {},
-          const SimModelDef& model = {});
+          const SimModelDef& model = {}, EpisodeController controller = {});
   ~Episode();
 
   Episode(const Episode&) = delete;
   Episode& operator=(const Episode&) = delete;
 
-  /// One simulation step with its measurement, driven by the tracking controller
-  /// (ExecutionDef::tracking). Does nothing once finished().
+  /// One simulation step with its measurement, driven by the controller (closed loop) or the
+  /// plan's wheel speeds (open loop; ExecutionDef::tracking). Does nothing once finished().
   void step();
   /// One step driven by `command` instead, for a controller outside parksim: the wheel
   /// motors' targets for this step. With a realism control loop (RealismDef) the command
@@ -67,8 +80,9 @@ class Episode {
   /// against the plan as usual, and the episode still ends at rest after the plan's end or at
   /// the time limit. Does nothing once finished().
   void step(const WheelSpeeds& command);
-  /// What the tracking controller would command now (from its estimate under a realism).
-  WheelSpeeds controllerCommand() const;
+  /// What the controller commands now, with its input as step() would give it (from its
+  /// estimate under a realism). Asks the controller, so a controller with state advances it.
+  WheelSpeeds controllerCommand();
   /// At rest after the plan's end, or at the time limit.
   bool finished() const;
 
@@ -102,6 +116,6 @@ struct EpisodeResult {
 /// the period is a whole number of steps; 1/30 s is 8 steps at 240 Hz), and the last instant.
 EpisodeResult runEpisode(const Scenario& scenario, const Trajectory& plan,
                          const ExecutionDef& def = {}, const EpisodeObserver& observer = {},
-                         double observer_period_s = 1.0 / 30.0);
+                         double observer_period_s = 1.0 / 30.0, EpisodeController controller = {});
 
 }  // namespace parksim

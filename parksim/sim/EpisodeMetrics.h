@@ -28,6 +28,12 @@ struct ParkedRobotDisplacement {
 
 struct EpisodeMetrics {
   TrackingMode tracking = TrackingMode::kClosed;
+  /// The controller that drove the plan (closed-loop tracking): its registered name.
+  std::string controller = "tracking";
+  /// Empty unless the controller (a user's) failed: why, in one line ("controller x returned
+  /// nan rad/s at t = 1.250 s"). The episode ended at that tick, its rows and measures up to
+  /// there; the verdict is controller_error.
+  std::string controller_error;
   /// Tracking error against the plan's pose at the same time, over every step.
   double max_pos_err_m = 0.0;
   double rms_pos_err_m = 0.0;

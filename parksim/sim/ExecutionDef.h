@@ -1,6 +1,6 @@
 #pragma once
 // How an episode drives a plan: open loop (exactly the planned wheel speeds) or closed loop
-// (planned wheel speeds plus feedback on the pose error), and when the episode ends.
+// (a controller's commands, Controller.h), and when the episode ends.
 
 #include <cstdint>
 #include <string>
@@ -10,31 +10,21 @@
 namespace parksim {
 
 enum class TrackingMode {
-  kOpen,    ///< the planned wheel speeds, held for each control period; no correction
-  kClosed,  ///< planned wheel speeds as feed-forward plus Kanayama feedback on the pose error
+  kOpen,  ///< the planned wheel speeds, held for each control period; no correction
+  /// the controller's commands (Controller.h; by default the tracking controller: planned wheel
+  /// speeds as feed-forward plus Kanayama feedback on the pose error)
+  kClosed,
 };
 
 const char* toString(TrackingMode mode);
 /// Parses "open" or "closed"; throws Error otherwise.
 TrackingMode trackingModeFromString(const std::string& name);
 
-/// Gains of the Kanayama tracking law (sim/TrackingController.h). Errors are those of the plan's
-/// pose at the same time, expressed in the robot's frame. Errors decay at ~10/s: fast against
-/// the plan's 0.1 s periods, slow against the 240 Hz loop (k dt = 0.04), and at the study's
-/// typical 0.05 m/s the cross-track/heading pair is damped (zeta = k_theta / (2 v sqrt(k_y))
-/// = 1.6).
-struct TrackingGains {
-  double k_x = 10.0;      ///< 1/s: forward speed per metre of along-track error
-  double k_y = 4000.0;    ///< 1/m^2: yaw rate per (m/s of reference speed x m of cross-track error)
-  double k_theta = 10.0;  ///< 1/s: yaw rate per radian of heading error (sin e_theta)
-};
-
 /// ExecutionDef's default tracking, named for the options and parameters that state it.
 inline constexpr TrackingMode kDefaultTracking = TrackingMode::kClosed;
 
 struct ExecutionDef {
   TrackingMode tracking = kDefaultTracking;
-  TrackingGains gains;
   /// After the plan ends the robot is commanded to stop (open: zero wheel speeds; closed: hold
   /// the plan's last pose, zero feed-forward). It is at rest once its reference point moves
   /// slower than this, m/s ...

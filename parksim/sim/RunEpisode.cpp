@@ -4,11 +4,14 @@
 #include "parksim/core/Error.h"
 #include "parksim/sim/Episode.h"
 
+#include <utility>
+
 namespace parksim {
 
 EpisodeResult runEpisode(const Scenario& scenario, const Trajectory& plan, const ExecutionDef& def,
-                         const EpisodeObserver& observer, double observer_period_s) {
-  Episode episode(scenario, plan, def);
+                         const EpisodeObserver& observer, double observer_period_s,
+                         EpisodeController controller) {
+  Episode episode(scenario, plan, def, {}, std::move(controller));
   if (observer) {
     if (!(observer_period_s > 0.0)) throw Error("execution: observer period must be positive");
     observer(episode.sample());

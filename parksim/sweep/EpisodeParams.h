@@ -41,12 +41,12 @@ inline constexpr int kEpisodeIdFormat = 2;
 struct EpisodeParams {
   std::string world;       ///< the world's Scenario::name (its file is provenance, not identity)
   std::string world_file;  ///< the file the world was read from; not part of the id
-  std::string planner = toString(PlanSetup{}.planner.kind);
+  std::string planner = PlanSetup{}.planner;
   std::string steering = toString(PlanSetup{}.steering_kind);
-  bool smooth = PlanSetup{}.planner.smooth;
-  std::uint64_t seed = PlanSetup{}.planner.seed;  ///< planner seed
+  bool smooth = PlanSetup{}.search.smooth;
+  std::uint64_t seed = PlanSetup{}.search.seed;  ///< planner seed
   /// Iteration budget; kAutoIterations ("auto") is the lot's (defaultIterationBudget).
-  int max_iterations = PlanSetup{}.planner.max_iterations;
+  int max_iterations = PlanSetup{}.search.max_iterations;
   std::string tracking = toString(kDefaultTracking);  ///< "closed" or "open"
   /// How the plan is timed ("time-optimal", "study").
   std::string timing = toString(PlanSetup{}.timing);

@@ -39,7 +39,7 @@ void addPlanColumns(const EpisodeOutcome& out, nlohmann::ordered_json& row) {
   const Scenario& scenario = out.world->scenario;
   row["plan_status"] = toString(plan.status);
   row["plan_solved"] = plan.solved();
-  row["plan_max_iterations"] = out.plan_setup.planner.max_iterations;
+  row["plan_max_iterations"] = out.plan_setup.search.max_iterations;
   row["plan_iterations"] = plan.stats.iterations;
   row["plan_tree_size"] = plan.stats.tree_size;
   row["plan_goal_tree_size"] = plan.stats.goal_tree_size;

@@ -53,11 +53,11 @@ EpisodeRequest episodeRequest(const EpisodeParams& p, const std::shared_ptr<cons
     }
     r.world = std::move(moved);
   }
-  r.plan.planner.kind = plannerKindFromString(p.planner);
-  r.plan.planner.seed = p.seed;
-  r.plan.planner.max_iterations = p.max_iterations;
-  r.plan.planner.smooth = p.smooth;
-  r.plan.planner.record_tree = false;  // the tree is for figures; a sweep keeps statistics only
+  r.plan.planner = p.planner;
+  r.plan.search.seed = p.seed;
+  r.plan.search.max_iterations = p.max_iterations;
+  r.plan.search.smooth = p.smooth;
+  r.plan.search.record_tree = false;  // the tree is for figures; a sweep keeps statistics only
   r.plan.steering_kind = steeringKindFromString(p.steering);
   r.plan.timing = timingKindFromString(p.timing);
   r.execution.tracking = trackingModeFromString(p.tracking);

@@ -278,8 +278,7 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
   spec.name = top.required("name").name();
   readWorlds(top.required("worlds"), base_dir, spec);
 
-  std::vector<std::string> planner_names;
-  for (PlannerKind k : allPlannerKinds()) planner_names.emplace_back(toString(k));
+  const std::vector<std::string> planner_names = builtInPlanners().names();
   std::vector<std::string> steering_names;
   for (SteeringKind k : allSteeringKinds()) steering_names.emplace_back(toString(k));
   if (const auto f = top.optional("planners")) {

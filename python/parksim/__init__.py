@@ -64,10 +64,9 @@ from ._parksim import (  # noqa: F401,E402  (re-exported)
     FIGURE_NAMES,
     FrameDef,
     FrameRecorder,
-    HybridAStarDef,
     MotionValidatorDef,
     MoveToPoseDef,
-    PlannerDef,
+    SearchDef,
     ParkingTaskDef,
     PlanResult,
     PlanSetup,
@@ -76,7 +75,6 @@ from ._parksim import (  # noqa: F401,E402  (re-exported)
     RotateTranslateRotateDef,
     RunResult,
     SimModelDef,
-    TrackingGains,
     World,
     cspace_slice,
     encode_png,
@@ -174,10 +172,10 @@ from .records import read_record  # noqa: E402
 
 __all__ = [
     "CollisionChecker", "DynamicsWorld", "Episode", "Error", "ExecutionDef", "FIGURE_NAMES",
-    "FrameDef", "FrameRecorder", "HybridAStarDef", "MotionValidatorDef", "MoveToPoseDef", "ParkingEnv",
-    "ParkingTaskDef", "PlannerDef",
+    "FrameDef", "FrameRecorder", "MotionValidatorDef", "MoveToPoseDef", "ParkingEnv",
+    "ParkingTaskDef", "SearchDef",
     "PlanResult", "PlanSetup", "ReedsSheppDef", "RobotDef", "RotateTranslateRotateDef", "RunResult",
-    "SimModelDef", "TrackingGains", "World", "cspace_slice", "encode_png", "load_world", "plan",
+    "SimModelDef", "World", "cspace_slice", "encode_png", "load_world", "plan",
     "read_png", "read_record", "read_trajectory", "render_figure", "render_frame", "run", "spaces",
     "write_figures", "write_png", "VecParkingEnv", "world_names", "worlds_dir",
 ]

@@ -44,9 +44,10 @@ struct WorldHandle {
 
 /// The episode request (pipeline/EpisodeRequest.h) plan(), run() and Episode() make: the
 /// library's defaults, with the options in `options` taken from it (and removed): planner
-/// options when `planning` (planner, steering, PlannerDef and PlanSetup fields), then realism
-/// (a preset name or "world"), noise_seed, realisations, min_success_fraction, tolerance (a dict
-/// of ToleranceOverrides' bounds) and any ExecutionDef field (tracking, gains, ...).
+/// options when `planning` (planner, planner_params, steering, SearchDef and PlanSetup fields),
+/// then realism (a preset name or "world"), noise_seed, realisations, min_success_fraction,
+/// tolerance (a dict of ToleranceOverrides' bounds) and any ExecutionDef field (tracking, gains,
+/// ...).
 EpisodeRequest requestFrom(const WorldHandle& world, py::dict& options, bool planning);
 
 /// Copies the keys of `options` that name a field of `def`'s Python class onto it, removing

@@ -7,6 +7,8 @@
 
 #include "parksim/core/DiffDrive.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
+#include "parksim/core/ParamSet.h"
 #include "parksim/results/TrajectoryFile.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
@@ -196,6 +198,32 @@ py::array executedArray(const std::vector<ExecutedRow>& rows, bool realism_colum
     ++r;
   }
   return out;
+}
+
+ParamMap paramsFrom(const py::handle& dict, const char* what) {
+  if (!py::isinstance<py::dict>(dict)) {
+    throw py::type_error(std::string(what) + " must be a dict of parameter names to values");
+  }
+  ParamMap params;
+  for (const auto& [key, value] : dict.cast<py::dict>()) {
+    if (!py::isinstance<py::str>(key)) throw py::type_error(std::string(what) + ": names are str");
+    std::string text;
+    if (py::isinstance<py::bool_>(value)) {
+      text = value.cast<bool>() ? "true" : "false";
+    } else if (py::isinstance<py::int_>(value)) {
+      text = std::to_string(value.cast<long long>());
+    } else if (py::isinstance<py::float_>(value)) {
+      text = formatShortest(value.cast<double>());
+    } else if (py::isinstance<py::str>(value)) {
+      text = canonicalParamText(value.cast<std::string>());
+    } else {
+      throw py::type_error(std::string(what) + "[" + key.cast<std::string>() +
+                           "]: a bool, int, float or str, not " +
+                           std::string(py::str(value.get_type().attr("__name__"))));
+    }
+    params[key.cast<std::string>()] = text;
+  }
+  return params;
 }
 
 }  // namespace parksim::python

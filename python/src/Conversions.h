@@ -5,6 +5,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include "parksim/core/ParamMap.h"
 #include "parksim/core/Scenario.h"
 #include "parksim/pipeline/EpisodeRequest.h"
 #include "parksim/planner/PlanScenario.h"
@@ -20,11 +21,16 @@ struct PlanOutcome {
   nlohmann::json summary;  ///< plan.json's content
 };
 
-/// plan()'s options taken from `options` (removed from it): planner, steering, PlannerDef and
-/// PlanSetup fields, over the library's defaults.
+/// plan()'s options taken from `options` (removed from it): planner, planner_params, steering,
+/// SearchDef and PlanSetup fields, over the library's defaults.
 PlanSetup planSetupFrom(py::dict& options);
 
 /// Plans through the episode pipeline (a request that does not drive), the GIL released.
 PlanOutcome planWorld(const WorldHandle& world, const EpisodeRequest& request);
+
+/// A dict of planner or controller parameters ({"goal_bias": 0.1}) as a ParamMap: bools as
+/// true/false, numbers in their shortest round-trip form, strings as they are; anything else is
+/// a TypeError naming `what`.
+ParamMap paramsFrom(const py::handle& dict, const char* what);
 
 }  // namespace parksim::python

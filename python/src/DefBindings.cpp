@@ -104,25 +104,17 @@ void bindPlanningDefs(py::module_& m) {
       .def_readwrite("max_wheel_accel_radps2", &RobotDef::max_wheel_accel_radps2)
       .def_readwrite("height_m", &RobotDef::height_m);
 
-  defClass<PlannerDef>(m, "PlannerDef", "Tree planner options (planner/TreePlanner.h).")
-      .def_property(
-          "kind", [](const PlannerDef& d) { return std::string(toString(d.kind)); },
-          [](PlannerDef& d, const std::string& s) { d.kind = plannerKindFromString(s); })
-      .def_readwrite("seed", &PlannerDef::seed)
-      .def_readwrite("max_iterations", &PlannerDef::max_iterations)
-      .def_readwrite("goal_bias", &PlannerDef::goal_bias)
-      .def_readwrite("connect_radius_m", &PlannerDef::connect_radius_m)
-      .def_readwrite("heading_length_m", &PlannerDef::heading_length_m)
-      .def_readwrite("max_time_s", &PlannerDef::max_time_s)
-      .def_readwrite("record_tree", &PlannerDef::record_tree)
-      .def_readwrite("reverse_penalty", &PlannerDef::reverse_penalty)
-      .def_readwrite("cusp_penalty_m", &PlannerDef::cusp_penalty_m)
-      .def_readwrite("extend_distance_m", &PlannerDef::extend_distance_m)
-      .def_readwrite("rewire_neighbours", &PlannerDef::rewire_neighbours)
-      .def_readwrite("rewire_radius_m", &PlannerDef::rewire_radius_m)
-      .def_readwrite("informed_sampling", &PlannerDef::informed_sampling)
-      .def_readwrite("smooth", &PlannerDef::smooth)
-      .def_readwrite("smoothing_attempts", &PlannerDef::smoothing_attempts);
+  defClass<SearchDef>(m, "SearchDef",
+                      "What every planner's search is given besides its own parameters "
+                      "(planner/SearchDef.h): seed, budget, cost weights, smoothing.")
+      .def_readwrite("seed", &SearchDef::seed)
+      .def_readwrite("max_iterations", &SearchDef::max_iterations)
+      .def_readwrite("max_time_s", &SearchDef::max_time_s)
+      .def_readwrite("record_tree", &SearchDef::record_tree)
+      .def_readwrite("reverse_penalty", &SearchDef::reverse_penalty)
+      .def_readwrite("cusp_penalty_m", &SearchDef::cusp_penalty_m)
+      .def_readwrite("smooth", &SearchDef::smooth)
+      .def_readwrite("smoothing_attempts", &SearchDef::smoothing_attempts);
 
   defClass<MoveToPoseDef>(m, "MoveToPoseDef",
                           "Move-to-pose steering (planner/MoveToPoseSteering.h).")
@@ -156,25 +148,11 @@ void bindPlanningDefs(py::module_& m) {
       .def_readwrite("horizon_s", &ReedsSheppDef::horizon_s)
       .def_readwrite("speed_fraction", &ReedsSheppDef::speed_fraction);
 
-  defClass<HybridAStarDef>(m, "HybridAStarDef", "Hybrid A* (planner/HybridAStar.h).")
-      .def_readwrite("cell_m", &HybridAStarDef::cell_m)
-      .def_readwrite("heading_bins", &HybridAStarDef::heading_bins)
-      .def_readwrite("step_m", &HybridAStarDef::step_m)
-      .def_readwrite("tight_turning_radius_m", &HybridAStarDef::tight_turning_radius_m)
-      .def_readwrite("from_goal", &HybridAStarDef::from_goal)
-      .def_readwrite("fine_zone_m", &HybridAStarDef::fine_zone_m)
-      .def_readwrite("fine_cell_m", &HybridAStarDef::fine_cell_m)
-      .def_readwrite("fine_heading_bins", &HybridAStarDef::fine_heading_bins)
-      .def_readwrite("fine_step_m", &HybridAStarDef::fine_step_m)
-      .def_readwrite("fine_turn_in_place_rad", &HybridAStarDef::fine_turn_in_place_rad)
-      .def_readwrite("turn_in_place_rad", &HybridAStarDef::turn_in_place_rad)
-      .def_readwrite("analytic_near_steps", &HybridAStarDef::analytic_near_steps)
-      .def_readwrite("analytic_interval", &HybridAStarDef::analytic_interval)
-      .def_readwrite("heuristic_weight", &HybridAStarDef::heuristic_weight);
-
-  // plan()'s options besides PlannerDef's: `steering` is the kind, as on the command line.
+  // plan()'s options besides SearchDef's: `steering` is the kind, as on the command line.
   defClass<PlanSetup>(m, "PlanSetup", "Everything planScenario takes (planner/PlanScenario.h).")
       .def_readwrite("planner", &PlanSetup::planner)
+      .def_readwrite("planner_params", &PlanSetup::planner_params)
+      .def_readwrite("search", &PlanSetup::search)
       .def_property(
           "steering", [](const PlanSetup& s) { return std::string(toString(s.steering_kind)); },
           [](PlanSetup& s, const std::string& name) {
@@ -185,7 +163,6 @@ void bindPlanningDefs(py::module_& m) {
       .def_readwrite("rotate_translate_rotate", &PlanSetup::rotate_translate_rotate)
       .def_readwrite("validation", &PlanSetup::validation)
       .def_readwrite("reeds_shepp", &PlanSetup::reeds_shepp)
-      .def_readwrite("hybrid_a_star", &PlanSetup::hybrid_a_star)
       .def_property(
           "timing", [](const PlanSetup& s) { return std::string(toString(s.timing)); },
           [](PlanSetup& s, const std::string& name) { s.timing = timingKindFromString(name); })
@@ -193,16 +170,10 @@ void bindPlanningDefs(py::module_& m) {
 }
 
 void bindEpisodeDefs(py::module_& m) {
-  defClass<TrackingGains>(m, "TrackingGains", "Kanayama tracking gains (sim/ExecutionDef.h).")
-      .def_readwrite("k_x", &TrackingGains::k_x)
-      .def_readwrite("k_y", &TrackingGains::k_y)
-      .def_readwrite("k_theta", &TrackingGains::k_theta);
-
   defClass<ExecutionDef>(m, "ExecutionDef", "How an episode drives a plan (sim/ExecutionDef.h).")
       .def_property(
           "tracking", [](const ExecutionDef& d) { return std::string(toString(d.tracking)); },
           [](ExecutionDef& d, const std::string& s) { d.tracking = trackingModeFromString(s); })
-      .def_readwrite("gains", &ExecutionDef::gains)
       .def_readwrite("rest_speed_mps", &ExecutionDef::rest_speed_mps)
       .def_readwrite("rest_yaw_rate_radps", &ExecutionDef::rest_yaw_rate_radps)
       .def_readwrite("rest_hold_s", &ExecutionDef::rest_hold_s)

@@ -160,6 +160,13 @@ EpisodeRequest requestFrom(const WorldHandle& world, py::dict& options, bool pla
     if (!options.contains(key)) return py::none();
     return options.attr("pop")(key);
   };
+  if (const py::object v = take("controller"); !v.is_none()) {
+    if (!py::isinstance<py::str>(v)) throw py::type_error("controller must be a controller's name");
+    r.controller = v.cast<std::string>();
+  }
+  if (const py::object v = take("controller_params"); !v.is_none()) {
+    r.controller_params = paramsFrom(v, "controller_params");
+  }
   if (const py::object v = take("realism"); !v.is_none()) r.realism = v.cast<std::string>();
   if (const py::object v = take("noise_seed"); !v.is_none()) {
     r.noise_seed = v.cast<std::uint64_t>();

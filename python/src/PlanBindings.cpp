@@ -1,5 +1,5 @@
 // parksim.plan() and its result: the episode pipeline without driving, as `parksim plan`.
-// Options map onto PlanSetup and PlannerDef (DefBindings.cpp); the statistics are plan.json's
+// Options map onto PlanSetup and SearchDef (DefBindings.cpp); the statistics are plan.json's
 // (results/PlanFile.h), so the two never drift apart.
 
 #include <pybind11/stl.h>
@@ -13,17 +13,19 @@ namespace parksim::python {
 
 PlanSetup planSetupFrom(py::dict& options) {
   PlanSetup setup;
-  // `planner` names the kind, as --planner does; a PlannerDef is accepted too.
+  // `planner` names a registered planner, as --planner does.
   if (options.contains("planner")) {
     const py::object value = options.attr("pop")("planner");
-    if (py::isinstance<py::str>(value)) {
-      setup.planner.kind = plannerKindFromString(value.cast<std::string>());
-    } else {
-      setup.planner = defFrom<PlannerDef>(value, "planner");
+    if (!py::isinstance<py::str>(value)) {
+      throw py::type_error("planner must be a planner's name (a str)");
     }
+    setup.planner = value.cast<std::string>();
+  }
+  if (options.contains("planner_params")) {
+    setup.planner_params = paramsFrom(options.attr("pop")("planner_params"), "planner_params");
   }
   setup = takeOptions(setup, options);
-  setup.planner = takeOptions(setup.planner, options);
+  setup.search = takeOptions(setup.search, options);
   return setup;
 }
 
@@ -88,11 +90,11 @@ void bindPlan(py::module_& m) {
       R"(Plans the world's parking manoeuvre, as `parksim plan` does.
 
 Options (keywords; the defaults are the library's, the same as `parksim plan`'s and a sweep's):
-  planner (a name: time-a-star, hybrid-a-star, rrt, rrt-goal-connect, rrt-star, rrt-connect;
-  or a PlannerDef), steering (balkcom-mason, reeds-shepp, rotate-translate-rotate,
-  move-to-pose), any PlannerDef
-  field (seed, max_iterations: 0 for the lot's budget, smooth, smoothing_attempts, goal_bias,
-  ...), and any PlanSetup field (timing, feedback_headroom, goal_tolerance_fraction,
+  planner (a registered name: time-a-star, hybrid-a-star, rrt, rrt-goal-connect, rrt-star,
+  rrt-connect, or a plugin's), planner_params (a dict of the planner's own parameters, e.g.
+  {"goal_bias": 0.1}; parksim.planners() lists them), steering (balkcom-mason, reeds-shepp,
+  rotate-translate-rotate, move-to-pose), any SearchDef field (seed, max_iterations: 0 for
+  the lot's budget, smooth, smoothing_attempts, ...), and any PlanSetup field (timing, feedback_headroom, goal_tolerance_fraction,
   move_to_pose={...}, reeds_shepp={...}, validation={...}). parksim.PlanSetup() shows every
   default. Releases the GIL while planning.)");
 

@@ -91,9 +91,9 @@ PlanFigure planFigureFrom(const py::handle& plan) {
   figure.name = "plan";
   if (py::isinstance<PlanOutcome>(plan)) {
     const PlanOutcome& p = plan.cast<const PlanOutcome&>();
-    figure.name = toString(p.setup.planner.kind);
-    figure.caption = std::string(toString(p.setup.planner.kind)) + ", seed " +
-                     std::to_string(p.setup.planner.seed) + ": " + p.result.message;
+    figure.name = p.setup.planner;
+    figure.caption = std::string(p.setup.planner) + ", seed " +
+                     std::to_string(p.setup.search.seed) + ": " + p.result.message;
     figure.trajectory = p.result.trajectory;
     figure.waypoints = p.result.waypoints;
     figure.tree_edges = p.result.tree_edges;

@@ -19,24 +19,24 @@ TEST(ParksimRuns, EveryPlannerAndSteeringGivesACheckedRecord) {
   const Scenario s = loadScenario(parksim::testing::sourceDir() + "/worlds/head_in.yaml");
   const BulletCollisionWorld world(s);
   for (SteeringKind steering : allSteeringKinds()) {
-    for (PlannerKind kind : allPlannerKinds()) {
+    for (const std::string& kind : builtInPlanners().names()) {
       ParksimRunDef def;
       def.setup.steering_kind = steering;
-      def.setup.planner.kind = kind;
-      def.setup.planner.seed = 1;
-      def.setup.planner.max_iterations = kind == PlannerKind::kRrtStar ? 300 : 2000;
-      def.setup.planner.record_tree = false;
-      def.setup.planner.smooth = false;  // "+smooth" records: bench_planning's portfolio
+      def.setup.planner = kind;
+      def.setup.search.seed = 1;
+      def.setup.search.max_iterations = kind == "rrt-star" ? 300 : 2000;
+      def.setup.search.record_tree = false;
+      def.setup.search.smooth = false;  // "+smooth" records: bench_planning's portfolio
       const BenchRecord r = runParksim(s, world, def);
-      SCOPED_TRACE(std::string(toString(kind)) + " / " + toString(steering));
+      SCOPED_TRACE(kind + " / " + toString(steering));
       EXPECT_EQ(r.library, "parksim");
-      EXPECT_EQ(r.planner, toString(kind));
+      EXPECT_EQ(r.planner, kind);
       // The A* planners drive their own primitives and curves, whatever the steering.
-      EXPECT_EQ(r.space, kind == PlannerKind::kHybridAStar ? std::string("primitives+reeds-shepp")
-                         : kind == PlannerKind::kTimeAStar ? std::string("primitives+balkcom-mason")
-                                                           : std::string(toString(steering)));
+      EXPECT_EQ(r.space, kind == "hybrid-a-star" ? std::string("primitives+reeds-shepp")
+                         : kind == "time-a-star" ? std::string("primitives+balkcom-mason")
+                                                 : std::string(toString(steering)));
       EXPECT_EQ(r.scenario, "head_in");
-      EXPECT_EQ(r.budget, "iterations=" + std::to_string(def.setup.planner.max_iterations));
+      EXPECT_EQ(r.budget, "iterations=" + std::to_string(def.setup.search.max_iterations));
       EXPECT_GT(r.iterations, -1);
       EXPECT_FALSE(r.phases_s.empty());
       if (!r.solved) continue;  // success rates are the benchmark's business, not this test's
@@ -44,7 +44,7 @@ TEST(ParksimRuns, EveryPlannerAndSteeringGivesACheckedRecord) {
       EXPECT_GT(r.length_m, 0.0);
       EXPECT_GE(r.min_clearance_m, 0.0);
       // time-a-star's cost is the plan's duration; the others' a path cost of at least its length.
-      if (kind == PlannerKind::kTimeAStar) {
+      if (kind == "time-a-star") {
         EXPECT_EQ(r.cost, r.duration_s);
         EXPECT_GE(r.duration_s, r.free_space_bound_s);
       } else {
@@ -56,7 +56,7 @@ TEST(ParksimRuns, EveryPlannerAndSteeringGivesACheckedRecord) {
 }
 
 TEST(ParksimRuns, BudgetNames) {
-  PlannerDef def;
+  SearchDef def;
   def.max_iterations = 2000;
   EXPECT_EQ(budgetName(def), "iterations=2000");
   def.max_time_s = 0.1;

@@ -24,7 +24,7 @@ Scenario world(const std::string& name) {
 // What `parksim plan WORLD` uses: the library's defaults.
 PlanSetup cliDefaults() {
   PlanSetup setup;
-  setup.planner.record_tree = false;
+  setup.search.record_tree = false;
   return setup;
 }
 
@@ -66,10 +66,10 @@ TEST(DefaultPlanning, HybridAStarIgnoresTheSeed) {
   const Scenario s = world("garage_reverse");
   const BulletCollisionWorld checker(s);
   PlanSetup setup = cliDefaults();
-  setup.planner.kind = PlannerKind::kHybridAStar;
-  setup.planner.smooth = false;  // smoothing's random shortcuts are drawn from the seed
+  setup.planner = "hybrid-a-star";
+  setup.search.smooth = false;  // smoothing's random shortcuts are drawn from the seed
   const PlanResult a = planScenario(s, checker, setup);
-  setup.planner.seed = 12345;
+  setup.search.seed = 12345;
   const PlanResult b = planScenario(s, checker, setup);
   ASSERT_TRUE(a.solved());
   EXPECT_EQ(a.trajectory, b.trajectory);
@@ -93,8 +93,8 @@ TEST(DefaultPlanning, StudyTimingKeepsTheSteeringsOwnTrajectory) {
   const Scenario s = world("parallel");
   const BulletCollisionWorld checker(s);
   PlanSetup setup;
-  setup.planner.kind = PlannerKind::kRrtGoalConnect;
-  setup.planner.smooth = false;  // each timing smooths its own way
+  setup.planner = "rrt-goal-connect";
+  setup.search.smooth = false;  // each timing smooths its own way
   setup.steering_kind = SteeringKind::kMoveToPose;
   setup.timing = TimingKind::kStudy;
   const PlanResult study = planScenario(s, checker, setup);
@@ -110,25 +110,30 @@ TEST(DefaultPlanning, StudyTimingKeepsTheSteeringsOwnTrajectory) {
 }
 
 TEST(DefaultPlanning, BudgetGrowsWithTheLot) {
-  EXPECT_EQ(defaultIterationBudget(PlannerKind::kRrtGoalConnect, world("head_in").lot), 2000);
-  EXPECT_EQ(defaultIterationBudget(PlannerKind::kHybridAStar, world("tight_parallel").lot), 20000);
+  EXPECT_EQ(
+      defaultIterationBudget(builtInPlanners().find("rrt-goal-connect").info, world("head_in")),
+      2000);
+  EXPECT_EQ(
+      defaultIterationBudget(builtInPlanners().find("hybrid-a-star").info, world("tight_parallel")),
+      20000);
   // 100 m^2 / 2.16 m^2 = 46.3 study lots.
-  EXPECT_EQ(defaultIterationBudget(PlannerKind::kRrtConnect, world("big_lot").lot), 92593);
+  EXPECT_EQ(defaultIterationBudget(builtInPlanners().find("rrt-connect").info, world("big_lot")),
+            92593);
   // time-a-star searches a window around start and goal whatever the lot.
-  EXPECT_EQ(defaultIterationBudget(PlannerKind::kTimeAStar, world("head_in").lot),
-            defaultIterationBudget(PlannerKind::kTimeAStar, world("big_lot").lot));
+  EXPECT_EQ(defaultIterationBudget(builtInPlanners().find("time-a-star").info, world("head_in")),
+            defaultIterationBudget(builtInPlanners().find("time-a-star").info, world("big_lot")));
 }
 
 TEST(DefaultPlanning, AnAutomaticBudgetIsTheLotsAndAGivenOneIsKept) {
   const Scenario big = world("big_lot");
   PlanSetup setup;
-  EXPECT_EQ(setup.planner.max_iterations, kAutoIterations);
-  EXPECT_EQ(resolvedPlanSetup(setup, big).planner.max_iterations,
-            defaultIterationBudget(PlannerKind::kTimeAStar, big.lot));
-  setup.planner.kind = PlannerKind::kRrtStar;
-  EXPECT_EQ(resolvedPlanSetup(setup, big).planner.max_iterations, 92593);
-  setup.planner.max_iterations = 17;
-  EXPECT_EQ(resolvedPlanSetup(setup, big).planner.max_iterations, 17);
+  EXPECT_EQ(setup.search.max_iterations, kAutoIterations);
+  EXPECT_EQ(resolvedPlanSetup(setup, big).search.max_iterations,
+            defaultIterationBudget(builtInPlanners().find("time-a-star").info, big));
+  setup.planner = "rrt-star";
+  EXPECT_EQ(resolvedPlanSetup(setup, big).search.max_iterations, 92593);
+  setup.search.max_iterations = 17;
+  EXPECT_EQ(resolvedPlanSetup(setup, big).search.max_iterations, 17);
 }
 
 }  // namespace

@@ -113,7 +113,7 @@ TEST(RotateTranslateRotateSteering, SetupsWithUnboundedProfilesAreRefusedBeforeP
   PlanSetup setup;
   // A tree planner steers across the whole lot, so the lot's diagonal bounds its moves (the A*
   // planners are bounded by the start-to-goal move instead: TimeAStarTest).
-  setup.planner.kind = PlannerKind::kRrt;
+  setup.planner = "rrt";
   setup.steering_kind = SteeringKind::kRotateTranslateRotate;
   EXPECT_NO_THROW(checkPlanningLimits(scenario, setup));
   Scenario tiny_accel = scenario;

@@ -21,13 +21,13 @@ TEST_P(StudyWorldsPlanning, GoalConnectRrtSolvesAtLeast99Of100Seeds) {
       loadScenario(parksim::testing::sourceDir() + "/worlds/" + GetParam() + ".yaml");
   const BulletCollisionWorld checker(s);
   PlanSetup setup;
-  setup.planner.kind = PlannerKind::kRrtGoalConnect;
-  setup.planner.max_iterations = 2000;
+  setup.planner = "rrt-goal-connect";
+  setup.search.max_iterations = 2000;
   setup.steering_kind = SteeringKind::kMoveToPose;
-  setup.planner.record_tree = false;
+  setup.search.record_tree = false;
   int solved = 0;
   for (int seed = 1; seed <= 100; ++seed) {
-    setup.planner.seed = seed;
+    setup.search.seed = seed;
     const PlanResult r = planScenario(s, checker, setup);
     if (!r.solved()) continue;
     ++solved;

@@ -42,9 +42,9 @@ TEST(TimeAStar, ItsLimitsFollowTheProblemNotTheLot) {
   s.lot = {0.0, 0.0, 10000.0, 10000.0};
   PlanSetup setup;
   EXPECT_NO_THROW(checkPlanningLimits(s, setup));
-  setup.planner.kind = PlannerKind::kHybridAStar;
+  setup.planner = "hybrid-a-star";
   EXPECT_NO_THROW(checkPlanningLimits(s, setup));
-  setup.planner.kind = PlannerKind::kRrtConnect;
+  setup.planner = "rrt-connect";
   EXPECT_THAT([&] { checkPlanningLimits(s, setup); },
               ::testing::ThrowsMessage<Error>(::testing::HasSubstr("across the lot")));
   setup = PlanSetup{};
@@ -60,10 +60,10 @@ TEST(TimeAStar, AStartAtTheGoalIsSolvedWithoutMoving) {
   Scenario s = testing::studyLot();
   s.start = s.goal.pose;
   const SatChecker checker(s);
-  for (PlannerKind kind : allPlannerKinds()) {
-    SCOPED_TRACE(toString(kind));
+  for (const std::string& kind : builtInPlanners().names()) {
+    SCOPED_TRACE(kind);
     PlanSetup setup;
-    setup.planner.kind = kind;
+    setup.planner = kind;
     const PlanResult r = planScenario(s, checker, setup);
     ASSERT_TRUE(r.solved()) << r.message;
     EXPECT_EQ(r.trajectory.duration(), 0.0);
@@ -85,7 +85,7 @@ TEST(TimeAStar, TheProblemNotTheLotSetsTheSearch) {
     s.goal.pose = {c + 3.0, c + 0.3, kPi / 2};
     const SatChecker checker(s);
     PlanSetup setup;
-    setup.planner.max_iterations = 20000;  // a lot of 1 km^2 gets no more search than 200 m^2
+    setup.search.max_iterations = 20000;  // a lot of 1 km^2 gets no more search than 200 m^2
     results[k] = planScenario(s, checker, setup);
     expectValidPlan(s, checker, setup, results[k]);
     ++k;
@@ -115,7 +115,7 @@ TEST(TimeAStar, AnytimeKeepsImprovingAndRecordsIt) {
   const Scenario s = testing::studyLot();
   const SatChecker checker(s);
   PlanSetup setup;
-  setup.planner.max_time_s = 0.3;
+  setup.search.max_time_s = 0.3;
   const PlanResult anytime = planScenario(s, checker, setup);
   expectValidPlan(s, checker, setup, anytime);
   const std::vector<CostSample>& h = anytime.cost_history;
@@ -135,12 +135,12 @@ TEST(TimeAStar, SameSeedSameBytesAndTheSearchIgnoresTheSeed) {
   const PlanResult a = planScenario(s, checker, setup);
   const PlanResult b = planScenario(s, checker, setup);
   EXPECT_EQ(a.trajectory, b.trajectory);
-  setup.planner.seed = 99;  // draws other random shortcuts; the search is the same
+  setup.search.seed = 99;  // draws other random shortcuts; the search is the same
   const PlanResult c = planScenario(s, checker, setup);
   EXPECT_EQ(a.stats.iterations, c.stats.iterations);
-  setup.planner.smooth = false;
+  setup.search.smooth = false;
   const PlanResult d = planScenario(s, checker, setup);
-  setup.planner.seed = 1;
+  setup.search.seed = 1;
   EXPECT_EQ(d.trajectory, planScenario(s, checker, setup).trajectory);
 }
 
@@ -148,10 +148,10 @@ TEST(TimeAStar, RejectsBadDefinitions) {
   const Scenario s = testing::studyLot();
   const SatChecker checker(s);
   PlanSetup setup;
-  setup.time_a_star.heuristic_weight = 0.5;
+  setup.planner_params["heuristic_weight"] = "0.5";
   EXPECT_THROW(planScenario(s, checker, setup), Error);
   setup = {};
-  setup.time_a_star.arc_radii_m = {0.1, -0.1};
+  setup.planner_params["arc_radii_m"] = "0.1,-0.1";
   EXPECT_THROW(planScenario(s, checker, setup), Error);
   setup = {};
   setup.timing_period_s = 0.0;

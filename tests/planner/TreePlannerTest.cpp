@@ -17,15 +17,15 @@ using testing::SatChecker;
 
 // RRT* is anytime and spends its whole budget, so it gets fewer iterations and seeds; the others
 // stop at their first solution.
-int iterationBudget(PlannerKind kind) { return kind == PlannerKind::kRrtStar ? 150 : 2000; }
-int seedCount(PlannerKind kind) { return kind == PlannerKind::kRrtStar ? 8 : 20; }
+int iterationBudget(std::string kind) { return kind == "rrt-star" ? 150 : 2000; }
+int seedCount(std::string kind) { return kind == "rrt-star" ? 8 : 20; }
 
-PlanSetup setupFor(PlannerKind kind, SteeringKind steering, std::uint64_t seed) {
+PlanSetup setupFor(std::string kind, SteeringKind steering, std::uint64_t seed) {
   PlanSetup setup;
-  setup.planner.kind = kind;
-  setup.planner.max_iterations = iterationBudget(kind);
-  setup.planner.seed = seed;
-  setup.planner.smooth = false;  // the tree planner alone (PathSmootherTest.cpp: smoothing)
+  setup.planner = kind;
+  setup.search.max_iterations = iterationBudget(kind);
+  setup.search.seed = seed;
+  setup.search.smooth = false;  // the tree planner alone (PathSmootherTest.cpp: smoothing)
   setup.steering_kind = steering;
   return setup;
 }
@@ -37,13 +37,13 @@ void expectTreeRecorded(const PlanResult& r, int goal_roots) {
 }
 
 struct Case {
-  PlannerKind kind;
+  std::string kind;
   SteeringKind steering;
   bool parallel;
 };
 
 std::string caseName(const ::testing::TestParamInfo<Case>& info) {
-  std::string name = std::string(toString(info.param.kind)) + "_" +
+  std::string name = info.param.kind + "_" +
                      (info.param.steering == SteeringKind::kMoveToPose              ? "mtp"
                       : info.param.steering == SteeringKind::kRotateTranslateRotate ? "rtr"
                       : info.param.steering == SteeringKind::kReedsShepp            ? "rs"
@@ -55,9 +55,9 @@ std::string caseName(const ::testing::TestParamInfo<Case>& info) {
 
 std::vector<Case> allCases() {
   std::vector<Case> cases;
-  for (PlannerKind kind : allPlannerKinds()) {
+  for (const std::string& kind : builtInPlanners().names()) {
     // Not tree planners: HardWorldsPlanningTest.cpp, TimeAStarTest.cpp.
-    if (kind == PlannerKind::kHybridAStar || kind == PlannerKind::kTimeAStar) continue;
+    if (kind == "hybrid-a-star" || kind == "time-a-star") continue;
     for (SteeringKind steering : allSteeringKinds()) {
       for (bool parallel : {false, true}) cases.push_back({kind, steering, parallel});
     }
@@ -85,7 +85,7 @@ TEST_P(TreePlannerOnStudyLot, SolvesOverSeedsWithValidPlans) {
   }
   // Basic RRT only tries the goal near it and may run out of iterations; the others must solve
   // every seed.
-  EXPECT_GE(solved, c.kind == PlannerKind::kRrt ? seeds * 3 / 4 : seeds);
+  EXPECT_GE(solved, c.kind == "rrt" ? seeds * 3 / 4 : seeds);
 }
 
 INSTANTIATE_TEST_SUITE_P(Study, TreePlannerOnStudyLot, ::testing::ValuesIn(allCases()), caseName);
@@ -99,9 +99,9 @@ TEST(TreePlanner, RrtStarCostNeverIncreasesAndEndsNoWorseThanItsFirstSolution) {
       for (int seed = 1; seed <= 3; ++seed) {
         SCOPED_TRACE(std::string(toString(steering)) + (parallel ? " parallel" : " head-in") +
                      " seed " + std::to_string(seed));
-        PlanSetup setup = setupFor(PlannerKind::kRrtStar, steering, seed);
-        setup.planner.max_iterations = 250;
-        setup.planner.informed_sampling = seed != 3;  // plain RRT* too
+        PlanSetup setup = setupFor("rrt-star", steering, seed);
+        setup.search.max_iterations = 250;
+        setup.planner_params["informed_sampling"] = seed != 3 ? "true" : "false";  // plain RRT* too
         const PlanResult r = planScenario(s, checker, setup);
         expectValidPlan(s, checker, setup, r);
         EXPECT_EQ(r.stats.iterations, 250);  // anytime: the whole budget
@@ -126,7 +126,7 @@ TEST(TreePlanner, RrtConnectGoalTreeEdgesRunForwardToTheirParents) {
   int grown = 0;
   for (SteeringKind steering : allSteeringKinds()) {
     for (int seed = 1; seed <= 10; ++seed) {
-      const PlanSetup setup = setupFor(PlannerKind::kRrtConnect, steering, seed);
+      const PlanSetup setup = setupFor("rrt-connect", steering, seed);
       const PlanResult r = planScenario(s, checker, setup);
       SCOPED_TRACE("seed " + std::to_string(seed));
       expectValidPlan(s, checker, setup, r);
@@ -156,18 +156,18 @@ TEST(TreePlanner, SmoothingNeverMakesAPlanSlowerAndKeepsItValid) {
   for (bool parallel : {false, true}) {
     const Scenario s = parallel ? testing::studyLotParallel() : testing::studyLot();
     const SatChecker checker(s);
-    for (PlannerKind kind : allPlannerKinds()) {
+    for (const std::string& kind : builtInPlanners().names()) {
       // Not tree planners: HardWorldsPlanningTest.cpp, TimeAStarTest.cpp.
-      if (kind == PlannerKind::kHybridAStar || kind == PlannerKind::kTimeAStar) continue;
+      if (kind == "hybrid-a-star" || kind == "time-a-star") continue;
       for (SteeringKind steering : allSteeringKinds()) {
         for (int seed = 1; seed <= 2; ++seed) {
-          SCOPED_TRACE(std::string(toString(kind)) + " " + toString(steering) + " seed " +
+          SCOPED_TRACE(std::string(kind) + " " + toString(steering) + " seed " +
                        std::to_string(seed));
           PlanSetup setup = setupFor(kind, steering, seed);
-          if (kind == PlannerKind::kRrtStar) setup.planner.max_iterations = 60;
+          if (kind == "rrt-star") setup.search.max_iterations = 60;
           const PlanResult plain = planScenario(s, checker, setup);
-          setup.planner.smooth = true;
-          setup.planner.smoothing_attempts = 40;
+          setup.search.smooth = true;
+          setup.search.smoothing_attempts = 40;
           const PlanResult smoothed = planScenario(s, checker, setup);
           ASSERT_EQ(plain.solved(), smoothed.solved());
           if (!plain.solved()) continue;
@@ -193,14 +193,14 @@ TEST(TreePlanner, SmoothingNeverMakesAPlanSlowerAndKeepsItValid) {
 TEST(TreePlanner, SameSeedSameResultForEveryPlannerAndSteering) {
   const Scenario s = testing::studyLotParallel();
   const SatChecker checker(s);
-  for (PlannerKind kind : allPlannerKinds()) {
+  for (const std::string& kind : builtInPlanners().names()) {
     // Not tree planners: HardWorldsPlanningTest.cpp, TimeAStarTest.cpp.
-    if (kind == PlannerKind::kHybridAStar || kind == PlannerKind::kTimeAStar) continue;
+    if (kind == "hybrid-a-star" || kind == "time-a-star") continue;
     for (SteeringKind steering : allSteeringKinds()) {
-      SCOPED_TRACE(std::string(toString(kind)) + " " + toString(steering));
+      SCOPED_TRACE(std::string(kind) + " " + toString(steering));
       PlanSetup setup = setupFor(kind, steering, 11);
-      if (kind == PlannerKind::kRrtStar) setup.planner.max_iterations = 80;
-      setup.planner.smooth = true;
+      if (kind == "rrt-star") setup.search.max_iterations = 80;
+      setup.search.smooth = true;
       const PlanResult a = planScenario(s, checker, setup);
       const PlanResult b = planScenario(s, checker, setup);
       ASSERT_TRUE(a.solved());
@@ -219,10 +219,10 @@ TEST(TreePlanner, ProgressCountsEveryIterationUpToTheResult) {
   // against its budget; the last report is the result's own count.
   const Scenario s = testing::studyLot();
   const SatChecker checker(s);
-  for (PlannerKind kind : allPlannerKinds()) {
-    SCOPED_TRACE(toString(kind));
+  for (const std::string& kind : builtInPlanners().names()) {
+    SCOPED_TRACE(kind);
     PlanSetup setup = setupFor(kind, SteeringKind::kReedsShepp, 3);
-    if (kind == PlannerKind::kRrtStar) setup.planner.max_iterations = 60;
+    if (kind == "rrt-star") setup.search.max_iterations = 60;
     std::vector<long> done;
     long budget = -1;
     const PlanResult r = planScenario(s, checker, setup, [&](long d, long b) {
@@ -230,7 +230,7 @@ TEST(TreePlanner, ProgressCountsEveryIterationUpToTheResult) {
       budget = b;
     });
     ASSERT_FALSE(done.empty());
-    EXPECT_EQ(budget, setup.planner.max_iterations);
+    EXPECT_EQ(budget, setup.search.max_iterations);
     for (std::size_t i = 0; i < done.size(); ++i) EXPECT_EQ(done[i], static_cast<long>(i) + 1);
     EXPECT_EQ(done.back(), r.stats.iterations);
     // The callback only watches: the plan is the one made without it.
@@ -242,12 +242,12 @@ TEST(TreePlanner, OtherSeedOtherTrajectory) {
   const Scenario s = testing::studyLotParallel();
   const SatChecker checker(s);
   PlanSetup setup;
-  setup.planner.kind = PlannerKind::kRrtGoalConnect;  // PlanSetup's default uses no randomness
+  setup.planner = "rrt-goal-connect";  // PlanSetup's default uses no randomness
   // Balkcom-Mason steering reaches the parallel goal at the first goal check, whatever the seed.
   setup.steering_kind = SteeringKind::kReedsShepp;
-  setup.planner.seed = 11;
+  setup.search.seed = 11;
   const PlanResult a = planScenario(s, checker, setup);
-  setup.planner.seed = 12;
+  setup.search.seed = 12;
   const PlanResult c = planScenario(s, checker, setup);
   ASSERT_TRUE(a.solved());
   ASSERT_TRUE(c.solved());
@@ -260,23 +260,23 @@ TEST(TreePlanner, EitherHeadingGoalAcceptsHeadInAndBackIn) {
   s.goal.pose.theta = degToRad(90);
   s.goal.either_heading = true;
   const SatChecker checker(s);
-  for (PlannerKind kind : allPlannerKinds()) {
+  for (const std::string& kind : builtInPlanners().names()) {
     // Not tree planners: HardWorldsPlanningTest.cpp, TimeAStarTest.cpp.
-    if (kind == PlannerKind::kHybridAStar || kind == PlannerKind::kTimeAStar) continue;
+    if (kind == "hybrid-a-star" || kind == "time-a-star") continue;
     for (SteeringKind steering : allSteeringKinds()) {
       int solved = 0;
       for (int seed = 1; seed <= 4; ++seed) {
-        SCOPED_TRACE(std::string(toString(kind)) + " " + toString(steering) + " seed " +
+        SCOPED_TRACE(std::string(kind) + " " + toString(steering) + " seed " +
                      std::to_string(seed));
         PlanSetup setup = setupFor(kind, steering, seed);
-        if (kind == PlannerKind::kRrtStar) setup.planner.max_iterations = 80;
+        if (kind == "rrt-star") setup.search.max_iterations = 80;
         const PlanResult r = planScenario(s, checker, setup);
         if (!r.solved()) continue;
         ++solved;
         expectValidPlan(s, checker, setup, r);  // ends within tolerance of either heading
         expectTreeRecorded(r, 2);
       }
-      EXPECT_GE(solved, kind == PlannerKind::kRrt ? 2 : 4) << toString(kind);
+      EXPECT_GE(solved, kind == "rrt" ? 2 : 4) << kind;
     }
   }
 }
@@ -295,13 +295,13 @@ TEST(TreePlanner, EitherHeadingEndsTurnedWhenOnlyTheTurnedGoalIsFree) {
   const SatChecker checker(s);
   EXPECT_EQ(planScenario(s, checker, PlanSetup{}).status, PlanStatus::kInvalidGoal);
   s.goal.either_heading = true;
-  for (PlannerKind kind : allPlannerKinds()) {
+  for (const std::string& kind : builtInPlanners().names()) {
     // Not tree planners: HardWorldsPlanningTest.cpp, TimeAStarTest.cpp.
-    if (kind == PlannerKind::kHybridAStar || kind == PlannerKind::kTimeAStar) continue;
+    if (kind == "hybrid-a-star" || kind == "time-a-star") continue;
     for (SteeringKind steering : allSteeringKinds()) {
-      SCOPED_TRACE(std::string(toString(kind)) + " " + toString(steering));
+      SCOPED_TRACE(std::string(kind) + " " + toString(steering));
       PlanSetup setup = setupFor(kind, steering, 3);
-      if (kind == PlannerKind::kRrtStar) setup.planner.max_iterations = 60;
+      if (kind == "rrt-star") setup.search.max_iterations = 60;
       const PlanResult r = planScenario(s, checker, setup);
       expectValidPlan(s, checker, setup, r);
       EXPECT_NEAR(std::abs(r.trajectory.points.back().pose.theta), kPi,
@@ -319,19 +319,19 @@ TEST(TreePlanner, ReportsUnsolvedWithinIterationBudget) {
   fence.box.half_extents = {0.6, 0.01};
   s.obstacles.push_back(fence);
   const SatChecker checker(s);
-  for (PlannerKind kind : allPlannerKinds()) {
+  for (const std::string& kind : builtInPlanners().names()) {
     PlanSetup setup;
-    setup.planner.kind = kind;
-    setup.planner.max_iterations = kind == PlannerKind::kRrtStar ? 100 : 300;
+    setup.planner = kind;
+    setup.search.max_iterations = kind == "rrt-star" ? 100 : 300;
     const PlanResult r = planScenario(s, checker, setup);
-    EXPECT_EQ(r.status, PlanStatus::kIterationLimit) << toString(kind);
+    EXPECT_EQ(r.status, PlanStatus::kIterationLimit) << kind;
     EXPECT_TRUE(r.trajectory.empty());
     EXPECT_TRUE(r.cost_history.empty());
     // time-a-star may run out of cells to expand first: the fenced row is a small space.
-    if (kind == PlannerKind::kTimeAStar) {
-      EXPECT_LE(r.stats.iterations, setup.planner.max_iterations);
+    if (kind == "time-a-star") {
+      EXPECT_LE(r.stats.iterations, setup.search.max_iterations);
     } else {
-      EXPECT_EQ(r.stats.iterations, setup.planner.max_iterations);
+      EXPECT_EQ(r.stats.iterations, setup.search.max_iterations);
     }
     EXPECT_EQ(r.stats.first_solution_s, -1.0);
   }
@@ -380,12 +380,12 @@ TEST(TreePlanner, StartAndGoalFollowThePlacementRule) {
   s = testing::studyLot();
   s.start.x = s.lot.x_min_m + kPlacementMargin_m - 1e-10;
   ASSERT_FALSE(placementProblem(s, s.start).has_value());
-  for (const PlannerKind kind : {PlannerKind::kRrtGoalConnect, PlannerKind::kHybridAStar}) {
+  for (const std::string kind : {"rrt-goal-connect", "hybrid-a-star"}) {
     PlanSetup setup;
-    setup.planner.kind = kind;
-    setup.planner.max_iterations = 50;
+    setup.planner = kind;
+    setup.search.max_iterations = 50;
     r = planScenario(s, checker, setup);
-    EXPECT_NE(r.status, PlanStatus::kInvalidStart) << toString(kind) << ": " << r.message;
+    EXPECT_NE(r.status, PlanStatus::kInvalidStart) << kind << ": " << r.message;
   }
 }
 
@@ -403,16 +403,7 @@ TEST(TreePlanner, AStartOnTheLotEdgeIsNotReportedAsACollision) {
             "start: robot footprint overlaps obstacle \"wall_2\"");
 }
 
-TEST(TreePlanner, NamesRoundTripAndUnknownNamesThrow) {
-  for (PlannerKind kind : allPlannerKinds()) {
-    EXPECT_EQ(plannerKindFromString(toString(kind)), kind);
-  }
-  EXPECT_EQ(allPlannerKinds().size(), 6u);
-  EXPECT_STREQ(toString(PlannerKind::kHybridAStar), "hybrid-a-star");
-  EXPECT_STREQ(toString(PlannerKind::kTimeAStar), "time-a-star");
-  EXPECT_STREQ(toString(PlannerKind::kRrtStar), "rrt-star");
-  EXPECT_STREQ(toString(PlannerKind::kRrtConnect), "rrt-connect");
-  EXPECT_THROW(plannerKindFromString("rrt*"), Error);
+TEST(TreePlanner, SteeringNamesRoundTripAndUnknownNamesThrow) {
   for (SteeringKind kind : allSteeringKinds()) {
     EXPECT_EQ(steeringKindFromString(toString(kind)), kind);
   }
@@ -426,16 +417,16 @@ TEST(TreePlanner, RejectsBadDefinitions) {
   const SatChecker checker(s);
   // The tree planner's definition (PlanSetup's default planner is time-a-star).
   PlanSetup setup;
-  setup.planner.kind = PlannerKind::kRrtGoalConnect;
-  setup.planner.extend_distance_m = 0.0;
+  setup.planner = "rrt-goal-connect";
+  setup.planner_params["extend_distance_m"] = "0";
   EXPECT_THROW(planScenario(s, checker, setup), Error);
   setup = {};
-  setup.planner.kind = PlannerKind::kRrtGoalConnect;
-  setup.planner.cusp_penalty_m = -1.0;
+  setup.planner = "rrt-goal-connect";
+  setup.search.cusp_penalty_m = -1.0;
   EXPECT_THROW(planScenario(s, checker, setup), Error);
   setup = {};
-  setup.planner.kind = PlannerKind::kRrtGoalConnect;
-  setup.planner.smoothing_attempts = -1;
+  setup.planner = "rrt-goal-connect";
+  setup.search.smoothing_attempts = -1;
   EXPECT_THROW(planScenario(s, checker, setup), Error);
 }
 

@@ -41,7 +41,7 @@ def test_plan_result_has_status_stats_and_a_structured_trajectory(head_in_plan):
     assert traj.dtype.names == TRAJECTORY_FIELDS
     assert traj["t"][0] == 0.0 and np.all(np.diff(traj["t"]) > 0)
     stats = head_in_plan.stats
-    assert stats["planner"] == parksim.PlanSetup().planner.kind and stats["seed"] == 1
+    assert stats["planner"] == parksim.PlanSetup().planner and stats["seed"] == 1
     assert stats["iterations"] > 0 and stats["path_length_m"] > 0
     assert set(stats["phase_times_s"]) >= {"sampling", "steering", "collision_checking"}
 
@@ -84,7 +84,7 @@ def test_run_with_a_given_plan_drives_that_plan(head_in, head_in_plan):
 def test_options_reach_the_definitions_and_unknown_ones_are_refused(head_in):
     p = parksim.plan(head_in, planner="rrt-star", seed=4, max_iterations=300, record_tree=False,
                      steering="rotate-translate-rotate", validation={"resolution_m": 0.002})
-    assert p.setup.planner.kind == "rrt-star" and p.setup.planner.max_iterations == 300
+    assert p.setup.planner == "rrt-star" and p.setup.search.max_iterations == 300
     assert p.setup.steering == "rotate-translate-rotate"
     assert p.setup.validation.resolution_m == 0.002
     assert p.stats["motion_check_resolution_m"] == 0.002
@@ -93,6 +93,13 @@ def test_options_reach_the_definitions_and_unknown_ones_are_refused(head_in):
         parksim.plan(head_in, max_iteration=3)
     with pytest.raises(parksim.Error, match="rrt-nope"):
         parksim.plan(head_in, planner="rrt-nope")
+    # A planner's own parameters go by name; a typo is an error, not a default.
+    q = parksim.plan(head_in, planner="rrt-star", max_iterations=50,
+                     planner_params={"goal_bias": 0.2, "informed_sampling": False})
+    assert q.setup.planner_params == {"goal_bias": "0.2", "informed_sampling": "false"}
+    assert q.stats["planner_params"] == {"goal_bias": "0.2", "informed_sampling": "false"}
+    with pytest.raises(parksim.Error, match="unknown parameter 'goal_biass'"):
+        parksim.plan(head_in, planner="rrt-star", planner_params={"goal_biass": 0.2})
     with pytest.raises(TypeError, match="gain"):
         parksim.run(head_in, plan=head_in.start, gain=3)
 

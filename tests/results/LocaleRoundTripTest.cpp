@@ -53,7 +53,7 @@ struct Written {
 Written writeEverything(const fs::path& dir) {
   Written w{
       loadScenario(parksim::testing::sourceDir() + "/worlds/head_in.yaml"), {}, {}, {}, {}, {}};
-  w.setup.planner.seed = 1;
+  w.setup.search.seed = 1;
   const BulletCollisionWorld collision(w.scenario);
   w.plan = planScenario(w.scenario, collision, w.setup);
   writePlanFiles(dir.string(), w.scenario, w.setup, w.plan);

@@ -35,8 +35,8 @@ const Planned& planned(const std::string& world) {
     p.scenario = loadScenario(parksim::testing::sourceDir() + "/worlds/" + world + ".yaml");
     const BulletCollisionWorld checker(p.scenario);
     PlanSetup setup;
-    setup.planner.seed = 1;
-    setup.planner.record_tree = false;
+    setup.search.seed = 1;
+    setup.search.record_tree = false;
     const PlanResult result = planScenario(p.scenario, checker, setup);
     EXPECT_TRUE(result.solved()) << result.message;
     p.plan = result.trajectory;

@@ -35,8 +35,8 @@ TEST_P(ShowcaseWorld, PlansWithAnIndependentlyCheckedPlanAndDrivesItWithoutConta
   const Scenario s = showcase();
   const BulletCollisionWorld checker(s);
   PlanSetup setup;
-  setup.planner.seed = GetParam();
-  setup.planner.record_tree = false;
+  setup.search.seed = GetParam();
+  setup.search.record_tree = false;
   const PlanResult plan = planScenario(s, checker, setup);
   testing::expectValidPlan(s, checker, setup, plan);
   ASSERT_TRUE(plan.solved());

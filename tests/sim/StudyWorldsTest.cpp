@@ -47,8 +47,8 @@ const Planned& planned(const Case& c) {
     p.scenario = loadScenario(parksim::testing::sourceDir() + "/worlds/" + c.world + ".yaml");
     const BulletCollisionWorld checker(p.scenario);
     PlanSetup setup;
-    setup.planner.seed = c.seed;
-    setup.planner.record_tree = false;
+    setup.search.seed = c.seed;
+    setup.search.record_tree = false;
     const PlanResult result = planScenario(p.scenario, checker, setup);
     EXPECT_TRUE(result.solved()) << result.message;
     p.plan = result.trajectory;

@@ -11,6 +11,7 @@
 #include "parksim/core/Scenario.h"
 #include "parksim/core/Trajectory.h"
 #include "parksim/planner/MotionValidator.h"
+#include "parksim/planner/PathCost.h"
 #include "parksim/planner/PlanScenario.h"
 #include "tests/support/StudyLot.h"
 
@@ -97,7 +98,7 @@ inline void expectValidPlan(const Scenario& s, const FootprintChecker& checker,
   EXPECT_TRUE(validator.isValid(r.trajectory));
   expectCollisionFree(s, r.trajectory);
   expectEndsInGoal(s.goal, r.trajectory);
-  const CostWeights w{setup.planner.reverse_penalty, setup.planner.cusp_penalty_m};
+  const CostWeights w{setup.search.reverse_penalty, setup.search.cusp_penalty_m};
   EXPECT_NEAR(r.cost,
               r.objective == PlanObjective::kDuration ? r.trajectory.duration()
                                                       : trajectoryCost(r.trajectory, s.robot, w),

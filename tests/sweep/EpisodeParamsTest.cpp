@@ -43,10 +43,10 @@ TEST(EpisodeParams, DefaultsAreTheLibrarys) {
   const EpisodeParams p;
   const PlanSetup plan;
   const EpisodeRequest request;
-  EXPECT_EQ(p.planner, toString(plan.planner.kind));
+  EXPECT_EQ(p.planner, plan.planner);
   EXPECT_EQ(p.steering, toString(plan.steering_kind));
-  EXPECT_EQ(p.smooth, plan.planner.smooth);
-  EXPECT_EQ(p.seed, plan.planner.seed);
+  EXPECT_EQ(p.smooth, plan.search.smooth);
+  EXPECT_EQ(p.seed, plan.search.seed);
   EXPECT_EQ(p.max_iterations, kAutoIterations);
   EXPECT_EQ(p.timing, toString(plan.timing));
   EXPECT_EQ(p.tracking, toString(kDefaultTracking));
@@ -121,12 +121,13 @@ TEST(EpisodeSetup, AppliesOffsetsAndRejectsOnesThatLeaveTheLot) {
   EXPECT_NEAR(std::remainder(moved.goal.pose.theta - world.goal.pose.theta - kPi / 2, 2 * kPi), 0.0,
               1e-12);
   const EpisodeSettings s = resolveSettings(r);
-  EXPECT_EQ(s.plan.planner.seed, 9u);
+  EXPECT_EQ(s.plan.search.seed, 9u);
   EXPECT_EQ(s.execution.tracking, TrackingMode::kOpen);
   EXPECT_EQ(s.execution.realism.name, "lab");
   EXPECT_EQ(s.execution.noise_seed, 4u);
   EXPECT_EQ(s.plan.timing, TimingKind::kStudy);
-  EXPECT_EQ(s.plan.planner.max_iterations, defaultIterationBudget(s.plan.planner.kind, world.lot));
+  EXPECT_EQ(s.plan.search.max_iterations,
+            defaultIterationBudget(builtInPlanners().find(s.plan.planner).info, world));
   EXPECT_EQ(s.tolerance.goal_pos_err_m, 0.01);
   EXPECT_EQ(s.tolerance.max_pos_err_m, TrackingTolerance{}.max_pos_err_m);
   // "world" keeps the world's realism (none here: the ideal robot); no offset shares the world.

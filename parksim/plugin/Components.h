@@ -1,0 +1,35 @@
+#pragma once
+// The planners and controllers a run may select by name: parksim's own, plus those of the
+// plugins loaded (PluginLoader.h), with a record of each plugin for results. A front-end builds
+// one, then hands it to every episode it runs (EpisodeRequest::components).
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "parksim/planner/PlannerRegistry.h"
+#include "parksim/sim/Controller.h"
+
+namespace parksim {
+
+/// A loaded plugin, as results record it: resumes, shards and Slurm tasks load the same code
+/// or refuse (sweep.json, metrics.json).
+struct PluginRecord {
+  std::string name;                      ///< the plugin's own name
+  std::string version;                   ///< its own version text
+  std::string path;                      ///< the file it was loaded from (absolute)
+  std::string hash;                      ///< FNV-1a 64 of the file's bytes, 16 hex digits
+  std::vector<std::string> planners;     ///< what it registered
+  std::vector<std::string> controllers;  ///< what it registered
+};
+
+struct Components {
+  PlannerRegistry planners = builtInPlanners();
+  ControllerRegistry controllers = builtInControllers();
+  std::vector<PluginRecord> plugins;  ///< in load order
+};
+
+/// parksim's own planners and controllers, no plugins. Built once, shared.
+std::shared_ptr<const Components> builtInComponents();
+
+}  // namespace parksim

@@ -1,0 +1,122 @@
+#pragma once
+// The one controller interface (nav2's Controller: setPlan, then computeVelocityCommands every
+// cycle): reset with the plan and the world, then at every control tick what the robot knows
+// in, left and right wheel speed commands out. parksim's tracking controller
+// (TrackingController.h) implements it exactly as a user's controller does, and is found by
+// name in a ControllerRegistry (ControllerRegistry.h), built in or loaded from a plugin.
+//
+// Ticks: with the ideal robot, every physics step (240 Hz by default), on the true pose; under
+// a realism (realism/RealismDef.h), at its control rate, on the estimator's pose, and each
+// command then goes the realism's way: latency, the wheel-speed loop, the motors. The same
+// controller runs under both without knowing which.
+//
+//   class Stop : public parksim::Controller {
+//    public:
+//     void reset(const parksim::ControllerSetup&) override {}
+//     parksim::WheelSpeeds command(const parksim::ControllerInput& in) override {
+//       return in.plan_ended ? parksim::WheelSpeeds{} : in.feedforward;  // open loop
+//     }
+//   };
+//
+// Commands are wheel angular speeds, rad/s, each within the robot's max_wheel_speed_radps. A
+// controller that is not built in and throws, returns a value that is not finite or outside
+// that limit is a controller_error (pipeline/Verdict.h), not an input error.
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "parksim/core/ComponentRegistry.h"
+#include "parksim/core/DiffDrive.h"
+#include "parksim/core/ParamMap.h"
+#include "parksim/core/ParamSet.h"
+#include "parksim/core/Pose2.h"
+#include "parksim/core/Scenario.h"
+#include "parksim/core/Trajectory.h"
+
+namespace parksim {
+
+/// What a controller is told before the first tick of an episode; valid until the episode ends.
+struct ControllerSetup {
+  /// The robot as the controller believes it to be (nominal wheel base, radius and limits; the
+  /// robot as built may differ under a realism), the lot, the obstacles and the goal region.
+  const Scenario& scenario;
+  /// The plan to follow, in the lot frame, on the plan's clock: episode time t is plan time
+  /// plan.points.front().t_s + t.
+  const Trajectory& plan;
+  /// Time between ticks, s: the physics step with the ideal robot, the realism's control
+  /// period otherwise.
+  double period_s = 0.0;
+  /// A command takes effect this long after its tick (the realism's control latency), s.
+  double latency_s = 0.0;
+  /// True when ControllerInput::pose is an estimate (a realism with an estimator), false when
+  /// it is the true pose.
+  bool estimated_pose = false;
+};
+
+/// What the robot knows at one control tick. Poses are in the lot frame.
+struct ControllerInput {
+  long tick = 0;     ///< 0 at the episode's start, then 1, 2, ...
+  double t_s = 0.0;  ///< episode time of the tick, s
+  Pose2 pose;        ///< the true pose, or the estimator's estimate under a realism
+  /// The encoders' wheel angles, rad (quantised and noisy under a realism).
+  WheelSpeeds encoders_rad;
+  /// Measured wheel speeds, rad/s: the true speeds with the ideal robot; under a realism the
+  /// encoders' difference over the last control period.
+  WheelSpeeds wheel_speeds_radps;
+  Pose2 reference;  ///< the plan's pose at t_s
+  /// The plan's twist and wheel speeds over the interval this tick's command will act (from
+  /// the tick plus the latency, for one period): the feed-forward.
+  Twist reference_twist;
+  WheelSpeeds feedforward;
+  bool plan_ended = false;  ///< past the plan's end: the reference is its last pose, at rest
+};
+
+class Controller {
+ public:
+  virtual ~Controller() = default;
+
+  /// Called once before the first tick, with the plan to follow.
+  virtual void reset(const ControllerSetup& setup) = 0;
+  /// The wheel speed commands for this tick, rad/s.
+  virtual WheelSpeeds command(const ControllerInput& input) = 0;
+};
+
+/// What the registry knows of a controller besides how to make one.
+struct ControllerInfo {
+  std::string name;               ///< registered name, as --controller and sweep specs write it
+  std::string description;        ///< one line, for help texts
+  std::vector<ParamInfo> params;  ///< its declared parameters (ParamSet.h)
+  /// True for parksim's own controllers; a user's controller's commands are checked (finite,
+  /// within the wheel-speed limit) and its failures are controller_error. Set by the registry.
+  bool built_in = false;
+  std::string plugin;  ///< the plugin that registered it ("" for built-ins)
+};
+
+/// Makes a controller with its parameters applied; throws Error on a bad parameter.
+using ControllerFactory = std::function<std::unique_ptr<Controller>(const ParamMap& params)>;
+
+struct ControllerEntry {
+  static constexpr const char* kKind = "controller";
+  ControllerInfo info;
+  ControllerFactory make;
+};
+
+/// A ControllerEntry whose controller type C is constructed as C(def) from a Def struct D whose
+/// parameters `bind` declares (as plannerEntry, planner/Planner.h).
+template <class C, class D>
+ControllerEntry controllerEntry(ControllerInfo info, D def, void (*bind)(D&, ParamSet&)) {
+  const std::string owner = "controller " + info.name;
+  info.params = declaredParams(owner, def, bind);
+  return {std::move(info), boundFactory<Controller, C>(owner, std::move(def), bind)};
+}
+
+/// Controllers by name (ComponentRegistry.h).
+using ControllerRegistry = ComponentRegistry<ControllerEntry>;
+
+/// parksim's own controllers: tracking (TrackingController.h), the default. Built once, never
+/// changed.
+const ControllerRegistry& builtInControllers();
+
+}  // namespace parksim
