@@ -6,6 +6,7 @@
 // parksim::Error, which main() prints as one line.
 
 #include <functional>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -21,6 +22,10 @@ using enum cli::ExitCode;  // kExitOk, ..., shared with parksim-bench (parksim/c
 /// controller_error 6.
 int exitCodeFor(EpisodeStatus status);
 
+/// A verdict's one line: its reason, after its status's name where the reason does not say
+/// what failed ("plan_invalid: at t = ...", "controller_error: controller x threw ...").
+std::string verdictLine(const Verdict& verdict);
+
 using cli::OutputOptions;  // -q, -v and --progress, which every command takes
 
 using CommandRunner = std::function<int(const OutputOptions&)>;
@@ -33,5 +38,6 @@ CommandRunner setupMergeCommand(CLI::App& sub);
 CommandRunner setupReportCommand(CLI::App& sub);
 CommandRunner setupCompareCommand(CLI::App& sub);
 CommandRunner setupVerifyCommand(CLI::App& sub);
+CommandRunner setupListCommand(CLI::App& sub);
 
 }  // namespace parksim::app

@@ -16,4 +16,14 @@ int exitCodeFor(EpisodeStatus status) {
   return kExitInternal;
 }
 
+std::string verdictLine(const Verdict& verdict) {
+  switch (verdict.status) {
+    case EpisodeStatus::kPlanInvalid:
+    case EpisodeStatus::kPlannerError:
+    case EpisodeStatus::kControllerError:
+      return std::string(toString(verdict.status)) + ": " + verdict.reason;
+    default: return verdict.reason;
+  }
+}
+
 }  // namespace parksim::app

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/Command.h"
+#include "parksim/cli/ComponentOptions.h"
 #include "parksim/cli/OutputDir.h"
 #include "parksim/cli/PlanOptions.h"
 #include "parksim/cli/Progress.h"
@@ -21,11 +22,13 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
     std::string world;
     std::string out = "out";
     cli::PlanCliOptions plan;
+    cli::PluginOptions plugins;
     cli::WorldOverrideOptions world_overrides;
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
   opt->plan.addTo(sub);
+  opt->plugins.addTo(sub);
   opt->world_overrides.addTo(sub);
   sub.add_option("--out", opt->out, "output directory")->capture_default_str();
 
@@ -33,11 +36,13 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
     EpisodeRequest request;
     request.world = cli::loadWorldWith(opt->world, opt->world_overrides);
     request.plan = opt->plan.toSetup();
+    request.components = opt->plugins.load();
     request.drive = false;
     checkEpisodeRequest(request);
     cli::OutputDir out(opt->out);
     request.out_dir = out.path();
-    const PlanSetup setup = resolvedPlanSetup(request.plan, request.world->scenario);
+    const PlanSetup setup =
+        resolvedPlanSetup(request.plan, request.world->scenario, componentsOf(request).planners);
     cli::Progress progress(std::string("planning (") + setup.planner + ")",
                            std::max(1, setup.search.max_iterations),
                            cli::progressWanted(output.progress, output.quiet));
@@ -46,7 +51,8 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
     progress.finish();
     out.commit();
     if (!outcome.verdict.met()) {
-      std::fprintf(stderr, "parksim plan: %s\n", cli::printable(outcome.verdict.reason).c_str());
+      std::fprintf(stderr, "parksim plan: %s\n",
+                   cli::printable(verdictLine(outcome.verdict)).c_str());
       return exitCodeFor(outcome.verdict.status);
     }
     const PlanResult& result = *outcome.plan;

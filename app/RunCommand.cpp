@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/Command.h"
+#include "parksim/cli/ComponentOptions.h"
 #include "parksim/cli/FiguresOption.h"
 #include "parksim/cli/GlBackendOption.h"
 #include "parksim/cli/OutputDir.h"
@@ -42,6 +43,8 @@ struct RunOptions {
   std::string tracking = toString(kDefaultTracking);
   std::string plan_file;
   cli::PlanCliOptions plan;
+  cli::PluginOptions plugins;
+  cli::ControllerOptions controller;
   cli::WorldOverrideOptions world_overrides;
   bool frames = false;
   std::string figures;  // empty: all with --frames, else none
@@ -144,6 +147,9 @@ EpisodeRequest toRequest(const RunOptions& o) {
   EpisodeRequest r;
   r.world = cli::loadWorldWith(o.world, o.world_overrides);
   r.plan = o.plan.toSetup();
+  r.components = o.plugins.load();
+  r.controller = o.controller.name;
+  r.controller_params = o.controller.paramMap();
   if (!o.plan_file.empty()) {
     r.given_plan = readTrajectoryCsv(o.plan_file);
     r.given_plan_source = o.plan_file;
@@ -261,14 +267,8 @@ void printVerdict(const EpisodeOutcome& out) {
     prefix = std::to_string(n - out.realisationsMet()) + " of " + std::to_string(n) +
              " realisations failed; first (noise seed " + std::to_string(seed) + "): ";
   }
-  // Statuses whose reason does not say what failed carry their name.
-  const EpisodeStatus s = out.verdict.status;
-  if (s == EpisodeStatus::kPlanInvalid || s == EpisodeStatus::kPlannerError ||
-      s == EpisodeStatus::kControllerError) {
-    prefix += std::string(toString(s)) + ": ";
-  }
   std::fprintf(stderr, "parksim run: %s%s\n", prefix.c_str(),
-               printable(out.verdict.reason).c_str());
+               printable(verdictLine(out.verdict)).c_str());
 }
 
 }  // namespace
@@ -277,6 +277,8 @@ CommandRunner setupRunCommand(CLI::App& sub) {
   auto opt = std::make_shared<RunOptions>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
   opt->plan.addTo(sub);
+  opt->plugins.addTo(sub);
+  opt->controller.addTo(sub);
   opt->world_overrides.addTo(sub);
   sub.add_option("--out", opt->out, "output directory")->capture_default_str();
   addEpisodeOptions(sub, *opt);

@@ -41,6 +41,8 @@ int main(int argc, char** argv) {
       setupCompareCommand);
   add("verify", "check a sweep's results tables: changed rows, mixed worlds or builds",
       setupVerifyCommand);
+  add("list", "the planners and controllers (built in and plugins') with their parameters",
+      setupListCommand);
 
   // CLI11 says "A subcommand is required" about `parksim foo`; say what was wrong instead.
   if (argc > 1 && argv[1][0] != '-') {

@@ -51,4 +51,5 @@ install(FILES
   ${PROJECT_BINARY_DIR}/parksimConfig.cmake
   ${PROJECT_BINARY_DIR}/parksimConfigVersion.cmake
   ${PROJECT_SOURCE_DIR}/cmake/parksimImportedTargets.cmake
+  ${PROJECT_SOURCE_DIR}/cmake/ParksimPlugin.cmake
   DESTINATION ${PARKSIM_CMAKE_DIR})

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 
+#include "parksim/cli/ComponentOptions.h"
 #include "parksim/cli/Validators.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
@@ -80,10 +81,7 @@ int parseIterationBudget(const std::string& text, const std::string& option) {
 PlanSetup PlanCliOptions::toSetup() const {
   PlanSetup setup;
   setup.planner = planner;
-  for (const std::string& text : planner_params) {
-    auto [name, value] = splitParamAssignment(text, "--planner-param");
-    setup.planner_params[name] = canonicalParamText(value);
-  }
+  setup.planner_params = paramMapFrom(planner_params, "--planner-param");
   setup.search.seed = seed;
   setup.search.max_iterations = parseIterationBudget(max_iterations);
   setup.search.max_time_s = time_limit_s;

@@ -93,8 +93,6 @@ struct PipelineProgress {
 /// and the command line's options state them without building a whole request.
 inline constexpr const char* kDefaultRealism = "world";
 inline constexpr std::uint64_t kDefaultNoiseSeed = 1;
-/// The default controller: parksim's tracking controller (sim/TrackingController.h).
-inline constexpr const char* kDefaultController = "tracking";
 
 /// A FigureDef that draws nothing (an EpisodeRequest's default).
 inline FigureDef noFigures() {

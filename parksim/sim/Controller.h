@@ -37,6 +37,9 @@
 
 namespace parksim {
 
+/// The default controller: parksim's tracking controller (TrackingController.h).
+inline constexpr const char* kDefaultController = "tracking";
+
 /// What a controller is told before the first tick of an episode; valid until the episode ends.
 struct ControllerSetup {
   /// The robot as the controller believes it to be (nominal wheel base, radius and limits; the

@@ -44,7 +44,7 @@ using EpisodeObserver = std::function<void(const EpisodeSample&)>;
 struct EpisodeController {
   /// Null: parksim's tracking controller with its default parameters.
   std::unique_ptr<Controller> controller;
-  std::string name = "tracking";  ///< its registered name, for metrics and messages
+  std::string name = kDefaultController;  ///< its registered name, for metrics and messages
   /// False for a user's controller: its commands are checked (finite, within the wheel-speed
   /// limit) and what it throws or gets wrong ends the episode with a controller error
   /// (EpisodeMetrics::controller_error) instead of propagating.

@@ -29,7 +29,7 @@ struct ParkedRobotDisplacement {
 struct EpisodeMetrics {
   TrackingMode tracking = TrackingMode::kClosed;
   /// The controller that drove the plan (closed-loop tracking): its registered name.
-  std::string controller = "tracking";
+  std::string controller = "tracking";  // kDefaultController (Controller.h)
   /// Empty unless the controller (a user's) failed: why, in one line ("controller x returned
   /// nan rad/s at t = 1.250 s"). The episode ended at that tick, its rows and measures up to
   /// there; the verdict is controller_error.

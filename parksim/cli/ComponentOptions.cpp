@@ -1,0 +1,41 @@
+#include "parksim/cli/ComponentOptions.h"
+
+#include "parksim/core/Error.h"
+#include "parksim/core/ParamSet.h"
+#include "parksim/core/Text.h"
+#include "parksim/plugin/PluginLoader.h"
+
+namespace parksim::cli {
+
+void PluginOptions::addTo(CLI::App& sub) {
+  sub.add_option("--plugin", paths,
+                 "a plugin (shared library, docs/your-code.md) whose planners and controllers "
+                 "--planner and --controller may name; repeatable");
+}
+
+std::shared_ptr<const Components> PluginOptions::load() const { return loadComponents(paths); }
+
+void ControllerOptions::addTo(CLI::App& sub) {
+  sub.add_option("--controller", name,
+                 "controller for closed-loop tracking, by name: " +
+                     joinNames(builtInControllers().names()) +
+                     " (or a plugin's); `parksim list` shows them with their parameters")
+      ->capture_default_str();
+  sub.add_option("--controller-param", params,
+                 "NAME=VALUE: a parameter of the selected controller (repeatable)");
+}
+
+ParamMap ControllerOptions::paramMap() const { return paramMapFrom(params, "--controller-param"); }
+
+ParamMap paramMapFrom(const std::vector<std::string>& entries, const std::string& option) {
+  ParamMap out;
+  for (const std::string& text : entries) {
+    auto [name, value] = splitParamAssignment(text, option);
+    if (!out.emplace(name, canonicalParamText(value)).second) {
+      throw Error(option + ": " + name + " given twice");
+    }
+  }
+  return out;
+}
+
+}  // namespace parksim::cli

@@ -1,0 +1,38 @@
+#pragma once
+// The options that choose code by name: --plugin PATH (repeatable) loads plugins whose
+// planners and controllers --planner and --controller may then name; --controller and
+// --controller-param choose the controller that drives closed-loop tracking.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "parksim/core/ParamMap.h"
+#include "parksim/plugin/Components.h"
+
+namespace parksim::cli {
+
+struct PluginOptions {
+  std::vector<std::string> paths;
+
+  void addTo(CLI::App& sub);
+  /// parksim's own planners and controllers plus those of every plugin, loaded in order. Throws
+  /// Error naming the file when one cannot be loaded.
+  std::shared_ptr<const Components> load() const;
+};
+
+struct ControllerOptions {
+  std::string name = kDefaultController;
+  std::vector<std::string> params;  ///< NAME=VALUE
+
+  void addTo(CLI::App& sub);
+  /// The parameters as a ParamMap (canonical text); throws Error on an entry without '='.
+  ParamMap paramMap() const;
+};
+
+/// "NAME=VALUE" entries of `option` as a ParamMap; a name given twice is an error.
+ParamMap paramMapFrom(const std::vector<std::string>& entries, const std::string& option);
+
+}  // namespace parksim::cli
