@@ -38,7 +38,7 @@ template <class Info>
 void printInfo(const Info& info) {
   std::printf("  %-18s %s%s\n", cli::printable(info.name).c_str(),
               cli::printable(info.description).c_str(),
-              info.built_in ? "" : (" (plugin " + cli::printable(info.plugin) + ")").c_str());
+              info.plugin.empty() ? "" : (" (plugin " + cli::printable(info.plugin) + ")").c_str());
   for (const ParamInfo& p : info.params) {
     std::printf("      %s = %s  %s: %s\n", cli::printable(p.name).c_str(),
                 cli::printable(p.default_text).c_str(), cli::printable(p.range).c_str(),

@@ -3,7 +3,8 @@
 // (sim/ControllerRegistry.h), parksim's own and those plugins add. One registry type for both,
 // so names, errors and trust follow the same rules.
 //
-// An Entry is a struct with `info` (holding `name`, `params`, `built_in` and `plugin`) and
+// An Entry is a struct with `info` (holding `name`, `params`, `runs_user_code`, `trusted` and
+// `plugin`) and
 // `make`, a factory taking a ParamMap; it names its kind in `Entry::kKind` ("planner").
 
 #include <algorithm>
@@ -31,9 +32,9 @@ inline bool isComponentName(const std::string& name) {
 template <class Entry>
 class ComponentRegistry {
  public:
-  /// Adds `entry`, marked as registered by `plugin` ("" for parksim's own, which are then
-  /// trusted: info.built_in). Throws Error when the name is not a component name, there is no
-  /// factory, or the name is taken.
+  /// Adds `entry`, marked as registered by `plugin` ("" for parksim's own); it is trusted
+  /// (info.trusted) when no plugin registers it and it runs no user code. Throws Error when the
+  /// name is not a component name, there is no factory, or the name is taken.
   void add(Entry entry, const std::string& plugin = "") {
     const std::string& name = entry.info.name;
     if (!isComponentName(name)) {
@@ -46,7 +47,7 @@ class ComponentRegistry {
                   origin(known->info.plugin) + ", then " + origin(plugin) + ")");
     }
     entry.info.plugin = plugin;
-    entry.info.built_in = plugin.empty();
+    entry.info.trusted = plugin.empty() && !entry.info.runs_user_code;
     entries_.push_back(std::move(entry));
   }
 

@@ -60,7 +60,7 @@ void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
     return;
   }
   out.trajectory = out.plan->trajectory;
-  if (!components.planners.find(out.plan_setup.planner).info.built_in) {
+  if (!components.planners.find(out.plan_setup.planner).info.trusted) {
     checkForeignPlan(scenario, collision, out.plan_setup, out);
   }
 }
@@ -68,7 +68,7 @@ void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
 // The controller of one realisation: a fresh one from the registry (closed loop).
 EpisodeController controllerFor(const EpisodeRequest& request) {
   const ControllerEntry& entry = componentsOf(request).controllers.find(request.controller);
-  return {entry.make(request.controller_params), entry.info.name, entry.info.built_in};
+  return {entry.make(request.controller_params), entry.info.name, entry.info.trusted};
 }
 
 // A recorder filming into the request's directory, with the plan drawn.

@@ -258,7 +258,7 @@ PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checke
                                            setup.timing_period_s, setup.start_jerk_radps3);
   const PlanningProblem problem{scenario, checker, validator, *steering, setup, limits, progress};
   PlanResult result;
-  if (entry.info.built_in) {
+  if (entry.info.trusted) {
     result = planner->solve(problem);
   } else {
     result = solveUserPlanner(*planner, entry.info, problem);

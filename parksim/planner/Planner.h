@@ -100,9 +100,13 @@ struct PlannerInfo {
   std::function<int(const Scenario&)> default_budget;
   /// Its declared parameters (ParamSet.h), for help texts and docs.
   std::vector<ParamInfo> params;
-  /// True for parksim's own planners, which validate every plan as they build it; a plan from
-  /// any other is checked before it is driven. Set by the registry, not by the entry.
-  bool built_in = false;
+  /// Set by the entry: the planner runs code parksim does not own (a command, a Python
+  /// object), so it is not trusted even when registered without a plugin.
+  bool runs_user_code = false;
+  /// Set by the registry: parksim's own code (no plugin, no user code), which validates every
+  /// plan as it builds it. A plan from any other planner is checked before it is driven
+  /// (PlanCheck.h), and what it throws is a planner_error, not an input error.
+  bool trusted = false;
   /// The plugin that registered it ("" for built-ins).
   std::string plugin;
 };

@@ -91,9 +91,12 @@ struct ControllerInfo {
   std::string name;               ///< registered name, as --controller and sweep specs write it
   std::string description;        ///< one line, for help texts
   std::vector<ParamInfo> params;  ///< its declared parameters (ParamSet.h)
-  /// True for parksim's own controllers; a user's controller's commands are checked (finite,
-  /// within the wheel-speed limit) and its failures are controller_error. Set by the registry.
-  bool built_in = false;
+  /// Set by the entry: the controller runs code parksim does not own (a process, a Python
+  /// object), so it is not trusted even when registered without a plugin.
+  bool runs_user_code = false;
+  /// Set by the registry: parksim's own code. Any other controller's commands are checked
+  /// (finite, within the wheel-speed limit) and its failures are controller_error.
+  bool trusted = false;
   std::string plugin;  ///< the plugin that registered it ("" for built-ins)
 };
 

@@ -204,7 +204,7 @@ struct Episode::Impl {
     setup.period_s = loop ? loop->holdPeriod() : dt;
     setup.latency_s = loop ? loop->def.control.latency_s : 0.0;
     setup.estimated_pose = loop && loop->def.estimator.kind != EstimatorKind::kTruth;
-    if (controller.built_in) {
+    if (controller.trusted) {
       controller.controller->reset(setup);
       return;
     }
@@ -256,7 +256,7 @@ struct Episode::Impl {
       return reference.wheelsAt(mid);
     }
     const ControllerInput in = controllerInput();
-    if (controller.built_in) return controller.controller->command(in);
+    if (controller.trusted) return controller.controller->command(in);
     WheelSpeeds out;
     guarded([&] { out = controller.controller->command(in); }, "command");
     if (!controller_error.empty()) return {};

@@ -45,10 +45,10 @@ struct EpisodeController {
   /// Null: parksim's tracking controller with its default parameters.
   std::unique_ptr<Controller> controller;
   std::string name = kDefaultController;  ///< its registered name, for metrics and messages
-  /// False for a user's controller: its commands are checked (finite, within the wheel-speed
-  /// limit) and what it throws or gets wrong ends the episode with a controller error
-  /// (EpisodeMetrics::controller_error) instead of propagating.
-  bool built_in = true;
+  /// False for a user's controller (ControllerInfo::trusted): its commands are checked (finite,
+  /// within the wheel-speed limit) and what it throws or gets wrong ends the episode with a
+  /// controller error (EpisodeMetrics::controller_error) instead of propagating.
+  bool trusted = true;
 };
 
 /// Physics steps the episode of `plan` may take at most: (plan duration + max_stop_time_s) /
