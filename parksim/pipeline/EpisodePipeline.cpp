@@ -47,6 +47,10 @@ void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
     return;
   }
   const Components& components = componentsOf(request);
+  const PlannerInfo& info = components.planners.find(out.plan_setup.planner).info;
+  // Where the planner's own code runs, for a watching process (UserCodeIsolation.h).
+  UserCodeWatch* watch = info.trusted ? nullptr : request.watch;
+  if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kPlanner, info.name);
   try {
     out.plan = planScenario(scenario, collision, out.plan_setup, request.progress.plan,
                             components.planners);
@@ -54,13 +58,14 @@ void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
     out.verdict = userCodeVerdict(e);
     return;
   }
+  if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kParksim, "");
   out.plan_summary = planSummary(scenario, out.plan_setup, *out.plan);
   if (!out.plan->solved()) {
     out.verdict = planFailedVerdict(*out.plan);
     return;
   }
   out.trajectory = out.plan->trajectory;
-  if (!components.planners.find(out.plan_setup.planner).info.trusted) {
+  if (!info.trusted) {
     checkForeignPlan(scenario, collision, out.plan_setup, out);
   }
 }
@@ -68,7 +73,8 @@ void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
 // The controller of one realisation: a fresh one from the registry (closed loop).
 EpisodeController controllerFor(const EpisodeRequest& request) {
   const ControllerEntry& entry = componentsOf(request).controllers.find(request.controller);
-  return {entry.make(request.controller_params), entry.info.name, entry.info.trusted};
+  return {entry.make(request.controller_params), entry.info.name, entry.info.trusted,
+          request.watch};
 }
 
 // A recorder filming into the request's directory, with the plan drawn.

@@ -276,12 +276,17 @@ struct Episode::Impl {
   // Runs a user's controller call; what it throws ends the episode with a controller error.
   template <class F>
   void guarded(F&& call, const char* what) {
+    UserCodeWatch* watch = controller.watch;
+    if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kController, controller.name);
     try {
       call();
+      if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kParksim, "");
     } catch (const std::exception& e) {
+      if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kParksim, "");
       fail(std::string("threw in ") + what + " at t = " +
            formatFixed(static_cast<double>(world.steps()) * dt, 3) + " s: " + e.what());
     } catch (...) {
+      if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kParksim, "");
       fail(std::string("threw something that is not a std::exception in ") + what);
     }
   }
