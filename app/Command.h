@@ -6,11 +6,13 @@
 // parksim::Error, which main() prints as one line.
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "parksim/cli/Program.h"
+#include "parksim/core/UserCodeWatch.h"
 #include "parksim/pipeline/Verdict.h"
 
 namespace parksim::app {
@@ -25,6 +27,13 @@ int exitCodeFor(EpisodeStatus status);
 /// A verdict's one line: its reason, after its status's name where the reason does not say
 /// what failed ("plan_invalid: at t = ...", "controller_error: controller x threw ...").
 std::string verdictLine(const Verdict& verdict);
+
+/// Runs `body` in a watched child process when `isolate` (the request runs user code), so that
+/// user code that crashes or hangs ends as a verdict: "PROGRAM: planner_error: ..." on stderr,
+/// and nothing returned (the caller commits nothing and exits kExitUserCodeFailed). Otherwise
+/// body(nullptr). `body` returns the exit code; it must not commit the output directory.
+std::optional<int> runWatched(const char* program, bool isolate, const UserCodeLimits& limits,
+                              const std::function<int(UserCodeWatch*)>& body);
 
 using cli::OutputOptions;  // -q, -v and --progress, which every command takes
 

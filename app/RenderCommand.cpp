@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/Command.h"
+#include "parksim/cli/ComponentOptions.h"
 #include "parksim/cli/FiguresOption.h"
 #include "parksim/cli/GlBackendOption.h"
 #include "parksim/cli/OutputDir.h"
@@ -37,12 +38,16 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     std::vector<double> steer_target;
     std::string figures = "all";
     cli::PlanCliOptions plan;
+    cli::PluginOptions plugins;
+    cli::UserCodeOptions user_code;
     cli::WorldOverrideOptions world_overrides;
     cli::GlBackendOption gl_backend;
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
   opt->plan.addTo(sub);
+  opt->plugins.addTo(sub);
+  opt->user_code.addTo(sub);
   opt->world_overrides.addTo(sub);
   // render draws both of the study's planners unless --planner names one: no single default.
   CLI::Option* planner = sub.get_option("--planner");
@@ -90,14 +95,18 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     if (app->count("--planner") == 0) planners = {"rrt", "rrt-goal-connect"};
     // Every input is read and checked before --out is touched.
     std::vector<EpisodeRequest> requests;
+    const std::shared_ptr<const Components> components = opt->plugins.load();
+    bool user_code = false;
     for (const std::string& name : planners) {
       cli::PlanCliOptions options = opt->plan;
       options.planner = name;
       EpisodeRequest& r = requests.emplace_back();
       r.world = world;
       r.plan = options.toSetup();
+      r.components = components;
       r.drive = false;
       checkEpisodeRequest(r);
+      user_code = user_code || runsUserCode(r);
     }
     if (!opt->executed.empty()) inputs.tracking = readTrackingRecord(opt->executed);
     std::optional<Pose2> target;
@@ -106,23 +115,34 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     }
 
     cli::OutputDir out(opt->out);
-    std::string report;
-    for (std::size_t i = 0; i < planners.size(); ++i) {
-      const EpisodeOutcome outcome = runEpisodePipeline(requests[i]);
-      const std::string json_name = "/plan_" + planners[i] + ".json";
-      writeFileAtomically(out.path() + json_name, jsonText(outcome.plan_summary));
-      report += cli::printable(planners[i] + ": " + toString(outcome.plan->status) + " (" +
-                               opt->out + json_name + ")") +
-                "\n";
-      inputs.plans.push_back(planFigure(scenario, outcome.plan_setup, *outcome.plan));
-    }
-    inputs.steering = steeringExample(scenario, target);
-    for (const std::string& path : writeFigures(scenario, inputs, def, out.path() + "/figures")) {
-      report += cli::printable("wrote " + out.shown(path)) + "\n";
-    }
-    out.commit();
-    std::fputs(report.c_str(), stdout);
-    return 0;
+    // A user's planner runs in a watched child: its crash or hang is a verdict.
+    const std::optional<int> code =
+        runWatched("parksim render", user_code, opt->user_code.limits, [&](UserCodeWatch* watch) {
+          std::string report;
+          for (std::size_t i = 0; i < planners.size(); ++i) {
+            requests[i].watch = watch;
+            const EpisodeOutcome outcome = runEpisodePipeline(requests[i]);
+            if (!outcome.plan) {  // the user's planner failed: nothing to draw
+              report += cli::printable(planners[i] + ": " + verdictLine(outcome.verdict)) + "\n";
+              continue;
+            }
+            const std::string json_name = "/plan_" + planners[i] + ".json";
+            writeFileAtomically(out.path() + json_name, jsonText(outcome.plan_summary));
+            report += cli::printable(planners[i] + ": " + toString(outcome.plan->status) + " (" +
+                                     opt->out + json_name + ")") +
+                      "\n";
+            inputs.plans.push_back(planFigure(scenario, outcome.plan_setup, *outcome.plan));
+          }
+          inputs.steering = steeringExample(scenario, target);
+          for (const std::string& path :
+               writeFigures(scenario, inputs, def, out.path() + "/figures")) {
+            report += cli::printable("wrote " + out.shown(path)) + "\n";
+          }
+          std::fputs(report.c_str(), stdout);
+          return 0;
+        });
+    if (code) out.commit();
+    return code.value_or(kExitUserCodeFailed);
   };
 }
 

@@ -1,5 +1,6 @@
 #include "parksim/cli/ComponentOptions.h"
 
+#include "parksim/cli/Validators.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/ParamSet.h"
 #include "parksim/core/Text.h"
@@ -23,6 +24,17 @@ void ControllerOptions::addTo(CLI::App& sub) {
       ->capture_default_str();
   sub.add_option("--controller-param", params,
                  "NAME=VALUE: a parameter of the selected controller (repeatable)");
+}
+
+void UserCodeOptions::addTo(CLI::App& sub) {
+  sub.add_option("--planner-timeout", limits.planner_s,
+                 "a user's planner (plugin, command) is stopped after this long, s")
+      ->capture_default_str()
+      ->check(realIn(0.001, 1e6));
+  sub.add_option("--controller-timeout", limits.controller_tick_s,
+                 "a user's controller is stopped when one command takes longer, s")
+      ->capture_default_str()
+      ->check(realIn(0.001, 1e6));
 }
 
 ParamMap ControllerOptions::paramMap() const { return paramMapFrom(params, "--controller-param"); }

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "parksim/core/ParamMap.h"
+#include "parksim/core/UserCodeWatch.h"
 #include "parksim/plugin/Components.h"
 
 namespace parksim::cli {
@@ -30,6 +31,14 @@ struct ControllerOptions {
   void addTo(CLI::App& sub);
   /// The parameters as a ParamMap (canonical text); throws Error on an entry without '='.
   ParamMap paramMap() const;
+};
+
+/// --planner-timeout and --controller-timeout: the limits on user code (UserCodeWatch.h), which
+/// runs in a watched child process.
+struct UserCodeOptions {
+  UserCodeLimits limits;
+
+  void addTo(CLI::App& sub);
 };
 
 /// "NAME=VALUE" entries of `option` as a ParamMap; a name given twice is an error.

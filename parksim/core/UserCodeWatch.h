@@ -12,6 +12,14 @@
 
 namespace parksim {
 
+/// Time limits on user code watched this way, s (> 0). docs/limits.md.
+struct UserCodeLimits {
+  /// Longest a user's planner may plan for one episode.
+  double planner_s = 600.0;
+  /// Longest a user's controller may take for one command (its reset included).
+  double controller_tick_s = 10.0;
+};
+
 class UserCodeWatch {
  public:
   enum class Phase : int { kParksim = 0, kPlanner = 1, kController = 2 };

@@ -4,6 +4,7 @@
 #include <poll.h>
 #include <signal.h>
 #include <sys/mman.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -70,6 +71,7 @@ IsolatedChild::IsolatedChild(const std::function<std::string(UserCodeWatch&)>& w
   // What the parent buffered is written once, by the parent, not again by the child.
   std::fflush(stdout);
   std::fflush(stderr);
+  const pid_t parent = getpid();
   pid_ = fork();
   if (pid_ < 0) {
     ::close(fds[0]);
@@ -78,8 +80,11 @@ IsolatedChild::IsolatedChild(const std::function<std::string(UserCodeWatch&)>& w
     throw EnvironmentError("cannot start a process for user code");
   }
   if (pid_ == 0) {
-    // The child: its own process group, so that a kill at a limit ends what it started too.
+    // The child: its own process group, so that a kill at a limit ends what it started too; it
+    // dies with its parent (a parent killed, or ended by Ctrl-C, leaves no orphan running).
     setpgid(0, 0);
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(1);
     ::close(fds[0]);
     std::string out;
     try {

@@ -22,14 +22,6 @@
 
 namespace parksim {
 
-/// Time limits on user code, s (> 0). docs/limits.md.
-struct UserCodeLimits {
-  /// Longest a user's planner may plan for one episode.
-  double planner_s = 600.0;
-  /// Longest a user's controller may take for one command (its reset included).
-  double controller_tick_s = 10.0;
-};
-
 /// A child process running `work`, watched.
 class IsolatedChild {
  public:
