@@ -13,6 +13,8 @@ namespace parksim {
 nlohmann::json metricsToJson(const EpisodeMetrics& m) {
   nlohmann::json j;
   j["tracking"] = toString(m.tracking);
+  j["controller"] = m.controller;
+  j["controller_error"] = m.controller_error;
   j["max_pos_err_m"] = m.max_pos_err_m;
   j["rms_pos_err_m"] = m.rms_pos_err_m;
   j["final_pos_err_m"] = m.final_pos_err_m;
@@ -97,6 +99,12 @@ EpisodeMetrics metricsFromJson(const nlohmann::json& j) {
   m.goal_reached = reached.get<bool>();
   if (j.contains("tracking") && j.at("tracking").is_string()) {
     m.tracking = trackingModeFromString(j.at("tracking").get<std::string>());
+  }
+  if (j.contains("controller") && j.at("controller").is_string()) {
+    m.controller = j.at("controller").get<std::string>();
+  }
+  if (j.contains("controller_error") && j.at("controller_error").is_string()) {
+    m.controller_error = j.at("controller_error").get<std::string>();
   }
   return m;
 }

@@ -27,6 +27,7 @@ void bindPlan(py::module_& m);     // PlanBindings.cpp: plan(), PlanResult, traj
 void bindEpisode(py::module_& m);  // EpisodeBindings.cpp: run(), Episode, DynamicsWorld
 void bindRender(py::module_& m);   // RenderBindings.cpp: images, figures, FrameRecorder
 void bindTasks(py::module_& m);    // TaskBindings.cpp: the reinforcement-learning tasks
+void bindUserCode(py::module_& m);  // UserCodeBindings.cpp: Python planners and controllers
 
 /// A loaded world (scenario/World.h): immutable, shared by every plan and episode made from it.
 /// It keeps the text it was read from, so that it pickles as that text and re-reads it.

@@ -13,6 +13,7 @@
 #include "parksim/sim/DynamicsWorld.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
+#include "python/src/UserCode.h"
 
 namespace parksim::python {
 
@@ -155,6 +156,7 @@ py::dict robotState(const RobotState& s) {
 EpisodeRequest requestFrom(const WorldHandle& world, py::dict& options, bool planning) {
   EpisodeRequest r;
   r.world = world.world;
+  takeComponents(options, r);
   if (planning) r.plan = planSetupFrom(options);
   const auto take = [&options](const char* key) -> py::object {
     if (!options.contains(key)) return py::none();

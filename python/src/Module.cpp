@@ -15,4 +15,5 @@ PYBIND11_MODULE(_parksim, m) {
   bindEpisode(m);
   bindRender(m);
   bindTasks(m);
+  bindUserCode(m);
 }

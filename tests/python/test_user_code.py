@@ -1,0 +1,159 @@
+"""Your planner and your controller in Python (docs/your-code.md): plan() and run() take objects
+as well as names; they are checked as any user code is (plan_invalid, planner_error,
+controller_error), and one that does exactly what a built-in does gives the built-in's rows."""
+
+import math
+
+import numpy as np
+import pytest
+
+import parksim
+
+
+class Straight:
+    """Turn, drive, turn from the start to the goal with the problem's steering function: a plan
+    that is valid only where nothing is in the way."""
+
+    name = "straight"
+
+    def __init__(self, check=True):
+        self.check = check
+        self.problems = []
+
+    def solve(self, problem):
+        self.problems.append((problem.start, problem.goal, problem.seed, problem.max_iterations))
+        traj, reached = problem.steer(problem.start, problem.goal)
+        if not reached or (self.check and not problem.is_valid(traj)):
+            return None
+        return traj
+
+
+class Replay:
+    """Returns a plan it was given: the default planner's, for comparisons."""
+
+    def __init__(self, trajectory):
+        self.trajectory = trajectory
+
+    def solve(self, problem):
+        return self.trajectory
+
+
+class Tracking:
+    """parksim's tracking law in Python, with the gains its built-in derives for the head-in plan
+    at 240 Hz (sim/TrackingController.h)."""
+
+    def __init__(self, robot, top_speed):
+        self.robot = robot
+        self.k_x, self.k_theta = 10.0, 10.0
+        self.k_y = 100.0 / top_speed**2
+        self.resets = 0
+
+    def reset(self, setup):
+        self.resets += 1
+        assert setup["period_s"] == pytest.approx(1 / 240)
+
+    def command(self, obs):
+        x, y, th = obs.pose
+        xr, yr, thr = obs.reference
+        v_r, w_r = obs.reference_twist
+        dx, dy = xr - x, yr - y
+        ex = math.cos(th) * dx + math.sin(th) * dy
+        ey = -math.sin(th) * dx + math.cos(th) * dy
+        eth = math.remainder(thr - th, 2 * math.pi)
+        v = v_r * math.cos(eth) + self.k_x * ex
+        w = w_r + self.k_y * v_r * ey + self.k_theta * math.sin(eth)
+        r, b = self.robot.wheel_radius_m, self.robot.wheel_base_m
+        left, right = (v - 0.5 * b * w) / r, (v + 0.5 * b * w) / r
+        limit = self.robot.max_wheel_speed_radps
+        scale = max(1.0, abs(left) / limit, abs(right) / limit)
+        return left / scale, right / scale
+
+
+def test_a_python_planner_plans_and_its_plan_is_checked(head_in):
+    planner = Straight(check=False)
+    p = parksim.plan(head_in, planner=planner)
+    assert p.solved and p.stats["planner"] == "straight"
+    assert planner.problems[0][0] == head_in.start
+    # Straight through the lot: the check before driving finds what it hits.
+    r = parksim.run(head_in, planner=Straight(check=False))
+    assert r.status == "plan_invalid" and "the footprint overlaps" in r.reason
+    assert r.executed is None or len(r.executed) == 0
+    # Checking its own plans, it reports that it found none.
+    r = parksim.run(head_in, planner=Straight(check=True))
+    assert r.status == "plan_failed" and "found no plan" in r.reason
+
+
+def test_a_python_planners_failures_are_planner_errors(head_in):
+    class Broken:
+        def solve(self, problem):
+            raise RuntimeError("lost my map")
+
+    r = parksim.run(head_in, planner=Broken())
+    assert r.status == "planner_error"
+    assert r.reason == "planner Broken threw: RuntimeError: lost my map"
+
+    class Garbage:
+        def solve(self, problem):
+            return np.zeros(3)
+
+    r = parksim.run(head_in, planner=Garbage())
+    assert r.status == "planner_error" and "structured array" in r.reason
+
+
+def test_a_python_controller_equal_to_the_built_in_drives_the_same_rows(head_in):
+    plan = parksim.plan(head_in)
+    top = float(np.max(np.abs(plan.trajectory["v"])))
+    ours = Tracking(head_in.robot, top)
+    a = parksim.run(head_in, plan=plan)
+    b = parksim.run(head_in, plan=plan, controller=ours)
+    assert ours.resets == 1
+    assert b.metrics["controller"] == "Tracking"
+    assert a.status == b.status == "met"
+    # The same law in double precision: the same rows to a few ulps of the pose.
+    np.testing.assert_allclose(b.executed["x"], a.executed["x"], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(b.executed["theta"], a.executed["theta"], rtol=0, atol=1e-12)
+    # A planner object replaying the default plan is checked and then drives like the original.
+    c = parksim.run(head_in, planner=Replay(plan.trajectory))
+    assert c.status == "met"
+    np.testing.assert_array_equal(c.executed["x"], a.executed["x"])
+
+
+@pytest.mark.parametrize("answer,reason", [
+    (lambda obs: (float("nan"), 0.0), "not a number"),
+    (lambda obs: (50.0, 50.0), "beyond robot.max_wheel_speed_radps 10"),
+    (lambda obs: ("0.1", "0.2"), "not two real numbers"),
+    (lambda obs: (1 + 2j, 0.0), "not two real numbers"),
+    (lambda obs: 1 / 0, "ZeroDivisionError"),
+])
+def test_a_python_controllers_failures_are_controller_errors(head_in, answer, reason):
+    def faulty(obs):
+        return obs.feedforward if obs.t < 0.5 else answer(obs)
+
+    r = parksim.run(head_in, controller=faulty)
+    assert r.status == "controller_error"
+    assert r.reason.startswith("controller faulty ") and reason in r.reason
+    assert r.executed["t"][-1] == pytest.approx(0.5, abs=0.005)
+
+
+def test_a_python_controller_under_lab_realism_sees_the_estimate_at_its_rate(head_in):
+    ticks = []
+
+    def hold(obs):
+        ticks.append((obs.t, obs.pose, obs.encoders))
+        return obs.feedforward
+
+    r = parksim.run(head_in, controller=hold, realism="lab")
+    times = np.array([t for t, _, _ in ticks])
+    # 50 Hz on 240 Hz physics: tick k at the first step at or after k / 50 s.
+    k = np.arange(50)
+    np.testing.assert_allclose(times[:50], np.ceil(k * 240 / 50 - 1e-9) / 240, atol=1e-12)
+    assert r.metrics["realism"] == "lab"
+
+
+def test_bad_components_are_input_errors(head_in):
+    with pytest.raises(TypeError, match="solve"):
+        parksim.plan(head_in, planner=object())
+    with pytest.raises(ValueError, match="name"):
+        parksim.run(head_in, controller=type("X", (), {"name": "bad name!", "command": None})())
+    with pytest.raises(parksim.Error, match="takes no controller_params"):
+        parksim.run(head_in, controller=lambda o: o.feedforward, controller_params={"k": 1})
