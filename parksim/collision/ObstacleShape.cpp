@@ -113,7 +113,7 @@ std::unique_ptr<btCollisionShape> compoundShape(const Obstacle& o, const Obstacl
     shape->add(local, polygonShape(piece, def));
   }
   shape->createAabbTreeFromChildren();
-  shape->getDynamicAabbTree()->optimizeTopdown();
+  shape->getDynamicAabbTree()->optimizeTopDown();
   return shape;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "parksim/core/ExactOrientation.h"
 
@@ -9,7 +10,7 @@ namespace parksim {
 
 namespace {
 
-std::string ringName(std::size_t ring) {
+std::string regionRingName(std::size_t ring) {
   return ring == 0 ? std::string("the outline") : "hole " + std::to_string(ring - 1);
 }
 
@@ -64,27 +65,30 @@ bool segmentsMeet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eige
   return false;
 }
 
-std::optional<std::string> regionProblem(const PolygonWithHoles& region) {
-  std::vector<const std::vector<Eigen::Vector2d>*> rings{&region.outer};
-  for (const auto& hole : region.holes) rings.push_back(&hole);
+namespace {
+
+// Each ring simple, no two meeting; `ringName` names them in the words.
+std::optional<std::string> ringsMeetProblem(
+    const std::vector<const std::vector<Eigen::Vector2d>*>& rings,
+    const std::function<std::string(std::size_t)>& name_of) {
   std::size_t total = 0;
   for (std::size_t r = 0; r < rings.size(); ++r) {
     const std::vector<Eigen::Vector2d>& ring = *rings[r];
     total += ring.size();
     if (ring.size() < 3) {
-      return ringName(r) + " has " + std::to_string(ring.size()) +
+      return name_of(r) + " has " + std::to_string(ring.size()) +
              " vertices; a polygon needs at least 3";
     }
     for (std::size_t i = 0; i < ring.size(); ++i) {
       if (!ring[i].allFinite()) {
-        return ringName(r) + ", vertex " + std::to_string(i) + ": not a finite point";
+        return name_of(r) + ", vertex " + std::to_string(i) + ": not a finite point";
       }
     }
     bool flat = true;
     for (std::size_t i = 2; i < ring.size() && flat; ++i) {
       flat = orientation(ring[0], ring[1], ring[i]) == 0;
     }
-    if (flat) return ringName(r) + " has no area: its vertices lie on one line";
+    if (flat) return name_of(r) + " has no area: its vertices lie on one line";
   }
   if (total > kMaxPolygonRegionVertices) {
     return "has " + std::to_string(total) + " vertices; a polygon may have at most " +
@@ -101,7 +105,7 @@ std::optional<std::string> regionProblem(const PolygonWithHoles& region) {
       const Eigen::Vector2d& a = ring[i];
       const Eigen::Vector2d& b = ring[(i + 1) % ring.size()];
       if (a == b) {
-        return ringName(r) + ", vertex " + std::to_string((i + 1) % ring.size()) +
+        return name_of(r) + ", vertex " + std::to_string((i + 1) % ring.size()) +
                ": repeats the vertex before it";
       }
       segments.push_back({std::min(a.x(), b.x()), std::max(a.x(), b.x()), std::min(a.y(), b.y()),
@@ -132,7 +136,7 @@ std::optional<std::string> regionProblem(const PolygonWithHoles& region) {
           const Eigen::Vector2d& far_t = next ? d : c;
           if (orientation(far_s, shared, far_t) == 0 &&
               (far_t - shared).dot(far_s - shared) > 0.0) {
-            return ringName(s.ring) + ", vertex " + std::to_string(next ? t.index : s.index) +
+            return name_of(s.ring) + ", vertex " + std::to_string(next ? t.index : s.index) +
                    ": the outline folds back on itself there";
           }
           continue;
@@ -140,24 +144,39 @@ std::optional<std::string> regionProblem(const PolygonWithHoles& region) {
       }
       if (segmentsMeet(a, b, c, d)) {
         if (s.ring == t.ring) {
-          return ringName(s.ring) + " crosses or touches itself (edges from vertex " +
+          return name_of(s.ring) + " crosses or touches itself (edges from vertex " +
                  std::to_string(std::min(s.index, t.index)) + " and vertex " +
                  std::to_string(std::max(s.index, t.index)) + "): a polygon must be simple";
         }
-        return ringName(std::min(s.ring, t.ring)) + " and " + ringName(std::max(s.ring, t.ring)) +
+        return name_of(std::min(s.ring, t.ring)) + " and " + name_of(std::max(s.ring, t.ring)) +
                " cross or touch each other";
       }
     }
   }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> ringsProblem(const std::vector<std::vector<Eigen::Vector2d>>& rings) {
+  std::vector<const std::vector<Eigen::Vector2d>*> pointers;
+  for (const auto& ring : rings) pointers.push_back(&ring);
+  return ringsMeetProblem(pointers, [](std::size_t r) { return "subpath " + std::to_string(r); });
+}
+
+std::optional<std::string> regionProblem(const PolygonWithHoles& region) {
+  std::vector<const std::vector<Eigen::Vector2d>*> rings{&region.outer};
+  for (const auto& hole : region.holes) rings.push_back(&hole);
+  if (auto problem = ringsMeetProblem(rings, regionRingName)) return problem;
   // No edges meet: each hole lies wholly inside or outside each other ring; one vertex tells.
   for (std::size_t h = 1; h < rings.size(); ++h) {
     bool on = false;
     if (!insideRing(region.outer, rings[h]->front(), on)) {
-      return ringName(h) + " lies outside the outline";
+      return regionRingName(h) + " lies outside the outline";
     }
     for (std::size_t k = 1; k < rings.size(); ++k) {
       if (k != h && insideRing(*rings[k], rings[h]->front(), on)) {
-        return ringName(h) + " lies inside " + ringName(k) + "; holes may not nest";
+        return regionRingName(h) + " lies inside " + regionRingName(k) + "; holes may not nest";
       }
     }
   }

@@ -30,6 +30,11 @@ inline constexpr std::size_t kMaxPolygonRegionVertices = 20000;
 /// 0) and the vertex.
 std::optional<std::string> regionProblem(const PolygonWithHoles& region);
 
+/// What makes `rings` unusable as the outlines of one drawing's shape, or nothing: each ring as
+/// in regionProblem (simple, at least 3 vertices, finite, some area) and no two rings crossing
+/// or touching; the words name the ring ("subpath 2"). How they nest is not checked.
+std::optional<std::string> ringsProblem(const std::vector<std::vector<Eigen::Vector2d>>& rings);
+
 /// The same region with vertices that lie on the line between their neighbours dropped (they
 /// do not change it), the outer ring counter-clockwise and the holes clockwise. `region` must
 /// pass regionProblem.

@@ -162,7 +162,10 @@ std::optional<std::string> goalPlacementProblem(const Scenario& scenario,
 /// A map a world's `map:` section brought in, kept so that figures can draw it under the lot.
 struct MapLayer {
   std::string name;    ///< the map's obstacle name (its parts' prefix for drawings)
-  std::string source;  ///< the map file, as the world names it
+  std::string source;  ///< the map file (relative to the working folder, as it was read)
+  /// 16 hex digits of the FNV-1a hash of the map's files (a ROS map's YAML and image): folded
+  /// into the world's content hash, so that an edited map is noticed.
+  std::string content_hash;
   /// Grid maps (ROS, Moving AI): the cells as the map says them; null for drawings (SVG).
   std::shared_ptr<const OccupancyGrid> grid;
   /// The grid's occupied and unknown cells (as the map says them, before the world's choices

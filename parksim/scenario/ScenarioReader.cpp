@@ -15,6 +15,7 @@
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
 #include "parksim/core/Text.h"
+#include "parksim/scenario/MapSection.h"
 #include "parksim/scenario/PhysicalRanges.h"
 #include "parksim/scenario/RealismSections.h"
 #include "parksim/scenario/WorldDocument.h"
@@ -229,7 +230,9 @@ PhysicsDef readPhysics(const YamlField& field) {
   return physics;
 }
 
-ObstacleKind readKind(const YamlField& field) {
+}  // namespace
+
+ObstacleKind readObstacleKind(const YamlField& field) {
   const std::string kind = field.text();
   if (kind == "wall") return ObstacleKind::kWall;
   if (kind == "curb") return ObstacleKind::kCurb;
@@ -243,6 +246,8 @@ ObstacleKind readKind(const YamlField& field) {
   field.fail("unknown kind " + inQuotes(kind) +
              "; expected one of: wall, curb, island, box, bollard, pillar");
 }
+
+namespace {
 
 Eigen::Vector2d readPoint(const YamlField& field) {
   field.numbers(2, "[x, y]");
@@ -273,7 +278,7 @@ Obstacle readObstacle(const YamlField& field) {
       field.map({"name", "kind", "center", "size", "yaw_deg", "radius", "vertices", "height"});
   Obstacle obstacle;
   obstacle.name = m.required("name").name();
-  obstacle.kind = readKind(m.required("kind"));
+  obstacle.kind = readObstacleKind(m.required("kind"));
   const std::optional<YamlField> size = m.optional("size");
   const std::optional<YamlField> radius = m.optional("radius");
   const std::optional<YamlField> vertices = m.optional("vertices");
@@ -446,14 +451,26 @@ World readWorldDocument(const YAML::Node& document, const std::string& source_na
   const YamlField root(document, "", 1, source_name);
   const YamlMap top(root);
   readFormat(top.required("format"));
-  top.rejectUnknownKeys({"format", "name", "lot", "robot", "obstacles", "parked_robots", "start",
-                         "goal", "physics", "realism", "tolerance"});
+  top.rejectUnknownKeys({"format", "name", "lot", "map", "robot", "obstacles", "parked_robots",
+                         "start", "goal", "physics", "realism", "tolerance"});
   World world;
   world.sections = readRealismSections(top);
   Scenario& s = world.scenario;
   s.source_path = source_name;
   s.name = top.required("name").name();
-  s.lot = readLot(top.required("lot"));
+  // Maps first: without `lot:` their extent is the lot.
+  NameRegistry names;
+  std::optional<MapSection> maps;
+  if (const std::optional<YamlField> list = top.optional("map")) {
+    maps = readMapSection(*list, source_name);
+    s.maps = std::move(maps->layers);
+  }
+  if (top.optional("lot") || !maps || maps->extent.isEmpty()) {
+    s.lot = readLot(top.required("lot"));
+  } else {
+    s.lot = {maps->extent.min().x(), maps->extent.min().y(), maps->extent.max().x(),
+             maps->extent.max().y()};
+  }
   // The robot comes before the parked robots whatever the key order: they share its footprint.
   const std::optional<YamlField> robot = top.optional("robot");
   const std::optional<YamlField> physics = top.optional("physics");
@@ -465,7 +482,13 @@ World readWorldDocument(const YAML::Node& document, const std::string& source_na
     (robot ? *robot : physics ? *physics : root).fail(*problem);
   }
 
-  NameRegistry names;
+  if (maps) {
+    const YamlField list = *top.optional("map");
+    for (Obstacle& o : maps->obstacles) {
+      names.add(list, o.name);
+      s.obstacles.push_back(std::move(o));
+    }
+  }
   if (const std::optional<YamlField> list = top.optional("obstacles")) {
     for (const YamlField& entry : list->listUpTo(kMaxObstacles)) {
       s.obstacles.push_back(readObstacle(entry));
