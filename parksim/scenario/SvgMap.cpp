@@ -12,6 +12,7 @@
 
 #include "parksim/core/ConvexPartition.h"
 #include "parksim/core/Error.h"
+#include "parksim/core/ExactOrientation.h"
 #include "parksim/core/InputFile.h"
 #include "parksim/core/PolygonRegion.h"
 #include "parksim/core/Text.h"
@@ -428,7 +429,12 @@ class SvgReader {
         site.fail("the drawing's shapes have more than " + std::to_string(kMaxSvgVertices) +
                   " vertices (docs/limits.md)");
       }
-      if (lot.size() < 3 || std::abs(signedDoubleArea(lot)) == 0.0) continue;  // no area
+      // A ring on one line has no area (a figure eight's zero signed area is no excuse).
+      bool flat = true;
+      for (std::size_t k = 2; k < lot.size() && flat; ++k) {
+        flat = orientation(lot[0], lot[1], lot[k]) == 0;
+      }
+      if (lot.size() < 3 || flat) continue;
       rings.push_back(std::move(lot));
     }
     if (rings.empty()) return;

@@ -256,8 +256,15 @@ SvgTransform parseSvgTransform(std::string_view text) {
       name += s.peek();
       s.advance();
     }
-    if (name.empty())
-      s.fail("expected a transform (matrix, translate, scale, rotate, skewX, skewY)");
+    if (name != "matrix" && name != "translate" && name != "scale" && name != "rotate" &&
+        name != "skewX" && name != "skewY") {
+      if (name.empty()) {
+        s.fail("expected a transform (matrix, translate, scale, rotate, skewX, skewY)");
+      }
+      throw SvgSyntaxError("unknown transform '" + name + "' at character " +
+                           std::to_string(s.position() - name.size() + 1) + " (near \"" +
+                           std::string(text.substr(s.position() - name.size(), 24)) + "\")");
+    }
     if (s.peek() != '(') s.fail("expected '(' after " + name);
     s.advance();
     std::vector<double> args;
@@ -321,15 +328,21 @@ std::vector<std::vector<Eigen::Vector2d>> flattenSvgPath(std::string_view d, dou
   char last = 0;
   char command = 0;
   bool open = false;
+  bool moved = false;
   while (!s.atEnd()) {
     const char c = s.peek();
     if (std::isalpha(static_cast<unsigned char>(c))) {
+      if (std::string_view("MmLlHhVvCcSsQqTtAaZz").find(c) == std::string_view::npos) {
+        s.fail(std::string("unknown path command '") + c + "'");
+      }
+      if (!moved && c != 'M' && c != 'm') s.fail("path data must start with a moveto (M or m)");
+      moved = true;
       command = c;
       s.advance();
       s.skipSpace();
-    } else if (command == 0) {
+    } else if (!moved) {
       s.fail("path data must start with a moveto (M or m)");
-    } else if (command == 'Z' || command == 'z') {
+    } else if (command == 0) {
       s.fail("numbers after a closepath (Z)");
     }
     // After a moveto, further pairs are linetos.

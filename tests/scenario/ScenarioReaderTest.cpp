@@ -598,7 +598,7 @@ const BadCase kBadCases[] = {
 
     // Unknown fields, at every level.
     {"UnknownTopLevelField", valid("nmae: t\n"),
-     "t.yaml:6: nmae: unknown field; expected one of: format, name, lot, robot, obstacles, "
+     "t.yaml:6: nmae: unknown field; expected one of: format, name, lot, map, robot, obstacles, "
      "parked_robots, start, goal, physics, realism, tolerance"},
     {"UnknownLotField", "format: parksim-world/1\nname: t\nlot: {x_min: 0, y_min: 0, z_max: 1}\n",
      "t.yaml:3: lot.z_max: unknown field; expected one of: x_min, y_min, x_max, y_max"},
@@ -827,7 +827,8 @@ const BadCase kBadCases[] = {
     {"TerminalEscapeInNameIsEscaped", "format: parksim-world/1\nname: \"\\e[31mred\"\n",
      "t.yaml:2: name: must be UTF-8 text without control characters, got \"\\x1b[31mred\""},
     {"TerminalEscapeInKeyIsEscaped", valid("\"\\e[2J\": 1\n"),
-     "t.yaml:6: \\x1b[2J: unknown field; expected one of: format, name, lot, robot, obstacles, "
+     "t.yaml:6: \\x1b[2J: unknown field; expected one of: format, name, lot, map, robot, "
+     "obstacles, "
      "parked_robots, start, goal, physics, realism, tolerance"},
     {"ControlCharacterInObstacleName",
      valid("obstacles: [{name: \"a\\tb\", kind: box, center: [1.9, 0.1], size: [0.1, 0.1]}]\n"),
