@@ -11,6 +11,7 @@
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
 #include "parksim/planner/FreeSpaceBound.h"
+#include "parksim/planner/ReachableBudget.h"
 #include "parksim/planner/SpeedProfile.h"
 
 namespace parksim {
@@ -147,7 +148,7 @@ int defaultIterationBudget(PlannerKind kind, const LotBounds& lot) {
 PlanSetup resolvedPlanSetup(const PlanSetup& setup, const Scenario& scenario) {
   PlanSetup resolved = setup;
   if (resolved.planner.max_iterations == kAutoIterations) {
-    resolved.planner.max_iterations = defaultIterationBudget(setup.planner.kind, scenario.lot);
+    resolved.planner.max_iterations = defaultIterationBudget(setup.planner.kind, scenario);
   }
   return resolved;
 }

@@ -9,6 +9,7 @@
 
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/ReachableBudget.h"
 #include "parksim/planner/TimeOptimalTiming.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "tests/support/PlanChecks.h"
@@ -123,8 +124,9 @@ TEST(DefaultPlanning, AnAutomaticBudgetIsTheLotsAndAGivenOneIsKept) {
   const Scenario big = world("big_lot");
   PlanSetup setup;
   EXPECT_EQ(setup.planner.max_iterations, kAutoIterations);
+  // time-a-star's grows with the free area its search can reach (ReachableBudget.h).
   EXPECT_EQ(resolvedPlanSetup(setup, big).planner.max_iterations,
-            defaultIterationBudget(PlannerKind::kTimeAStar, big.lot));
+            defaultIterationBudget(PlannerKind::kTimeAStar, big));
   setup.planner.kind = PlannerKind::kRrtStar;
   EXPECT_EQ(resolvedPlanSetup(setup, big).planner.max_iterations, 92593);
   setup.planner.max_iterations = 17;
