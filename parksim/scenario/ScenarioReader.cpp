@@ -12,8 +12,10 @@
 #include <vector>
 
 #include "parksim/core/Angle.h"
+#include "parksim/core/ConvexPartition.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
+#include "parksim/core/PolygonRegion.h"
 #include "parksim/core/Text.h"
 #include "parksim/scenario/MapSection.h"
 #include "parksim/scenario/PhysicalRanges.h"
@@ -42,7 +44,9 @@ constexpr double kMaxYawDeg = 3600.0;
 // millimetres stay resolvable in double.
 constexpr double kMaxCoordinate_m = 10000.0;
 constexpr double kMaxLength_m = 10000.0;
-constexpr std::size_t kMaxPolygonVertices = 256;
+// Vertices of a polygon's outline or of one hole (all together at most
+// kMaxPolygonRegionVertices).
+constexpr std::size_t kMaxPolygonVertices = 10000;
 
 double coordinate(const YamlField& f) { return f.inRange(-kMaxCoordinate_m, kMaxCoordinate_m); }
 
@@ -255,27 +259,51 @@ Eigen::Vector2d readPoint(const YamlField& field) {
   return {coordinate(xy[0]), coordinate(xy[1])};
 }
 
-// Vertices in either winding; stored counter-clockwise. Convexity is required because the
-// exact queries (separating axes, C-space slices) are exact for convex shapes.
-std::vector<Eigen::Vector2d> readVertices(const YamlField& field) {
+// One ring of [x, y] points.
+std::vector<Eigen::Vector2d> readRing(const YamlField& field) {
   const std::vector<YamlField> items = field.listUpTo(kMaxPolygonVertices);
   if (items.size() < 3) {
     field.fail("a polygon needs at least 3 vertices [x, y], got " + std::to_string(items.size()));
   }
-  std::vector<Eigen::Vector2d> vertices;
-  for (const YamlField& item : items) vertices.push_back(readPoint(item));
-  if (signedDoubleArea(vertices) < 0.0) std::reverse(vertices.begin(), vertices.end());
-  if (!isStrictlyConvexCcw(vertices)) {
-    field.fail(
-        "must be a convex polygon: vertices in order around it, no repeated or collinear "
-        "vertices, no self-crossing");
+  std::vector<Eigen::Vector2d> ring;
+  for (const YamlField& item : items) ring.push_back(readPoint(item));
+  return ring;
+}
+
+// Any simple polygon, with holes: vertices in either winding. A convex one without holes is
+// stored as it is (counter-clockwise); any other is cut into convex parts exactly
+// (ConvexPartition.h), because the exact queries and Bullet's shapes are convex.
+Obstacle readPolygon(const Obstacle& base, const YamlField& vertices,
+                     const std::optional<YamlField>& holes_field) {
+  PolygonWithHoles region;
+  region.outer = readRing(vertices);
+  if (holes_field) {
+    for (const YamlField& hole : holes_field->listUpTo(kMaxPolygonVertices)) {
+      region.holes.push_back(readRing(hole));
+    }
   }
-  return vertices;
+  if (region.holes.empty()) {
+    std::vector<Eigen::Vector2d> ccw = region.outer;
+    if (signedDoubleArea(ccw) < 0.0) std::reverse(ccw.begin(), ccw.end());
+    if (isStrictlyConvexCcw(ccw)) {
+      return Obstacle::makePolygon(base.name, base.kind, std::move(ccw), base.height_m);
+    }
+  }
+  if (const std::optional<std::string> problem = regionProblem(region)) {
+    (holes_field && problem->rfind("hole", 0) == 0 ? *holes_field : vertices)
+        .fail("must be a simple polygon (holes inside it, apart): " + *problem);
+  }
+  const PolygonWithHoles tidy = normalizedRegion(region);
+  std::vector<std::vector<Eigen::Vector2d>> rings{tidy.outer};
+  rings.insert(rings.end(), tidy.holes.begin(), tidy.holes.end());
+  return Obstacle::makeCompound(base.name, base.kind,
+                                CompoundShape::make(convexPartition(region), std::move(rings)),
+                                base.height_m);
 }
 
 Obstacle readObstacle(const YamlField& field) {
-  const YamlMap m =
-      field.map({"name", "kind", "center", "size", "yaw_deg", "radius", "vertices", "height"});
+  const YamlMap m = field.map(
+      {"name", "kind", "center", "size", "yaw_deg", "radius", "vertices", "holes", "height"});
   Obstacle obstacle;
   obstacle.name = m.required("name").name();
   obstacle.kind = readObstacleKind(m.required("kind"));
@@ -286,9 +314,10 @@ Obstacle readObstacle(const YamlField& field) {
   if (shapes != 1) {
     const YamlField at = shapes == 0 ? m.required("kind") : *(vertices ? vertices : radius);
     YamlField(at.node(), field.path(), at.line(), field.source())
-        .fail(
-            "give exactly one shape: size (a box), radius (a circle) or vertices (a convex "
-            "polygon)");
+        .fail("give exactly one shape: size (a box), radius (a circle) or vertices (a polygon)");
+  }
+  if (const std::optional<YamlField> holes = m.optional("holes"); holes && !vertices) {
+    holes->fail("holes belong to a polygon (vertices)");
   }
   if (vertices) {
     for (const char* key : {"center", "yaw_deg"}) {
@@ -296,8 +325,7 @@ Obstacle readObstacle(const YamlField& field) {
         f->fail("a polygon is placed by its vertices alone");
       }
     }
-    obstacle = Obstacle::makePolygon(obstacle.name, obstacle.kind, readVertices(*vertices),
-                                     obstacle.height_m);
+    obstacle = readPolygon(obstacle, *vertices, m.optional("holes"));
   } else if (radius) {
     if (const std::optional<YamlField> f = m.optional("yaw_deg")) {
       f->fail("a circle has no heading");
