@@ -33,5 +33,6 @@ CommandRunner setupMergeCommand(CLI::App& sub);
 CommandRunner setupReportCommand(CLI::App& sub);
 CommandRunner setupCompareCommand(CLI::App& sub);
 CommandRunner setupVerifyCommand(CLI::App& sub);
+CommandRunner setupImportCommand(CLI::App& sub);
 
 }  // namespace parksim::app

@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
       setupCompareCommand);
   add("verify", "check a sweep's results tables: changed rows, mixed worlds or builds",
       setupVerifyCommand);
+  add("import", "a ROS, SVG or Moving AI map as a world file to edit", setupImportCommand);
 
   // CLI11 says "A subcommand is required" about `parksim foo`; say what was wrong instead.
   if (argc > 1 && argv[1][0] != '-') {
