@@ -382,38 +382,31 @@ std::vector<std::vector<Eigen::Vector2d>> flattenSvgPath(std::string_view d, dou
         cur = {cur.x(), (relative ? cur.y() : 0.0) + s.number("vertical lineto")};
         out.add(cur);
         break;
-      case 'C': {
-        const Eigen::Vector2d p1 = base + point("curveto");
-        const Eigen::Vector2d p2 = base + point("curveto");
-        const Eigen::Vector2d p3 = base + point("curveto");
-        cubic(out, cur, p1, p2, p3, tol);
-        last_control = p2;
-        cur = p3;
-        last = 'C';
-        continue;
-      }
+      case 'C':
       case 'S': {
-        const Eigen::Vector2d p1 = (last == 'C') ? Eigen::Vector2d(2 * cur - last_control) : cur;
-        const Eigen::Vector2d p2 = base + point("smooth curveto");
-        const Eigen::Vector2d p3 = base + point("smooth curveto");
+        // S reflects the last curve's second control point about the current point.
+        const bool smooth = upper == 'S';
+        const char* what = smooth ? "smooth curveto" : "curveto";
+        const Eigen::Vector2d p1 = !smooth       ? Eigen::Vector2d(base + point(what))
+                                   : last == 'C' ? Eigen::Vector2d(2 * cur - last_control)
+                                                 : cur;
+        const Eigen::Vector2d p2 = base + point(what);
+        const Eigen::Vector2d p3 = base + point(what);
         cubic(out, cur, p1, p2, p3, tol);
         last_control = p2;
         cur = p3;
         last = 'C';
         continue;
       }
-      case 'Q': {
-        const Eigen::Vector2d p1 = base + point("quadratic curveto");
-        const Eigen::Vector2d p2 = base + point("quadratic curveto");
-        quadratic(out, cur, p1, p2, tol);
-        last_control = p1;
-        cur = p2;
-        last = 'Q';
-        continue;
-      }
+      case 'Q':
       case 'T': {
-        const Eigen::Vector2d p1 = (last == 'Q') ? Eigen::Vector2d(2 * cur - last_control) : cur;
-        const Eigen::Vector2d p2 = base + point("smooth quadratic curveto");
+        // T reflects the last quadratic's control point.
+        const bool smooth = upper == 'T';
+        const Eigen::Vector2d p1 = !smooth ? Eigen::Vector2d(base + point("quadratic curveto"))
+                                   : last == 'Q' ? Eigen::Vector2d(2 * cur - last_control)
+                                                 : cur;
+        const Eigen::Vector2d p2 =
+            base + point(smooth ? "smooth quadratic curveto" : "quadratic curveto");
         quadratic(out, cur, p1, p2, tol);
         last_control = p1;
         cur = p2;

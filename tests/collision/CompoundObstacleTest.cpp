@@ -62,10 +62,7 @@ TEST(CompoundObstacle, IsABulletCompoundOfBoxesForRectanglesAndHullsOtherwise) {
 // The done-when check of issue 32 through Bullet: a star-shaped polygon with two holes.
 TEST(CompoundObstacle, FootprintQueriesAgreeWithPointInPolygonOnOneHundredThousandPoses) {
   std::mt19937_64 rng(17);
-  PolygonWithHoles region;
-  region.outer = testing::starRing(rng, {1.0, 1.0}, 40, 0.4, 0.95);
-  region.holes.push_back(testing::starRing(rng, {1.25, 1.0}, 7, 0.05, 0.13));
-  region.holes.push_back(testing::starRing(rng, {0.75, 0.9}, 6, 0.05, 0.1));
+  const PolygonWithHoles region = testing::starWithTwoHoles(rng, {1.0, 1.0}, 40);
   ASSERT_FALSE(regionProblem(region));
   const Scenario s = lotWith(Obstacle::makeCompound(
       "star", ObstacleKind::kIsland, CompoundShape::make(convexPartition(region), {}), 0.1));

@@ -129,10 +129,7 @@ TEST(ConvexPartition, RandomPolygonsWithHolesArePartitionedExactly) {
 // like an exact point-in-polygon test, on 10^5 random poses.
 TEST(ConvexPartition, FootprintQueriesAgreeWithPointInPolygonOnOneHundredThousandPoses) {
   std::mt19937_64 rng(7);
-  PolygonWithHoles region;
-  region.outer = testing::starRing(rng, {1.0, 1.0}, 48, 0.35, 0.9);
-  region.holes.push_back(testing::starRing(rng, {1.2, 1.0}, 9, 0.05, 0.12));
-  region.holes.push_back(testing::starRing(rng, {0.8, 1.1}, 5, 0.04, 0.1));
+  const PolygonWithHoles region = testing::starWithTwoHoles(rng, {1.0, 1.0}, 48);
   ASSERT_FALSE(regionProblem(region));
   const Obstacle obstacle = Obstacle::makeCompound(
       "star", ObstacleKind::kIsland, CompoundShape::make(convexPartition(region), {}), 0.1);

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "parksim/core/Geometry.h"
+#include "parksim/core/PolygonRegion.h"
 
 namespace parksim::testing {
 
@@ -78,6 +79,17 @@ inline Ring starRing(std::mt19937_64& rng, const Eigen::Vector2d& center, int n,
     ring.push_back(center + r * Eigen::Vector2d(std::cos(a), std::sin(a)));
   }
   return ring;
+}
+
+/// A star-shaped polygon of `n` vertices around `center` (radii 0.35 to 0.95 m) with two
+/// star-shaped holes of 5 to 9 vertices, for the 10^5-pose checks.
+inline PolygonWithHoles starWithTwoHoles(std::mt19937_64& rng, const Eigen::Vector2d& center,
+                                         int n) {
+  PolygonWithHoles region;
+  region.outer = starRing(rng, center, n, 0.4, 0.9);
+  region.holes.push_back(starRing(rng, center + Eigen::Vector2d(0.22, 0.0), 8, 0.05, 0.12));
+  region.holes.push_back(starRing(rng, center + Eigen::Vector2d(-0.22, 0.05), 5, 0.04, 0.1));
+  return region;
 }
 
 }  // namespace parksim::testing
