@@ -85,8 +85,11 @@ std::vector<int> bridgedRing(const PolygonWithHoles& region, Points& points) {
     const int m_next = hole.first + (hole.rightmost + 1) % hole.size;
     std::vector<std::size_t> order(ring.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return (at(ring[a]) - m).squaredNorm() < (at(ring[b]) - m).squaredNorm();
+    // Nearest first; ties in ring order (std::sort: no temporary buffer to allocate).
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      const double da = (at(ring[a]) - m).squaredNorm();
+      const double db = (at(ring[b]) - m).squaredNorm();
+      return da < db || (da == db && a < b);
     });
     const auto free_of = [&](const Eigen::Vector2d& v, const Hole& other) {
       for (int i = 0; i < other.size; ++i) {
