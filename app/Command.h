@@ -48,5 +48,6 @@ CommandRunner setupReportCommand(CLI::App& sub);
 CommandRunner setupCompareCommand(CLI::App& sub);
 CommandRunner setupVerifyCommand(CLI::App& sub);
 CommandRunner setupListCommand(CLI::App& sub);
+CommandRunner setupImportCommand(CLI::App& sub);
 
 }  // namespace parksim::app

@@ -15,6 +15,8 @@ demo_packages=(
   build-essential cmake pkg-config ninja-build
   libbullet-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libnanoflann-dev libstb-dev zlib1g-dev libompl-dev
+  # SVG maps in world files (`map:`) are parsed by libxml2.
+  libxml2-dev
   libegl-dev libgl1-mesa-dri libfontconfig-dev fonts-dejavu-core ffmpeg
   # scripts/build.sh compiles with clang unless CXX names a compiler (half of GCC's time).
   clang

@@ -9,11 +9,14 @@
 namespace parksim {
 namespace {
 
-std::string contentHash(std::string_view text, const std::vector<ScenarioOverride>& overrides) {
+std::string contentHash(std::string_view text, const std::vector<ScenarioOverride>& overrides,
+                        const std::vector<MapLayer>& maps) {
   std::uint64_t h = fnv1a64(text);
   for (const ScenarioOverride& o : overrides) {
     h = fnv1a64("\n--set " + o.path + "=" + o.value, h);
   }
+  // The maps' files are part of the world (none for a hand-written lot: its hash is its text's).
+  for (const MapLayer& m : maps) h = fnv1a64("\nmap " + m.source + " " + m.content_hash, h);
   return hex16(h);
 }
 
@@ -25,7 +28,7 @@ World parseWorld(std::string_view yaml_text, const std::string& source_name,
   for (const ScenarioOverride& o : overrides) applyOverride(document, o);
   try {
     World world = readWorldDocument(document, source_name);
-    world.content_hash = contentHash(yaml_text, overrides);
+    world.content_hash = contentHash(yaml_text, overrides, world.scenario.maps);
     return world;
   } catch (const Error& e) {
     rethrowNamingOverride(e, source_name, overrides);

@@ -26,6 +26,11 @@ YAML::Node loadWorldDocument(std::string_view yaml_text, const std::string& sour
 /// Validates a world document into a World (parseWorld's second half).
 World readWorldDocument(const YAML::Node& document, const std::string& source_name);
 
+class YamlField;
+
+/// An obstacle's `kind` (wall, curb, island, box, bollard, pillar); a map entry's too.
+ObstacleKind readObstacleKind(const YamlField& field);
+
 /// Replaces the node at o.path in `document` by o.value (ScenarioOverrides.h). Throws Error
 /// naming the override on a bad path or value.
 void applyOverride(YAML::Node& document, const ScenarioOverride& o);

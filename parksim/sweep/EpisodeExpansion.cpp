@@ -11,7 +11,19 @@ namespace parksim {
 std::vector<SweepWorld> loadSweepWorlds(const SweepSpec& spec) {
   std::vector<SweepWorld> worlds;
   for (std::size_t i = 0; i < spec.world_paths.size(); ++i) {
-    worlds.push_back(std::make_shared<const World>(loadWorld(spec.world_paths[i])));
+    const std::vector<ScenarioOverride> none;
+    const std::vector<ScenarioOverride>& set =
+        i < spec.world_overrides.size() ? spec.world_overrides[i] : none;
+    World world = loadWorld(spec.world_paths[i], set);
+    // A variant of a world (`set:`) is named by its overrides: its episodes get ids of their own.
+    if (!set.empty()) {
+      std::string variant;
+      for (const ScenarioOverride& o : set) {
+        variant += (variant.empty() ? "" : ",") + o.path + "=" + o.value;
+      }
+      world.scenario.name += "{" + variant + "}";
+    }
+    worlds.push_back(std::make_shared<const World>(std::move(world)));
     for (std::size_t j = 0; j < i; ++j) {
       if (worlds[j]->scenario.name == worlds[i]->scenario.name) {
         throw Error(spec.source_path + ":" + std::to_string(spec.worlds_line) +

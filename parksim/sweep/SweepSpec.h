@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "parksim/scenario/ScenarioOverrides.h"
+
 #include "parksim/pipeline/EpisodeRequest.h"
 #include "parksim/sweep/EpisodeParams.h"
 
@@ -42,6 +44,13 @@ struct SweepSpec {
   /// The same files as paths to open (resolved against the spec file's folder).
   std::vector<std::string> world_paths;
   int worlds_line = 0;  ///< line of `worlds:` in the spec, for errors found when loading them
+  /// `set:` axes: a world field (a path as `--set` takes it, e.g. "map[0].inflation") and its
+  /// values (YAML text). Every combination of them makes a variant of every world, named
+  /// "<name>{<path>=<value>,...}" (so its episodes have ids of their own).
+  std::vector<std::pair<std::string, std::vector<std::string>>> set_axes;
+  /// Per entry of world_paths: its variant's overrides (all empty without `set:`; with it,
+  /// world_files and world_paths list each file once per variant).
+  std::vector<std::vector<ScenarioOverride>> world_overrides;
 
   // Axes: every combination is one episode. Defaults: one value each, the library's
   // (EpisodeParams{}, which takes them from PlanSetup{} and EpisodeRequest{}).

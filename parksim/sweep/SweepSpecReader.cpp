@@ -174,6 +174,49 @@ void readWorlds(const YamlField& field, const std::string& base_dir, SweepSpec& 
   }
 }
 
+// `set:` axes: each world field's values; every combination is a variant of every world.
+void readSetAxes(const YamlField& field, SweepSpec& spec) {
+  const YamlMap m(field);
+  std::vector<std::vector<ScenarioOverride>> combinations{{}};
+  for (const std::string& path : m.keys()) {
+    const YamlField values = *m.optional(path);
+    std::vector<std::string> texts;
+    for (const YamlField& item : axisItems(values)) {
+      YAML::Emitter out;
+      out.SetSeqFormat(YAML::Flow);
+      out.SetMapFormat(YAML::Flow);
+      out << item.node();
+      texts.emplace_back(out.c_str());
+      if (std::count(texts.begin(), texts.end(), texts.back()) > 1) {
+        item.fail("repeats the value " + texts.back());
+      }
+    }
+    spec.set_axes.emplace_back(path, texts);
+    std::vector<std::vector<ScenarioOverride>> grown;
+    for (const auto& base : combinations) {
+      for (const std::string& v : texts) {
+        auto next = base;
+        next.push_back(
+            {path, v,
+             spec.source_path + ":" + std::to_string(values.line()) + ": set " + path + "=" + v});
+        grown.push_back(std::move(next));
+      }
+    }
+    combinations = std::move(grown);
+  }
+  std::vector<std::string> files;
+  std::vector<std::string> paths;
+  for (std::size_t w = 0; w < spec.world_paths.size(); ++w) {
+    for (const auto& overrides : combinations) {
+      files.push_back(spec.world_files[w]);
+      paths.push_back(spec.world_paths[w]);
+      spec.world_overrides.push_back(overrides);
+    }
+  }
+  spec.world_files = std::move(files);
+  spec.world_paths = std::move(paths);
+}
+
 // The field's text through the library's own parser of those names; its message, at the
 // field's line.
 template <class Parse>
@@ -270,13 +313,18 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
   }
   top.rejectUnknownKeys({"format", "name", "worlds", "planners", "steering", "smoothing", "seeds",
                          "max_iterations", "tracking", "timing", "realism", "noise_seeds",
-                         "start_offsets", "goal_offsets", "record", "tolerance"});
+                         "start_offsets", "goal_offsets", "record", "tolerance", "set"});
 
   SweepSpec spec;
   spec.source_path = source_name;
   // name(): UTF-8 without control characters; it reaches the terminal, reports and job names.
   spec.name = top.required("name").name();
   readWorlds(top.required("worlds"), base_dir, spec);
+  spec.world_overrides.assign(spec.world_paths.size(), {});
+  if (const auto f = top.optional("set")) {
+    spec.world_overrides.clear();
+    readSetAxes(*f, spec);
+  }
 
   const std::vector<std::string> planner_names = builtInPlanners().names();
   std::vector<std::string> steering_names;

@@ -136,6 +136,8 @@ def test_yaml_block_is_valid(where, text, tmp_path):
         assert (tmp_path / "out" / "sweep.sbatch").is_file()
         return
     world = tmp_path / "doc.yaml"
+    # Map worlds name their maps relative to the world file, as the shipped ones do.
+    (tmp_path / "maps").symlink_to(SOURCE_DIR / "worlds" / "maps")
     if "format: parksim-world/1" in text:
         world.write_text(text + "\n", encoding="utf-8")
     else:

@@ -9,6 +9,7 @@
 
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/ReachableBudget.h"
 #include "parksim/planner/TimeOptimalTiming.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "tests/support/PlanChecks.h"
@@ -128,6 +129,7 @@ TEST(DefaultPlanning, AnAutomaticBudgetIsTheLotsAndAGivenOneIsKept) {
   const Scenario big = world("big_lot");
   PlanSetup setup;
   EXPECT_EQ(setup.search.max_iterations, kAutoIterations);
+  // time-a-star's grows with the free area its search can reach (ReachableBudget.h).
   EXPECT_EQ(resolvedPlanSetup(setup, big).search.max_iterations,
             defaultIterationBudget(builtInPlanners().find("time-a-star").info, big));
   setup.planner = "rrt-star";

@@ -84,6 +84,41 @@ std::vector<std::string> idsOf(const std::string& axes) {
   return ids;
 }
 
+TEST(EpisodeExpansion, SetAxesMakeNamedVariantsOfEveryWorld) {
+  // The ROS lab's map inflated three ways: variants of the world, each with ids of its own.
+  const std::string spec_text = "format: parksim-sweep/1\nname: t\nworlds: [" +
+                                testing::sourceDir() +
+                                "/worlds/ros_lab.yaml]\nset:\n  map[0].inflation: [0, 0.02]\n"
+                                "  map[0].unknown: [occupied, free]\n";
+  const SweepSpec spec = parseSweepSpec(spec_text, "spec.yaml", "");
+  ASSERT_EQ(spec.world_paths.size(), 4u);
+  const std::vector<SweepWorld> worlds = loadSweepWorlds(spec);
+  EXPECT_EQ(worlds[0]->scenario.name, "ros_lab{map[0].inflation=0,map[0].unknown=occupied}");
+  EXPECT_EQ(worlds[3]->scenario.name, "ros_lab{map[0].inflation=0.02,map[0].unknown=free}");
+  // Inflation grows the map's obstacle (a pose 1 cm above the bottom wall is then in it); the
+  // world hash follows the overrides.
+  EXPECT_GT(worlds[2]->scenario.obstacles[0].compound->parts.size(), 0u);
+  EXPECT_NE(worlds[0]->content_hash, worlds[2]->content_hash);
+  const OrientedBox near_wall = footprintAt(worlds[0]->scenario.robot, {2.5, -0.1475, 0.0});
+  EXPECT_GT(separation(near_wall, worlds[0]->scenario.obstacles[0]), 0.0);
+  EXPECT_LT(separation(near_wall, worlds[2]->scenario.obstacles[0]), 0.0);
+  std::vector<std::string> ids;
+  for (const SweepEpisode& e : expandEpisodes(spec, worlds)) ids.push_back(e.id);
+  EXPECT_EQ(std::set<std::string>(ids.begin(), ids.end()).size(), 4u);
+  // A value the world refuses is named by its axis.
+  try {
+    (void)loadSweepWorlds(
+        parseSweepSpec("format: parksim-sweep/1\nname: t\nworlds: [" + testing::sourceDir() +
+                           "/worlds/ros_lab.yaml]\nset:\n  map[0].inflation: [0, -1]\n",
+                       "spec.yaml", ""));
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "spec.yaml:5: set map[0].inflation=-1: map[0].inflation: "
+              "must be in [0, 100] m, got -1");
+  }
+}
+
 TEST(EpisodeExpansion, IdsDependOnParametersNotOnTheirPositionInTheSpec) {
   const std::vector<std::string> a = idsOf("planners: [rrt, rrt-connect]\nseeds: [1, 2, 3]\n");
   const std::vector<std::string> b = idsOf("planners: [rrt-connect, rrt]\nseeds: [3, 1, 2]\n");
