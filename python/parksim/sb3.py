@@ -184,11 +184,11 @@ class SB3VecEnv(_Base):
         self._actions = actions
 
     def step_wait(self):
-        if self._actions is None:
+        actions, self._actions = self._actions, None  # one step per step_async
+        if actions is None:
             raise RuntimeError("SB3VecEnv.step_wait: call step_async(actions) first")
         if not all(self.venv._seeded):
             raise RuntimeError("SB3VecEnv.step_wait: call reset() before stepping")
-        actions, self._actions = self._actions, None
         batch = self.venv._batch  # its arrays as they are: VecParkingEnv's Gymnasium infos
         last_obs, rewards, terminated, truncated, last_infos = batch.step(actions)
         obs, started_infos = batch.started()

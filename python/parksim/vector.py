@@ -37,8 +37,8 @@ except ImportError:
 def _autoreset_mode(mode):
     """The mode as metadata holds it (Gymnasium's AutoresetMode where importable), from a mode
     or its value ("next_step", "same_step"); ValueError otherwise."""
-    for known in (_NEXT_STEP, _SAME_STEP):
-        if mode == known or mode == getattr(known, "value", known):
+    for name, known in (("next_step", _NEXT_STEP), ("same_step", _SAME_STEP)):
+        if mode in (name, known, getattr(known, "value", known)):
             return known
     raise ValueError(f"autoreset_mode must be 'next_step' or 'same_step', got {mode!r}")
 

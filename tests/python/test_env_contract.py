@@ -215,6 +215,29 @@ def test_registration_has_max_episode_steps_and_only_with_gymnasium(tmp_path):
         assert "gymnasium" not in sys.modules
 
 
+def test_without_gymnasium_the_stand_in_spaces_serve(tmp_path):
+    # Debian's interpreter has no Gymnasium: the stand-ins, with the same behaviour.
+    code = textwrap.dedent("""
+        import sys
+        sys.modules["gymnasium"] = None  # import gymnasium fails
+        import numpy as np, parksim
+        env = parksim.ParkingEnv(fidelity="kinematic")
+        assert type(env.action_space) is parksim.spaces.Box
+        assert type(env).__mro__[1] is object
+        first = env.reset(seed=4)[0]
+        assert np.array_equal(first, env.reset(seed=4)[0])
+        assert env.observation_space.contains(env.step(env.action_space.sample())[0])
+        vec = parksim.VecParkingEnv(2, fidelity="kinematic", autoreset_mode="same_step")
+        assert vec.metadata["autoreset_mode"] == "same_step"
+        assert np.array_equal(vec.reset(seed=4)[0][0], first)
+        print("ok")
+    """)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         env=dict(os.environ), timeout=60, cwd=tmp_path)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == ["ok"]
+
+
 def test_render_fps_follows_the_control_period(head_in):
     fast = parksim.ParkingEnv(world=head_in, control_period_s=0.05)
     default = parksim.ParkingEnv(world=head_in)
