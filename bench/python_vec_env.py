@@ -77,8 +77,22 @@ def run_physics(world, fidelity, steps, seed):
 
 def run_vec(world, fidelity, n, threads, vec_steps, seed):
     envs = parksim.VecParkingEnv(n, world=world, fidelity=fidelity, threads=threads)
-    rng = np.random.default_rng(seed)
     envs.reset(seed=seed)
+    return run_batch(envs, n, vec_steps, seed)
+
+
+def run_sb3(world, fidelity, n, threads, vec_steps, seed):
+    from parksim.sb3 import SB3VecEnv
+
+    envs = SB3VecEnv(n, world=world, fidelity=fidelity, threads=threads)
+    envs.seed(seed)
+    envs.reset()
+    return run_batch(envs, n, vec_steps, seed)  # its step(): step_async, then step_wait
+
+
+def run_batch(envs, n, vec_steps, seed):
+    """vec_steps steps of random actions (n per step, drawn in blocks)."""
+    rng = np.random.default_rng(seed)
     block = 1000
     start = time.perf_counter(), time.process_time()
     obs = None
@@ -86,24 +100,6 @@ def run_vec(world, fidelity, n, threads, vec_steps, seed):
         actions = rng.uniform(-1.0, 1.0, size=(min(block, vec_steps - first), n, 2))
         for a in actions.astype(np.float32):
             obs = envs.step(a)[0]
-    return n * vec_steps, start, obs
-
-
-def run_sb3(world, fidelity, n, threads, vec_steps, seed):
-    from parksim.sb3 import SB3VecEnv
-
-    envs = SB3VecEnv(n, world=world, fidelity=fidelity, threads=threads)
-    rng = np.random.default_rng(seed)
-    envs.seed(seed)
-    envs.reset()
-    block = 1000
-    start = time.perf_counter(), time.process_time()
-    obs = None
-    for first in range(0, vec_steps, block):
-        actions = rng.uniform(-1.0, 1.0, size=(min(block, vec_steps - first), n, 2))
-        for a in actions.astype(np.float32):
-            envs.step_async(a)
-            obs = envs.step_wait()[0]
     return n * vec_steps, start, obs
 
 
