@@ -96,12 +96,13 @@ std::string describeAction(const py::handle& action, const py::array& a) {
   return "shape (" + shape + ")";
 }
 
-// Wheel speed fractions as float64, of shape (2,) (rows < 0) or (rows, 2): real numbers only
-// (integers or floats). Strings, complex numbers, booleans and objects, which NumPy would
-// convert (dropping an imaginary part), are refused like a wrong shape: ValueError
-// "<what>: <expected>, got <what it was>". Non-finite values are the task's to refuse.
-py::array_t<double> wheelFractions(const py::handle& action, py::ssize_t rows, const char* what,
-                                   const std::string& expected) {
+// Wheel speed fractions as float64, of shape (2,) (an action, rows < 0) or (rows, 2) (a
+// batch's): real numbers only (integers or floats). Strings, complex numbers, booleans and
+// objects, which NumPy would convert (dropping an imaginary part), are refused like a wrong
+// shape, in one line: ValueError "action: expected two finite numbers (...), got <what it
+// was>" ("actions: expected shape (n, 2) ..." for a batch). Non-finite values are the task's
+// to refuse, in the same words.
+py::array_t<double> wheelFractions(const py::handle& action, py::ssize_t rows) {
   py::array a;
   try {
     a = py::array::ensure(action);
@@ -112,15 +113,19 @@ py::array_t<double> wheelFractions(const py::handle& action, py::ssize_t rows, c
                                      : a.ndim() == 2 && a.shape(0) == rows && a.shape(1) == 2);
   const char kind = a ? a.dtype().kind() : '\0';
   if (!shaped || (kind != 'i' && kind != 'u' && kind != 'f')) {
-    throw py::value_error(std::string(what) + ": " + expected + ", got " +
-                          describeAction(action, a));
+    const std::string expected =
+        rows < 0 ? std::string("action: ") + kTaskActionExpected
+                 : "actions: expected shape (" + std::to_string(rows) +
+                       ", 2) of finite numbers (a left, right wheel speed fraction pair per "
+                       "environment)";
+    throw py::value_error(expected + ", got " + describeAction(action, a));
   }
   return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
 }
 
 // An action as (left, right): exactly two real numbers, a sequence or an array of shape (2,).
 TaskAction actionFrom(const py::handle& action) {
-  const auto a = wheelFractions(action, -1, "action", kTaskActionExpected);
+  const auto a = wheelFractions(action, -1);
   return {a.at(0), a.at(1)};
 }
 
@@ -360,11 +365,7 @@ void bindBatch(py::module_& m) {
       .def("step",
            [](BatchHandle& h, const py::handle& actions) {
              const auto n = static_cast<py::ssize_t>(h.batch->size());
-             const auto a = wheelFractions(
-                 actions, n, "actions",
-                 "expected shape (" + std::to_string(n) +
-                     ", 2) of finite numbers (a left, right wheel speed fraction pair per "
-                     "environment)");
+             const auto a = wheelFractions(actions, n);
              const double* d = a.data();
              for (std::size_t i = 0; i < h.actions.size(); ++i) {
                h.actions[i] = {d[2 * i], d[2 * i + 1]};
