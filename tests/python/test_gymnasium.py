@@ -18,6 +18,19 @@ def gym():
     return gymnasium_or_skip()
 
 
+def test_the_gymnasium_found_is_the_third_party_copy(gym):
+    # Where the folder is, these tests ran against its Gymnasium 1.3.0, not another one.
+    import pathlib
+
+    from conftest import GYMNASIUM_DIR
+
+    if not GYMNASIUM_DIR.is_dir():
+        pytest.skip(f"no {GYMNASIUM_DIR}: testing the installed Gymnasium {gym.__version__}")
+    assert gym.__version__ == "1.3.0"
+    assert pathlib.Path(gym.__file__).resolve().is_relative_to(GYMNASIUM_DIR.resolve())
+    assert "parksim/Parking-v0" in gym.registry
+
+
 @pytest.mark.parametrize("options", [{}, {"fidelity": "kinematic"}, {"realism": "lab"}],
                          ids=["dynamics", "kinematic", "lab"])
 def test_check_env_passes_without_warnings(gym, options):
