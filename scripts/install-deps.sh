@@ -31,6 +31,9 @@ test_packages=(
   # pkill, which stops a task mid-shard in tests/sweep/slurm_missing_test.sh.
   slurm-wlm munge procps
   pybind11-dev python3 python3-dev python3-numpy python3-pytest python3-yaml python3-pandas
+  # Gymnasium's dependencies: the Python tests run against Gymnasium 1.3.0's source in
+  # ../shared/third_party (PARKSIM_THIRD_PARTY; tests/python/conftest.py), not packaged here.
+  python3-cloudpickle python3-typing-extensions
   jupyter-nbconvert python3-nbformat python3-ipykernel
   # JUnit reports (`--junit`) read by a real consumer and checked with xmllint.
   python3-junitparser libxml2-utils
