@@ -21,6 +21,7 @@
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/planner/Planner.h"
 #include "parksim/plugin/PluginLoader.h"
+#include "parksim/rl/TaskSpaces.h"
 #include "parksim/sim/Controller.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
@@ -99,7 +100,10 @@ class PyController : public Controller {
         s["period_s"] = setup.period_s;
         s["latency_s"] = setup.latency_s;
         s["estimated_pose"] = setup.estimated_pose;
+        s["ideal_robot"] = setup.ideal_robot;
         s["goal"] = poseTuple(setup.scenario.goal.pose);
+        const LotBounds& lot = setup.scenario.lot;
+        s["lot"] = py::make_tuple(lot.x_min_m, lot.y_min_m, lot.x_max_m, lot.y_max_m);
         c.attr("reset")(s);
       }
     } catch (py::error_already_set& e) {
@@ -122,7 +126,6 @@ class PyController : public Controller {
 
  private:
   static WheelSpeeds wheelsFrom(const py::handle& out) {
-    if (py::isinstance<WheelSpeeds>(out)) return out.cast<WheelSpeeds>();
     // A tuple, list or array of two real numbers; strings and complex numbers are not.
     const py::sequence s = out.cast<py::sequence>();
     if (py::isinstance<py::str>(out) || s.size() != 2) {
@@ -141,6 +144,78 @@ class PyController : public Controller {
 
   std::shared_ptr<Held> controller_;
   bool callable_ = true;
+};
+
+// A policy trained on the parking task (ParkingEnv: rl/TaskSpaces.h's observation and action)
+// as a controller: every period_s it builds the task's observation as the task does (the pose
+// the controller may use; the true twist of the ideal robot, else the mean speed its encoders
+// saw over the last action; the goal), asks the policy for an action and holds the wheel
+// speeds that action commands until the next.
+class PolicyController {
+ public:
+  PolicyController(py::object policy, double period_s)
+      : policy_(std::move(policy)), period_s_(period_s) {
+    if (!PyCallable_Check(policy_.ptr())) {
+      throw py::type_error("a policy is a callable: observation -> action");
+    }
+    if (!(period_s > 0.0 && period_s <= 60.0)) {
+      throw py::value_error("period_s must be in (0, 60]");
+    }
+  }
+
+  void reset(const py::dict& setup) {
+    scenario_ = Scenario{};
+    scenario_.robot = setup["robot"].cast<RobotDef>();
+    const auto lot = setup["lot"].cast<std::tuple<double, double, double, double>>();
+    scenario_.lot = {std::get<0>(lot), std::get<1>(lot), std::get<2>(lot), std::get<3>(lot)};
+    scenario_.goal.pose = poseFrom(setup["goal"]);
+    bounds_ = taskObservationBounds(scenario_, period_s_);
+    ideal_ = setup["ideal_robot"].cast<bool>();
+    next_t_ = 0.0;
+    held_ = {};
+    last_t_ = 0.0;
+    last_encoders_ = {};
+  }
+
+  WheelSpeeds command(const ControllerInput& in) {
+    if (in.t_s + 1e-9 < next_t_) return held_;
+    next_t_ += period_s_ * std::ceil((in.t_s + 1e-9 - next_t_) / period_s_);
+    if (next_t_ <= in.t_s) next_t_ += period_s_;
+    // The task's twist (rl/DynamicDrive.cpp): the truth, or the encoders' mean over the action.
+    Twist twist = in.twist;
+    if (!ideal_) {
+      const double elapsed = in.t_s - last_t_;
+      twist = {};
+      if (elapsed > 0.0) {
+        twist = toTwist({(in.encoders_rad.left_radps - last_encoders_.left_radps) / elapsed,
+                         (in.encoders_rad.right_radps - last_encoders_.right_radps) / elapsed},
+                        scenario_.robot);
+      }
+      last_t_ = in.t_s;
+      last_encoders_ = in.encoders_rad;
+    }
+    const TaskObservation obs = taskObservation(in.pose, twist, scenario_.goal.pose, bounds_);
+    py::array_t<float> array(static_cast<py::ssize_t>(obs.size()));
+    std::copy(obs.begin(), obs.end(), array.mutable_data());
+    const py::object action = policy_(array);
+    const py::array_t<double, py::array::forcecast> a(action);
+    if (a.size() != 2) throw std::runtime_error(std::string("action: ") + kTaskActionExpected);
+    const TaskAction act{a.at(0), a.at(1)};
+    checkTaskAction(act);
+    held_ = taskWheelSpeeds(act, scenario_.robot);
+    return held_;
+  }
+
+ private:
+  py::object policy_;
+  double period_s_;
+  Scenario scenario_;
+  TaskObservationBounds bounds_;
+  bool ideal_ = true;
+  double next_t_ = 0.0;
+  WheelSpeeds held_;
+  double last_t_ = 0.0;
+  WheelSpeeds last_encoders_;
 };
 
 std::string componentName(const py::handle& obj, const char* what) {
@@ -233,6 +308,22 @@ std::string addPythonController(Components& components, const py::object& contro
 }
 
 void bindUserCode(py::module_& m) {
+  py::class_<PolicyController>(
+      m, "PolicyController",
+      "A policy trained on the parking task (ParkingEnv's observation -> action) as a "
+      "controller for run(): every period_s it observes as the task does and holds the wheel "
+      "speeds of the action. name: 'policy'.")
+      .def(py::init<py::object, double>(), py::arg("policy"), py::arg("period_s") = 0.1)
+      .def_property_readonly("name", [](const PolicyController&) { return "policy"; })
+      .def("reset", &PolicyController::reset, py::arg("setup"))
+      .def(
+          "command",
+          [](PolicyController& c, const ControllerInput& in) {
+            const WheelSpeeds w = c.command(in);
+            return py::make_tuple(w.left_radps, w.right_radps);
+          },
+          py::arg("observation"));
+
   py::class_<ControllerInput>(m, "ControllerInput",
                               "What a controller knows at one control tick (sim/Controller.h).")
       .def_readonly("tick", &ControllerInput::tick)
@@ -253,6 +344,12 @@ void bindUserCode(py::module_& m) {
                                   in.wheel_speeds_radps.right_radps);
           },
           "measured wheel speeds (left, right), rad/s")
+      .def_property_readonly(
+          "twist",
+          [](const ControllerInput& in) {
+            return py::make_tuple(in.twist.v_mps, in.twist.omega_radps);
+          },
+          "(v, omega): the true twist (ideal robot), else that of the measured wheel speeds")
       .def_property_readonly(
           "reference", [](const ControllerInput& in) { return poseTuple(in.reference); },
           "the plan's pose at t")

@@ -157,3 +157,32 @@ def test_bad_components_are_input_errors(head_in):
         parksim.run(head_in, controller=type("X", (), {"name": "bad name!", "command": None})())
     with pytest.raises(parksim.Error, match="takes no controller_params"):
         parksim.run(head_in, controller=lambda o: o.feedforward, controller_params={"k": 1})
+
+
+@pytest.mark.parametrize("realism", ["ideal", "lab"])
+def test_a_parking_policy_drives_as_in_its_environment(head_in, realism):
+    """PolicyController observes and acts exactly as ParkingEnv does: replaying the actions an
+    episode of the environment took, from the same start, it sees the same observations."""
+    env = parksim.ParkingEnv(head_in, fidelity="dynamics", realism=realism)
+    obs, _ = env.reset(seed=3, options={"start": head_in.start, "noise_seed": 1})
+    rng = np.random.default_rng(5)
+    actions, seen = [], [obs]
+    for _ in range(30):
+        action = rng.uniform(-0.3, 0.6, size=2).astype(np.float32)
+        obs, _, terminated, truncated, _ = env.step(action)
+        actions.append(action)
+        seen.append(obs)
+        if terminated or truncated:
+            break
+    received = []
+
+    def replay(observation):
+        received.append(observation.copy())
+        return actions[min(len(received) - 1, len(actions) - 1)]
+
+    parksim.run(head_in, controller=parksim.PolicyController(replay, env.control_period_s),
+                realism=realism, noise_seed=1, max_stop_time_s=0.0)
+    n = min(len(received), len(seen))
+    assert n >= 20
+    assert received[0].dtype == np.float32 and received[0].shape == (10,)
+    np.testing.assert_array_equal(np.array(received[:n]), np.array(seen[:n]))
