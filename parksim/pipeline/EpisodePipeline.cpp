@@ -7,6 +7,7 @@
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
+#include "parksim/pipeline/EpisodeReport.h"
 #include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/results/JsonFile.h"
@@ -138,6 +139,7 @@ void writeFiles(const EpisodeRequest& request, EpisodeOutcome& out) {
     writeTrajectoryCsv(dir + "/trajectory.csv", out.trajectory, scenario.robot);
     out.files.push_back("trajectory.csv");
   }
+  writeEpisodeReport(dir, out);
   if (!out.driven()) return;
   const RecordFormat format = request.record.format;
   writeExecutedFile(dir + "/" + executedFileName(format), out.episode.rows,
