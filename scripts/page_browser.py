@@ -79,23 +79,30 @@ class PageBrowser:
     def open(self, path, timeout_s=60.0):
         """Opens the page at `path` from file:// and waits until it says it is drawn
         (document.body.dataset.ready); returns the seconds that took, from navigation start
-        as the page measures it. Raises PageError when the page failed or timed out."""
+        as the page measures it. Raises PageError when the page failed or timed out. The
+        requests and console messages checked afterwards are those from here on."""
         self._drain()
         self._requests.clear()
         self._console.clear()
-        url = pathlib.Path(path).resolve().as_uri()
-        self.driver.get(url)
+        self.driver.get(pathlib.Path(path).resolve().as_uri())
+        return self.wait_ready(path, timeout_s)
+
+    def wait_ready(self, path=None, timeout_s=60.0):
+        """Waits until the page at `path` (with None: the page shown) is drawn; returns
+        open()'s seconds. After a click on a link, name the page it leads to."""
+        want = pathlib.Path(path).resolve().as_uri() if path is not None else None
         deadline = time.monotonic() + timeout_s
         while True:
-            state = self.driver.execute_script(
-                "return [document.body && document.body.dataset.ready,"
+            url, ready, failed = self.driver.execute_script(
+                "return [location.href, document.body && document.body.dataset.ready,"
                 " document.body && document.body.dataset.failed]")
-            if state[0] == "true":
+            here = want is None or url == want
+            if here and ready == "true":
                 break
-            if state[1]:
-                raise PageError("%s: the page failed: %s" % (path, state[1]))
+            if here and failed:
+                raise PageError("%s: the page failed: %s" % (url, failed))
             if time.monotonic() > deadline:
-                raise PageError("%s: not ready after %.0f s" % (path, timeout_s))
+                raise PageError("%s: not ready after %.0f s (at %s)" % (path, timeout_s, url))
             time.sleep(0.02)
         return self.driver.execute_script("return window.parksimReadyMs") / 1000.0
 

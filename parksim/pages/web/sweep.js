@@ -15,21 +15,22 @@
   const maxValues = 24;
   const bins = 10;
 
-  // A column's values as a plain array: numbers (NaN: none), text, booleans or null.
+  // A column's values as a plain array: numbers, text, booleans, or null where a row has none
+  // (which the table sorts last).
   function values(col, n) {
     if (col.encoding === 'levels') {
       const codes = P.column(col);
       return Array.from(codes, (c) => col.levels[c]);
     }
     const a = P.column(col);
-    return a.length === n ? Array.from(a) : new Array(n).fill(NaN);
+    return a.length === n ? Array.from(a, (x) => (isNaN(x) ? null : x)) : new Array(n).fill(null);
   }
 
   // A header filter for numbers: "0.002", ">0.001", "<= 5", "!=0", "1..3" (inclusive).
   function numberFilter(expr, value) {
     const text = String(expr).trim();
     if (text === '') return true;
-    if (typeof value !== 'number' || isNaN(value)) return false;
+    if (typeof value !== 'number') return false;
     const range = text.match(/^(-?[\d.]+(?:e[-+]?\d+)?)\s*\.\.\s*(-?[\d.]+(?:e[-+]?\d+)?)$/i);
     if (range) return value >= Number(range[1]) && value <= Number(range[2]);
     const m = text.match(/^(<=|>=|!=|<|>|=)?\s*(-?[\d.]+(?:e[-+]?\d+)?)$/i);
@@ -59,6 +60,7 @@
       def.formatter = (cell) => P.badge(String(cell.getValue()));
     } else if (col.kind === 'number') {
       def.sorter = 'number';
+      def.sorterParams = { alignEmptyValues: 'bottom' };
       def.hozAlign = 'right';
       def.formatter = (cell) => P.fmt(cell.getValue(), 4);
     } else {
@@ -125,7 +127,7 @@
     const key = field + '#bin';
     for (const r of rows) {
       const v = r[field];
-      r[key] = isFinite(v) ? Math.min(bins - 1, Math.floor((v - lo) / width)) : null;
+      r[key] = typeof v === 'number' && isFinite(v) ? Math.min(bins - 1, Math.floor((v - lo) / width)) : null;
     }
     const order = [...Array(bins).keys()];
     return {

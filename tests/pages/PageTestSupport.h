@@ -1,0 +1,75 @@
+#pragma once
+// What the page tests share: a page's embedded data read back from its HTML, and its packed
+// columns unpacked as web/common.js unpacks them.
+
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace parksim::testing {
+
+/// RFC 4648 base64 decoded (the page's atob).
+inline std::vector<std::uint8_t> fromBase64(const std::string& text) {
+  std::vector<std::uint8_t> out;
+  std::uint32_t bits = 0;
+  int count = 0;
+  for (const char c : text) {
+    int v = -1;
+    if (c >= 'A' && c <= 'Z') v = c - 'A';
+    if (c >= 'a' && c <= 'z') v = c - 'a' + 26;
+    if (c >= '0' && c <= '9') v = c - '0' + 52;
+    if (c == '+') v = 62;
+    if (c == '/') v = 63;
+    if (v < 0) continue;  // '=' padding
+    bits = (bits << 6) | static_cast<std::uint32_t>(v);
+    count += 6;
+    if (count >= 8) {
+      count -= 8;
+      out.push_back(static_cast<std::uint8_t>((bits >> count) & 0xFF));
+    }
+  }
+  return out;
+}
+
+/// A packed column's values as doubles (an integer column's offset added, its missing marker
+/// as NaN), as parksim.column() makes them.
+inline std::vector<double> unpack(const nlohmann::json& column) {
+  const std::vector<std::uint8_t> bytes = fromBase64(column.at("data").get<std::string>());
+  const std::string type = column.at("type");
+  std::vector<double> values;
+  const auto read = [&](auto sample) {
+    using T = decltype(sample);
+    for (std::size_t i = 0; i + sizeof(T) <= bytes.size(); i += sizeof(T)) {
+      T v;
+      std::memcpy(&v, bytes.data() + i, sizeof(T));
+      double x = static_cast<double>(v);
+      if (column.contains("missing") && x == column.at("missing").get<double>()) {
+        x = std::nan("");
+      } else if (column.contains("offset")) {
+        x += column.at("offset").get<double>();
+      }
+      values.push_back(x);
+    }
+  };
+  if (type == "f64") read(double{});
+  if (type == "f32") read(float{});
+  if (type == "u8") read(std::uint8_t{});
+  if (type == "u16") read(std::uint16_t{});
+  if (type == "u32") read(std::uint32_t{});
+  return values;
+}
+
+/// The JSON a page's <script id="parksim-data"> holds.
+inline nlohmann::json pageData(const std::string& html) {
+  const std::string open = "<script type=\"application/json\" id=\"parksim-data\">";
+  const std::size_t begin = html.find(open);
+  if (begin == std::string::npos) throw std::runtime_error("no parksim-data in the page");
+  const std::size_t end = html.find("</script>", begin);
+  return nlohmann::json::parse(html.substr(begin + open.size(), end - begin - open.size()));
+}
+
+}  // namespace parksim::testing
