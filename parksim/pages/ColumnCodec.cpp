@@ -57,7 +57,10 @@ std::string base64(std::span<const std::uint8_t> bytes) {
 }
 
 nlohmann::json float64Column(std::span<const double> values) {
-  return typed("f64", packed<double>(values));
+  // The doubles' own bytes: they are stored as the page reads them (little-endian).
+  const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(values.data()),
+                                            values.size_bytes());
+  return {{"type", "f64"}, {"data", base64(bytes)}};
 }
 
 nlohmann::json float32Column(std::span<const double> values) {

@@ -53,7 +53,7 @@ void writeComparisonPage(const std::string& path, const ComparisonPage& page) {
   doc.scripts = {"summaries.js", "comparison.js"};
   const fs::path folder = fs::path(path).parent_path();
   doc.data = comparisonPageData(page, folder.empty() ? "." : folder.string());
-  writePage(path, doc);
+  writePage(path, std::move(doc));
 }
 
 }  // namespace parksim

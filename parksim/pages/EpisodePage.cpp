@@ -124,7 +124,7 @@ void writeEpisodePage(const std::string& path, const Scenario& scenario, const E
   doc.libraries = {PageLibraryId::kUPlot};
   doc.scripts = {"replay.js", "episode.js"};
   doc.data = episodePageData(scenario, page);
-  writePage(path, doc);
+  writePage(path, std::move(doc));
 }
 
 }  // namespace parksim

@@ -17,17 +17,32 @@ std::string text(std::string_view s) { return xmlEscaped(s, XmlContext::kContent
 // JSON inside a <script> element: '<' only occurs inside strings, where \u003c means the same
 // and cannot close the element or open a comment.
 std::string scriptJson(const nlohmann::json& data) {
-  const std::string json = data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-  std::string out;
-  out.reserve(json.size() + 64);
-  for (const char c : json) {
-    if (c == '<') {
-      out += "\\u003c";
-    } else {
-      out += c;
-    }
+  std::string json = data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  for (std::size_t at = json.find('<'); at != std::string::npos; at = json.find('<', at)) {
+    json.replace(at, 1, "\\u003c");
   }
-  return out;
+  return json;
+}
+
+// Moves the base64 text of every packed column (ColumnCodec.h: an object with a string "type"
+// and a string "data") out of `data` into `blobs`, leaving "blob": its index. The page reads
+// them from their own elements (web/common.js): nothing to parse, nothing to escape, and the
+// JSON stays small.
+void extractBlobs(nlohmann::json& data, std::vector<std::string>& blobs) {
+  if (data.is_array()) {
+    for (nlohmann::json& item : data) extractBlobs(item, blobs);
+    return;
+  }
+  if (!data.is_object()) return;
+  const auto type = data.find("type");
+  const auto bytes = data.find("data");
+  if (type != data.end() && type->is_string() && bytes != data.end() && bytes->is_string()) {
+    blobs.push_back(std::move(bytes->get_ref<std::string&>()));
+    data.erase(bytes);
+    data["blob"] = blobs.size() - 1;
+    return;
+  }
+  for (auto& [key, value] : data.items()) extractBlobs(value, blobs);
 }
 
 void appendLicences(std::string& html, const PageDocument& page) {
@@ -48,7 +63,7 @@ void appendLicences(std::string& html, const PageDocument& page) {
 
 }  // namespace
 
-std::string pageHtml(const PageDocument& page) {
+std::string pageHtml(PageDocument page) {
   std::string html;
   html.reserve(1u << 20);
   html += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
@@ -67,9 +82,17 @@ std::string pageHtml(const PageDocument& page) {
       "</style>\n</head>\n<body>\n<noscript>This report draws itself with JavaScript; "
       "allow it for this file.</noscript>\n<main id=\"page\"></main>\n";
   appendLicences(html, page);
+  std::vector<std::string> blobs;
+  extractBlobs(page.data, blobs);
   html += "<script type=\"application/json\" id=\"parksim-data\">";
   html += scriptJson(page.data);
   html += "</script>\n";
+  // Base64 holds no '<': each blob is the text of its element as it is.
+  for (std::size_t i = 0; i < blobs.size(); ++i) {
+    html += "<script type=\"text/plain\" id=\"parksim-blob-" + std::to_string(i) + "\">";
+    html += blobs[i];
+    html += "</script>\n";
+  }
   for (const PageLibraryId id : page.libraries) {
     const PageLibrary& lib = pageLibrary(id);
     html += "<script>/*! " + lib.title + " " + lib.version + " (" + lib.license +
@@ -87,8 +110,8 @@ std::string pageHtml(const PageDocument& page) {
   return html;
 }
 
-void writePage(const std::string& path, const PageDocument& page) {
-  writeFileAtomically(path, pageHtml(page));
+void writePage(const std::string& path, PageDocument page) {
+  writeFileAtomically(path, pageHtml(std::move(page)));
 }
 
 }  // namespace parksim

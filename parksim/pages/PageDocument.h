@@ -5,9 +5,12 @@
 // script, style, image, font or connection from anywhere, the page's own folder included):
 // what is not inline is not loaded. Links to other pages are plain navigation.
 //
-// The data goes into <script type="application/json" id="parksim-data">; the page's script
-// reads it (web/common.js), draws, and then sets document.body.dataset.ready = "true" (and,
-// with a table, document.body.dataset.rows), which tests and benchmarks wait for.
+// The data goes into <script type="application/json" id="parksim-data">, except the base64 text
+// of its packed columns (ColumnCodec.h), which goes into <script type="text/plain"
+// id="parksim-blob-N"> elements (the column keeps "blob": N): no JSON to parse or escape for
+// the bulk of the bytes. The page's script reads them (web/common.js), draws, and then sets
+// document.body.dataset.ready = "true" (and, with a table, document.body.dataset.rows), which
+// tests and benchmarks wait for.
 
 #include <string>
 #include <vector>
@@ -27,10 +30,10 @@ struct PageDocument {
   nlohmann::json data;
 };
 
-/// The HTML document.
-std::string pageHtml(const PageDocument& page);
+/// The HTML document (taken by value: its packed columns are moved out of the data).
+std::string pageHtml(PageDocument page);
 
 /// Writes pageHtml(page) to `path` atomically. Throws Error when it cannot be written.
-void writePage(const std::string& path, const PageDocument& page);
+void writePage(const std::string& path, PageDocument page);
 
 }  // namespace parksim

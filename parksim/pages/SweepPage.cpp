@@ -75,7 +75,7 @@ void writeSweepPage(const std::string& path, const SweepPage& page) {
   doc.libraries = {PageLibraryId::kTabulator, PageLibraryId::kUPlot};
   doc.scripts = {"summaries.js", "sweep.js"};
   doc.data = sweepPageData(page);
-  writePage(path, doc);
+  writePage(path, std::move(doc));
 }
 
 }  // namespace parksim

@@ -63,13 +63,33 @@ inline std::vector<double> unpack(const nlohmann::json& column) {
   return values;
 }
 
-/// The JSON a page's <script id="parksim-data"> holds.
-inline nlohmann::json pageData(const std::string& html) {
-  const std::string open = "<script type=\"application/json\" id=\"parksim-data\">";
+/// The text of the element whose opening tag is `open`.
+inline std::string elementText(const std::string& html, const std::string& open) {
   const std::size_t begin = html.find(open);
-  if (begin == std::string::npos) throw std::runtime_error("no parksim-data in the page");
+  if (begin == std::string::npos) throw std::runtime_error("no " + open + " in the page");
   const std::size_t end = html.find("</script>", begin);
-  return nlohmann::json::parse(html.substr(begin + open.size(), end - begin - open.size()));
+  return html.substr(begin + open.size(), end - begin - open.size());
+}
+
+/// Puts each packed column's base64 text back as its "data", from its blob element.
+inline void resolveBlobs(nlohmann::json& data, const std::string& html) {
+  if (data.is_object() && data.contains("blob") && data.contains("type")) {
+    const std::string id = std::to_string(data["blob"].get<int>());
+    data["data"] = elementText(html, "<script type=\"text/plain\" id=\"parksim-blob-" + id + "\">");
+    data.erase("blob");
+    return;
+  }
+  if (data.is_structured()) {
+    for (auto& item : data) resolveBlobs(item, html);
+  }
+}
+
+/// The JSON a page's <script id="parksim-data"> holds, its columns' blobs put back.
+inline nlohmann::json pageData(const std::string& html) {
+  nlohmann::json data = nlohmann::json::parse(
+      elementText(html, "<script type=\"application/json\" id=\"parksim-data\">"));
+  resolveBlobs(data, html);
+  return data;
 }
 
 }  // namespace parksim::testing

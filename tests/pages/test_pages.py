@@ -249,6 +249,14 @@ def test_sorting_and_filtering_change_what_is_shown(browser, out):
     assert sorted(shown_values(browser, column_field(browser, "episode_id"))) == sorted(r["episode_id"] for r in failed)
     browser.driver.find_element(By.CSS_SELECTOR, '#status-filter .chip[data-status="met"]').click()
     wait_for(browser, "return document.body.dataset.shown", "120")
+    # A column not shown at first is one click away, and sorts.
+    assert browser.js("return parksimTable.getColumns().some(c => c.getDefinition().title === 'plan_iterations')") is False
+    browser.driver.find_element(By.CSS_SELECTOR, ".chooser summary").click()
+    browser.driver.find_element(By.XPATH, "//details[@class='chooser']//label[normalize-space()='plan_iterations']/input").click()
+    browser.driver.find_element(By.CSS_SELECTOR, ".chooser summary").click()
+    field = column_field(browser, "plan_iterations")
+    click_header()
+    assert float(first_shown()) == min(r["plan_iterations"] for r in rows)
 
 
 def wait_for(browser, script, value, tries=200):
@@ -275,6 +283,9 @@ def test_axis_summaries_agree_with_the_table(browser, out):
                        ".map(tr => [...tr.children].map(td => td.textContent))")
     planners = sorted({r["planner"] for r in rows})
     assert [c[0] for c in cells] == planners
+    # world_file groups the episodes as world does: no second summary.
+    axes = browser.js("return [...document.querySelectorAll('#axes .axis')].map(a => a.dataset.axis)")
+    assert axes == ["world", "planner", "seed"]
     for planner, cell in zip(planners, cells):
         group = [r for r in rows if r["planner"] == planner]
         met = sum(r["met_tolerance"] for r in group)

@@ -29,11 +29,14 @@ const parksim = {};
 
   // A packed column as a typed array. Integer columns with an offset come back as a
   // Float64Array with the offset added and NaN where a value is missing; codes and floats as
-  // they were stored (little-endian, as every browser's typed arrays on x86 and ARM).
+  // they were stored (little-endian, as every browser's typed arrays on x86 and ARM). The
+  // base64 text is the column's "data", or the text of its blob element (PageDocument.h).
   P.column = function (packed) {
     const Type = arrayTypes[packed.type];
     if (!Type) throw new Error('unknown column type ' + packed.type);
-    const bytes = bytesOf(packed.data);
+    const text = packed.data !== undefined ? packed.data
+      : document.getElementById('parksim-blob-' + packed.blob).textContent;
+    const bytes = bytesOf(text);
     const stored = new Type(bytes.buffer, 0, bytes.length / Type.BYTES_PER_ELEMENT);
     if (packed.offset === undefined) return stored;
     const values = new Float64Array(stored.length);

@@ -56,7 +56,7 @@
       height: 170,
       cursor: { sync: { key: 'episode' }, drag: { x: true, y: false } },
       scales: { x: { time: false }, y: log ? { distr: 3 } : {} },
-      axes: [{ label: 't (s)' }, { size: 60 }],
+      axes: [{ label: 't (s)' }, { size: 60, values: (u, splits) => splits.map((v) => P.fmt(v, 3)) }],
       series: [{ label: 't (s)' }, ...series],
       hooks: {
         ready: [(u) => {
@@ -123,7 +123,8 @@
     for (const [title, series, values, log] of specs) {
       const opts = plotOptions(title, series, width, contacts, onPick, log);
       if (series.some((s) => s.scale === 'deg')) {
-        opts.axes.push({ scale: 'deg', side: 1, grid: { show: false }, size: 60 });
+        opts.axes.push({ scale: 'deg', side: 1, grid: { show: false }, size: 60,
+          values: (u, splits) => splits.map((v) => P.fmt(v, 3)) });
       }
       made.push(new uPlot(opts, [t, ...values], box));
     }

@@ -18,6 +18,7 @@
   // A column's values as a plain array: numbers, text, booleans, or null where a row has none
   // (which the table sorts last).
   function values(col, n) {
+    if (col.encoding === 'const') return new Array(n).fill(col.value);
     if (col.encoding === 'levels') {
       const codes = P.column(col);
       return Array.from(codes, (c) => col.levels[c]);
@@ -51,9 +52,15 @@
     return (s) => (s === 'met' ? statuses.length + 1 : (statuses.indexOf(s) + 1 || statuses.length));
   }
 
+  // A column of the table. Its width is set from its name's length rather than measured from
+  // its cells, which took most of a 120-row page's start-up.
   function columnDef(col, field, state) {
     const name = col.name;
-    const def = { title: name, field, visible: state.shown.has(name), headerSortTristate: true };
+    let chars = Math.max(name.length, col.kind === 'number' ? 8 : 12);
+    if (col.encoding === 'levels' && col.kind !== 'number') {
+      for (const v of col.levels.slice(0, 500)) chars = Math.max(chars, Math.min(40, String(v).length));
+    }
+    const def = { title: name, field, headerSortTristate: true, width: Math.min(380, 34 + 8.5 * chars) };
     if (name === 'status') {
       const rank = statusRank(state.statuses);
       def.sorter = (a, b) => rank(a) - rank(b);
@@ -178,8 +185,11 @@
   function main(data, root) {
     const table = data.table;
     const n = table.rows;
-    const cols = table.columns.filter((c) => c.encoding !== 'const');
-    const constants = table.columns.filter((c) => c.encoding === 'const');
+    // The same in every row: listed once below the table, but for the columns the page reads
+    // (the verdict) and the id, which stay columns whatever their values.
+    const always = new Set(['episode_id', 'status', 'met_tolerance', 'failure']);
+    const cols = table.columns.filter((c) => c.encoding !== 'const' || always.has(c.name));
+    const constants = table.columns.filter((c) => !cols.includes(c));
     const field = new Map(cols.map((c, j) => [c.name, 'c' + j]));
     const varying = data.axes.filter((a) => field.has(a));
     const state = {
@@ -231,15 +241,25 @@
     if (table.omitted.length) {
       root.append(el('p', { class: 'note', text: 'Lists of lists, in results.jsonl only: ' + table.omitted.join(', ') }));
     }
-    const groups = new Map(varying.map((a) => {
+    // An axis that groups the episodes exactly as an earlier one (world_file beside world) says
+    // nothing new: it keeps its column but gets no summary.
+    const same = (a, b) => {
+      const fa = field.get(a);
+      const fb = field.get(b);
+      const pairs = new Set(rows.map((r) => String(r[fa]) + '\u0000' + String(r[fb])));
+      const count = (f) => new Set(rows.map((r) => r[f])).size;
+      return pairs.size === count(fa) && pairs.size === count(fb);
+    };
+    const summarised = varying.filter((a, k) => !varying.slice(0, k).some((b) => same(a, b)));
+    const groups = new Map(summarised.map((a) => {
       const col = cols.find((c) => c.name === a);
       return [a, axisGroups(col, rows, field.get(a))];
     }));
     const errorFields = errorKeys.map((k) => field.get(k));
     const drawAxes = (shown) => {
       axesBox.replaceChildren(axesBox.firstChild);
-      if (varying.length === 0) axesBox.append(el('p', { class: 'note', text: 'No axis varies in this table.' }));
-      for (const a of varying) {
+      if (summarised.length === 0) axesBox.append(el('p', { class: 'note', text: 'No axis varies in this table.' }));
+      for (const a of summarised) {
         const g = groups.get(a);
         const summary = P.summarise(shown, g.key, g.order, errorFields.filter(Boolean));
         const box = el('div', { class: 'axis', 'data-axis': a }, el('h3', { text: a }));
@@ -255,11 +275,25 @@
       layout: 'fitData',
       renderHorizontal: cols.length > 40 ? 'virtual' : 'basic',
       placeholder: 'No episode matches the filters',
-      columns: cols.map((c) => columnDef(c, field.get(c.name), state)),
+      // Only the columns shown: each column costs start-up time whether shown or not; the
+      // others are added when chosen.
+      columns: cols.filter((c) => state.shown.has(c.name)).map((c) => columnDef(c, field.get(c.name), state)),
       initialSort: [{ column: statusField, dir: 'asc' }],
     });
     window.parksimTable = tab;
     document.body.dataset.rows = String(n);
+    const defined = new Set([...state.shown].filter((n) => field.has(n)));
+    const showColumn = (c, show) => {
+      const f = field.get(c.name);
+      if (!show) {
+        tab.hideColumn(f);
+      } else if (defined.has(c.name)) {
+        tab.showColumn(f);
+      } else {
+        defined.add(c.name);
+        tab.addColumn(columnDef(c, f, state));
+      }
+    };
     let pending = false;
     const onFiltered = () => {
       if (pending) return;
@@ -277,7 +311,7 @@
         tab.setFilter((row) => !state.hidden.has(row[statusField]));
         chooser.append(el('div', { class: 'choices' }, cols.map((c) => el('label', {},
           el('input', { type: 'checkbox', checked: state.shown.has(c.name),
-            onchange: (e) => (e.target.checked ? tab.showColumn(field.get(c.name)) : tab.hideColumn(field.get(c.name))) }),
+            onchange: (e) => showColumn(c, e.target.checked) }),
           ' ' + c.name))));
         tab.on('dataFiltered', onFiltered);
         const shown = tab.getData('active');
