@@ -4,6 +4,8 @@
 //   BM_EpisodePage/<world>   writing that episode's report.html
 //   BM_SweepPage/<rows>      writing a sweep's index.html for a table of that many rows (the
 //                            study's 120 rows repeated under new ids), from rows in memory
+//   BM_SweepPageOfTable      the same for the table PARKSIM_BENCH_TABLE names (a results.jsonl,
+//                            e.g. bench/pages/sweep_20k.yaml's): skipped when unset
 // worlds: 0 head_in (the demo's episode), 1 big_lot (10 x 10 m, 300 boxes).
 // Run: build/bench/bench_pages --benchmark_counters_tabular=true
 // BM_EpisodePage's time over BM_Episode's is the share a page adds to a run without frames;
@@ -11,6 +13,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -20,6 +23,7 @@
 #include "parksim/pages/SweepPage.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/scenario/World.h"
+#include "parksim/sweep/ResultsFile.h"
 
 namespace parksim {
 namespace {
@@ -108,24 +112,38 @@ std::vector<nlohmann::ordered_json> studyRows(int n) {
   return rows;
 }
 
-void BM_SweepPage(benchmark::State& state) {
-  const std::vector<nlohmann::ordered_json> rows = studyRows(static_cast<int>(state.range(0)));
+void sweepPage(benchmark::State& state, const std::vector<nlohmann::ordered_json>& rows) {
   SweepPage page;
   page.title = "bench";
   page.source = "out/bench";
   page.rows = &rows;
-  page.axes = {"world", "planner", "seed"};
+  page.axes = parameterColumns(rows);
   page.statuses = {"met", "plan_failed"};
   page.episodes_href = "../episodes";
   page.kept.assign(rows.size(), false);
   const std::string path = scratch("index.html");
   for (auto _ : state) writeSweepPage(path, page);
   state.counters["bytes"] = static_cast<double>(fs::file_size(path));
+  state.counters["rows"] = static_cast<double>(rows.size());
+}
+
+void BM_SweepPage(benchmark::State& state) {
+  sweepPage(state, studyRows(static_cast<int>(state.range(0))));
+}
+
+void BM_SweepPageOfTable(benchmark::State& state) {
+  const char* table = std::getenv("PARKSIM_BENCH_TABLE");
+  if (table == nullptr) {
+    state.SkipWithError("PARKSIM_BENCH_TABLE names no results.jsonl");
+    return;
+  }
+  sweepPage(state, readResultsJsonl(table));
 }
 
 BENCHMARK(BM_Episode)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EpisodePage)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SweepPage)->Arg(120)->Arg(20000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SweepPageOfTable)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace parksim

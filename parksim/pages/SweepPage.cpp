@@ -1,6 +1,7 @@
 #include "parksim/pages/SweepPage.h"
 
 #include <filesystem>
+#include <unordered_set>
 
 #include "parksim/core/Error.h"
 #include "parksim/pages/ColumnCodec.h"
@@ -31,11 +32,19 @@ std::filesystem::path keptEpisodePage(const std::string& episodes_dir, const std
 
 std::vector<bool> keptEpisodePages(const std::string& episodes_dir,
                                    const std::vector<nlohmann::ordered_json>& rows) {
+  // The folders there, listed once: most episodes of a large sweep keep none, and asking for
+  // each id's page would cost a failed lookup per row.
+  std::unordered_set<std::string> folders;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(episodes_dir, ec)) {
+    folders.insert(entry.path().filename().string());
+  }
   std::vector<bool> kept;
   kept.reserve(rows.size());
   for (const nlohmann::ordered_json& row : rows) {
     const auto id = row.find("episode_id");
     kept.push_back(id != row.end() && id->is_string() &&
+                   folders.count(id->get_ref<const std::string&>()) > 0 &&
                    !keptEpisodePage(episodes_dir, id->get<std::string>()).empty());
   }
   return kept;

@@ -9,7 +9,8 @@
 // of a 20,000-episode sweep within a few megabytes (docs/pages.md):
 //   const     every row has the same value (or none): {"value": v}, stored once
 //   levels    few distinct values (axes, statuses, names, booleans) or text: the distinct values
-//             exactly as JSON ({"levels": [...]}, sorted) and a code per row
+//             exactly as JSON ({"levels": [...]}, sorted when there are at most 256) and a code
+//             per row
 //   integer   whole numbers: ColumnCodec's integerColumn
 //   number    other numbers: float32Column (7 significant digits; the table shows 4)
 // and has a "kind" a page sorts and filters by: "number", "bool" or "text".
