@@ -62,14 +62,27 @@ nlohmann::json planData(const Scenario& scenario, const Trajectory& plan) {
 }
 
 nlohmann::json recordData(const EpisodePage& page) {
+  // Every row up to the limit; beyond it every stride-th row and the last, so a page of the
+  // longest episode the step limit allows stays one a browser opens (docs/limits.md).
+  const std::size_t rows = page.rows.size();
+  const std::size_t stride = (rows + kMaxEpisodePageRows - 1) / kMaxEpisodePageRows;
+  std::vector<ExecutedRow> kept;
+  if (stride > 1) {
+    for (std::size_t i = 0; i < rows; i += stride) kept.push_back(page.rows[i]);
+    if ((rows - 1) % stride != 0) kept.push_back(page.rows.back());
+  }
+  const std::span<const ExecutedRow> shown =
+      stride > 1 ? std::span<const ExecutedRow>(kept) : page.rows;
   nlohmann::json columns = nlohmann::json::object();
   nlohmann::json names = nlohmann::json::array();
-  for (const DataColumn& c :
-       executedColumns({page.rows.begin(), page.rows.end()}, page.realism_columns)) {
+  for (const DataColumn& c : executedColumns({shown.begin(), shown.end()}, page.realism_columns)) {
     names.push_back(c.name);
     columns[c.name] = float64Column(c.values);
   }
-  return {{"rows", page.rows.size()}, {"names", std::move(names)}, {"columns", std::move(columns)}};
+  return {{"rows", shown.size()},
+          {"stride", stride > 1 ? stride : 1},
+          {"names", std::move(names)},
+          {"columns", std::move(columns)}};
 }
 
 nlohmann::json toleranceData(const TrackingTolerance& t) {

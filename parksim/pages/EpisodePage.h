@@ -10,6 +10,7 @@
 // The page is a function of the episode alone: no wall-clock time goes into it, so the same
 // episode gives the same bytes.
 
+#include <cstddef>
 #include <span>
 #include <string>
 
@@ -22,6 +23,10 @@
 #include "parksim/sim/ExecutedRow.h"
 
 namespace parksim {
+
+/// Rows of the record a page holds at most (~17 min of simulated time at 240 Hz, ~60 MB of
+/// page); a longer record is kept every n-th row (and its last), which the page says.
+inline constexpr std::size_t kMaxEpisodePageRows = 250000;
 
 /// An episode as its page shows it. Pointers and spans are views that must outlive the call.
 struct EpisodePage {
@@ -47,7 +52,8 @@ struct EpisodePage {
 };
 
 /// The page's data: lotData(scenario) plus "verdict", "plan" (t, x, y, theta columns and the
-/// dense path), "record" (executed.csv's columns by name, exact), "contacts", "metrics"
+/// dense path), "record" (executed.csv's columns by name, exact; "stride" > 1 when cut to
+/// kMaxEpisodePageRows), "contacts", "metrics"
 /// (metricsToJson without wall-clock keys), "tolerance", "plan_summary" and "realisations".
 nlohmann::json episodePageData(const Scenario& scenario, const EpisodePage& page);
 

@@ -120,6 +120,27 @@ TEST_F(EpisodePageTest, AnEpisodeNeverDrivenStillHasAPage) {
   EXPECT_FALSE(data.contains("metrics"));
 }
 
+TEST_F(EpisodePageTest, ALongRecordIsKeptEveryNthRowAndItsLast) {
+  // One row more than a page holds: every second row, the last included.
+  std::vector<ExecutedRow> rows(kMaxEpisodePageRows + 1);
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i].t_s = static_cast<double>(i);
+  EpisodePage page;
+  page.status = "met";
+  page.rows = rows;
+  nlohmann::json data = episodePageData(world_->scenario, page);
+  EXPECT_EQ(data["record"]["stride"], 2);
+  std::vector<double> t = unpack(data["record"]["columns"]["t"]);
+  ASSERT_EQ(t.size(), kMaxEpisodePageRows / 2 + 1);
+  EXPECT_EQ(t[1], 2.0);
+  EXPECT_EQ(t.back(), static_cast<double>(kMaxEpisodePageRows));
+  // As many as it holds: all of them.
+  rows.pop_back();
+  page.rows = rows;
+  data = episodePageData(world_->scenario, page);
+  EXPECT_EQ(data["record"]["stride"], 1);
+  EXPECT_EQ(data["record"]["rows"], kMaxEpisodePageRows);
+}
+
 TEST_F(EpisodePageTest, TextFromAWorldFileCannotCloseTheDataScript) {
   Scenario scenario = world_->scenario;
   scenario.name = "lot</script><script>alert(1)</script><!--";

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/Error.h"
+#include "parksim/pipeline/Verdict.h"
 #include "tests/pages/PageTestSupport.h"
 
 namespace parksim {
@@ -64,6 +65,15 @@ TEST(PageDocumentTest, OnlyTheLibrariesAPageUsesAreInIt) {
   doc.libraries = {PageLibraryId::kUPlot};
   const std::string html = pageHtml(doc);
   EXPECT_FALSE(holds(html, pageLibrary(PageLibraryId::kTabulator).script.substr(0, 200)));
+}
+
+TEST(PageDocumentTest, EveryStatusHasItsColour) {
+  // A status added to the verdict without a colour would show in the failure colour only.
+  const std::string_view common = pageSource("common.js");
+  for (const EpisodeStatus status : allEpisodeStatuses()) {
+    EXPECT_TRUE(holds(std::string(common), std::string("    ") + toString(status) + ": '#"))
+        << toString(status);
+  }
 }
 
 TEST(PageDocumentTest, PageFilesAreNamed) {

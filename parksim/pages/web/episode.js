@@ -232,6 +232,9 @@
     stage.append(ctl.box);
     if (!data.record) {
       stage.append(el('p', { class: 'note', text: 'Not driven: the replay shows the plan.' }));
+    } else if (data.record.stride > 1) {
+      stage.append(el('p', { class: 'note', text: 'A long record: this page holds every ' +
+        data.record.stride + 'th row of it (and the last); the record file has them all.' }));
     }
     const seek = (t) => {
       replay.seek(t);
