@@ -270,7 +270,51 @@
       }
       this.arrow(ctx, this.data.start, st.start);
       this.arrow(ctx, g.pose, st.goal);
+      this.trail = this.trailOf();
       v.dirty = false;
+    }
+
+    // The rows the driven path is drawn through at this view: each at least 0.75 px from the
+    // one before on screen. A 10 x 10 m lot's 240 Hz record has 22,000 rows and as many
+    // segments, of which a frame needs a few hundred: the scrubber stays smooth.
+    trailOf() {
+      const tr = this.track;
+      if (!tr || !this.data.record) return new Uint32Array(0);
+      const keep = [];
+      let lx = Infinity;
+      let ly = Infinity;
+      for (let k = 0; k < this.rows; k++) {
+        const [px, py] = this.toScreen(tr.x[k], tr.y[k]);
+        if (Math.abs(px - lx) + Math.abs(py - ly) >= 0.75) {
+          keep.push(k);
+          lx = px;
+          ly = py;
+        }
+      }
+      return Uint32Array.from(keep);
+    }
+
+    // The driven path up to row i: the trail's rows before it, then row i itself.
+    drawTrail(ctx, i) {
+      const tr = this.track;
+      const trail = this.trail;
+      let lo = 0;
+      let hi = trail.length;
+      while (lo < hi) {
+        const mid = (lo + hi) >> 1;
+        if (trail[mid] <= i) lo = mid + 1;
+        else hi = mid;
+      }
+      ctx.beginPath();
+      for (let k = 0; k < lo; k++) {
+        const [px, py] = this.toScreen(tr.x[trail[k]], tr.y[trail[k]]);
+        if (k === 0) ctx.moveTo(px, py);
+        else ctx.lineTo(px, py);
+      }
+      const [px, py] = this.toScreen(tr.x[i], tr.y[i]);
+      if (lo === 0) ctx.moveTo(px, py);
+      else ctx.lineTo(px, py);
+      ctx.stroke();
     }
 
     drawRobot(ctx, x, y, theta) {
@@ -342,7 +386,7 @@
       if (this.data.record) {
         ctx.strokeStyle = st.executed;
         ctx.lineWidth = 2;
-        this.line(ctx, tr.x, tr.y, i + 1);
+        this.drawTrail(ctx, i);
       }
       if (tr.xr) {
         ctx.strokeStyle = st.reference;
