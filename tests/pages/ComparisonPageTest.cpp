@@ -19,7 +19,9 @@ namespace fs = std::filesystem;
 class ComparisonPageTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = parksim::testing::testOutputDir("ComparisonPageTest");
+    dir_ = parksim::testing::testOutputDir(
+        std::string("ComparisonPageTest/") +
+        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     // Both kept e1 and e3, only the baseline e2, the candidate e4.
     for (const auto& [side, ids] :

@@ -37,7 +37,9 @@ std::string slurp(const fs::path& path) {
 class EpisodePageTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = parksim::testing::testOutputDir("EpisodePageTest");
+    dir_ = parksim::testing::testOutputDir(
+        std::string("EpisodePageTest/") +
+        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     world_ = std::make_shared<const World>(

@@ -39,7 +39,9 @@ std::vector<Json> rows() {
 class SweepPageTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = parksim::testing::testOutputDir("SweepPageTest");
+    dir_ = parksim::testing::testOutputDir(
+        std::string("SweepPageTest/") +
+        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "sweep" / "episodes" / "aaa");
     fs::create_directories(dir_ / "sweep" / "episodes" / "bbb");
