@@ -199,15 +199,15 @@ void printEpisode(const EpisodeOutcome& out, const std::string& dir) {
   std::printf(
       "%s-loop episode on %s: tracking error max %.3f mm (rms %.3f mm), final %.3f mm / %.3f "
       "deg\nfinal pose %.3f mm / %.3f deg from the goal%s; %d contact event%s; %.2f s "
-      "simulated in %.3f s (%.0fx real time)\nwrote %s/trajectory.csv, %s/%s and "
-      "%s/metrics.json\n",
+      "simulated in %.3f s (%.0fx real time)\nwrote %s/trajectory.csv, %s/%s, "
+      "%s/metrics.json and %s/report.html (open it in a browser)\n",
       toString(m.tracking), printable(out.world->scenario.name).c_str(), m.max_pos_err_m * 1e3,
       m.rms_pos_err_m * 1e3, m.final_pos_err_m * 1e3, m.final_heading_err_deg,
       m.goal_pos_err_m * 1e3, m.goal_heading_err_deg,
       m.goal_reached ? " (within tolerance)" : " (outside tolerance)", m.contacts,
       m.contacts == 1 ? "" : "s", m.sim_time_s, m.wall_time_s,
       m.wall_time_s > 0.0 ? m.sim_time_s / m.wall_time_s : 0.0, dir.c_str(), dir.c_str(),
-      written(out, "executed.").c_str(), dir.c_str());
+      written(out, "executed.").c_str(), dir.c_str(), dir.c_str());
   const ExecutionDef& exec = out.execution;
   if (exec.realism.active()) {
     std::printf(

@@ -6,7 +6,11 @@
 #                                  libraries the parksim program links, ffmpeg for the video
 #   scripts/install-deps.sh test   (the default) the above, and what the tests, benchmarks, the
 #                                  Python module, fuzzing and the Slurm test use
+# Both then fetch the pinned npm libraries the HTML reports draw with (parksim/pages/web:
+# package.json and package-lock.json) with `npm ci` into parksim/pages/web/node_modules/ (not
+# in the repository); the build embeds their files (docs/pages.md).
 set -euo pipefail
+cd "$(dirname "$0")/.."
 
 set_name=${1:-test}
 
@@ -44,6 +48,8 @@ test_packages=(
   # scripts/build.sh compiles through it where it is installed: a second build of the same
   # sources on one machine (a test.sh run again, another clone) costs seconds (CI does without).
   ccache
+  # The HTML reports opened from file:// in a real browser (tests/pages/test_pages.py).
+  chromium chromium-driver python3-selenium
 )
 
 case "$set_name" in
@@ -64,6 +70,21 @@ ensure_test_locale() {
   localedef -i de_DE -f UTF-8 de_DE.UTF-8
 }
 
+# npm for the reports' libraries, from Debian where no Node.js with its own npm is installed.
+command -v npm >/dev/null || packages+=(npm)
+
+# The pinned npm libraries, fetched again only when package-lock.json changed since the last
+# `npm ci` (its copy in node_modules/ is the stamp).
+fetch_page_libraries() {
+  local web=parksim/pages/web
+  if cmp -s "$web/package-lock.json" "$web/node_modules/.parksim-lock.json" 2>/dev/null; then
+    return 0
+  fi
+  echo "install-deps: npm ci in $web"
+  (cd "$web" && npm ci --ignore-scripts --no-audit --no-fund --loglevel=error)
+  cp "$web/package-lock.json" "$web/node_modules/.parksim-lock.json"
+}
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
@@ -72,6 +93,7 @@ done
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages for '$set_name' present"
   ensure_test_locale
+  fetch_page_libraries
   exit 0
 fi
 
@@ -85,3 +107,4 @@ export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
 apt-get install -y -qq --no-install-recommends "${missing[@]}"
 ensure_test_locale
+fetch_page_libraries

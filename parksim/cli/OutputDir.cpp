@@ -28,13 +28,13 @@ constexpr const char* kMarker = ".parksim-out";
 
 // What parksim wrote before the marker existed; a directory holding only these is replaceable.
 bool isParksimOutput(const std::string& name) {
-  static const char* const names[] = {kMarker, "trajectory.csv", "plan.json", "executed.csv",
-                                      "metrics.json", "frames", "figures", "episode.mp4",
-                                      "episode.gif", "ffmpeg.log", "bench.csv", "summary.md",
-                                      "episode.partial.mp4", "episode.partial.gif",
-                                      // parksim report
-                                      "summary.csv", "success_matrix.png", "tracking_error.png",
-                                      "plan_time.png", "path_length.png", "duration.png"};
+  static const char* const names[] = {
+      kMarker, "trajectory.csv", "plan.json", "executed.csv", "metrics.json", "report.html",
+      "frames", "figures", "episode.mp4", "episode.gif", "ffmpeg.log", "bench.csv", "summary.md",
+      "episode.partial.mp4", "episode.partial.gif",
+      // parksim report
+      "summary.csv", "success_matrix.png", "tracking_error.png", "plan_time.png", "path_length.png",
+      "duration.png", "index.html"};
   for (const char* n : names) {
     if (name == n) return true;
   }

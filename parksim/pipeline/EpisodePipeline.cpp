@@ -7,6 +7,7 @@
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
+#include "parksim/pipeline/EpisodeReport.h"
 #include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/results/JsonFile.h"
@@ -174,10 +175,11 @@ void writeFiles(const EpisodeRequest& request, EpisodeOutcome& out) {
     writePlanFiles(dir, scenario, out.plan_setup, *out.plan);
     if (out.plan->solved()) out.files.push_back("trajectory.csv");
     out.files.push_back("plan.json");
-  } else {
+  } else if (!out.trajectory.empty()) {  // a given plan (a user planner that failed has none)
     writeTrajectoryCsv(dir + "/trajectory.csv", out.trajectory, scenario.robot);
     out.files.push_back("trajectory.csv");
   }
+  writeEpisodeReport(dir, out);
   if (!out.driven()) return;
   const RecordFormat format = request.record.format;
   writeExecutedFile(dir + "/" + executedFileName(format), out.episode.rows,

@@ -15,6 +15,12 @@ ls "$tmp"/prefix/lib*/cmake/parksim/parksimConfigVersion.cmake >/dev/null
 # The OMPL plugin, which the consumer's default plan loads (its smoothing uses Reeds-Shepp
 # curves) through the run path the package gives it: nothing in the build tree is reachable.
 ls "$tmp"/prefix/lib*/parksim/libparksim_ompl_plugin.so >/dev/null
+# The pages' npm libraries, built into parksim_pages, are installed beside it with their
+# licences (docs/pages.md); their packages stay out of the headers.
+test -f "$tmp/prefix/share/parksim/pages/uplot/LICENSE"
+test -f "$tmp/prefix/share/parksim/pages/tabulator-tables/dist/js/tabulator.min.js"
+test -f "$tmp/prefix/include/parksim/pages/EpisodePage.h"
+test ! -e "$tmp/prefix/include/parksim/pages/web/node_modules"
 
 generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)
