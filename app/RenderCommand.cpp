@@ -13,6 +13,7 @@
 #include "parksim/cli/TerminalText.h"
 #include "parksim/cli/Validators.h"
 #include "parksim/cli/WorldOptions.h"
+#include "parksim/command/CommandPlanner.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
@@ -87,7 +88,11 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     FigureInputs inputs;
     // Without --planner both of the study's planners are drawn (its Figs. 7 and 8).
     std::vector<std::string> planners = {opt->plan.planner};
-    if (app->count("--planner") == 0) planners = {"rrt", "rrt-goal-connect"};
+    if (!opt->plan.planner_command.empty()) {
+      planners = {kCommandPlanner};
+    } else if (app->count("--planner") == 0) {
+      planners = {"rrt", "rrt-goal-connect"};
+    }
     // Every input is read and checked before --out is touched.
     std::vector<EpisodeRequest> requests;
     for (const std::string& name : planners) {
@@ -109,6 +114,11 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     std::string report;
     for (std::size_t i = 0; i < planners.size(); ++i) {
       const EpisodeOutcome outcome = runEpisodePipeline(requests[i]);
+      if (!outcome.plan) {  // a user's planner failed (planner_error): there is nothing to draw
+        std::fprintf(stderr, "parksim render: %s\n",
+                     cli::printable(verdictLine(outcome.verdict)).c_str());
+        return exitCodeFor(outcome.verdict.status);
+      }
       const std::string json_name = "/plan_" + planners[i] + ".json";
       writeFileAtomically(out.path() + json_name, jsonText(outcome.plan_summary));
       report += cli::printable(planners[i] + ": " + toString(outcome.plan->status) + " (" +
