@@ -204,10 +204,10 @@ ControllerEntry commandControllerEntry() {
   CommandControllerDef defaults;
   ParamSet known(std::string("controller ") + kCommandController);
   bindCommandController(defaults, known);
-  info.params.push_back(commandParamInfo(
+  info.params = commandParamInfos(
       "the command line to run, without a shell; other parameters go to the process in its "
-      "reset message"));
-  for (const ParamInfo& p : known.infos()) info.params.push_back(p);
+      "reset message",
+      known);
   return {std::move(info), [](const ParamMap& params) -> std::unique_ptr<Controller> {
             return std::make_unique<CommandController>(commandControllerDef(params));
           }};

@@ -70,15 +70,7 @@ std::string quoteCommandLine(const std::vector<std::string>& words) {
       out += w;
       continue;
     }
-    out += '\'';
-    for (const char c : w) {
-      if (c == '\'') {
-        out += "'\\''";
-      } else {
-        out += c;
-      }
-    }
-    out += '\'';
+    out += shellQuoted(w);
   }
   return out;
 }
@@ -130,8 +122,11 @@ std::vector<std::string> commandParam(const ParamMap& params, const std::string&
   return words;
 }
 
-ParamInfo commandParamInfo(const std::string& description) {
-  return {kCommandParam, "", description, "a command line (docs/your-code.md)"};
+std::vector<ParamInfo> commandParamInfos(const std::string& description, const ParamSet& known) {
+  std::vector<ParamInfo> infos = {
+      {kCommandParam, "", description, "a command line (docs/your-code.md)"}};
+  infos.insert(infos.end(), known.infos().begin(), known.infos().end());
+  return infos;
 }
 
 std::string shownCommand(const std::vector<std::string>& words) {

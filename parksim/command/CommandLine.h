@@ -42,8 +42,9 @@ std::vector<std::string> substitutePlaceholders(std::vector<std::string> words,
 std::vector<std::string> commandParam(const ParamMap& params, const std::string& owner,
                                       const std::string& required);
 
-/// How the command parameter is listed (`parksim list`, help texts).
-ParamInfo commandParamInfo(const std::string& description);
+/// A command planner's or controller's parameters as listed (`parksim list`, help texts): the
+/// command parameter, described by `description`, then those `known` declares.
+std::vector<ParamInfo> commandParamInfos(const std::string& description, const ParamSet& known);
 
 /// `words` for messages: their canonical text, control bytes escaped, at most 160 bytes.
 std::string shownCommand(const std::vector<std::string>& words);

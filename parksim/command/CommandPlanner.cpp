@@ -175,11 +175,11 @@ PlannerEntry commandPlannerEntry() {
   CommandPlannerDef defaults;
   ParamSet known(std::string("planner ") + kCommandPlanner);
   bindCommandPlanner(defaults, known);
-  info.params.push_back(commandParamInfo(
+  info.params = commandParamInfos(
       "the command line to run, without a shell; {problem} and {out} are replaced by the "
       "problem file and the directory for trajectory.csv; other parameters go to the program "
-      "in the problem file"));
-  for (const ParamInfo& p : known.infos()) info.params.push_back(p);
+      "in the problem file",
+      known);
   return {std::move(info), [](const ParamMap& params) -> std::unique_ptr<Planner> {
             return std::make_unique<CommandPlanner>(commandPlannerDef(params));
           }};

@@ -193,17 +193,9 @@ ChildProcess::ChildProcess(const ChildProcessDef& def) {
     throw Error("cannot start " + shown + ": " + std::strerror(e));
   }
   if (pid == 0) {
-    // Its own process group, so that it and whatever it starts are ended together; it dies
-    // with the thread that started it; the default signal mask and dispositions (parksim
-    // blocks SIGINT and SIGTERM in some threads and ignores SIGXFSZ).
+    // Its own process group, so that it and whatever it starts are ended together.
     ::setpgid(0, 0);
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (::getppid() != parent) ::_exit(127);  // the parent died before prctl took effect
-    sigset_t none;
-    sigemptyset(&none);
-    ::sigprocmask(SIG_SETMASK, &none, nullptr);
-    ::signal(SIGPIPE, SIG_DFL);
-    ::signal(SIGXFSZ, SIG_DFL);
+    resetForkedChild(parent);
     const int child_out = def.pipe_stdout ? out[1] : err[1];
     if (!moveFd(def.pipe_stdin ? in[0] : dev_null, STDIN_FILENO) ||
         !moveFd(child_out, STDOUT_FILENO) || !moveFd(err[1], STDERR_FILENO)) {
@@ -431,6 +423,16 @@ std::string ChildProcess::lastErrorLine() const {
     return escapeTextShortened(line, 300);
   }
   return {};
+}
+
+void resetForkedChild(pid_t parent) {
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (::getppid() != parent) ::_exit(127);  // the parent died before prctl took effect
+  sigset_t none;
+  sigemptyset(&none);
+  ::sigprocmask(SIG_SETMASK, &none, nullptr);
+  ::signal(SIGPIPE, SIG_DFL);
+  ::signal(SIGXFSZ, SIG_DFL);
 }
 
 void killChildProcessGroups() {

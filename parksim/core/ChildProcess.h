@@ -115,6 +115,12 @@ class ChildProcess {
   std::optional<ChildExit> exit_;
 };
 
+/// In a child between fork and exec (async-signal-safe): it dies with the thread that forked it
+/// (PR_SET_PDEATHSIG; it exits at once when `parent` is gone already) and gets the default
+/// signal mask and the default actions of SIGPIPE and SIGXFSZ back (parksim blocks SIGINT and
+/// SIGTERM in some threads and ignores SIGXFSZ; an ignored signal stays ignored across exec).
+void resetForkedChild(pid_t parent);
+
 /// Kills (SIGKILL) every process group a live ChildProcess started. Async-signal-safe: for a
 /// signal watcher about to re-raise a fatal signal, so that grandchildren do not outlive
 /// parksim (its children die with it anyway, PR_SET_PDEATHSIG).

@@ -113,4 +113,17 @@ std::string escapeTextShortened(std::string_view text, std::size_t max_bytes) {
   return shown.substr(0, cut) + "...";
 }
 
+std::string shellQuoted(std::string_view text) {
+  std::string out = "'";
+  for (const char c : text) {
+    if (c == '\'') {
+      out += "'\\''";
+    } else {
+      out += c;
+    }
+  }
+  out += '\'';
+  return out;
+}
+
 }  // namespace parksim
