@@ -14,6 +14,7 @@
 #include "parksim/cli/TerminalText.h"
 #include "parksim/cli/Validators.h"
 #include "parksim/cli/WorldOptions.h"
+#include "parksim/command/CommandPlanner.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
@@ -92,7 +93,11 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     FigureInputs inputs;
     // Without --planner both of the study's planners are drawn (its Figs. 7 and 8).
     std::vector<std::string> planners = {opt->plan.planner};
-    if (app->count("--planner") == 0) planners = {"rrt", "rrt-goal-connect"};
+    if (!opt->plan.planner_command.empty()) {
+      planners = {kCommandPlanner};
+    } else if (app->count("--planner") == 0) {
+      planners = {"rrt", "rrt-goal-connect"};
+    }
     // Every input is read and checked before --out is touched.
     std::vector<EpisodeRequest> requests;
     const std::shared_ptr<const Components> components = opt->plugins.load();
@@ -122,9 +127,10 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
           for (std::size_t i = 0; i < planners.size(); ++i) {
             requests[i].watch = watch;
             const EpisodeOutcome outcome = runEpisodePipeline(requests[i]);
-            if (!outcome.plan) {  // the user's planner failed: nothing to draw
-              report += cli::printable(planners[i] + ": " + verdictLine(outcome.verdict)) + "\n";
-              continue;
+            if (!outcome.plan) {  // a user's planner failed (planner_error): nothing to draw
+              std::fprintf(stderr, "parksim render: %s\n",
+                           cli::printable(verdictLine(outcome.verdict)).c_str());
+              return exitCodeFor(outcome.verdict.status);
             }
             const std::string json_name = "/plan_" + planners[i] + ".json";
             writeFileAtomically(out.path() + json_name, jsonText(outcome.plan_summary));
@@ -141,7 +147,7 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
           std::fputs(report.c_str(), stdout);
           return 0;
         });
-    if (code) out.commit();
+    if (code == kExitOk) out.commit();
     return code.value_or(kExitUserCodeFailed);
   };
 }

@@ -27,6 +27,7 @@
 #include "parksim/cli/ReportFileOption.h"
 #include "parksim/cli/TerminalText.h"
 #include "parksim/core/AtomicFile.h"
+#include "parksim/core/ChildProcess.h"
 #include "parksim/core/Error.h"
 #include "parksim/sweep/EpisodeExpansion.h"
 #include "parksim/sweep/ResultsJUnit.h"
@@ -132,6 +133,7 @@ class SignalWatcher {
       const timespec wait{0, 50'000'000};
       const int sig = sigtimedwait(&set, nullptr, &wait);
       if (sig <= 0) continue;
+      killChildProcessGroups();  // planner and controller commands, and what they started
       cli::endOpenProgressLine();
       ::signal(sig, SIG_DFL);
       sigset_t one;

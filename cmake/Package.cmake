@@ -10,7 +10,8 @@ set(PARKSIM_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/parksim)
 
 # Module targets keep their build names (parksim_sim) and are exported as parksim::sim; the
 # aliases give a project that adds parksim as a subdirectory the same names.
-set(parksim_modules core realism scenario collision planner sim plugin rl results render pages
+set(parksim_modules core realism scenario collision planner sim plugin rl results command render
+    pages
     pipeline sweep compare)
 foreach(module IN LISTS parksim_modules)
   set_target_properties(parksim_${module} PROPERTIES EXPORT_NAME ${module})

@@ -1,6 +1,8 @@
 #include "parksim/cli/ComponentOptions.h"
 
 #include "parksim/cli/Validators.h"
+#include "parksim/command/CommandController.h"
+#include "parksim/command/CommandLine.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/ParamSet.h"
 #include "parksim/core/Text.h"
@@ -17,13 +19,20 @@ void PluginOptions::addTo(CLI::App& sub) {
 std::shared_ptr<const Components> PluginOptions::load() const { return loadComponents(paths); }
 
 void ControllerOptions::addTo(CLI::App& sub) {
-  sub.add_option("--controller", name,
-                 "controller for closed-loop tracking, by name: " +
-                     joinNames(builtInControllers().names()) +
-                     " (or a plugin's); `parksim list` shows them with their parameters")
-      ->capture_default_str();
+  CLI::Option* by_name =
+      sub.add_option("--controller", name,
+                     "controller for closed-loop tracking, by name: " +
+                         joinNames(ownControllers().names()) +
+                         " (or a plugin's); `parksim list` shows them with their parameters")
+          ->capture_default_str();
   sub.add_option("--controller-param", params,
                  "NAME=VALUE: a parameter of the selected controller (repeatable)");
+  sub.add_option("--controller-command", command,
+                 "'CMD ...': control with a process in any language, run without a shell, one "
+                 "line per control tick on its stdin, 'LEFT RIGHT' back (the controller "
+                 "`command`, docs/your-code.md)")
+      ->excludes(by_name)
+      ->each([this](const std::string&) { name = kCommandController; });
 }
 
 void UserCodeOptions::addTo(CLI::App& sub) {
@@ -37,7 +46,16 @@ void UserCodeOptions::addTo(CLI::App& sub) {
       ->check(realIn(0.001, 1e6));
 }
 
-ParamMap ControllerOptions::paramMap() const { return paramMapFrom(params, "--controller-param"); }
+ParamMap ControllerOptions::paramMap() const {
+  ParamMap out = paramMapFrom(params, "--controller-param");
+  if (!command.empty()) {
+    if (out.count(kCommandParam) != 0) {
+      throw Error("--controller-command and --controller-param command=... both give the command");
+    }
+    out[kCommandParam] = quoteCommandLine(splitCommandLine(command, "--controller-command"));
+  }
+  return out;
+}
 
 ParamMap paramMapFrom(const std::vector<std::string>& entries, const std::string& option) {
   ParamMap out;

@@ -1,7 +1,8 @@
 #pragma once
 // The options that choose code by name: --plugin PATH (repeatable) loads plugins whose
 // planners and controllers --planner and --controller may then name; --controller and
-// --controller-param choose the controller that drives closed-loop tracking.
+// --controller-param (or --controller-command) choose the controller that drives closed-loop
+// tracking.
 
 #include <memory>
 #include <string>
@@ -27,6 +28,9 @@ struct PluginOptions {
 struct ControllerOptions {
   std::string name = kDefaultController;
   std::vector<std::string> params;  ///< NAME=VALUE
+  /// --controller-command 'CMD ...': sets `name` to the controller `command` with this command
+  /// line as its `command` parameter (command/CommandController.h); excludes --controller.
+  std::string command;
 
   void addTo(CLI::App& sub);
   /// The parameters as a ParamMap (canonical text); throws Error on an entry without '='.

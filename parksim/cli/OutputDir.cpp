@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "parksim/cli/Progress.h"
+#include "parksim/core/ChildProcess.h"
 #include "parksim/core/Error.h"
 
 namespace parksim::cli {
@@ -79,6 +80,7 @@ struct OutputDir::Impl {
       const int sig = sigtimedwait(&set, nullptr, &wait);
       if (sig <= 0) continue;
       {
+        killChildProcessGroups();  // a planner or controller command, and what it started
         std::lock_guard<std::mutex> hold(mutex);
         if (!committed) {
           // Other threads (PNG encoders, the episode) may still be writing into it by path:

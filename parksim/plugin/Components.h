@@ -23,9 +23,15 @@ struct PluginRecord {
   std::vector<std::string> controllers;  ///< what it registered
 };
 
+/// What a run may select without a plugin: parksim's own planners (builtInPlanners) and
+/// controllers (builtInControllers), then the command planner and controller, which run a
+/// user's program (command/CommandPlanner.h, CommandController.h).
+PlannerRegistry ownPlanners();
+ControllerRegistry ownControllers();
+
 struct Components {
-  PlannerRegistry planners = builtInPlanners();
-  ControllerRegistry controllers = builtInControllers();
+  PlannerRegistry planners = ownPlanners();
+  ControllerRegistry controllers = ownControllers();
   std::vector<PluginRecord> plugins;  ///< in load order
 };
 
