@@ -11,6 +11,7 @@ are metrics.json's keys, and results are bit-identical to `parksim run` for the 
 See docs/python.md.
 """
 
+import importlib as _importlib
 import json as _json
 import os as _os
 import sys as _sys
@@ -55,6 +56,16 @@ def _fail_in_one_line(message):
 if (_problem := _interpreter_problem()) is not None:
     _fail_in_one_line(_problem)
 
+try:
+    _parksim = _importlib.import_module(__name__ + "._parksim")
+except ModuleNotFoundError as _missing:
+    if _missing.name != __name__ + "._parksim":
+        raise
+    # The sources without the compiled module (python/parksim/, or a build that stopped).
+    _fail_in_one_line("parksim: the compiled module is not built; from the repository's top "
+                      "folder: scripts/build.sh build, then run with "
+                      "PYTHONPATH=$PWD/build/python /usr/bin/python3")
+
 from ._parksim import (  # noqa: F401,E402  (re-exported)
     CollisionChecker,
     DynamicsWorld,
@@ -88,7 +99,6 @@ from ._parksim import (  # noqa: F401,E402  (re-exported)
     write_figures,
     write_png,
 )
-from . import _parksim  # noqa: E402
 
 __version__ = "0.3.0"
 
