@@ -20,9 +20,9 @@
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/results/OmplLog.h"
+#include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/Report.h"
 #include "parksim/sweep/ResultsJUnit.h"
-#include "parksim/sweep/ResultsTable.h"
 #include "parksim/sweep/SweepManifest.h"
 
 namespace parksim::app {

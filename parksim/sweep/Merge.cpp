@@ -15,9 +15,9 @@
 #include <set>
 
 #include "parksim/core/Error.h"
+#include "parksim/results/ResultsFile.h"
+#include "parksim/results/RowSeal.h"
 #include "parksim/sweep/EpisodeParams.h"
-#include "parksim/sweep/ResultsFile.h"
-#include "parksim/sweep/RowSeal.h"
 #include "parksim/sweep/SweepManifest.h"
 
 namespace parksim {
@@ -181,6 +181,29 @@ std::vector<nlohmann::ordered_json> mergedRows(const MergeResult& merged) {
     rows.push_back(nlohmann::ordered_json::parse(lines.read(row)));
   }
   return rows;
+}
+
+TableVerification verifyResults(const std::string& dir, std::size_t max_listed) {
+  TableVerification v;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw Error(dir + ": not a directory");
+  const std::vector<std::string> sources = mergeSources(dir);
+  const bool sharded = !(sources.size() == 1 && sources.front() == dir);
+  // The whole sweep's ids are in the top folder's manifest (and a lone table's own).
+  SweepManifest manifest;
+  const bool has_manifest = readSweepManifest(dir, manifest);
+  const std::vector<std::string>* expected = has_manifest ? &manifest.episode_ids : nullptr;
+  if (sharded && fs::exists(dir + "/results.jsonl", ec)) verifyTable(dir, expected, max_listed, v);
+  for (const std::string& source : sources) {
+    if (fs::exists(source + "/results.jsonl", ec)) {
+      verifyTable(source, sharded ? nullptr : expected, max_listed, v);
+    }
+  }
+  if (v.tables.empty()) {
+    throw Error(dir + ": no results table (results.jsonl) here" +
+                (sharded ? std::string(" or in its shards/") : std::string()));
+  }
+  return v;
 }
 
 }  // namespace parksim

@@ -9,8 +9,8 @@
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/InputFile.h"
+#include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/EpisodeParams.h"
-#include "parksim/sweep/ResultsTable.h"
 
 namespace parksim {
 

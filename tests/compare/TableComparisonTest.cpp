@@ -22,8 +22,8 @@
 
 #include "parksim/compare/ComparedTable.h"
 #include "parksim/core/Error.h"
+#include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/EpisodeParams.h"
-#include "parksim/sweep/ResultsTable.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

@@ -11,10 +11,10 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/Error.h"
+#include "parksim/results/ResultsTable.h"
+#include "parksim/results/RowSeal.h"
+#include "parksim/results/TableVerify.h"
 #include "parksim/sweep/Merge.h"
-#include "parksim/sweep/ResultsTable.h"
-#include "parksim/sweep/RowSeal.h"
-#include "parksim/sweep/TableVerify.h"
 #include "tests/support/RunParksim.h"
 #include "tests/sweep/SweepTestSupport.h"
 

@@ -15,8 +15,8 @@
 
 #include "parksim/core/Error.h"
 #include "parksim/results/ExecutedFile.h"
+#include "parksim/results/RowSeal.h"
 #include "parksim/sweep/Merge.h"
-#include "parksim/sweep/RowSeal.h"
 #include "parksim/sweep/Shard.h"
 #include "parksim/sweep/SweepManifest.h"
 #include "parksim/sweep/SweepSpecReader.h"

@@ -16,12 +16,12 @@
 
 #include <gtest/gtest.h>
 
+#include "parksim/results/ResultsTable.h"
+#include "parksim/results/TableVerify.h"
 #include "parksim/sweep/EpisodeExpansion.h"
 #include "parksim/sweep/Merge.h"
-#include "parksim/sweep/ResultsTable.h"
 #include "parksim/sweep/SweepRunner.h"
 #include "parksim/sweep/SweepSpecReader.h"
-#include "parksim/sweep/TableVerify.h"
 #include "tests/sweep/SweepTestSupport.h"
 
 namespace {

@@ -1,4 +1,4 @@
-#include "parksim/sweep/ResultsTable.h"
+#include "parksim/results/ResultsTable.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -13,7 +13,7 @@
 
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
-#include "parksim/sweep/RowSeal.h"
+#include "parksim/results/RowSeal.h"
 
 namespace parksim {
 namespace {

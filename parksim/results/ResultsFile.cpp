@@ -1,4 +1,4 @@
-#include "parksim/sweep/ResultsFile.h"
+#include "parksim/results/ResultsFile.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -14,7 +14,7 @@
 
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
-#include "parksim/sweep/RowSeal.h"
+#include "parksim/results/RowSeal.h"
 
 namespace parksim {
 namespace {

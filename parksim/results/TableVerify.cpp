@@ -1,21 +1,15 @@
-#include "parksim/sweep/TableVerify.h"
+#include "parksim/results/TableVerify.h"
 
 #include <filesystem>
 #include <map>
 
-#include "parksim/core/Error.h"
-#include "parksim/sweep/Merge.h"
-#include "parksim/sweep/ResultsFile.h"
-#include "parksim/sweep/SweepManifest.h"
+#include "parksim/results/ResultsFile.h"
 
 namespace parksim {
-namespace {
-
 namespace fs = std::filesystem;
 
-// Checks one directory's results.jsonl and results.csv into `v`.
-void verifyTable(const std::string& dir, bool check_manifest, std::size_t max_listed,
-                 TableVerification& v) {
+void verifyTable(const std::string& dir, const std::vector<std::string>* expected_ids,
+                 std::size_t max_listed, TableVerification& v) {
   const std::string jsonl = dir + "/results.jsonl";
   const std::string csv_path = dir + "/results.csv";
   v.tables.push_back(jsonl);
@@ -101,37 +95,15 @@ void verifyTable(const std::string& dir, bool check_manifest, std::size_t max_li
   }
   for (const std::string& mix : origins.mixes()) problem(mix);
 
-  SweepManifest manifest;
-  if (check_manifest && readSweepManifest(dir, manifest)) {
+  if (expected_ids != nullptr) {
     std::size_t missing = 0;
-    for (const std::string& id : manifest.episode_ids) missing += first_line.count(id) == 0;
+    for (const std::string& id : *expected_ids) missing += first_line.count(id) == 0;
     if (missing > 0) {
       v.notes.push_back(jsonl + ": " + std::to_string(missing) + " of the sweep's " +
-                        std::to_string(manifest.episode_ids.size()) +
+                        std::to_string(expected_ids->size()) +
                         " episodes are not in the table (yet)");
     }
   }
-}
-
-}  // namespace
-
-TableVerification verifyResults(const std::string& dir, std::size_t max_listed) {
-  TableVerification v;
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw Error(dir + ": not a directory");
-  const std::vector<std::string> sources = mergeSources(dir);
-  const bool sharded = !(sources.size() == 1 && sources.front() == dir);
-  if (sharded && fs::exists(dir + "/results.jsonl", ec)) verifyTable(dir, true, max_listed, v);
-  for (const std::string& source : sources) {
-    if (fs::exists(source + "/results.jsonl", ec)) {
-      verifyTable(source, !sharded, max_listed, v);
-    }
-  }
-  if (v.tables.empty()) {
-    throw Error(dir + ": no results table (results.jsonl) here" +
-                (sharded ? std::string(" or in its shards/") : std::string()));
-  }
-  return v;
 }
 
 }  // namespace parksim

@@ -23,7 +23,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/sweep/ResultsFile.h"
+#include "parksim/results/ResultsFile.h"
 
 namespace parksim {
 
