@@ -2,6 +2,8 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
+#include <set>
 
 #include "parksim/results/ResultsFile.h"
 
@@ -31,12 +33,20 @@ void verifyTable(const std::string& dir, const std::vector<std::string>* expecte
   CsvFollower csv(csv_path);
   enum class Csv { kFollowing, kEnded, kIgnored } state = Csv::kFollowing;
   std::size_t csv_behind = 0;
+  std::vector<std::string> columns;            // results.csv's, from its header
+  std::set<std::string, std::less<>> csv_set;  // its set columns
+  std::set<std::string, std::less<>> row_set;  // the set keys of the rows
   if (!csv_exists) {
     problem(csv_path + ": missing (a sweep opening this table rebuilds it from results.jsonl)");
     state = Csv::kIgnored;
   } else {
-    const CsvFollower::Match m = csv.next(csvHeader());
-    if (m != CsvFollower::Match::kSame) {
+    std::string header;
+    std::optional<std::vector<std::string>> set;
+    if (csv.nextLine(header)) set = setColumnsOfHeader(header);
+    if (set) {
+      columns = resultColumns(*set);
+      csv_set.insert(set->begin(), set->end());
+    } else {
       problem(at(csv_path, 1) + "header is not this parksim's columns (another version's table?)");
       state = Csv::kIgnored;
     }
@@ -54,10 +64,11 @@ void verifyTable(const std::string& dir, const std::vector<std::string>* expecte
                   std::to_string(it->second) + ")");
         }
         origins.add(r.row, jsonl, r.line);
+        addSetKeys(r.row, row_set);
         ++v.rows;
         if (state == Csv::kEnded) ++csv_behind;
         if (state != Csv::kFollowing) return;
-        switch (csv.next(csvRow(r.row))) {
+        switch (csv.next(csvRow(r.row, columns))) {
           case CsvFollower::Match::kSame: break;
           case CsvFollower::Match::kEnded:
             state = Csv::kEnded;
@@ -92,6 +103,13 @@ void verifyTable(const std::string& dir, const std::vector<std::string>* expecte
     }
   } else if (state == Csv::kFollowing && csv.hasMore()) {
     problem(at(csv_path, csv.line()) + "rows beyond those of results.jsonl");
+  }
+  if (state != Csv::kIgnored) {
+    for (const std::string& key : row_set) {
+      if (csv_set.count(key) == 0) {
+        problem(at(csv_path, 1) + "has no column " + key + ", which rows of " + jsonl + " have");
+      }
+    }
   }
   for (const std::string& mix : origins.mixes()) problem(mix);
 

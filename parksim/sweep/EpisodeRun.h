@@ -24,11 +24,10 @@ struct EpisodeRunDef {
   std::mutex* film_mutex = nullptr;
 };
 
-/// The episode's results row, without provenance (see ResultsTable.h for its keys): id,
-/// parameters, status (the verdict's, pipeline/Verdict.h), met_tolerance, failure (the
-/// verdict's one line; empty when met), plan statistics, simulation metrics (absent when the
-/// plan failed), timing and world_hash (the world's content_hash). Throws Error when a file
-/// cannot be written.
+/// The episode's results row, without provenance: its id, its parameters (EpisodeParams.h)
+/// and the episode record read from its outcome (results/EpisodeRecord.h: the verdict, the
+/// plan's statistics, the measurements when it was driven, timing, world_hash). Throws Error
+/// when a file cannot be written.
 nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const EpisodeRunDef& def);
 
 }  // namespace parksim

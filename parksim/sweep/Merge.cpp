@@ -122,6 +122,7 @@ MergeResult mergeResults(const std::vector<std::string>& source_dirs,
   std::map<std::string, Seen> by_id;
   std::set<std::string> duplicated;
   std::set<std::string> conflicting;
+  std::set<std::string, std::less<>> set_keys;
   TableOrigins origins;
   for (const std::string& dir : source_dirs) {
     addManifest(dir);
@@ -136,6 +137,7 @@ MergeResult mergeResults(const std::vector<std::string>& source_dirs,
     r.sources.push_back(path);
     scanResultsJsonl(path, [&](const TableRow& t) {
       origins.add(t.row, path, t.line);
+      addSetKeys(t.row, set_keys);
       const Seen seen{source, t.offset, t.text.size(), fnv1a64(withoutTiming(t.row).dump())};
       const auto [it, inserted] = by_id.emplace(t.row["episode_id"].get<std::string>(), seen);
       if (inserted) return;
@@ -149,6 +151,7 @@ MergeResult mergeResults(const std::vector<std::string>& source_dirs,
   r.duplicated.assign(duplicated.begin(), duplicated.end());
   r.conflicting.assign(conflicting.begin(), conflicting.end());
   r.mixes = origins.mixes();
+  r.set_columns.assign(set_keys.begin(), set_keys.end());
   if (any_manifest) {
     r.expected = expected.size();
     for (const std::string& id : expected) {
@@ -165,7 +168,7 @@ void writeMergedTable(const std::string& dir, const MergeResult& merged) {
   LineSource lines(merged.sources);
   // The sources stay open (or are reopened) by descriptor or path: renaming the merged files
   // over a source only happens in commit(), after every line was read.
-  ResultsTableWriter writer(dir);
+  ResultsTableWriter writer(dir, merged.set_columns);
   for (const MergedRow& row : merged.rows) {
     const std::string& line = lines.read(row);
     writer.add(line, nlohmann::ordered_json::parse(line));

@@ -39,6 +39,8 @@ struct MergeResult {
   std::vector<std::string> unexpected;  ///< in a table but in no manifest (when there are any)
   /// The sources mix world contents or builds (TableOrigins::mixes), one line each.
   std::vector<std::string> mixes;
+  /// The set keys of the rows (results.csv's set columns), sorted.
+  std::vector<std::string> set_columns;
 };
 
 /// The source directories `parksim merge DIR` reads: DIR/shards/* that hold results.jsonl,

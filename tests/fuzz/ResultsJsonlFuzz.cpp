@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <set>
 #include <string>
 #include <string_view>
 
@@ -25,7 +26,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     parksim::scanResultsJsonl(file.path(), [&](const parksim::TableRow& r) {
       // An accepted row is sealed, and renders as a CSV line ending in its checksum.
       if (parksim::sealProblem(r.text)) std::abort();
-      const std::string csv = parksim::csvRow(r.row);
+      std::set<std::string, std::less<>> set_keys;
+      parksim::addSetKeys(r.row, set_keys);
+      const std::string csv =
+          parksim::csvRow(r.row, parksim::resultColumns({set_keys.begin(), set_keys.end()}));
       if (csv.empty() || csv.back() != '\n') std::abort();
       origins.add(r.row, file.path(), r.line);
       ++strict_rows;
