@@ -19,10 +19,10 @@
 #include "parksim/cli/TerminalText.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/results/JUnitReport.h"
 #include "parksim/results/OmplLog.h"
 #include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/Report.h"
-#include "parksim/sweep/ResultsJUnit.h"
 #include "parksim/sweep/SweepManifest.h"
 
 namespace parksim::app {
@@ -145,7 +145,7 @@ int runReport(const std::string& dir, std::string out, const std::string& junit)
   }
   staged.commit();
   if (!junit.empty()) {
-    writeJUnitFile(junit, resultsJUnit(rows, name));
+    writeJUnitFile(junit, episodesJUnit(rows, name, rowGroupNameOf));
     written.push_back(junit);
   }
   std::printf("%s\n", printableLines(summary).c_str());

@@ -24,11 +24,13 @@
 #include "parksim/cli/WorldOptions.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/pipeline/RealisationsJUnit.h"
 #include "parksim/realism/Distribution.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/renders/PngEncoder.h"
+#include "parksim/results/JUnitReport.h"
 #include "parksim/results/TrajectoryFile.h"
+#include "parksim/sweep/EpisodeRun.h"
+#include "parksim/sweep/Report.h"
 
 namespace parksim::app {
 
@@ -298,7 +300,10 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     planning.finish();
     if (frames) frames->finish();
     out.commit();
-    if (!opt->junit.empty()) writeJUnitFile(opt->junit, realisationsJUnit(outcome));
+    if (!opt->junit.empty()) {
+      writeJUnitFile(opt->junit, episodesJUnit(realisationRecords(request, outcome),
+                                               "parksim run " + scenario.name, rowGroupNameOf));
+    }
     const std::string dir = printable(opt->out);
     if (outcome.driven()) {
       printEpisode(outcome, dir);

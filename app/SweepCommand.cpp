@@ -28,10 +28,11 @@
 #include "parksim/cli/TerminalText.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/results/JUnitReport.h"
 #include "parksim/results/ResultsTable.h"
 #include "parksim/results/RowSeal.h"
 #include "parksim/sweep/EpisodeExpansion.h"
-#include "parksim/sweep/ResultsJUnit.h"
+#include "parksim/sweep/Report.h"
 #include "parksim/sweep/Shard.h"
 #include "parksim/sweep/SlurmResubmit.h"
 #include "parksim/sweep/SlurmScript.h"
@@ -353,7 +354,7 @@ int runSweepCommand(const SweepOptions& o) {
     for (nlohmann::ordered_json& row : readResultsJsonl(o.out + "/results.jsonl")) {
       if (ids.count(row.value("episode_id", "")) > 0) rows.push_back(std::move(row));
     }
-    writeJUnitFile(o.junit, resultsJUnit(rows, spec.name));
+    writeJUnitFile(o.junit, episodesJUnit(rows, spec.name, rowGroupNameOf));
   }
 
   // The verdict covers the shard's episodes, those of earlier runs included.

@@ -45,17 +45,38 @@ nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const Episod
   applyRecord(def, def.episodes_dir + "/" + episode.id, request);
   const EpisodeOutcome out = runEpisodePipeline(request);
 
-  nlohmann::ordered_json row;
-  row["episode_id"] = episode.id;
-  appendParamColumns(episode.params, row);
   EpisodeFacts facts = outcomeFacts(out);
   // Which content of the world file the episode ran on: its name alone (in the id) cannot tell
   // an edited file from the one an earlier run used. The file's, without the spec's set:
   // values (those are columns and part of the id).
   facts.world_hash = episode.world->content_hash;
   facts.episode_wall_s = secondsSince(t0);
+  nlohmann::ordered_json row = episodeRow(episode.id, episode.params, facts);
+  return row;
+}
+
+nlohmann::ordered_json episodeRow(const std::string& id, const EpisodeParams& params,
+                                  const EpisodeFacts& facts) {
+  nlohmann::ordered_json row;
+  if (!id.empty()) row["episode_id"] = id;
+  appendParamColumns(params, row);
   appendRecord(facts, row);
   return row;
+}
+
+std::vector<nlohmann::ordered_json> realisationRecords(const EpisodeRequest& request,
+                                                       const EpisodeOutcome& outcome) {
+  EpisodeParams params = episodeParamsOf(request);
+  std::vector<nlohmann::ordered_json> records;
+  if (!outcome.driven()) {
+    records.push_back(episodeRow("", params, outcomeFacts(outcome)));
+    return records;
+  }
+  for (std::size_t i = 0; i < outcome.realisations.size(); ++i) {
+    params.noise_seed = outcome.realisations[i].noise_seed;
+    records.push_back(episodeRow("", params, realisationFacts(outcome, i)));
+  }
+  return records;
 }
 
 }  // namespace parksim

@@ -67,4 +67,20 @@ EpisodeRequest episodeRequest(const EpisodeParams& p, const std::shared_ptr<cons
   return r;
 }
 
+EpisodeParams episodeParamsOf(const EpisodeRequest& r) {
+  EpisodeParams p;
+  p.world = r.world->scenario.name;
+  p.world_file = r.world->scenario.source_path;
+  p.planner = toString(r.plan.planner.kind);
+  p.steering = toString(r.plan.steering_kind);
+  p.smooth = r.plan.planner.smooth;
+  p.seed = r.plan.planner.seed;
+  p.max_iterations = r.plan.planner.max_iterations;
+  p.tracking = toString(r.execution.tracking);
+  p.timing = toString(r.plan.timing);
+  p.realism = r.realism;
+  p.noise_seed = r.noise_seed;
+  return p;
+}
+
 }  // namespace parksim

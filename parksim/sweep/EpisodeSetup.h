@@ -25,4 +25,9 @@ EpisodeRequest episodeRequest(const EpisodeParams& params,
                               const std::shared_ptr<const World>& world,
                               const ToleranceOverrides& tolerance);
 
+/// The other way: the parameters a request states (a `parksim run`'s, for its records), with
+/// the world's scenario name and file. Offsets are zero (a run moves the start or goal in its
+/// world, not by an offset).
+EpisodeParams episodeParamsOf(const EpisodeRequest& request);
+
 }  // namespace parksim

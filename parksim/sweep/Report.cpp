@@ -124,6 +124,8 @@ std::string rowGroupName(const RowGroupKey& key) {
   return std::get<0>(key) + " / " + std::get<1>(key) + " / " + std::get<2>(key);
 }
 
+std::string rowGroupNameOf(const Json& row) { return rowGroupName(rowGroupKey(row)); }
+
 std::vector<ReportGroup> groupResults(const std::vector<Json>& rows) {
   std::map<RowGroupKey, ReportGroup> groups;
   for (const Json& row : rows) {

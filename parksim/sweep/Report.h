@@ -36,6 +36,8 @@ using RowGroupKey = std::tuple<std::string, std::string, std::string>;
 RowGroupKey rowGroupKey(const nlohmann::ordered_json& row);
 /// "<world> / <planner label> / <realism>": how every front-end names a group.
 std::string rowGroupName(const RowGroupKey& key);
+/// rowGroupName(rowGroupKey(row)): the JUnit suite of a record (results/JUnitReport.h).
+std::string rowGroupNameOf(const nlohmann::ordered_json& row);
 
 /// Rows grouped by (world, planner label, realism), sorted by those.
 std::vector<ReportGroup> groupResults(const std::vector<nlohmann::ordered_json>& rows);
