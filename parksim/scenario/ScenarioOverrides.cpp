@@ -93,6 +93,26 @@ void applyOverride(YAML::Node& document, const ScenarioOverride& o) {
   }
 }
 
+bool replaceScalar(YAML::Node& document, const ScenarioOverride& o) {
+  const YAML::Node value = parseValue(o);
+  if (!value.IsScalar()) return false;
+  YAML::Node node = document;
+  for (const PathStep& step : splitPath(o)) {
+    // Looked up through a const node: a missing key is not created.
+    const YAML::Node& here = node;
+    if (!step.key.empty()) {
+      if (!here.IsMap() || !here[step.key]) return false;
+      node.reset(here[step.key]);
+    } else {
+      if (!here.IsSequence() || step.index >= here.size()) return false;
+      node.reset(here[step.index]);
+    }
+  }
+  if (!node.IsScalar() || node.Tag() != value.Tag()) return false;
+  node = value.Scalar();
+  return true;
+}
+
 namespace {
 
 bool startsWithField(std::string_view text, std::string_view path) {
