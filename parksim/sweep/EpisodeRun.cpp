@@ -40,8 +40,9 @@ void applyRecord(const EpisodeRunDef& def, const std::string& dir, EpisodeReques
 nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const EpisodeRunDef& def) {
   const Clock::time_point t0 = Clock::now();
   static const ToleranceOverrides kNoOverrides;
-  EpisodeRequest request = episodeRequest(episode.params, episode.world,
-                                          episode.tolerance ? *episode.tolerance : kNoOverrides);
+  EpisodeRequest request =
+      episodeRequest(episode.params, episodeWorld(episode.params, episode.world),
+                     episode.tolerance ? *episode.tolerance : kNoOverrides);
   applyRecord(def, def.episodes_dir + "/" + episode.id, request);
   const EpisodeOutcome out = runEpisodePipeline(request);
 
@@ -49,7 +50,7 @@ nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const Episod
   // Which content of the world file the episode ran on: its name alone (in the id) cannot tell
   // an edited file from the one an earlier run used. The file's, without the spec's set:
   // values (those are columns and part of the id).
-  facts.world_hash = episode.world->content_hash;
+  facts.world_hash = episode.world->world.content_hash;
   facts.episode_wall_s = secondsSince(t0);
   nlohmann::ordered_json row = episodeRow(episode.id, episode.params, facts);
   return row;
