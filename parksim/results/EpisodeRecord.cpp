@@ -112,8 +112,8 @@ const std::array kFields = {
 
     // outcome
     field("status", "status", G::kOutcome, T::kString, "",
-          "the verdict: met, plan_failed, plan_invalid, planner_error, controller_error, "
-          "contact, goal_missed or tolerance_missed",
+          "the verdict's status: met, or the first check that failed (pipeline/Verdict.h's "
+          "EpisodeStatus)",
           [](const F& f) { return f.judged ? Json(f.status) : Json(); }, kColumn | kJUnit),
     field("met_tolerance", "met_tolerance", G::kOutcome, T::kBoolean, "",
           "solved, driven and within every bound",
@@ -463,7 +463,11 @@ std::string recordColumnsMarkdown() {
   std::size_t columns = 0;
   for (const EpisodeField& f : kFields) {
     if (!f.csv) continue;
-    row(f.group, "`" + std::string(f.key) + "`", f.unit, f.meaning);
+    std::string meaning(f.meaning);
+    if (!f.metrics_key.empty() && f.metrics_key != f.key) {
+      meaning += " (metrics.json: `" + std::string(f.metrics_key) + "`)";
+    }
+    row(f.group, "`" + std::string(f.key) + "`", f.unit, meaning);
     if (++columns == setColumnsPosition()) {
       row(FieldGroup::kParameter, "`<path>`", "",
           "one column per `set:` path (its value), sorted by path (\"Parameter studies\")");

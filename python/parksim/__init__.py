@@ -110,6 +110,13 @@ def _plain(value):
     raise TypeError(f"a world dict holds numbers, strings, lists and dicts, not {type(value)}")
 
 
+def episode_fields():
+    """The episode record's fields (parksim/results/EpisodeRecord.h), one dict each: key (its
+    column in a sweep's results table), metrics_key (its key in run().metrics and
+    metrics.json), group, type, unit, meaning."""
+    return _parksim._episode_fields()
+
+
 def worlds_dir():
     """The folder of the worlds installed with the package (the project's worlds/*.yaml)."""
     return _os.path.join(_os.path.dirname(_os.path.abspath(__file__)), "worlds")
@@ -187,7 +194,8 @@ __all__ = [
     "FrameDef", "FrameRecorder", "HybridAStarDef", "MotionValidatorDef", "MoveToPoseDef", "ParkingEnv",
     "ParkingTaskDef", "PlannerDef",
     "PlanResult", "PlanSetup", "ReedsSheppDef", "RobotDef", "RotateTranslateRotateDef", "RunResult",
-    "SimModelDef", "TrackingGains", "World", "cspace_slice", "encode_png", "load_world", "plan",
+    "SimModelDef", "TrackingGains", "World", "cspace_slice", "encode_png", "episode_fields",
+    "load_world", "plan",
     "read_png", "read_record", "read_trajectory", "render_figure", "render_frame", "run", "spaces",
     "write_figures", "write_png", "VecParkingEnv", "world_names", "worlds_dir",
 ]
