@@ -1,5 +1,8 @@
 #include "parksim/scenario/ScenarioOverrides.h"
 
+#include <algorithm>
+#include <cctype>
+
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
 #include "parksim/scenario/WorldDocument.h"
@@ -93,9 +96,31 @@ void applyOverride(YAML::Node& document, const ScenarioOverride& o) {
   }
 }
 
+namespace {
+
+// Text YAML reads as a plain scalar of exactly that text (a number, a name): letters, digits,
+// '.', '_', '+', and '-' other than as a list's dash. Anything else goes through the parser.
+bool isPlainWord(std::string_view t) {
+  if (t.empty() ||
+      (t[0] == '-' &&
+       (t.size() == 1 || !(std::isdigit(static_cast<unsigned char>(t[1])) || t[1] == '.')))) {
+    return false;
+  }
+  return std::all_of(t.begin(), t.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '.' || c == '_' || c == '+' ||
+           c == '-';
+  });
+}
+
+}  // namespace
+
 bool replaceScalar(YAML::Node& document, const ScenarioOverride& o) {
-  const YAML::Node value = parseValue(o);
-  if (!value.IsScalar()) return false;
+  // A sweep sets numbers per episode: those skip the parser (a fifth of a world's read).
+  const bool plain = isPlainWord(o.value);
+  const YAML::Node value = plain ? YAML::Node() : parseValue(o);
+  if (!plain && !value.IsScalar()) return false;
+  const std::string& text = plain ? o.value : value.Scalar();
+  const std::string tag = plain ? std::string("?") : value.Tag();
   YAML::Node node = document;
   for (const PathStep& step : splitPath(o)) {
     // Looked up through a const node: a missing key is not created.
@@ -108,8 +133,8 @@ bool replaceScalar(YAML::Node& document, const ScenarioOverride& o) {
       node.reset(here[step.index]);
     }
   }
-  if (!node.IsScalar() || node.Tag() != value.Tag()) return false;
-  node = value.Scalar();
+  if (!node.IsScalar() || node.Tag() != tag) return false;
+  node = text;
   return true;
 }
 

@@ -75,6 +75,10 @@ TEST(WorldFile, ReadsAsParseWorldWhateverTheOrderOfReads) {
       {o("robot.max_wheel_speed_radps", "\"7\"")},  // quoted: not a number, as in a file
       {o("robot.max_wheel_speed_radps", "[7]")},
       {o("robot.max_wheel_speed_radps", "8")},
+      {o("robot.max_wheel_speed_radps", "9e0")},
+      {o("robot.max_wheel_speed_radps", "nine")},
+      {o("robot.max_wheel_speed_radps", "- 9")},  // a list, parsed
+      {o("robot.max_wheel_speed_radps", "+9.5")},
       {},
   };
   for (const Overrides& overrides : reads) {
