@@ -28,13 +28,13 @@ constexpr const char* kMarker = ".parksim-out";
 
 // What parksim wrote before the marker existed; a directory holding only these is replaceable.
 bool isParksimOutput(const std::string& name) {
-  static const char* const names[] = {kMarker, "trajectory.csv", "plan.json", "executed.csv",
-                                      "metrics.json", "frames", "figures", "episode.mp4",
-                                      "episode.gif", "ffmpeg.log", "bench.csv", "summary.md",
-                                      "episode.partial.mp4", "episode.partial.gif",
-                                      // parksim report
-                                      "summary.csv", "success_matrix.png", "tracking_error.png",
-                                      "plan_time.png", "path_length.png", "duration.png"};
+  static const char* const names[] = {
+      kMarker, "trajectory.csv", "plan.json", "executed.csv", "metrics.json", "frames", "figures",
+      "episode.mp4", "episode.gif", "ffmpeg.log", "bench.csv", "summary.md", "episode.partial.mp4",
+      "episode.partial.gif",
+      // parksim report
+      "summary.csv", "success_matrix.png", "tracking_error.png", "plan_time.png", "path_length.png",
+      "duration.png", "parameters.csv"};
   for (const char* n : names) {
     if (name == n) return true;
   }
@@ -42,7 +42,8 @@ bool isParksimOutput(const std::string& name) {
     return name.size() >= s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0;
   };
   return (name.rfind("plan_", 0) == 0 && ends(".json")) ||
-         (name.rfind("ompl_", 0) == 0 && ends(".log")) || ends(".tmp");
+         (name.rfind("ompl_", 0) == 0 && ends(".log")) ||
+         (name.rfind("parameter_", 0) == 0 && ends(".png")) || ends(".tmp");
 }
 
 std::string errnoText() { return std::strerror(errno); }
