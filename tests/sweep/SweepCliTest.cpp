@@ -45,6 +45,28 @@ std::map<std::string, int> idCounts(const std::string& jsonl) {
   return counts;
 }
 
+// Starts `parksim sweep SPEC --out OUT --workers 1` and kills it (SIGKILL) once it has written
+// `rows` rows, or whenever it gets there: the assertions after it hold either way.
+void sweepThenKill(const std::string& spec, const std::string& out, std::size_t rows) {
+  const std::string exe = testing::parksimExe();
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    const int devnull = ::open("/dev/null", O_WRONLY);
+    dup2(devnull, 1);
+    dup2(devnull, 2);
+    execl(exe.c_str(), exe.c_str(), "sweep", spec.c_str(), "--out", out.c_str(), "--workers", "1",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  for (int i = 0; i < 4000 && lines(out + "/results.jsonl") < rows; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  kill(child, SIGKILL);
+  int status = 0;
+  waitpid(child, &status, 0);
+}
+
 TEST(SweepCli, BadSpecExitsTwoWithALocatedErrorAndWritesNothing) {
   const std::string dir = scratchDir();
   writeText(dir + "/bad.yaml", studySpec("planners: [rrt, nope]\n"));
@@ -59,24 +81,7 @@ TEST(SweepCli, SurvivesAKillAndCompletesEachEpisodeOnceThenReports) {
   const std::string dir = scratchDir();
   writeText(dir + "/spec.yaml", studySpec("planners: rrt-goal-connect\nseeds: {from: 1, to: 6}\n"));
   const std::string out = dir + "/out";
-  const std::string exe = testing::parksimExe();
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    const int devnull = ::open("/dev/null", O_WRONLY);
-    dup2(devnull, 1);
-    dup2(devnull, 2);
-    execl(exe.c_str(), exe.c_str(), "sweep", (dir + "/spec.yaml").c_str(), "--out", out.c_str(),
-          "--workers", "1", static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  // Kill it once it has written a row (or whenever it gets there: the assertions hold either way).
-  for (int i = 0; i < 4000 && lines(out + "/results.jsonl") < 2; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  kill(child, SIGKILL);
-  int status = 0;
-  waitpid(child, &status, 0);
+  sweepThenKill(dir + "/spec.yaml", out, 2);
 
   const auto again = runParksim("sweep " + dir + "/spec.yaml --out " + out + " --workers 2");
   EXPECT_EQ(again.exit_code, 0) << again.out;
@@ -367,23 +372,7 @@ TEST(SweepCli, ASampledSpecGivesTheSameEpisodesHoweverItRuns) {
   EXPECT_EQ(rowsById(dir + "/sharded/results.jsonl"), one);
   // Killed after its first rows and resumed.
   const std::string out = dir + "/killed";
-  const std::string exe = testing::parksimExe();
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    const int devnull = ::open("/dev/null", O_WRONLY);
-    dup2(devnull, 1);
-    dup2(devnull, 2);
-    execl(exe.c_str(), exe.c_str(), "sweep", spec.c_str(), "--out", out.c_str(), "--workers", "1",
-          static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  for (int i = 0; i < 4000 && lines(out + "/results.jsonl") < 3; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  kill(child, SIGKILL);
-  int status = 0;
-  waitpid(child, &status, 0);
+  sweepThenKill(spec, out, 3);
   EXPECT_EQ(runParksim("sweep " + spec + " --out " + out).exit_code, 0);
   EXPECT_EQ(rowsById(out + "/results.jsonl"), one);
 }
