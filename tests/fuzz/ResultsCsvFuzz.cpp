@@ -13,6 +13,7 @@
 #include "parksim/core/Error.h"
 #include "parksim/results/ResultsFile.h"
 #include "parksim/results/TableVerify.h"
+#include "parksim/sweep/Merge.h"
 #include "tests/fuzz/FuzzSupport.h"
 
 namespace {
