@@ -9,8 +9,9 @@
 namespace parksim {
 namespace {
 
-std::string contentHash(std::string_view text, const std::vector<ScenarioOverride>& overrides) {
-  std::uint64_t h = fnv1a64(text);
+// `text_hash` is fnv1a64 of the file's text.
+std::string contentHash(std::uint64_t text_hash, const std::vector<ScenarioOverride>& overrides) {
+  std::uint64_t h = text_hash;
   for (const ScenarioOverride& o : overrides) {
     h = fnv1a64("\n--set " + o.path + "=" + o.value, h);
   }
@@ -25,7 +26,7 @@ World parseWorld(std::string_view yaml_text, const std::string& source_name,
   for (const ScenarioOverride& o : overrides) applyOverride(document, o);
   try {
     World world = readWorldDocument(document, source_name);
-    world.content_hash = contentHash(yaml_text, overrides);
+    world.content_hash = contentHash(fnv1a64(yaml_text), overrides);
     return world;
   } catch (const Error& e) {
     rethrowNamingOverride(e, source_name, overrides);
@@ -36,6 +37,7 @@ struct WorldFile::Parsed {
   std::string text;
   std::string source;
   YAML::Node document;
+  std::uint64_t text_hash = 0;  // of `text`, once: World::content_hash starts from it
   // The document with the last read's overrides applied, and their paths: the next read with
   // the same paths and scalar values sets them in place instead of cloning the document (a
   // sweep's samples differ in their values, not their paths). A clone and its freeing were
@@ -47,6 +49,7 @@ struct WorldFile::Parsed {
 WorldFile::WorldFile(std::string text, std::string source_name)
     : parsed_(std::make_unique<Parsed>()) {
   parsed_->document = loadWorldDocument(text, source_name);
+  parsed_->text_hash = fnv1a64(text);
   parsed_->text = std::move(text);
   parsed_->source = std::move(source_name);
 }
@@ -57,6 +60,7 @@ WorldFile::WorldFile(const WorldFile& other)
     : parsed_(std::make_unique<Parsed>(Parsed{other.parsed_->text,
                                               other.parsed_->source,
                                               YAML::Clone(other.parsed_->document),
+                                              other.parsed_->text_hash,
                                               {},
                                               {}})) {}
 
@@ -85,7 +89,7 @@ World WorldFile::read(const std::vector<ScenarioOverride>& overrides) const {
   }
   try {
     World world = readWorldDocument(document, parsed_->source);
-    world.content_hash = contentHash(parsed_->text, overrides);
+    world.content_hash = contentHash(parsed_->text_hash, overrides);
     return world;
   } catch (const Error& e) {
     rethrowNamingOverride(e, parsed_->source, overrides);
