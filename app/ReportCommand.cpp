@@ -24,10 +24,10 @@
 #include "parksim/pages/JUnitPageLinks.h"
 #include "parksim/pages/SweepPage.h"
 #include "parksim/pipeline/Verdict.h"
+#include "parksim/results/JUnitReport.h"
 #include "parksim/results/OmplLog.h"
+#include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/Report.h"
-#include "parksim/sweep/ResultsJUnit.h"
-#include "parksim/sweep/ResultsTable.h"
 #include "parksim/sweep/SweepManifest.h"
 
 namespace parksim::app {
@@ -170,7 +170,7 @@ int runReport(const std::string& dir, std::string out, const std::string& junit)
   }
   staged.commit();
   if (!junit.empty()) {
-    JUnitReport report = resultsJUnit(rows, name);
+    JUnitReport report = episodesJUnit(rows, name, rowGroupNameOf);
     linkJUnitToPages(report, junit, out + "/index.html", dir + "/episodes");
     writeJUnitFile(junit, report);
     written.push_back(junit);

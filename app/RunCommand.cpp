@@ -25,11 +25,13 @@
 #include "parksim/cli/WorldOptions.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/pipeline/RealisationsJUnit.h"
 #include "parksim/realism/Distribution.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/renders/PngEncoder.h"
+#include "parksim/results/JUnitReport.h"
 #include "parksim/results/TrajectoryFile.h"
+#include "parksim/sweep/EpisodeRun.h"
+#include "parksim/sweep/Report.h"
 
 namespace parksim::app {
 
@@ -291,7 +293,10 @@ int runEpisodeCommand(const RunOptions& o, EpisodeRequest& request, UserCodeWatc
   const EpisodeOutcome outcome = runEpisodePipeline(request);
   planning.finish();
   if (frames) frames->finish();
-  if (!o.junit.empty()) writeJUnitFile(o.junit, realisationsJUnit(outcome));
+  if (!o.junit.empty()) {
+    writeJUnitFile(o.junit, episodesJUnit(realisationRecords(request, outcome),
+                                          "parksim run " + scenario.name, rowGroupNameOf));
+  }
   const std::string dir = printable(o.out);
   if (outcome.driven()) {
     printEpisode(outcome, dir);

@@ -29,10 +29,11 @@
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/ChildProcess.h"
 #include "parksim/core/Error.h"
+#include "parksim/results/JUnitReport.h"
+#include "parksim/results/ResultsTable.h"
+#include "parksim/results/RowSeal.h"
 #include "parksim/sweep/EpisodeExpansion.h"
-#include "parksim/sweep/ResultsJUnit.h"
-#include "parksim/sweep/ResultsTable.h"
-#include "parksim/sweep/RowSeal.h"
+#include "parksim/sweep/Report.h"
 #include "parksim/sweep/Shard.h"
 #include "parksim/sweep/SlurmResubmit.h"
 #include "parksim/sweep/SlurmScript.h"
@@ -64,6 +65,7 @@ struct SweepOptions {
   // what sweep.json recorded of the first submission.
   std::set<std::string> slurm_given;
   std::string junit;
+  bool list = false;  // print the episodes and run nothing
 };
 
 std::string duration(double s) {
@@ -265,11 +267,15 @@ int resubmitMissing(const SweepOptions& o, const SweepSpec& spec,
 }
 
 // The expectations a resumed table must meet: the worlds' contents now, this build.
-TableExpectations expectations(const std::vector<SweepWorld>& worlds,
+TableExpectations expectations(const SweepSpec& spec, const std::vector<SweepWorld>& worlds,
                                const nlohmann::ordered_json& provenance) {
   TableExpectations expect;
-  for (const SweepWorld& w : worlds) expect.world_hashes[w->scenario.name] = w->content_hash;
+  for (const SweepWorld& w : worlds) {
+    expect.world_hashes[w->world.scenario.name] = w->world.content_hash;
+  }
   expect.writer = rowWriter(provenance);
+  // Each set: path is a column, named by the path.
+  for (const SetAxis& axis : spec.set) expect.set_columns.push_back(axis.path);
   return expect;
 }
 
@@ -300,6 +306,17 @@ int runSweepCommand(const SweepOptions& o) {
   const std::vector<SweepWorld> worlds = loadSweepWorlds(spec);
   const std::vector<SweepEpisode> all = expandEpisodes(spec, worlds);
   const Shard shard = parseShard(o.shard);
+  if (o.list) {
+    // What the spec expands to (this shard's share), run nothing, write nothing: a sampled
+    // spec's draws can be read before a cluster spends hours on them.
+    if (!o.junit.empty() || o.slurm) throw Error("--list runs nothing: drop --junit and --slurm");
+    std::string out;
+    for (const SweepEpisode& e : selectShard(all, shard)) {
+      out += e.id + "\t" + canonicalString(e.params) + "\n";
+    }
+    std::fwrite(out.data(), 1, out.size(), stdout);
+    return 0;
+  }
   if (o.missing && !o.slurm) throw Error("--missing works on a Slurm sweep: add --slurm");
   if (o.wait && !o.missing) throw Error("--wait waits for the tasks --slurm --missing submits");
   if (o.slurm) {
@@ -320,7 +337,7 @@ int runSweepCommand(const SweepOptions& o) {
   SweepRunnerDef def;
   // Refuses a table with other columns, a changed row, or rows of another world content or
   // build, before anything is written.
-  ResultsTable table(o.out, expectations(worlds, def.provenance));
+  ResultsTable table(o.out, expectations(spec, worlds, def.provenance));
   for (const std::string& repair : table.repairs()) {
     std::fprintf(stderr, "repaired %s\n", printable(repair).c_str());
   }
@@ -355,7 +372,7 @@ int runSweepCommand(const SweepOptions& o) {
     for (nlohmann::ordered_json& row : readResultsJsonl(o.out + "/results.jsonl")) {
       if (ids.count(row.value("episode_id", "")) > 0) rows.push_back(std::move(row));
     }
-    writeJUnitFile(o.junit, resultsJUnit(rows, spec.name));
+    writeJUnitFile(o.junit, episodesJUnit(rows, spec.name, rowGroupNameOf));
   }
 
   // The verdict covers the shard's episodes, those of earlier runs included.
@@ -379,8 +396,12 @@ int runSweepCommand(const SweepOptions& o) {
 CommandRunner setupSweepCommand(CLI::App& sub) {
   auto opt = std::make_shared<SweepOptions>();
   sub.add_option("spec", opt->spec, "sweep spec (YAML, see docs/sweeps.md)")->required();
-  sub.add_option("--out", opt->out, "output directory (results.csv, results.jsonl, episodes/)")
-      ->required();
+  CLI::Option* out =
+      sub.add_option("--out", opt->out, "output directory (results.csv, results.jsonl, episodes/)");
+  sub.add_flag("--list", opt->list,
+               "print the spec's episodes (of --shard), one line each: the episode id, a tab and "
+               "its canonical parameters (docs/sweeps.md); run nothing")
+      ->excludes(out);
   sub.add_option("--workers", opt->workers, "worker threads (default: one per CPU)")
       ->check(CLI::Range(1, 1024));
   sub.add_option("--shard", opt->shard,
@@ -423,6 +444,7 @@ CommandRunner setupSweepCommand(CLI::App& sub) {
   const std::vector<const CLI::Option*> request = {cpus,      mem,     time_limit,
                                                    partition, account, max_parallel};
   return [opt, request](const OutputOptions& output) {
+    if (!opt->list && opt->out.empty()) throw Error("--out is required (or --list)");
     opt->progress = output.progress;
     for (const CLI::Option* option : request) {
       if (option->count() > 0) opt->slurm_given.insert(option->get_name());

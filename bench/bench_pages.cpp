@@ -23,7 +23,7 @@
 #include "parksim/pages/SweepPage.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/scenario/World.h"
-#include "parksim/sweep/ResultsFile.h"
+#include "parksim/results/ResultsFile.h"
 
 namespace parksim {
 namespace {

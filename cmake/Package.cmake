@@ -26,8 +26,14 @@ foreach(module IN LISTS parksim_modules)
 endforeach()
 add_library(parksim::parksim ALIAS parksim_library)
 
+# parksim::cli: what command-line front-ends share (output directories as transactions, progress
+# lines, the options that fill the library's Def structs), for a consumer's own tools; not in
+# parksim::parksim, since it brings CLI11.
+set_target_properties(parksim_cli PROPERTIES EXPORT_NAME cli)
+add_library(parksim::cli ALIAS parksim_cli)
+
 list(TRANSFORM parksim_modules PREPEND parksim_ OUTPUT_VARIABLE parksim_module_targets)
-install(TARGETS ${parksim_module_targets} parksim_library
+install(TARGETS ${parksim_module_targets} parksim_library parksim_cli
   EXPORT parksimTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}

@@ -35,7 +35,7 @@ bool isParksimOutput(const std::string& name) {
       "episode.partial.mp4", "episode.partial.gif",
       // parksim report
       "summary.csv", "success_matrix.png", "tracking_error.png", "plan_time.png", "path_length.png",
-      "duration.png", "index.html"};
+      "duration.png", "index.html", "parameters.csv"};
   for (const char* n : names) {
     if (name == n) return true;
   }
@@ -43,7 +43,8 @@ bool isParksimOutput(const std::string& name) {
     return name.size() >= s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0;
   };
   return (name.rfind("plan_", 0) == 0 && ends(".json")) ||
-         (name.rfind("ompl_", 0) == 0 && ends(".log")) || ends(".tmp");
+         (name.rfind("ompl_", 0) == 0 && ends(".log")) ||
+         (name.rfind("parameter_", 0) == 0 && ends(".png")) || ends(".tmp");
 }
 
 std::string errnoText() { return std::strerror(errno); }

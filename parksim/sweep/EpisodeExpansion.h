@@ -4,6 +4,8 @@
 // lists.
 
 #include <memory>
+#include <mutex>
+#include <string>
 #include <vector>
 
 #include "parksim/scenario/World.h"
@@ -12,8 +14,17 @@
 
 namespace parksim {
 
-/// A world of the sweep, loaded once and shared by its episodes.
-using SweepWorld = std::shared_ptr<const World>;
+/// A world file of the sweep, read once and shared by its episodes: the world it reads as, and
+/// its parsed text, to which an episode's set: values are applied as `--set` applies them.
+struct SweepWorldFile {
+  SweepWorldFile(std::string path, std::string text);
+  std::string path;  ///< as opened
+  WorldFile file;
+  World world;  ///< file.read()
+  /// Held while `file` is read or copied: workers read it side by side.
+  mutable std::mutex mutex;
+};
+using SweepWorld = std::shared_ptr<const SweepWorldFile>;
 
 /// Reads the spec's worlds (world_paths order). Throws Error naming the world file, or the
 /// spec's `worlds:` line when two files name their scenario alike (ids use the name).

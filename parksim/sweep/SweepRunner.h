@@ -8,9 +8,9 @@
 #include <functional>
 #include <vector>
 
+#include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/EpisodeExpansion.h"
 #include "parksim/sweep/EpisodeRun.h"
-#include "parksim/sweep/ResultsTable.h"
 
 namespace parksim {
 

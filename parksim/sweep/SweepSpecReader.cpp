@@ -3,6 +3,7 @@
 #include <glob.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -14,12 +15,15 @@
 
 #include "parksim/core/Error.h"
 #include "parksim/core/InputFile.h"
+#include "parksim/core/NumberFormat.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/planner/TreePlanner.h"
 #include "parksim/realism/RealismDef.h"
+#include "parksim/results/EpisodeRecord.h"
 #include "parksim/scenario/YamlField.h"
 #include "parksim/sim/ExecutionDef.h"
 #include "parksim/sweep/EpisodeSetup.h"
+#include "parksim/sweep/SetValues.h"
 
 namespace parksim {
 namespace {
@@ -134,6 +138,14 @@ std::vector<PoseOffset> offsetsAxis(const YamlField& field, std::vector<int>& li
   return values;
 }
 
+// Combinations the set: axes add: the grid's values times the samples drawn.
+double setCombinations(const SweepSpec& spec) {
+  double n = spec.samples ? static_cast<double>(spec.samples->count) : 1.0;
+  for (const SetAxis& a : spec.set)
+    n *= a.distribution ? 1.0 : static_cast<double>(a.values.size());
+  return n;
+}
+
 bool hasGlobChars(const std::string& s) { return s.find_first_of("*?[") != std::string::npos; }
 
 void readWorlds(const YamlField& field, const std::string& base_dir, SweepSpec& spec) {
@@ -172,49 +184,6 @@ void readWorlds(const YamlField& field, const std::string& base_dir, SweepSpec& 
       spec.world_files.push_back(base_dir.empty() ? normal : fs::path(shown).string());
     }
   }
-}
-
-// `set:` axes: each world field's values; every combination is a variant of every world.
-void readSetAxes(const YamlField& field, SweepSpec& spec) {
-  const YamlMap m(field);
-  std::vector<std::vector<ScenarioOverride>> combinations{{}};
-  for (const std::string& path : m.keys()) {
-    const YamlField values = *m.optional(path);
-    std::vector<std::string> texts;
-    for (const YamlField& item : axisItems(values)) {
-      YAML::Emitter out;
-      out.SetSeqFormat(YAML::Flow);
-      out.SetMapFormat(YAML::Flow);
-      out << item.node();
-      texts.emplace_back(out.c_str());
-      if (std::count(texts.begin(), texts.end(), texts.back()) > 1) {
-        item.fail("repeats the value " + texts.back());
-      }
-    }
-    spec.set_axes.emplace_back(path, texts);
-    std::vector<std::vector<ScenarioOverride>> grown;
-    for (const auto& base : combinations) {
-      for (const std::string& v : texts) {
-        auto next = base;
-        next.push_back(
-            {path, v,
-             spec.source_path + ":" + std::to_string(values.line()) + ": set " + path + "=" + v});
-        grown.push_back(std::move(next));
-      }
-    }
-    combinations = std::move(grown);
-  }
-  std::vector<std::string> files;
-  std::vector<std::string> paths;
-  for (std::size_t w = 0; w < spec.world_paths.size(); ++w) {
-    for (const auto& overrides : combinations) {
-      files.push_back(spec.world_files[w]);
-      paths.push_back(spec.world_paths[w]);
-      spec.world_overrides.push_back(overrides);
-    }
-  }
-  spec.world_files = std::move(files);
-  spec.world_paths = std::move(paths);
 }
 
 // The field's text through the library's own parser of those names; its message, at the
@@ -299,6 +268,148 @@ void readTolerance(const YamlField& field, ToleranceOverrides& t) {
   }
 }
 
+// Deep enough for any world value (a pose, a polygon's points); bounds a hostile spec.
+constexpr int kMaxValueDepth = 8;
+
+// A scalar's canonical text (SetValues.h): a number in its shortest round-trip form, true or
+// false, other text as written.
+std::string canonicalScalar(const YamlField& f) {
+  const std::string& text = f.node().Scalar();
+  if (text.empty()) f.fail("must not be empty");
+  double v = 0.0;
+  if (parseDouble(text, v)) {
+    if (!std::isfinite(v)) f.fail("must be a finite number, got " + text);
+    return canonicalNumber(v);
+  }
+  return text;
+}
+
+nlohmann::ordered_json canonicalJson(const YamlField& f, int depth) {
+  if (depth > kMaxValueDepth) f.fail("is nested too deeply for a world value");
+  if (f.node().IsScalar()) return setValueJson(canonicalScalar(f));
+  if (f.node().IsSequence()) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const YamlField& item : f.items()) list.push_back(canonicalJson(item, depth + 1));
+    return list;
+  }
+  if (f.node().IsMap()) {
+    const YamlMap m(f);
+    std::vector<std::string> keys = m.keys();
+    std::sort(keys.begin(), keys.end());  // the world reader does not care; ids would
+    nlohmann::ordered_json map = nlohmann::ordered_json::object();
+    for (const std::string& k : keys) map[k] = canonicalJson(*m.optional(k), depth + 1);
+    return map;
+  }
+  f.fail("must be a value");
+}
+
+// One value of a set: axis as canonical text: scalars as they are, lists and maps as compact
+// JSON. Planner and controller parameters take scalars only.
+std::string canonicalValue(const YamlField& f, bool scalar_only) {
+  if (f.node().IsScalar()) return canonicalScalar(f);
+  if (scalar_only) f.fail("must be a number, true, false or text (a parameter's value)");
+  return canonicalJson(f, 0).dump();
+}
+
+bool isIdentifier(std::string_view s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+  });
+}
+
+// The path of a set: axis, checked for what the spec can tell without the worlds (the world
+// reader checks the rest, per world, when the episodes are expanded).
+void checkSetPath(const YamlField& key_field, const std::string& path) {
+  const auto bad = [&](const std::string& why) { key_field.fail(why); };
+  if (path.empty()) bad("an empty path");
+  if (!std::all_of(path.begin(), path.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '.' ||
+               c == '[' || c == ']';
+      })) {
+    bad("a path is keys joined by '.' and list items as [i], e.g. robot.max_wheel_speed_radps "
+        "or obstacles[2].center");
+  }
+  const std::string root = path.substr(0, path.find_first_of(".["));
+  if (root == "planner" || root == "controller") {
+    if (path.size() <= root.size() + 1 || path[root.size()] != '.' ||
+        !isIdentifier(std::string_view(path).substr(root.size() + 1))) {
+      bad(root + " parameters are " + root + ".NAME, NAME of letters, digits and _");
+    }
+    return;
+  }
+  if (root == "name" || root == "format") {
+    bad("the world's " + root + " is not a value to vary (episode ids name the world by it)");
+  }
+  if (!isSetKey(path)) {
+    bad("'" + path + "' is a column of the results table; set the fields inside it (e.g. " + path +
+        ".FIELD)");
+  }
+}
+
+// {uniform: [a, b]}, {normal: [mean, sd]} or {choice: [...]}.
+SetDistribution readDistribution(const YamlField& field, bool scalar_only) {
+  const YamlMap m = field.map({"uniform", "normal", "choice"});
+  const std::vector<std::string> keys = m.keys();
+  if (keys.size() != 1) field.fail("a distribution is one of uniform, normal or choice");
+  const YamlField f = *m.optional(keys.front());
+  SetDistribution d;
+  if (keys.front() == "choice") {
+    d.kind = SetDistribution::Kind::kChoice;
+    if (!f.node().IsSequence() || f.items().empty()) f.fail("must list at least one value");
+    const std::vector<YamlField> items = f.items();
+    for (const YamlField& item : items) d.choices.push_back(canonicalValue(item, scalar_only));
+    rejectDuplicates(items, d.choices);
+    return d;
+  }
+  const bool uniform = keys.front() == "uniform";
+  d.kind = uniform ? SetDistribution::Kind::kUniform : SetDistribution::Kind::kNormal;
+  const std::vector<double> v = f.numbers(2, uniform ? "[low, high]" : "[mean, sd]");
+  d.a = v[0];
+  d.b = v[1];
+  if (uniform && !(d.a < d.b)) f.fail("the low end must be below the high end");
+  if (!uniform && !(d.b > 0.0)) f.fail("the standard deviation must be positive");
+  return d;
+}
+
+void readSet(const YamlField& field, SweepSpec& spec) {
+  const YamlMap m(field);
+  for (const std::string& path : m.keys()) {
+    const YamlField value = *m.optional(path);
+    checkSetPath(value, path);
+    SetAxis axis;
+    axis.path = path;
+    axis.line = value.line();
+    const bool scalar_only = axis.target() != SetAxis::Target::kWorld;
+    if (value.node().IsMap()) {
+      axis.distribution = readDistribution(value, scalar_only);
+    } else {
+      const std::vector<YamlField> items = axisItems(value);
+      for (const YamlField& item : items) axis.values.push_back(canonicalValue(item, scalar_only));
+      rejectDuplicates(items, axis.values);
+    }
+    // ISSUE 30 (the planner and controller registry): the parameters of planner.NAME and
+    // controller.NAME axes belong to the selected planner or controller, which validates them.
+    // Call its check here, per planner of the spec's planners: axis (and per controller), so
+    // that an unknown name or a bad value is refused at this line before anything runs. Until
+    // then, they reach the request's planner_params and controller_params unchecked.
+    spec.set.push_back(std::move(axis));
+  }
+  std::sort(spec.set.begin(), spec.set.end(),
+            [](const SetAxis& a, const SetAxis& b) { return a.path < b.path; });
+}
+
+void readSamples(const YamlField& field, SweepSpec& spec) {
+  const YamlMap m = field.map({"count", "seed"});
+  const YamlField count = m.required("count");
+  const std::uint64_t n = seedValue(count);
+  if (n < 1 || n > kMaxEpisodes) {
+    count.fail("must be in [1, " + std::to_string(kMaxEpisodes) + "], got " +
+               count.node().Scalar());
+  }
+  spec.samples = SampleDef{n, seedValue(m.required("seed"))};
+  spec.samples_line = field.line();
+}
+
 }  // namespace
 
 SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_name,
@@ -313,18 +424,13 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
   }
   top.rejectUnknownKeys({"format", "name", "worlds", "planners", "steering", "smoothing", "seeds",
                          "max_iterations", "tracking", "timing", "realism", "noise_seeds",
-                         "start_offsets", "goal_offsets", "record", "tolerance", "set"});
+                         "start_offsets", "goal_offsets", "set", "samples", "record", "tolerance"});
 
   SweepSpec spec;
   spec.source_path = source_name;
   // name(): UTF-8 without control characters; it reaches the terminal, reports and job names.
   spec.name = top.required("name").name();
   readWorlds(top.required("worlds"), base_dir, spec);
-  spec.world_overrides.assign(spec.world_paths.size(), {});
-  if (const auto f = top.optional("set")) {
-    spec.world_overrides.clear();
-    readSetAxes(*f, spec);
-  }
 
   const std::vector<std::string> planner_names = builtInPlanners().names();
   std::vector<std::string> steering_names;
@@ -385,6 +491,31 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
   if (const auto f = top.optional("goal_offsets")) {
     spec.goal_offsets = offsetsAxis(*f, spec.goal_offset_lines);
   }
+  if (const auto f = top.optional("set")) readSet(*f, spec);
+  if (const auto f = top.optional("samples")) readSamples(*f, spec);
+  // realism. paths change the world's realism: section, which a preset of the realism: axis
+  // replaces: those episodes would not have the values their columns say.
+  for (const SetAxis& axis : spec.set) {
+    if (axis.path.rfind("realism.", 0) != 0) continue;
+    for (const std::string& r : spec.realism) {
+      if (r != "world") {
+        throw Error(source_name + ":" + std::to_string(axis.line) + ": set." + axis.path +
+                    ": changes the world's realism: section, which realism: " + r +
+                    " replaces; use realism: world and set realism.preset: " + r);
+      }
+    }
+  }
+  const auto drawn = std::find_if(spec.set.begin(), spec.set.end(),
+                                  [](const SetAxis& a) { return a.distribution.has_value(); });
+  if (drawn != spec.set.end() && !spec.samples) {
+    throw Error(source_name + ":" + std::to_string(drawn->line) + ": set." + drawn->path +
+                ": a distribution is drawn samples: times; add samples: {count: N, seed: S}");
+  }
+  if (drawn == spec.set.end() && spec.samples) {
+    throw Error(source_name + ":" + std::to_string(spec.samples_line) +
+                ": samples: draws the set: values that are distributions ({uniform: [a, b]}, "
+                "{normal: [mean, sd]}, {choice: [...]}); this spec has none");
+  }
   if (const auto f = top.optional("record")) readRecord(*f, spec.record);
   if (const auto f = top.optional("tolerance")) readTolerance(*f, spec.tolerance);
 
@@ -392,7 +523,7 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
                        spec.steerings.size() * spec.smoothing.size() * spec.seeds.size() *
                        spec.max_iterations.size() * spec.tracking.size() * spec.timing.size() *
                        spec.realism.size() * spec.noise_seeds.size() * spec.start_offsets.size() *
-                       spec.goal_offsets.size();
+                       spec.goal_offsets.size() * setCombinations(spec);
   if (count > static_cast<double>(kMaxEpisodes)) {
     root.fail("expands to " + std::to_string(static_cast<long long>(count)) +
               " episodes, more than the limit of " + std::to_string(kMaxEpisodes));

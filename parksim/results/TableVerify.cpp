@@ -1,21 +1,17 @@
-#include "parksim/sweep/TableVerify.h"
+#include "parksim/results/TableVerify.h"
 
 #include <filesystem>
 #include <map>
+#include <optional>
+#include <set>
 
-#include "parksim/core/Error.h"
-#include "parksim/sweep/Merge.h"
-#include "parksim/sweep/ResultsFile.h"
-#include "parksim/sweep/SweepManifest.h"
+#include "parksim/results/ResultsFile.h"
 
 namespace parksim {
-namespace {
-
 namespace fs = std::filesystem;
 
-// Checks one directory's results.jsonl and results.csv into `v`.
-void verifyTable(const std::string& dir, bool check_manifest, std::size_t max_listed,
-                 TableVerification& v) {
+void verifyTable(const std::string& dir, const std::vector<std::string>* expected_ids,
+                 std::size_t max_listed, TableVerification& v) {
   const std::string jsonl = dir + "/results.jsonl";
   const std::string csv_path = dir + "/results.csv";
   v.tables.push_back(jsonl);
@@ -37,12 +33,20 @@ void verifyTable(const std::string& dir, bool check_manifest, std::size_t max_li
   CsvFollower csv(csv_path);
   enum class Csv { kFollowing, kEnded, kIgnored } state = Csv::kFollowing;
   std::size_t csv_behind = 0;
+  std::vector<std::string> columns;            // results.csv's, from its header
+  std::set<std::string, std::less<>> csv_set;  // its set columns
+  std::set<std::string, std::less<>> row_set;  // the set keys of the rows
   if (!csv_exists) {
     problem(csv_path + ": missing (a sweep opening this table rebuilds it from results.jsonl)");
     state = Csv::kIgnored;
   } else {
-    const CsvFollower::Match m = csv.next(csvHeader());
-    if (m != CsvFollower::Match::kSame) {
+    std::string header;
+    std::optional<std::vector<std::string>> set;
+    if (csv.nextLine(header)) set = setColumnsOfHeader(header);
+    if (set) {
+      columns = resultColumns(*set);
+      csv_set.insert(set->begin(), set->end());
+    } else {
       problem(at(csv_path, 1) + "header is not this parksim's columns (another version's table?)");
       state = Csv::kIgnored;
     }
@@ -60,10 +64,11 @@ void verifyTable(const std::string& dir, bool check_manifest, std::size_t max_li
                   std::to_string(it->second) + ")");
         }
         origins.add(r.row, jsonl, r.line);
+        addSetKeys(r.row, row_set);
         ++v.rows;
         if (state == Csv::kEnded) ++csv_behind;
         if (state != Csv::kFollowing) return;
-        switch (csv.next(csvRow(r.row))) {
+        switch (csv.next(csvRow(r.row, columns))) {
           case CsvFollower::Match::kSame: break;
           case CsvFollower::Match::kEnded:
             state = Csv::kEnded;
@@ -99,39 +104,24 @@ void verifyTable(const std::string& dir, bool check_manifest, std::size_t max_li
   } else if (state == Csv::kFollowing && csv.hasMore()) {
     problem(at(csv_path, csv.line()) + "rows beyond those of results.jsonl");
   }
+  if (state != Csv::kIgnored) {
+    for (const std::string& key : row_set) {
+      if (csv_set.count(key) == 0) {
+        problem(at(csv_path, 1) + "has no column " + key + ", which rows of " + jsonl + " have");
+      }
+    }
+  }
   for (const std::string& mix : origins.mixes()) problem(mix);
 
-  SweepManifest manifest;
-  if (check_manifest && readSweepManifest(dir, manifest)) {
+  if (expected_ids != nullptr) {
     std::size_t missing = 0;
-    for (const std::string& id : manifest.episode_ids) missing += first_line.count(id) == 0;
+    for (const std::string& id : *expected_ids) missing += first_line.count(id) == 0;
     if (missing > 0) {
       v.notes.push_back(jsonl + ": " + std::to_string(missing) + " of the sweep's " +
-                        std::to_string(manifest.episode_ids.size()) +
+                        std::to_string(expected_ids->size()) +
                         " episodes are not in the table (yet)");
     }
   }
-}
-
-}  // namespace
-
-TableVerification verifyResults(const std::string& dir, std::size_t max_listed) {
-  TableVerification v;
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw Error(dir + ": not a directory");
-  const std::vector<std::string> sources = mergeSources(dir);
-  const bool sharded = !(sources.size() == 1 && sources.front() == dir);
-  if (sharded && fs::exists(dir + "/results.jsonl", ec)) verifyTable(dir, true, max_listed, v);
-  for (const std::string& source : sources) {
-    if (fs::exists(source + "/results.jsonl", ec)) {
-      verifyTable(source, !sharded, max_listed, v);
-    }
-  }
-  if (v.tables.empty()) {
-    throw Error(dir + ": no results table (results.jsonl) here" +
-                (sharded ? std::string(" or in its shards/") : std::string()));
-  }
-  return v;
 }
 
 }  // namespace parksim

@@ -1,4 +1,4 @@
-#include "parksim/sweep/ResultsFile.h"
+#include "parksim/results/ResultsFile.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -14,7 +14,8 @@
 
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
-#include "parksim/sweep/RowSeal.h"
+#include "parksim/results/EpisodeRecord.h"
+#include "parksim/results/RowSeal.h"
 
 namespace parksim {
 namespace {
@@ -125,42 +126,31 @@ class LineReader {
   bool torn_ = false;
 };
 
-// What is wrong with the type of a key parksim reads back from a row (sweep, merge, report),
-// or nothing. A hand-edited or foreign row ("met_tolerance": "yes") was a JSON type error,
-// exit 3.
+// What is wrong with the type of a key of the record (EpisodeRecord.h), or nothing. A
+// hand-edited or foreign row ("met_tolerance": "yes") was a JSON type error, exit 3.
 std::optional<std::string> badKeyType(const nlohmann::ordered_json& row) {
-  using Json = nlohmann::ordered_json;
-  const auto check = [&row](std::initializer_list<const char*> keys, bool (Json::*is)() const,
-                            const char* what) -> std::optional<std::string> {
-    for (const char* key : keys) {
-      const auto it = row.find(key);
-      if (it != row.end() && !it->is_null() && !((*it).*is)()) {
-        const std::string got = it->dump();
-        return "key '" + std::string(key) + "' must be " + what + ", got " + got.substr(0, 40) +
-               (got.size() > 40 ? "..." : "");
-      }
+  for (const auto& [key, value] : row.items()) {
+    if (value.is_null()) continue;
+    const EpisodeField* f = findField(key);
+    if (f == nullptr) continue;
+    const char* what = nullptr;
+    switch (f->type) {
+      case FieldType::kString: what = value.is_string() ? nullptr : "a string"; break;
+      case FieldType::kBoolean: what = value.is_boolean() ? nullptr : "true or false"; break;
+      case FieldType::kInteger:
+      case FieldType::kNumber: what = value.is_number() ? nullptr : "a number"; break;
+      case FieldType::kList: what = value.is_array() ? nullptr : "a list"; break;
+      case FieldType::kObject: what = value.is_object() ? nullptr : "an object"; break;
     }
-    return std::nullopt;
-  };
-  if (auto p = check({"world", "world_file", "planner", "steering", "tracking", "timing", "realism",
-                      "status", "failure", "plan_status", "host", "world_hash", "parksim_version",
-                      "git_commit", "build_type", "compiler", "bullet_precision"},
-                     &Json::is_string, "a string")) {
-    return p;
+    if (what != nullptr) {
+      const std::string got = value.dump();
+      return "key '" + key + "' must be " + what + ", got " + got.substr(0, 40) +
+             (got.size() > 40 ? "..." : "");
+    }
   }
-  if (auto p = check({"met_tolerance", "smooth", "plan_solved", "goal_reached", "git_dirty"},
-                     &Json::is_boolean, "true or false")) {
-    return p;
-  }
-  if (auto p =
-          check({"seed", "noise_seed", "max_iterations", "plan_max_iterations", "plan_iterations",
-                 "plan_tree_size", "plan_goal_tree_size", "plan_cusps", "plan_collision_queries"},
-                &Json::is_number, "a number")) {
-    return p;
-  }
-  if (const auto it = row.find("plan_cost_history"); it != row.end() && !it->is_null()) {
-    bool ok = it->is_array();
-    for (const Json& sample : ok ? *it : Json::array()) {
+  if (const auto it = row.find("plan_cost_history"); it != row.end() && it->is_array()) {
+    bool ok = true;
+    for (const nlohmann::ordered_json& sample : *it) {
       ok = ok && sample.is_array() && sample.size() == 3 && sample[0].is_number() &&
            sample[1].is_number() && sample[2].is_number();
     }
@@ -197,40 +187,42 @@ std::string csvCell(const nlohmann::ordered_json& v) {
 
 }  // namespace
 
-const std::vector<std::string>& resultColumns() {
-  static const std::vector<std::string> columns = {
-      "episode_id", "world", "world_file", "planner", "steering", "smooth", "seed",
-      "max_iterations", "tracking", "timing", "realism", "noise_seed", "start_dx_m", "start_dy_m",
-      "start_dyaw_deg", "goal_dx_m", "goal_dy_m", "goal_dyaw_deg",
-      // outcome
-      "status", "met_tolerance", "failure",
-      // plan
-      "plan_status", "plan_solved", "plan_max_iterations", "plan_iterations", "plan_tree_size",
-      "plan_goal_tree_size", "plan_collision_queries", "plan_cost_m", "plan_path_length_m",
-      "plan_duration_s", "plan_cusps", "plan_first_solution_iteration",
-      // simulation
-      "max_pos_err_m", "rms_pos_err_m", "final_pos_err_m", "max_heading_err_deg",
-      "rms_heading_err_deg", "final_heading_err_deg", "final_x_m", "final_y_m", "final_theta_rad",
-      "goal_pos_err_m", "goal_heading_err_deg", "goal_reached", "contacts", "first_contact_t_s",
-      "first_contact_body", "contact_bodies", "max_parked_displacement_m", "sim_time_s", "steps",
-      "ended_at_rest",
-      // realism layers (empty for the ideal robot's episodes that do not report them)
-      "estimator", "max_est_pos_err_m", "rms_est_pos_err_m", "max_est_heading_err_deg",
-      "final_est_pos_err_m", "max_slip_mps", "rms_slip_mps", "slip_fraction", "max_motor_torque_nm",
-      "max_motor_effort", "pose_samples_dropped",
-      // timing
-      "plan_time_s", "plan_first_solution_s", "sim_wall_s", "episode_wall_s",
-      // provenance: the world file's content and the build (RowSeal.h)
-      "world_hash", "parksim_version", "git_commit", "git_dirty", "build_type", "compiler",
-      "bullet_precision", "host",
-      // the seal, last (RowSeal.h)
-      "row_checksum"};
-  return columns;
+std::vector<std::string> resultColumns(const std::vector<std::string>& set_columns) {
+  return recordColumns(set_columns);
+}
+
+std::optional<std::vector<std::string>> setColumnsOfHeader(std::string_view header) {
+  std::vector<std::string> names;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = std::min(header.find(',', start), header.size());
+    names.emplace_back(header.substr(start, comma - start));
+    if (comma == header.size()) break;
+    start = comma + 1;
+  }
+  const std::vector<std::string> fixed = resultColumns();
+  const std::size_t at = setColumnsPosition();
+  if (names.size() < fixed.size()) return std::nullopt;
+  const std::size_t extra = names.size() - fixed.size();
+  std::vector<std::string> set(names.begin() + static_cast<long>(at),
+                               names.begin() + static_cast<long>(at + extra));
+  if (!std::is_sorted(set.begin(), set.end()) ||
+      std::adjacent_find(set.begin(), set.end()) != set.end() ||
+      !std::all_of(set.begin(), set.end(), [](const std::string& k) { return isSetKey(k); }) ||
+      resultColumns(set) != names) {
+    return std::nullopt;
+  }
+  return set;
+}
+
+void addSetKeys(const nlohmann::ordered_json& row, std::set<std::string, std::less<>>& keys) {
+  for (const auto& [key, value] : row.items()) {
+    if (keys.find(key) == keys.end() && isSetKey(key)) keys.insert(key);
+  }
 }
 
 bool isTimingKey(std::string_view key) {
-  return key == "plan_time_s" || key == "plan_first_solution_s" || key == "sim_wall_s" ||
-         key == "episode_wall_s" || key == "plan_cost_history" || key == "plan_phase_times_s";
+  const EpisodeField* f = findField(key);
+  return f != nullptr && f->group == FieldGroup::kTiming;
 }
 
 nlohmann::ordered_json withoutTiming(const nlohmann::ordered_json& row) {
@@ -241,9 +233,9 @@ nlohmann::ordered_json withoutTiming(const nlohmann::ordered_json& row) {
   return out;
 }
 
-std::string csvHeader() {
+std::string csvHeader(const std::vector<std::string>& columns) {
   std::string s;
-  for (const std::string& c : resultColumns()) {
+  for (const std::string& c : columns) {
     if (!s.empty()) s += ',';
     s += c;
   }
@@ -251,10 +243,11 @@ std::string csvHeader() {
   return s;
 }
 
-std::string csvRow(const nlohmann::ordered_json& row, std::string_view checksum) {
+std::string csvRow(const nlohmann::ordered_json& row, const std::vector<std::string>& columns,
+                   std::string_view checksum) {
   std::string s;
   bool first = true;
-  for (const std::string& c : resultColumns()) {
+  for (const std::string& c : columns) {
     if (!first) s += ',';
     first = false;
     const auto it = row.find(c);
@@ -423,6 +416,19 @@ void CsvFollower::skipLine() {
   }
 }
 
+bool CsvFollower::nextLine(std::string& line) {
+  for (;;) {
+    const std::size_t nl = buffer_.find('\n', pos_);
+    if (nl != std::string::npos) {
+      line.assign(buffer_, pos_, nl - pos_);
+      pos_ = nl + 1;
+      ++line_;
+      return true;
+    }
+    if (!fill()) return false;
+  }
+}
+
 bool CsvFollower::hasMore() {
   if (pos_ < buffer_.size()) return true;
   while (fill()) {
@@ -481,12 +487,14 @@ struct ResultsTableWriter::TempFile : TempTableFile {
   using TempTableFile::TempTableFile;
 };
 
-ResultsTableWriter::ResultsTableWriter(const std::string& dir) : dir_(dir) {
+ResultsTableWriter::ResultsTableWriter(const std::string& dir,
+                                       const std::vector<std::string>& set_columns)
+    : dir_(dir), columns_(resultColumns(set_columns)) {
   ensureDirectory(dir);
   jsonl_ = std::make_unique<TempFile>(dir + "/results.jsonl");
   try {
     csv_ = std::make_unique<TempFile>(dir + "/results.csv");
-    csv_->add(csvHeader());
+    csv_->add(csvHeader(columns_));
   } catch (...) {
     ::unlink(jsonl_->tmp.c_str());
     throw;
@@ -503,7 +511,7 @@ ResultsTableWriter::~ResultsTableWriter() {
 void ResultsTableWriter::add(std::string_view sealed_line, const nlohmann::ordered_json& row) {
   jsonl_->add(sealed_line);
   jsonl_->add("\n");
-  csv_->add(csvRow(row));
+  csv_->add(csvRow(row, columns_));
 }
 
 void ResultsTableWriter::commit() {
@@ -515,21 +523,31 @@ void ResultsTableWriter::commit() {
   committed_ = true;
 }
 
-void rebuildResultsCsv(const std::string& dir) {
+std::vector<std::string> rebuildResultsCsv(const std::string& dir,
+                                           const std::vector<std::string>& set_columns) {
+  const std::string jsonl = dir + "/results.jsonl";
+  // Two passes, one row in memory: the columns first, then the rows.
+  std::set<std::string, std::less<>> keys(set_columns.begin(), set_columns.end());
+  scanResultsJsonl(jsonl, [&keys](const TableRow& r) { addSetKeys(r.row, keys); });
+  std::vector<std::string> set(keys.begin(), keys.end());
+  const std::vector<std::string> columns = resultColumns(set);
   TempTableFile csv(dir + "/results.csv");
   try {
-    csv.add(csvHeader());
-    scanResultsJsonl(dir + "/results.jsonl", [&csv](const TableRow& r) { csv.add(csvRow(r.row)); });
+    csv.add(csvHeader(columns));
+    scanResultsJsonl(jsonl, [&](const TableRow& r) { csv.add(csvRow(r.row, columns)); });
     csv.finish();
     csv.rename();
   } catch (...) {
     ::unlink(csv.tmp.c_str());
     throw;
   }
+  return set;
 }
 
 void writeResultsTable(const std::string& dir, const std::vector<nlohmann::ordered_json>& rows) {
-  ResultsTableWriter writer(dir);
+  std::set<std::string, std::less<>> keys;
+  for (const nlohmann::ordered_json& row : rows) addSetKeys(row, keys);
+  ResultsTableWriter writer(dir, std::vector<std::string>(keys.begin(), keys.end()));
   for (const nlohmann::ordered_json& row : rows) {
     if (row.contains(kRowChecksumKey)) {
       const std::string line = row.dump();

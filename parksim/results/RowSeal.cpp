@@ -1,8 +1,7 @@
-#include "parksim/sweep/RowSeal.h"
+#include "parksim/results/RowSeal.h"
 
 #include "parksim/core/Error.h"
 #include "parksim/core/Fnv1a.h"
-#include "parksim/sweep/EpisodeParams.h"
 
 namespace parksim {
 namespace {

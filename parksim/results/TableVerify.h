@@ -1,8 +1,10 @@
 #pragma once
-// `parksim verify DIR`: checks a sweep's results tables without changing them, and lists every
-// problem (not just the first, as the readers do): rows whose seal does not match their content,
+// `parksim verify DIR`: checks a results table without changing it, and lists every problem
+// (not just the first, as the readers do): rows whose seal does not match their content,
 // lines that are not rows, lines of results.csv that are not the rendering of their
 // results.jsonl row, an episode twice in one table, rows of other world contents or builds.
+// Which tables a sweep directory holds (its shards) is the sweep's: sweep/Merge.h's
+// verifyResults.
 
 #include <cstddef>
 #include <string>
@@ -23,9 +25,11 @@ struct TableVerification {
   bool ok() const { return problems.empty() && unlisted == 0; }
 };
 
-/// Checks DIR's results table and, for a Slurm sweep, the table of every DIR/shards/*. At most
-/// `max_listed` problems are listed per table (the rest counted in `unlisted`). Throws Error
-/// when DIR holds no results table at all.
-TableVerification verifyResults(const std::string& dir, std::size_t max_listed = 20);
+/// Checks DIR/results.jsonl and DIR/results.csv into `v` (its tables, rows, problems, notes).
+/// `expected_ids` (sweep.json's episode ids, when given) are the episodes the table should
+/// hold: those it lacks are a note. At most `max_listed` problems of this table are listed, the
+/// rest counted in `v.unlisted`.
+void verifyTable(const std::string& dir, const std::vector<std::string>* expected_ids,
+                 std::size_t max_listed, TableVerification& v);
 
 }  // namespace parksim

@@ -1,19 +1,22 @@
-#include "parksim/sweep/ResultsTable.h"
+#include "parksim/results/ResultsTable.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <optional>
+#include <set>
 
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
-#include "parksim/sweep/RowSeal.h"
+#include "parksim/results/EpisodeRecord.h"
+#include "parksim/results/RowSeal.h"
 
 namespace parksim {
 namespace {
@@ -115,25 +118,35 @@ ResultsTable::ResultsTable(const std::string& dir, const TableExpectations& expe
 
 void ResultsTable::open(const std::string& dir, const TableExpectations& expect) {
   // One pass over both files: every row of results.jsonl checked, and results.csv followed
-  // against the rendering of each row.
+  // against the rendering of each row in the columns its header names.
   CsvFollower csv(csv_path_);
-  bool csv_whole = true;  // results.csv so far is exactly the rendering of results.jsonl
-  const CsvFollower::Match header = csv.next(csvHeader());
-  if (header == CsvFollower::Match::kDiffers) {
-    throw Error(csv_path_ +
-                ":1: has other columns than this parksim writes (a table from another version?); "
-                "use another --out directory");
+  bool csv_whole = false;  // results.csv so far is exactly the rendering of results.jsonl
+  std::string header;
+  std::set<std::string, std::less<>> csv_set;  // the set columns results.csv has
+  if (csv.nextLine(header)) {
+    const std::optional<std::vector<std::string>> set = setColumnsOfHeader(header);
+    if (!set) {
+      throw Error(csv_path_ +
+                  ":1: has other columns than this parksim writes (a table from another "
+                  "version?); use another --out directory");
+    }
+    set_columns_ = *set;
+    columns_ = resultColumns(set_columns_);
+    csv_set.insert(set->begin(), set->end());
+    csv_whole = true;
   }
-  csv_whole = header == CsvFollower::Match::kSame;
+  // The set columns the table needs: the sweep's set: paths and those of the rows already in.
+  std::set<std::string, std::less<>> wanted(expect.set_columns.begin(), expect.set_columns.end());
   std::size_t rows = 0;
   const TableScan scan = scanResultsJsonl(jsonl_path_, [&](const TableRow& r) {
     if (const std::optional<std::string> why = mismatch(r.row, expect)) {
       throw Error(jsonl_path_ + ":" + std::to_string(r.line) + ": " + *why);
     }
     done_[r.row["episode_id"].get<std::string>()] = r.row.value("met_tolerance", false);
+    addSetKeys(r.row, wanted);
     ++rows;
     if (!csv_whole) return;
-    const CsvFollower::Match m = csv.next(csvRow(r.row));
+    const CsvFollower::Match m = csv.next(csvRow(r.row, columns_));
     if (m == CsvFollower::Match::kDiffers) {
       throw Error(csv_path_ + ":" + std::to_string(csv.line()) + ": differs from the row of " +
                   jsonl_path_ + ":" + std::to_string(r.line) + " (episode " +
@@ -149,13 +162,17 @@ void ResultsTable::open(const std::string& dir, const TableExpectations& expect)
                        ": cut off a torn last row (a sweep stopped while writing it); that "
                        "episode runs again");
   }
-  if (!csv_whole || csv.hasMore()) {
+  const bool other_columns = csv_whole && wanted != csv_set;
+  if (!csv_whole || csv.hasMore() || other_columns) {
     const bool had_csv = std::filesystem::exists(csv_path_);
-    rebuildResultsCsv(dir);
+    set_columns_ = rebuildResultsCsv(dir, std::vector<std::string>(wanted.begin(), wanted.end()));
+    columns_ = resultColumns(set_columns_);
     if (had_csv) {
-      repairs_.push_back(csv_path_ + ": rebuilt from results.jsonl (" + std::to_string(rows) +
-                         " rows), which it did not match at its end (a sweep stopped between "
-                         "the two files)");
+      repairs_.push_back(
+          csv_path_ + ": rebuilt from results.jsonl (" + std::to_string(rows) + " rows), " +
+          (other_columns ? "with a column for every set: path of the sweep and its rows"
+                         : "which it did not match at its end (a sweep stopped between the two "
+                           "files)"));
     }
   }
 
@@ -182,7 +199,13 @@ void ResultsTable::append(const nlohmann::ordered_json& row) {
   const std::string id = row.at("episode_id").get<std::string>();
   const SealedRow sealed = sealRow(row);
   const std::string jsonl_line = sealed.line + "\n";
-  const std::string csv_line = csvRow(row, sealed.checksum);
+  for (const auto& [key, value] : row.items()) {
+    if (isSetKey(key) && !std::binary_search(set_columns_.begin(), set_columns_.end(), key)) {
+      throw Error(csv_path_ + ": episode " + id + " has the set column " + key +
+                  ", which the table was not opened with");
+    }
+  }
+  const std::string csv_line = csvRow(row, columns_, sealed.checksum);
   // A failed write may have left part of the row: cut both files back to their whole rows.
   // (ftruncate frees space; it does not need any.)
   const auto take_back = [this] {

@@ -23,7 +23,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/sweep/ResultsFile.h"
+#include "parksim/results/ResultsFile.h"
 
 namespace parksim {
 
@@ -34,6 +34,9 @@ struct TableExpectations {
   std::map<std::string, std::string> world_hashes;
   /// rowWriter of this build; empty: rows of any build are accepted.
   std::string writer;
+  /// The set columns the sweep writes (its set: paths, EpisodeRecord.h's isSetKey): results.csv
+  /// gets a column for each, and for every set key of the rows already in.
+  std::vector<std::string> set_columns;
 };
 
 /// The lock file of DIR's table, held by the sweep writing it.
@@ -45,6 +48,7 @@ bool resultsTableBusy(const std::string& dir);
 class ResultsTable {
  public:
   /// Opens (creating, or repairing as described above) DIR/results.jsonl and DIR/results.csv.
+  /// results.csv is rebuilt with more columns when the sweep sets paths it has no column for.
   /// Throws Error when they cannot be opened, another sweep holds them, results.csv has another
   /// header (another parksim version's columns), or a row fails the checks above.
   explicit ResultsTable(const std::string& dir, const TableExpectations& expect = {},
@@ -71,6 +75,8 @@ class ResultsTable {
 
   std::string jsonl_path_;
   std::string csv_path_;
+  std::vector<std::string> set_columns_;  // results.csv's set columns, sorted
+  std::vector<std::string> columns_;      // all of results.csv's
   int lock_fd_ = -1;
   int jsonl_fd_ = -1;
   int csv_fd_ = -1;

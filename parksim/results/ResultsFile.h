@@ -1,7 +1,7 @@
 #pragma once
 // The files of a results table, DIR/results.jsonl (one sealed JSON object per line, every key;
-// the reference) and DIR/results.csv (the fixed columns of resultColumns(), the rendering of
-// the same rows), read one line at a time and written whole. The appending writer of a running
+// the reference) and DIR/results.csv (the columns of resultColumns(), the rendering of the
+// same rows), read one line at a time and written whole. The appending writer of a running
 // sweep is ResultsTable.h; the seal of a row is RowSeal.h.
 //
 // Readers keep one line in memory, not the table: `merge`, `report`, `verify` and a resumed
@@ -11,6 +11,8 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,12 +21,20 @@
 
 namespace parksim {
 
-/// results.csv's columns, in order: episode_id, the parameters, the outcome, plan statistics,
-/// simulation metrics, timing, provenance (world_hash among it) and row_checksum, last. Keys a
-/// row lacks (a failed plan has no simulation) are empty cells. results.jsonl also has keys
-/// that vary per world or are lists (parked_displacement_m.<name>, plan_cost_history,
-/// plan_phase_times_s).
-const std::vector<std::string>& resultColumns();
+/// results.csv's columns, in order: the episode record's (EpisodeRecord.h: episode_id, the
+/// parameters, the outcome, plan statistics, simulation metrics, the realism layers, timing,
+/// provenance and row_checksum, last), with a table's set columns (`set:` paths, sorted) after
+/// the parameters. Keys a row lacks (a failed plan has no simulation) are empty cells.
+/// results.jsonl also has keys that vary per world or are lists (parked_displacement_m.<name>,
+/// plan_cost_history, plan_phase_times_s).
+std::vector<std::string> resultColumns(const std::vector<std::string>& set_columns = {});
+
+/// The set columns of a table whose results.csv header line (without its newline) is `header`,
+/// or nullopt when it is not one resultColumns gives (another parksim's columns).
+std::optional<std::vector<std::string>> setColumnsOfHeader(std::string_view header);
+
+/// The set keys of `row` (EpisodeRecord.h's isSetKey) added to `keys`.
+void addSetKeys(const nlohmann::ordered_json& row, std::set<std::string, std::less<>>& keys);
 
 /// Columns and keys measured in wall-clock time: they differ between runs of the same episode.
 /// Everything else is a function of the episode's parameters and the binary.
@@ -33,11 +43,12 @@ bool isTimingKey(std::string_view key);
 /// `row` without its timing keys and its seal (for comparing runs).
 nlohmann::ordered_json withoutTiming(const nlohmann::ordered_json& row);
 
-/// The header line of results.csv, with its newline.
-std::string csvHeader();
-/// One CSV line for `row` (RFC 4180 quoting; booleans true/false; lists joined by '|').
-/// `checksum`, when given, fills the row_checksum column of a row that lacks the key.
-std::string csvRow(const nlohmann::ordered_json& row, std::string_view checksum = {});
+/// The header line of results.csv with `columns` (resultColumns), with its newline.
+std::string csvHeader(const std::vector<std::string>& columns);
+/// One CSV line for `row` (RFC 4180 quoting; booleans true/false; lists joined by '|') in
+/// `columns`. `checksum`, when given, fills the row_checksum column of a row that lacks the key.
+std::string csvRow(const nlohmann::ordered_json& row, const std::vector<std::string>& columns,
+                   std::string_view checksum = {});
 
 /// Largest results.jsonl or results.csv read (docs/limits.md): a row is ~2.5 KB, so ~200,000
 /// episodes. Readers hold one line at a time, so this bounds time, not memory.
@@ -137,6 +148,9 @@ class CsvFollower {
   bool hasMore();
   /// Skips the rest of the current line (after a row that differed or could not be rendered).
   void skipLine();
+  /// Reads the next whole line (without its newline) into `line` and advances past it; false,
+  /// reading nothing, when the file ends before a newline.
+  bool nextLine(std::string& line);
 
  private:
   bool fill();
@@ -155,7 +169,9 @@ class CsvFollower {
 /// results.jsonl lines (sealed) with their parsed rows.
 class ResultsTableWriter {
  public:
-  explicit ResultsTableWriter(const std::string& dir);
+  /// results.csv gets resultColumns(set_columns).
+  explicit ResultsTableWriter(const std::string& dir,
+                              const std::vector<std::string>& set_columns = {});
   ~ResultsTableWriter();  ///< removes the temporary files unless committed
   ResultsTableWriter(const ResultsTableWriter&) = delete;
   ResultsTableWriter& operator=(const ResultsTableWriter&) = delete;
@@ -168,17 +184,20 @@ class ResultsTableWriter {
  private:
   struct TempFile;
   std::string dir_;
+  std::vector<std::string> columns_;
   std::unique_ptr<TempFile> jsonl_;
   std::unique_ptr<TempFile> csv_;
   bool committed_ = false;
 };
 
 /// Writes DIR/results.csv anew from DIR/results.jsonl (checked as scanResultsJsonl does),
-/// through a temporary file renamed into place.
-void rebuildResultsCsv(const std::string& dir);
+/// through a temporary file renamed into place. Its set columns are those of the rows and
+/// `set_columns` (a sweep's set: paths that no row has yet); returns them.
+std::vector<std::string> rebuildResultsCsv(const std::string& dir,
+                                           const std::vector<std::string>& set_columns = {});
 
-/// Writes DIR/results.jsonl and DIR/results.csv with exactly `rows` (ResultsTableWriter),
-/// sealing rows that are not sealed yet.
+/// Writes DIR/results.jsonl and DIR/results.csv with exactly `rows` (ResultsTableWriter; the
+/// set columns of the rows), sealing rows that are not sealed yet.
 void writeResultsTable(const std::string& dir, const std::vector<nlohmann::ordered_json>& rows);
 
 }  // namespace parksim
