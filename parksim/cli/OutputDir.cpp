@@ -67,6 +67,7 @@ struct OutputDir::Impl {
   bool committed = false;
   std::mutex mutex;  // commit vs. the signal watcher
   std::atomic<bool> stop{false};
+  std::atomic<bool> started{false};
   sigset_t old_mask{};
   std::thread watcher;
 
@@ -76,6 +77,7 @@ struct OutputDir::Impl {
     sigset_t set;
     sigemptyset(&set);
     for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set, s);
+    started.store(true);
     while (!stop.load()) {
       const timespec wait{0, 50'000'000};
       const int sig = sigtimedwait(&set, nullptr, &wait);
@@ -176,6 +178,11 @@ OutputDir::OutputDir(const std::string& out) : impl_(std::make_unique<Impl>()) {
     // (blocked above) and the watcher removes a directory that exists, instead of racing
     // create_directory and leaving it behind.
     m.watcher = std::thread([&m] { m.watch(); });
+    // Not before the watcher waits: a process for user code may be forked next
+    // (pipeline/UserCodeIsolation.h), and a thread still starting may hold the allocator's locks
+    // (AddressSanitizer's allocator, before LLVM 17, takes none around fork), which the forked
+    // child then waits for forever.
+    while (!m.started.load()) std::this_thread::yield();
   } catch (...) {
     if (m.watcher.joinable()) {
       m.stop = true;

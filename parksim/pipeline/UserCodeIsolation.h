@@ -1,13 +1,15 @@
 #pragma once
 // User code that can crash or hang (a plugin's or a Python object's planner or controller) runs
-// in a child process: a segmentation fault, an abort or an endless loop then ends that child,
+// in a worker process: a segmentation fault, an abort or an endless loop then ends that worker,
 // not the sweep or the command that started it, and becomes a verdict naming the component
-// (planner_error, controller_error). The child tells the parent, through memory they share,
-// which component it is in and that it is making progress; the parent enforces the time limits
-// and kills the child's process group when one is exceeded.
+// (planner_error, controller_error). The worker tells its parent, through memory they share,
+// which component it is in and that it is making progress (UserCodeWatch.h); the parent enforces
+// the time limits and kills the worker's process group when one is exceeded.
 //
-// Forking is safe only from a process with one thread: callers (the sweep's process runner, the
-// command line) start children from their main thread, before any other thread exists.
+// A worker runs task after task (a sweep's episodes) until its parent closes its input, so a
+// sweep pays for a process once per worker, not once per episode. Workers are forked: callers
+// fork from a thread that holds no lock another thread may hold (the sweep's and the command
+// line's main thread).
 
 #include <sys/types.h>
 
@@ -22,56 +24,71 @@
 
 namespace parksim {
 
-/// A child process running `work`, watched.
-class IsolatedChild {
+/// Called around fork() (an embedding interpreter's: Python's PyOS_BeforeFork and friends).
+struct ForkHooks {
+  std::function<void()> before;
+  std::function<void()> after_in_parent;
+  std::function<void()> after_in_child;
+};
+
+/// How one task ended.
+struct WorkerResult {
+  std::uint64_t task = 0;
+  /// What the work returned; nothing when it failed.
+  std::optional<std::string> answer;
+  /// Why, when the user code failed: it died, hung past its limit, or threw a UserCodeError.
+  std::optional<UserCodeError> user_failure;
+  /// Why, when parksim itself failed (an Error the work threw, a crash outside user code).
+  std::string failure;
+};
+
+class WatchedWorker {
  public:
-  /// Forks. The child runs work(watch) and sends back the text it returns, then ends; what it
-  /// throws is sent back as a failure of parksim (its message) unless it is a UserCodeError.
-  IsolatedChild(const std::function<std::string(UserCodeWatch&)>& work,
-                const UserCodeLimits& limits);
-  /// Kills a child still running and reaps it.
-  ~IsolatedChild();
-  IsolatedChild(const IsolatedChild&) = delete;
-  IsolatedChild& operator=(const IsolatedChild&) = delete;
+  /// work(task, watch): runs in the worker; returns the text sent back.
+  using Work = std::function<std::string(std::uint64_t task, UserCodeWatch& watch)>;
 
-  /// The pipe to wait on (poll) for the child's answer.
-  int fd() const { return fd_; }
-  /// Reads what the child sent, enforces the limits; true once the child is done (answered,
-  /// died, or killed at a limit) and reaped.
-  bool poll();
+  /// Forks the worker, idle.
+  WatchedWorker(Work work, const UserCodeLimits& limits, const ForkHooks& hooks = {});
+  /// Ends the worker: closes its input, and kills what is still running.
+  ~WatchedWorker();
+  WatchedWorker(const WatchedWorker&) = delete;
+  WatchedWorker& operator=(const WatchedWorker&) = delete;
 
-  /// When done: the child's answer, or nothing when it failed.
-  const std::optional<std::string>& answer() const { return answer_; }
-  /// When done without an answer: why, as the user code's failure (planner_error or
-  /// controller_error naming the component) when it died or hung in user code.
-  const std::optional<UserCodeError>& userCodeFailure() const { return user_failure_; }
-  /// When done without an answer and not the user code's fault: parksim's own failure (an
-  /// Error the child threw, or a crash outside user code), one line.
-  const std::string& failure() const { return failure_; }
+  /// Hands the idle worker a task.
+  void start(std::uint64_t task);
+  bool idle() const { return !busy_ && !dead_; }
+  /// The worker died or was killed: make another to go on.
+  bool dead() const { return dead_; }
+  /// The pipe to wait on (poll) for the worker's answers.
+  int fd() const { return from_child_; }
+
+  /// Reads what the worker sent and enforces the limits: the result of the task it was given,
+  /// once that has ended (answered, failed, or the worker died or was killed).
+  std::optional<WorkerResult> poll();
 
  private:
   using Phase = UserCodeWatch::Phase;
-  void finish(int status);
+  WorkerResult died(int status);
   void kill(const std::string& why);
 
   UserCodeLimits limits_;
-  UserCodeWatch* watch_ = nullptr;  // shared with the child (mmap)
+  UserCodeWatch* watch_ = nullptr;  // shared with the worker (mmap)
   pid_t pid_ = -1;
-  int fd_ = -1;
+  int to_child_ = -1;
+  int from_child_ = -1;
+  bool busy_ = false;
+  bool dead_ = false;
+  std::uint64_t task_ = 0;
   std::string received_;
-  bool done_ = false;
   std::string killed_for_;
-  std::optional<std::string> answer_;
-  std::optional<UserCodeError> user_failure_;
-  std::string failure_;
   Phase last_phase_ = Phase::kParksim;
   std::uint64_t last_beats_ = 0;
   std::chrono::steady_clock::time_point since_;
 };
 
-/// Runs `work` in a child and waits for it: its answer, or throws the UserCodeError of user code
-/// that died or hung, or an Error with parksim's own failure.
+/// Runs `work` once in a worker and waits for it: its answer, or throws the UserCodeError of
+/// user code that died or hung, or an Error with parksim's own failure.
 std::string runIsolated(const std::function<std::string(UserCodeWatch&)>& work,
-                        const UserCodeLimits& limits);
+                        const UserCodeLimits& limits, const ForkHooks& hooks = {});
 
 }  // namespace parksim
