@@ -148,6 +148,7 @@ nlohmann::json metricsOf(const EpisodeRequest& request, const EpisodeOutcome& ou
   doc.failure = out.verdict.reason;
   doc.plan_summary = out.plan_summary;
   if (recorder != nullptr) doc.gl_description = recorder->glDescription();
+  if (request.components) doc.plugins = pluginsProvenance(*request.components);
   for (const RealisationOutcome& r : out.realisations) {
     doc.realisations.push_back(
         {r.noise_seed, r.metrics, toString(r.verdict.status), r.verdict.met()});

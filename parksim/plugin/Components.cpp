@@ -17,4 +17,13 @@ ControllerRegistry ownControllers() {
   return r;
 }
 
+std::string pluginsProvenance(const Components& components) {
+  std::string text;
+  for (const PluginRecord& p : components.plugins) {
+    if (!text.empty()) text += "; ";
+    text += p.name + " " + p.version + " " + p.hash;
+  }
+  return text;
+}
+
 }  // namespace parksim

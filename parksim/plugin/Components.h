@@ -35,6 +35,11 @@ struct Components {
   std::vector<PluginRecord> plugins;  ///< in load order
 };
 
+/// The plugins as results record them: "name version hash" of each, in load order, joined by
+/// "; " (empty: none). The `plugins` column of a sweep's rows and metrics.json's
+/// provenance.plugins; a resumed or merged table must carry the same.
+std::string pluginsProvenance(const Components& components);
+
 /// parksim's own planners and controllers, no plugins. Built once, shared.
 std::shared_ptr<const Components> builtInComponents();
 

@@ -121,6 +121,7 @@ nlohmann::json metricsDocumentJson(const MetricsDocument& doc) {
   const nlohmann::json provenance = provenanceToJson(buildProvenance());
   for (const auto& [key, value] : provenance.items()) j["provenance." + key] = value;
   if (!doc.gl_description.empty()) j["provenance.gl"] = doc.gl_description;
+  if (!doc.plugins.empty()) j["provenance.plugins"] = doc.plugins;
   j["world"] = doc.world;
   j["scenario"] = doc.scenario;
   j["tolerance.max_pos_err_m"] = doc.tolerance.max_pos_err_m;

@@ -68,8 +68,15 @@ std::string rowWriter(const nlohmann::ordered_json& row) {
   std::string commit = text("git_commit").substr(0, 12);
   const auto dirty = row.find("git_dirty");
   if (dirty != row.end() && dirty->is_boolean() && dirty->get<bool>()) commit += "-dirty";
+  // The plugins are part of the code that wrote the row: another build of a user's plugin is
+  // another writer.
+  const auto plugins = row.find("plugins");
+  const std::string with =
+      plugins != row.end() && plugins->is_string() && !plugins->get<std::string>().empty()
+          ? "; plugins " + plugins->get<std::string>()
+          : std::string();
   return "parksim " + text("parksim_version") + " (commit " + commit + ", " + text("build_type") +
-         ", " + text("compiler") + ", Bullet " + text("bullet_precision") + ")";
+         ", " + text("compiler") + ", Bullet " + text("bullet_precision") + with + ")";
 }
 
 }  // namespace parksim
