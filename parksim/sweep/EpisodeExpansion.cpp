@@ -1,5 +1,7 @@
 #include "parksim/sweep/EpisodeExpansion.h"
 
+#include "parksim/plugin/PluginLoader.h"
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -94,6 +96,45 @@ void checkSetValues(const SweepSpec& spec, const std::vector<SweepWorld>& worlds
   }
 }
 
+// Every planner and controller of the axes is registered and takes its own parameters and each
+// value of the set: axes' planner.NAME and controller.NAME, each refused at its line in the
+// spec (the combinations are checked again as whole requests when they expand).
+template <class Registry>
+void checkChoices(const SweepSpec& spec, const Registry& registry,
+                  const std::vector<ComponentChoice>& choices, SetAxis::Target target) {
+  const auto at = [&](int line, const std::string& what) {
+    return Error(spec.source_path + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " +
+                 what);
+  };
+  for (const ComponentChoice& c : choices) {
+    try {
+      (void)registry.make(c.name, c.params);
+    } catch (const Error& e) {
+      throw at(c.line, (c.path.empty() ? std::string() : c.path + ": ") + e.what());
+    }
+    for (const SetAxis& axis : spec.set) {
+      if (axis.target() != target) continue;
+      if (c.params.count(axis.parameterName()) > 0) {
+        throw at(axis.line, axis.path + ": " + c.name + "'s entry gives it already");
+      }
+      for (const std::string& value : axis.values) {
+        ParamMap params = c.params;
+        params[axis.parameterName()] = value;
+        try {
+          (void)registry.make(c.name, params);
+        } catch (const Error& e) {
+          throw at(axis.line, axis.path + "=" + value + ": " + e.what());
+        }
+      }
+    }
+  }
+}
+
+void checkComponents(const SweepSpec& spec, const Components& components) {
+  checkChoices(spec, components.planners, spec.planners, SetAxis::Target::kPlanner);
+  checkChoices(spec, components.controllers, spec.controllers, SetAxis::Target::kController);
+}
+
 // The set: part of an episode: world values, planner and controller parameters, the sample.
 struct SetCombination {
   ParamMap world_set;
@@ -151,7 +192,8 @@ namespace {
 // file) and then let go: a sampled spec has one per sample.
 std::vector<SweepEpisode> expandCombination(const SweepSpec& spec, const SweepWorld& file,
                                             const std::string& world_file,
-                                            const SetCombination& set, const WorldFile& own) {
+                                            const SetCombination& set, const WorldFile& own,
+                                            const std::shared_ptr<const Components>& components) {
   EpisodeParams base;
   base.world = file->world.scenario.name;
   base.world_file = world_file;
@@ -166,51 +208,85 @@ std::vector<SweepEpisode> expandCombination(const SweepSpec& spec, const SweepWo
     throw setError(spec, base, file, e.what());
   }
   std::vector<SweepEpisode> out;
-  for (const std::string& planner : spec.planners)
-    for (const std::string& steering : spec.steerings)
-      for (const bool smooth : spec.smoothing)
-        for (const std::uint64_t seed : spec.seeds)
-          for (const int iterations : spec.max_iterations)
-            for (const std::string& tracking : spec.tracking)
-              for (const std::string& timing : spec.timing)
-                for (const std::string& realism : spec.realism)
-                  for (const std::uint64_t noise_seed : spec.noise_seeds)
-                    for (const PoseOffset& start : spec.start_offsets)
-                      for (const PoseOffset& goal : spec.goal_offsets) {
-                        EpisodeParams p = base;
-                        p.planner = planner;
-                        p.steering = steering;
-                        p.smooth = smooth;
-                        p.seed = seed;
-                        p.max_iterations = iterations;
-                        p.tracking = tracking;
-                        p.timing = timing;
-                        p.realism = realism;
-                        p.noise_seed = noise_seed;
-                        p.start_offset = start;
-                        p.goal_offset = goal;
-                        // Every combination is checked before anything runs: a bad offset
-                        // stops the sweep before it writes anything.
-                        try {
-                          checkEpisodeRequest(episodeRequest(p, world, spec.tolerance));
-                        } catch (const Error& err) {
-                          if (p.world_set.empty()) {
-                            throw Error(spec.source_path + ": " + err.what());
+  for (const ComponentChoice& planner : spec.planners)
+    for (const ComponentChoice& controller : spec.controllers)
+      for (const std::string& steering : spec.steerings)
+        for (const bool smooth : spec.smoothing)
+          for (const std::uint64_t seed : spec.seeds)
+            for (const int iterations : spec.max_iterations)
+              for (const std::string& tracking : spec.tracking)
+                for (const std::string& timing : spec.timing)
+                  for (const std::string& realism : spec.realism)
+                    for (const std::uint64_t noise_seed : spec.noise_seeds)
+                      for (const PoseOffset& start : spec.start_offsets)
+                        for (const PoseOffset& goal : spec.goal_offsets) {
+                          EpisodeParams p = base;
+                          p.planner = planner.name;
+                          p.planner_params.insert(planner.params.begin(), planner.params.end());
+                          p.controller = controller.name;
+                          p.controller_params.insert(controller.params.begin(),
+                                                     controller.params.end());
+                          p.steering = steering;
+                          p.smooth = smooth;
+                          p.seed = seed;
+                          p.max_iterations = iterations;
+                          p.tracking = tracking;
+                          p.timing = timing;
+                          p.realism = realism;
+                          p.noise_seed = noise_seed;
+                          p.start_offset = start;
+                          p.goal_offset = goal;
+                          // Every combination is checked before anything runs: a bad offset
+                          // stops the sweep before it writes anything.
+                          try {
+                            checkEpisodeRequest(
+                                episodeRequest(p, world, spec.tolerance, components));
+                          } catch (const Error& err) {
+                            if (p.world_set.empty()) {
+                              throw Error(spec.source_path + ": " + err.what());
+                            }
+                            throw setError(spec, p, file, err.what());
                           }
-                          throw setError(spec, p, file, err.what());
+                          std::string id = episodeId(p);
+                          out.push_back(
+                              {std::move(p), std::move(id), file, components, &spec.tolerance});
                         }
-                        std::string id = episodeId(p);
-                        out.push_back({std::move(p), std::move(id), file, &spec.tolerance});
-                      }
   return out;
 }
 
 }  // namespace
 
+std::shared_ptr<const Components> loadSweepComponents(const SweepSpec& spec,
+                                                      const Components* extra) {
+  if (spec.plugin_paths.empty() && extra == nullptr) return builtInComponents();
+  auto components = std::make_shared<Components>();
+  for (std::size_t i = 0; i < spec.plugin_paths.size(); ++i) {
+    try {
+      loadPlugin(*components, spec.plugin_paths[i]);
+    } catch (const Error& e) {
+      throw Error(spec.source_path + ":" + std::to_string(spec.plugins_line) +
+                  ": plugins: " + e.what());
+    }
+  }
+  if (extra != nullptr) {
+    for (const PlannerEntry& e : extra->planners.entries()) {
+      if (!components->planners.tryFind(e.info.name)) components->planners.add(e, e.info.plugin);
+    }
+    for (const ControllerEntry& e : extra->controllers.entries()) {
+      if (!components->controllers.tryFind(e.info.name)) {
+        components->controllers.add(e, e.info.plugin);
+      }
+    }
+  }
+  return components;
+}
+
 std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
-                                         const std::vector<SweepWorld>& worlds) {
+                                         const std::vector<SweepWorld>& worlds,
+                                         const std::shared_ptr<const Components>& components) {
   checkOffsets(spec, worlds);
   checkSetValues(spec, worlds);
+  checkComponents(spec, *components);
   const std::vector<SetCombination> combinations = setCombinations(spec);
   // World x combination, expanded on every core: each combination with world values reads its
   // world again (10,000 samples of the study's lot: 10,000 reads).
@@ -231,7 +307,7 @@ std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
       }
       try {
         parts[t] = expandCombination(spec, worlds[w], spec.world_files.at(w),
-                                     combinations[t % combinations.size()], *own[w]);
+                                     combinations[t % combinations.size()], *own[w], components);
       } catch (...) {
         errors[t] = std::current_exception();
         std::size_t seen = first_error.load();

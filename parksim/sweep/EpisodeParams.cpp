@@ -28,6 +28,7 @@ std::string canonicalString(const EpisodeParams& p) {
   s += ";start_offset=" + offset(p.start_offset) + ";goal_offset=" + offset(p.goal_offset);
   // Extension keys: only when set (kExtensionKeys).
   if (p.sample) s += ";sample=" + std::to_string(*p.sample);
+  if (p.controller != kDefaultController) s += ";controller=" + p.controller;
   for (const auto& [path, value] : p.world_set) s += ";set." + path + "=" + value;
   for (const auto& [name, value] : p.planner_params) s += ";planner." + name + "=" + value;
   for (const auto& [name, value] : p.controller_params) s += ";controller." + name + "=" + value;
@@ -47,6 +48,7 @@ void appendParamColumns(const EpisodeParams& p, nlohmann::ordered_json& row) {
   row["seed"] = p.seed;
   row["max_iterations"] = p.max_iterations;
   row["tracking"] = p.tracking;
+  row["controller"] = p.controller;
   row["timing"] = p.timing;
   row["realism"] = p.realism;
   row["noise_seed"] = p.noise_seed;

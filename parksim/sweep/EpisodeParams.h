@@ -57,6 +57,9 @@ struct EpisodeParams {
   /// Iteration budget; kAutoIterations ("auto") is the lot's (defaultIterationBudget).
   int max_iterations = PlanSetup{}.search.max_iterations;
   std::string tracking = toString(kDefaultTracking);  ///< "closed" or "open"
+  /// The controller of closed-loop tracking, by its registered name (Controller.h). In the
+  /// canonical text only when it is not the default (so ids of format 3 made before it stay).
+  std::string controller = kDefaultController;
   /// How the plan is timed ("time-optimal", "study").
   std::string timing = toString(PlanSetup{}.timing);
   /// The robot's realism: "world" (the world file's realism: section; ideal without one) or a
@@ -67,8 +70,8 @@ struct EpisodeParams {
   PoseOffset start_offset;  ///< applied to the world's start
   PoseOffset goal_offset;   ///< applied to the world's goal pose
 
-  // Extension keys: spelled in the canonical text only when set (see the top of this file). A
-  // controller's name would be one more, spelled when it is not the default ("tracking").
+  // Extension keys: spelled in the canonical text only when set (see the top of this file); the
+  // controller above too, when it is not the default.
   /// The draw of a sampled spec (`samples:`), 0, 1, ...; none for a grid.
   std::optional<std::uint64_t> sample;
   /// World values of `set:` axes: path -> canonical value text (SetValues.h), applied to the
@@ -84,8 +87,10 @@ struct EpisodeParams {
 };
 
 /// The extension keys of format 3, in the order the canonical text spells them: "sample",
-/// then "set.<path>" per world value, "planner.<name>", "controller.<name>" (each map sorted).
-inline constexpr const char* kExtensionKeys[] = {"sample", "set", "planner", "controller"};
+/// "controller" (its name, when not the default), then "set.<path>" per world value,
+/// "planner.<name>", "controller.<name>" (each map sorted).
+inline constexpr const char* kExtensionKeys[] = {"sample", "controller", "set.", "planner.",
+                                                 "controller."};
 
 /// "ids=3;world=...;planner=...;...": every core parameter but world_file, keys in a fixed
 /// order, numbers in their shortest round-trip form, an automatic budget as "auto"; then the

@@ -37,12 +37,17 @@ void applyRecord(const EpisodeRunDef& def, const std::string& dir, EpisodeReques
 
 }  // namespace
 
-nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const EpisodeRunDef& def) {
-  const Clock::time_point t0 = Clock::now();
+EpisodeRequest sweepEpisodeRequest(const SweepEpisode& episode) {
   static const ToleranceOverrides kNoOverrides;
-  EpisodeRequest request =
-      episodeRequest(episode.params, episodeWorld(episode.params, episode.world),
-                     episode.tolerance ? *episode.tolerance : kNoOverrides);
+  return episodeRequest(episode.params, episodeWorld(episode.params, episode.world),
+                        episode.tolerance ? *episode.tolerance : kNoOverrides, episode.components);
+}
+
+nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const EpisodeRunDef& def,
+                                       UserCodeWatch* watch) {
+  const Clock::time_point t0 = Clock::now();
+  EpisodeRequest request = sweepEpisodeRequest(episode);
+  request.watch = watch;
   applyRecord(def, def.episodes_dir + "/" + episode.id, request);
   const EpisodeOutcome out = runEpisodePipeline(request);
 
@@ -54,6 +59,16 @@ nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const Episod
   facts.episode_wall_s = secondsSince(t0);
   nlohmann::ordered_json row = episodeRow(episode.id, episode.params, facts);
   return row;
+}
+
+nlohmann::ordered_json failedEpisodeRow(const SweepEpisode& episode, const Verdict& verdict) {
+  EpisodeFacts facts;
+  facts.judged = true;
+  facts.status = toString(verdict.status);
+  facts.met = false;
+  facts.failure = verdict.reason;
+  facts.world_hash = episode.world->world.content_hash;
+  return episodeRow(episode.id, episode.params, facts);
 }
 
 nlohmann::ordered_json episodeRow(const std::string& id, const EpisodeParams& params,

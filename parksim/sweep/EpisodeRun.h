@@ -11,7 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "parksim/core/UserCodeWatch.h"
 #include "parksim/pipeline/EpisodeOutcome.h"
+#include "parksim/pipeline/Verdict.h"
 #include "parksim/results/EpisodeRecord.h"
 #include "parksim/sweep/EpisodeExpansion.h"
 #include "parksim/sweep/SweepSpec.h"
@@ -31,7 +33,17 @@ struct EpisodeRunDef {
 /// and the episode record read from its outcome (results/EpisodeRecord.h: the verdict, the
 /// plan's statistics, the measurements when it was driven, timing, world_hash). Throws Error
 /// when a file cannot be written.
-nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const EpisodeRunDef& def);
+/// `watch`, when given, is told when the episode's user code runs (a sweep's worker process,
+/// SweepRunner.h).
+nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const EpisodeRunDef& def,
+                                       UserCodeWatch* watch = nullptr);
+
+/// The episode's request, without the sweep's recording choices.
+EpisodeRequest sweepEpisodeRequest(const SweepEpisode& episode);
+
+/// The row of an episode whose user code crashed or hung its process (`verdict`: the
+/// planner_error or controller_error of pipeline/Verdict.h's userCodeVerdict): nothing measured.
+nlohmann::ordered_json failedEpisodeRow(const SweepEpisode& episode, const Verdict& verdict);
 
 /// A row: `id` (none when empty), the parameters and the record read from `facts`.
 nlohmann::ordered_json episodeRow(const std::string& id, const EpisodeParams& params,

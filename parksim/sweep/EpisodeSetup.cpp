@@ -56,11 +56,13 @@ std::shared_ptr<const World> episodeWorld(const EpisodeParams& p, const SweepWor
 }
 
 EpisodeRequest episodeRequest(const EpisodeParams& p, const std::shared_ptr<const World>& world,
-                              const ToleranceOverrides& tolerance) {
+                              const ToleranceOverrides& tolerance,
+                              const std::shared_ptr<const Components>& components) {
   requireOneOf("realism", p.realism, realismChoices());
   requireOneOf("timing", p.timing, supportedTimings());
   EpisodeRequest r;
   r.world = world;
+  r.components = components;
   if (!p.start_offset.isZero() || !p.goal_offset.isZero()) {
     auto moved = std::make_shared<World>(*world);
     Scenario& s = moved->scenario;
@@ -86,6 +88,7 @@ EpisodeRequest episodeRequest(const EpisodeParams& p, const std::shared_ptr<cons
   r.plan.search.record_tree = false;  // the tree is for figures; a sweep keeps statistics only
   // The planner's and the controller's own parameters; they validate them (ParamMap.h).
   r.plan.planner_params = p.planner_params;
+  r.controller = p.controller;
   r.controller_params = p.controller_params;
   r.plan.steering_kind = steeringKindFromString(p.steering);
   r.plan.timing = timingKindFromString(p.timing);
@@ -110,6 +113,7 @@ EpisodeParams episodeParamsOf(const EpisodeRequest& r) {
   p.realism = r.realism;
   p.noise_seed = r.noise_seed;
   p.planner_params = r.plan.planner_params;
+  p.controller = r.controller;
   p.controller_params = r.controller_params;
   return p;
 }

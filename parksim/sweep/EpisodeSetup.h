@@ -34,7 +34,8 @@ std::shared_ptr<const World> episodeWorld(const EpisodeParams& params, const Swe
 /// world reader would not accept it (outside the lot, too close to an obstacle).
 EpisodeRequest episodeRequest(const EpisodeParams& params,
                               const std::shared_ptr<const World>& world,
-                              const ToleranceOverrides& tolerance);
+                              const ToleranceOverrides& tolerance,
+                              const std::shared_ptr<const Components>& components = nullptr);
 
 /// The other way: the parameters a request states (a `parksim run`'s, for its records), with
 /// the world's scenario name and file. Offsets are zero (a run moves the start or goal in its

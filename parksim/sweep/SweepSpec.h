@@ -77,6 +77,16 @@ struct SampleDef {
   std::uint64_t seed = 0;
 };
 
+/// One entry of the planners or controllers axis.
+struct ComponentChoice {
+  std::string name;  ///< the registered name ("command" for `{command: [...]}`)
+  ParamMap params;   ///< its fixed parameters (ParamMap.h)
+  int line = 0;      ///< its line in the spec, for errors found when the spec expands
+  std::string path;  ///< where in the spec ("planners[1]"), likewise
+
+  friend bool operator==(const ComponentChoice&, const ComponentChoice&) = default;
+};
+
 struct SweepSpec {
   std::string source_path;  ///< the spec file, for messages
   std::string name;         ///< sweep name (job names, report titles)
@@ -86,10 +96,19 @@ struct SweepSpec {
   /// The same files as paths to open (resolved against the spec file's folder).
   std::vector<std::string> world_paths;
   int worlds_line = 0;  ///< line of `worlds:` in the spec, for errors found when loading them
+  /// `plugins:`: shared libraries whose planners and controllers the axes may name
+  /// (plugin/PluginLoader.h), as the spec names them and resolved against its folder.
+  std::vector<std::string> plugin_files;
+  std::vector<std::string> plugin_paths;
+  int plugins_line = 0;
 
   // Axes: every combination is one episode. Defaults: one value each, the library's
   // (EpisodeParams{}, which takes them from PlanSetup{} and EpisodeRequest{}).
-  std::vector<std::string> planners = {EpisodeParams{}.planner};
+  /// `planners:` and `controllers:`: each entry a registered name with its own fixed
+  /// parameters (a command's, or `params:`), which the set: axes' planner.NAME and
+  /// controller.NAME join.
+  std::vector<ComponentChoice> planners = {{EpisodeParams{}.planner, {}, 0, ""}};
+  std::vector<ComponentChoice> controllers = {{EpisodeParams{}.controller, {}, 0, ""}};
   std::vector<std::string> steerings = {EpisodeParams{}.steering};
   std::vector<bool> smoothing = {EpisodeParams{}.smooth};
   std::vector<std::uint64_t> seeds = {EpisodeParams{}.seed};

@@ -13,9 +13,13 @@
 #include <optional>
 #include <sstream>
 
+#include "parksim/command/CommandLine.h"
+#include "parksim/command/CommandPlanner.h"
+#include "parksim/core/ComponentRegistry.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/InputFile.h"
 #include "parksim/core/NumberFormat.h"
+#include "parksim/core/ParamSet.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/planner/TreePlanner.h"
 #include "parksim/realism/RealismDef.h"
@@ -387,15 +391,99 @@ void readSet(const YamlField& field, SweepSpec& spec) {
       for (const YamlField& item : items) axis.values.push_back(canonicalValue(item, scalar_only));
       rejectDuplicates(items, axis.values);
     }
-    // ISSUE 30 (the planner and controller registry): the parameters of planner.NAME and
-    // controller.NAME axes belong to the selected planner or controller, which validates them.
-    // Call its check here, per planner of the spec's planners: axis (and per controller), so
-    // that an unknown name or a bad value is refused at this line before anything runs. Until
-    // then, they reach the request's planner_params and controller_params unchecked.
+    // The parameters of planner.NAME and controller.NAME axes belong to the selected planner
+    // or controller, which validates them: when the spec expands, against the planners and
+    // controllers the spec's plugins bring (EpisodeExpansion.cpp, checkComponents).
     spec.set.push_back(std::move(axis));
   }
   std::sort(spec.set.begin(), spec.set.end(),
             [](const SetAxis& a, const SetAxis& b) { return a.path < b.path; });
+}
+
+// A planners: or controllers: entry: a registered name; {command: [program, arg, ...]} (the
+// `command` planner or controller, a program resolved against the spec's folder when it names a
+// path); or {name: NAME} / the command, with params: {NAME: value, ...}, its own parameters.
+ComponentChoice componentChoice(const YamlField& item, const std::string& base_dir,
+                                const char* what) {
+  ComponentChoice c;
+  c.line = item.line();
+  c.path = item.path();
+  if (!item.node().IsMap()) {
+    c.name = item.name();
+    if (!isComponentName(c.name)) item.fail("is not a " + std::string(what) + "'s name");
+    return c;
+  }
+  const YamlMap m = item.map({"name", "command", "params"});
+  const auto name = m.optional("name");
+  const auto command = m.optional("command");
+  if (name.has_value() == command.has_value()) {
+    item.fail("needs name: or command: (one of them)");
+  }
+  if (name) {
+    c.name = name->name();
+    if (!isComponentName(c.name)) name->fail("is not a " + std::string(what) + "'s name");
+  } else {
+    c.name = kCommandPlanner;  // the command planner and the command controller share it
+    std::vector<std::string> words;
+    for (const YamlField& w : command->node().IsSequence() ? command->listUpTo(kMaxCommandWords)
+                                                           : std::vector<YamlField>{*command}) {
+      words.push_back(w.text());
+    }
+    if (!command->node().IsSequence()) words = splitCommandLine(words.front(), command->path());
+    if (words.empty() || words.front().empty()) command->fail("names no program");
+    // A program given as a path is the spec's neighbour, as worlds and plugins are.
+    if (words.front().find('/') != std::string::npos && !fs::path(words.front()).is_absolute() &&
+        !base_dir.empty()) {
+      words.front() = (fs::path(base_dir) / words.front()).lexically_normal().string();
+    }
+    c.params[kCommandParam] = quoteCommandLine(words);
+  }
+  if (const auto params = m.optional("params")) {
+    const YamlMap pm(*params);
+    for (const std::string& key : pm.keys()) {
+      const YamlField v = *pm.optional(key);
+      if (!v.node().IsScalar()) v.fail("must be a number, true, false or a text");
+      if (key == kCommandParam && command) v.fail("is given by command:");
+      c.params[key] = canonicalParamText(v.text());
+    }
+  }
+  return c;
+}
+
+std::vector<ComponentChoice> componentsAxis(const YamlField& field, const std::string& base_dir,
+                                            const char* what) {
+  const std::vector<YamlField> items = axisItems(field);
+  std::vector<ComponentChoice> out;
+  for (const YamlField& item : items) {
+    ComponentChoice c = componentChoice(item, base_dir, what);
+    for (const ComponentChoice& earlier : out) {
+      if (earlier.name == c.name && earlier.params == c.params) {
+        item.fail("lists this " + std::string(what) + " a second time");
+      }
+    }
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+// plugins: paths of shared libraries, resolved against the spec's folder.
+void readPlugins(const YamlField& field, const std::string& base_dir, SweepSpec& spec) {
+  spec.plugins_line = field.line();
+  for (const YamlField& item : field.listUpTo(64)) {
+    const std::string written = item.text();
+    const fs::path path = fs::path(written).is_absolute() || base_dir.empty()
+                              ? fs::path(written)
+                              : fs::path(base_dir) / written;
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) item.fail("no such file: " + path.string());
+    const std::string normal = fs::absolute(path, ec).lexically_normal().string();
+    if (std::find(spec.plugin_paths.begin(), spec.plugin_paths.end(), normal) !=
+        spec.plugin_paths.end()) {
+      item.fail("lists " + written + " a second time");
+    }
+    spec.plugin_files.push_back(written);
+    spec.plugin_paths.push_back(normal);
+  }
 }
 
 void readSamples(const YamlField& field, SweepSpec& spec) {
@@ -422,9 +510,11 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
   if (format.text() != kFormat) {
     format.fail("expected \"" + std::string(kFormat) + "\", got \"" + format.text() + "\"");
   }
-  top.rejectUnknownKeys({"format", "name", "worlds", "planners", "steering", "smoothing", "seeds",
-                         "max_iterations", "tracking", "timing", "realism", "noise_seeds",
-                         "start_offsets", "goal_offsets", "set", "samples", "record", "tolerance"});
+  top.rejectUnknownKeys({"format",        "name",         "worlds",  "planners",
+                         "steering",      "smoothing",    "seeds",   "max_iterations",
+                         "tracking",      "timing",       "realism", "noise_seeds",
+                         "start_offsets", "goal_offsets", "set",     "samples",
+                         "record",        "tolerance",    "plugins", "controllers"});
 
   SweepSpec spec;
   spec.source_path = source_name;
@@ -432,11 +522,14 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
   spec.name = top.required("name").name();
   readWorlds(top.required("worlds"), base_dir, spec);
 
-  const std::vector<std::string> planner_names = builtInPlanners().names();
+  if (const auto f = top.optional("plugins")) readPlugins(*f, base_dir, spec);
   std::vector<std::string> steering_names;
   for (SteeringKind k : allSteeringKinds()) steering_names.emplace_back(toString(k));
   if (const auto f = top.optional("planners")) {
-    spec.planners = namesAxis(*f, planner_names, "planner");
+    spec.planners = componentsAxis(*f, base_dir, "planner");
+  }
+  if (const auto f = top.optional("controllers")) {
+    spec.controllers = componentsAxis(*f, base_dir, "controller");
   }
   if (const auto f = top.optional("steering")) {
     spec.steerings = namesAxis(*f, steering_names, "steering");
@@ -520,10 +613,10 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
   if (const auto f = top.optional("tolerance")) readTolerance(*f, spec.tolerance);
 
   const double count = static_cast<double>(spec.world_files.size()) * spec.planners.size() *
-                       spec.steerings.size() * spec.smoothing.size() * spec.seeds.size() *
-                       spec.max_iterations.size() * spec.tracking.size() * spec.timing.size() *
-                       spec.realism.size() * spec.noise_seeds.size() * spec.start_offsets.size() *
-                       spec.goal_offsets.size() * setCombinations(spec);
+                       spec.controllers.size() * spec.steerings.size() * spec.smoothing.size() *
+                       spec.seeds.size() * spec.max_iterations.size() * spec.tracking.size() *
+                       spec.timing.size() * spec.realism.size() * spec.noise_seeds.size() *
+                       spec.start_offsets.size() * spec.goal_offsets.size() * setCombinations(spec);
   if (count > static_cast<double>(kMaxEpisodes)) {
     root.fail("expands to " + std::to_string(static_cast<long long>(count)) +
               " episodes, more than the limit of " + std::to_string(kMaxEpisodes));

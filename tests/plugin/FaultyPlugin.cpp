@@ -17,6 +17,16 @@ using namespace parksim;
 struct NoDef {};
 void noParams(NoDef&, ParamSet&) {}
 
+// A controller's fault may be confined to the episodes that start beyond a point (a sweep with
+// one faulty episode among many: tests/sweep/SweepUserCodeTest.cpp).
+struct FaultDef {
+  double start_x_above_m = -1e9;  ///< the fault strikes when the episode's start x exceeds this
+};
+void faultParams(FaultDef& d, ParamSet& s) {
+  s.add("start_x_above_m", &d.start_x_above_m,
+        "the fault strikes only when the episode starts at a larger x, m", -1e9, 1e9);
+}
+
 enum class Fault { kThrows, kNan, kThroughWalls, kTooFast, kSegfault, kHangs, kThrowsOnReset };
 
 template <Fault F>
@@ -53,14 +63,16 @@ class FaultyPlanner : public Planner {
 template <Fault F>
 class FaultyController : public Controller {
  public:
-  explicit FaultyController(const NoDef&) {}
+  explicit FaultyController(const FaultDef& def) : def_(def), tracking_(TrackingDef{}) {}
   void reset(const ControllerSetup& setup) override {
+    tracking_.reset(setup);
     limit_ = setup.scenario.robot.max_wheel_speed_radps;
+    faulty_ = setup.scenario.start.x > def_.start_x_above_m;
     if constexpr (F == Fault::kThrowsOnReset) throw std::runtime_error("cannot read the plan");
   }
   WheelSpeeds command(const ControllerInput& in) override {
-    // Fine for the first second, then the fault.
-    if (in.t_s < 1.0) return in.plan_ended ? WheelSpeeds{} : in.feedforward;
+    // parksim's tracking for the first second, then the fault.
+    if (in.t_s < 1.0 || !faulty_) return tracking_.command(in);
     if constexpr (F == Fault::kThrows) throw std::runtime_error("lost track");
     if constexpr (F == Fault::kNan) return {std::numeric_limits<double>::quiet_NaN(), 0.0};
     if constexpr (F == Fault::kTooFast) return {2.0 * limit_, 2.0 * limit_};
@@ -69,11 +81,14 @@ class FaultyController : public Controller {
       for (volatile bool forever = true; forever;) {
       }
     }
-    return in.feedforward;
+    return tracking_.command(in);
   }
 
  private:
+  FaultDef def_;
+  TrackingController tracking_;
   double limit_ = 0.0;
+  bool faulty_ = true;
 };
 
 template <Fault F>
@@ -89,7 +104,7 @@ ControllerEntry controller(const char* name) {
   ControllerInfo info;
   info.name = name;
   info.description = "fails on purpose";
-  return controllerEntry<FaultyController<F>>(std::move(info), NoDef{}, &noParams);
+  return controllerEntry<FaultyController<F>>(std::move(info), FaultDef{}, &faultParams);
 }
 
 // parksim's tracking controller registered through the plugin API: the same commands as the

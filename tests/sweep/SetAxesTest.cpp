@@ -216,17 +216,21 @@ TEST(SetValues, TheGeneratorIsTheDocumentedOne) {
 // parameters, columns by their paths.
 TEST(SetAxes, PlannerAndControllerParametersReachTheRequest) {
   const std::vector<SweepEpisode> episodes =
-      episodesOf("set:\n  planner.step_m: [0.05, 0.1]\n  controller.gain: true\n");
+      episodesOf("set:\n  planner.step_m: [0.05, 0.1]\n  controller.damping: 0.7\n");
   ASSERT_EQ(episodes.size(), 2u);
   for (const SweepEpisode& e : episodes) {
     const EpisodeRequest r = episodeRequest(e.params, episodeWorld(e.params, e.world), {});
     EXPECT_EQ(r.plan.planner_params, e.params.planner_params);
-    EXPECT_EQ(r.controller_params, (ParamMap{{"gain", "true"}}));
+    EXPECT_EQ(r.controller_params, (ParamMap{{"damping", "0.7"}}));
     EXPECT_EQ(setColumnsOf(e.params),
-              (std::vector<std::string>{"planner.step_m", "controller.gain"}));
+              (std::vector<std::string>{"planner.step_m", "controller.damping"}));
     EXPECT_EQ(r.world.get(), &e.world->world);  // no world value: the shared world
   }
   EXPECT_NE(episodes[0].params.planner_params, episodes[1].params.planner_params);
+  // A parameter the planner or controller does not have is refused when the spec expands, as
+  // --planner-param would be: a typo is an error, not a default.
+  EXPECT_THROW((void)episodesOf("set:\n  controller.gain: [1, 2]\n"), Error);
+  EXPECT_THROW((void)episodesOf("set:\n  planner.step: [1, 2]\n"), Error);
 }
 
 }  // namespace
