@@ -97,6 +97,7 @@ from ._parksim import (  # noqa: F401,E402  (re-exported)
     read_trajectory,
     render_figure,
     run,
+    sweep,
     write_figures,
     write_png,
 )
@@ -198,5 +199,6 @@ __all__ = [
     "RunResult", "SimModelDef", "World", "cspace_slice", "encode_png", "episode_fields",
     "load_world", "plan",
     "read_png", "read_record", "read_trajectory", "render_figure", "render_frame", "run", "spaces",
+    "sweep",
     "write_figures", "write_png", "VecParkingEnv", "world_names", "worlds_dir",
 ]

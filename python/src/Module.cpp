@@ -16,4 +16,5 @@ PYBIND11_MODULE(_parksim, m) {
   bindRender(m);
   bindTasks(m);
   bindUserCode(m);
+  bindSweep(m);
 }

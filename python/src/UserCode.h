@@ -14,10 +14,13 @@ namespace parksim::python {
 /// `controller` are left in `options` as those names.
 void takeComponents(py::dict& options, EpisodeRequest& request);
 
-/// Registers a Python planner (an object with solve(problem)); returns its name.
-std::string addPythonPlanner(Components& components, const py::object& planner);
-/// Registers a Python controller (a callable, or an object with command() and maybe reset());
-/// returns its name.
-std::string addPythonController(Components& components, const py::object& controller);
+/// Registers a Python planner (an object with solve(problem)) under `name` (empty: its own
+/// name attribute, else its __name__ or class name); returns the name.
+std::string addPythonPlanner(Components& components, const py::object& planner,
+                             const std::string& name = "");
+/// Registers a Python controller (a callable, or an object with command() and maybe reset())
+/// likewise; returns its name.
+std::string addPythonController(Components& components, const py::object& controller,
+                                const std::string& name = "");
 
 }  // namespace parksim::python

@@ -265,12 +265,17 @@ void takeComponents(py::dict& options, EpisodeRequest& request) {
   request.components = std::move(components);
 }
 
-std::string addPythonPlanner(Components& components, const py::object& planner) {
+std::string addPythonPlanner(Components& components, const py::object& planner,
+                             const std::string& name) {
+  if (!name.empty() && !isComponentName(name)) {
+    throw py::value_error("planner name '" + name +
+                          "' must be 1 to 64 letters, digits, '-', '_' or '.'");
+  }
   if (!py::hasattr(planner, "solve")) {
     throw py::type_error("a planner is a name (str) or an object with solve(problem)");
   }
   PlannerEntry entry;
-  entry.info.name = componentName(planner, "planner");
+  entry.info.name = name.empty() ? componentName(planner, "planner") : name;
   entry.info.description = "a Python object";
   entry.info.runs_user_code = true;
   entry.info.uses_steering = true;
@@ -280,19 +285,24 @@ std::string addPythonPlanner(Components& components, const py::object& planner) 
       throw Error("a Python planner takes no planner_params: set its attributes");
     return std::make_unique<PyPlanner>(held);
   };
-  const std::string name = entry.info.name;
+  const std::string registered = entry.info.name;
   components.planners.add(std::move(entry));
-  return name;
+  return registered;
 }
 
-std::string addPythonController(Components& components, const py::object& controller) {
+std::string addPythonController(Components& components, const py::object& controller,
+                                const std::string& name) {
+  if (!name.empty() && !isComponentName(name)) {
+    throw py::value_error("controller name '" + name +
+                          "' must be 1 to 64 letters, digits, '-', '_' or '.'");
+  }
   if (!PyCallable_Check(controller.ptr()) && !py::hasattr(controller, "command")) {
     throw py::type_error(
         "a controller is a name (str), a callable (observation) -> (left, right), or an object "
         "with command(observation) and optionally reset(setup)");
   }
   ControllerEntry entry;
-  entry.info.name = componentName(controller, "controller");
+  entry.info.name = name.empty() ? componentName(controller, "controller") : name;
   entry.info.description = "a Python object";
   entry.info.runs_user_code = true;
   auto held = std::make_shared<Held>(controller);
@@ -302,9 +312,9 @@ std::string addPythonController(Components& components, const py::object& contro
     }
     return std::make_unique<PyController>(held);
   };
-  const std::string name = entry.info.name;
+  const std::string registered = entry.info.name;
   components.controllers.add(std::move(entry));
-  return name;
+  return registered;
 }
 
 void bindUserCode(py::module_& m) {

@@ -11,6 +11,9 @@ import sys
 SOURCE_DIR = pathlib.Path(os.environ.get("PARKSIM_SOURCE_DIR",
                                          pathlib.Path(__file__).resolve().parents[2]))
 BUILT = os.environ.get("PYTHONPATH", "")
+# The entry of PYTHONPATH that holds the built package (conftest.py may put Gymnasium's first).
+BUILT_DIR = next((p for p in BUILT.split(os.pathsep) if (pathlib.Path(p) / "parksim").is_dir()),
+                 BUILT.split(os.pathsep)[0])
 
 
 def python(code, cwd, pythonpath, *flags):
@@ -34,7 +37,7 @@ def test_the_repository_root_with_the_built_module_imports_the_module():
                "print(parksim.load_world('worlds/head_in.yaml').name)", SOURCE_DIR, BUILT)
     assert p.returncode == 0, p.stderr
     module_file, world = p.stdout.split()
-    assert pathlib.Path(module_file).parent == pathlib.Path(BUILT.split(os.pathsep)[0]) / "parksim"
+    assert pathlib.Path(module_file).parent == pathlib.Path(BUILT_DIR) / "parksim"
     assert world == "head_in"
 
 
