@@ -410,7 +410,10 @@ ComponentChoice componentChoice(const YamlField& item, const std::string& base_d
   c.path = item.path();
   if (!item.node().IsMap()) {
     c.name = item.name();
-    if (!isComponentName(c.name)) item.fail("is not a " + std::string(what) + "'s name");
+    if (!isComponentName(c.name)) {
+      item.fail("'" + c.name + "' is not a " + std::string(what) +
+                "'s name (1 to 64 letters, digits, '-', '_' or '.')");
+    }
     return c;
   }
   const YamlMap m = item.map({"name", "command", "params"});
@@ -421,7 +424,10 @@ ComponentChoice componentChoice(const YamlField& item, const std::string& base_d
   }
   if (name) {
     c.name = name->name();
-    if (!isComponentName(c.name)) name->fail("is not a " + std::string(what) + "'s name");
+    if (!isComponentName(c.name)) {
+      name->fail("'" + c.name + "' is not a " + std::string(what) +
+                 "'s name (1 to 64 letters, digits, '-', '_' or '.')");
+    }
   } else {
     c.name = kCommandPlanner;  // the command planner and the command controller share it
     std::vector<std::string> words;
