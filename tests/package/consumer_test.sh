@@ -52,6 +52,48 @@ cmake -S "$tmp/cli-probe" -B "$tmp/cli-probe/build" "${generator[@]}" "${launche
 cmake --build "$tmp/cli-probe/build" >/dev/null
 test "$("$tmp/cli-probe/build/probe")" = 'a\x09b'
 
+# A plugin project built against the installed package (examples/plugins): its planner and
+# controller run in plan, run, a sweep and parksim-bench (docs/your-code.md).
+parksim=$tmp/prefix/bin/parksim
+cmake -S "$src/examples/plugins" -B "$tmp/plugins" "${generator[@]}" "${launcher[@]}" \
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$tmp/prefix" >/dev/null
+cmake --build "$tmp/plugins" >/dev/null
+plugin=$tmp/plugins/libparksim_example_plugins.so
+"$parksim" plan "$src/worlds/parallel.yaml" --plugin "$plugin" --planner example -q --out "$tmp/p"
+"$parksim" run "$src/worlds/parallel.yaml" --plugin "$plugin" --planner example \
+  --controller pure-pursuit -q --out "$tmp/r"
+grep -q '"provenance.plugins": "parksim-examples 1.0.0 ' "$tmp/r/metrics.json"
+cat >"$tmp/spec.yaml" <<SPEC
+format: parksim-sweep/1
+name: plugin
+worlds: [$src/worlds/parallel.yaml]
+plugins: [$plugin]
+planners: [time-a-star, example]
+controllers: [tracking, pure-pursuit]
+SPEC
+"$parksim" sweep "$tmp/spec.yaml" --out "$tmp/sweep" >/dev/null
+test "$(wc -l <"$tmp/sweep/results.jsonl")" -eq 4
+if [ -x "$build/bench/parksim-bench" ]; then
+  "$build/bench/parksim-bench" "$src/worlds/parallel.yaml" --plugin "$plugin" \
+    --planners example,time-a-star --seeds 2 -q >/dev/null
+fi
+
+# Your controller's CI in ten minutes (examples/controller-ci): a project of its own builds its
+# controller, stores a baseline, passes against it, and fails (exit 4) a worse controller.
+cp -r "$src/examples/controller-ci" "$tmp/ci"
+rm -rf "$tmp/ci/build" "$tmp/ci/out" "$tmp/ci/baseline"
+export PARKSIM=$parksim CMAKE_PREFIX_PATH=$tmp/prefix
+"$tmp/ci/ci.sh" refresh >/dev/null
+"$tmp/ci/ci.sh" check >/dev/null
+grep -q '<testsuite' "$tmp/ci/out/sweep.xml"
+# The same controller with its corrections turned down: a regression.
+sed 's/^controllers: .*/controllers: [{name: my-controller, params: {speed_gain: 0, heading_gain: 0.2, lateral_gain: 0}}]/' \
+  "$tmp/ci/sweep.yaml" >"$tmp/ci/worse.yaml"
+status=0
+SPEC=worse.yaml "$tmp/ci/ci.sh" check >/dev/null || status=$?
+test "$status" -eq 4
+unset PARKSIM CMAKE_PREFIX_PATH
+
 # The version file refuses another minor version.
 cat >"$tmp/version.cmake" <<'CMAKE'
 find_package(parksim 0.4 QUIET)
