@@ -94,7 +94,7 @@ void bindPlan(py::module_& m) {
 Options (keywords; the defaults are the library's, the same as `parksim plan`'s and a sweep's):
   planner (a registered name: time-a-star, hybrid-a-star, rrt, rrt-goal-connect, rrt-star,
   rrt-connect, or a plugin's), planner_params (a dict of the planner's own parameters, e.g.
-  {"goal_bias": 0.1}; parksim.planners() lists them), steering (balkcom-mason, reeds-shepp,
+  {"goal_bias": 0.1}; `parksim list` prints them), steering (balkcom-mason, reeds-shepp,
   rotate-translate-rotate, move-to-pose), any SearchDef field (seed, max_iterations: 0 for
   the lot's budget, smooth, smoothing_attempts, ...), and any PlanSetup field (timing, feedback_headroom, goal_tolerance_fraction,
   move_to_pose={...}, reeds_shepp={...}, validation={...}). parksim.PlanSetup() shows every

@@ -132,11 +132,17 @@ def test_yaml_block_is_valid(where, text, tmp_path):
     if re.search(r"^(stages|jobs):", text, re.MULTILINE):
         pytest.skip("a CI job, not parksim's: test_ci_examples.py parses it")
     if "format: parksim-sweep/1" in text:
-        # The spec's worlds are relative to the spec: put it where worlds/sweeps/ specs live.
-        (tmp_path / "sweeps").mkdir()
+        # The spec's paths are relative to the spec: put it where worlds/sweeps/ specs live, in
+        # a tree like the repository's (worlds/, examples/, and build/ for plugins).
+        root = tmp_path / "repo"
+        (root / "worlds" / "sweeps").mkdir(parents=True)
         for world in (SOURCE_DIR / "worlds").glob("*.yaml"):
-            shutil.copy(world, tmp_path / world.name)
-        spec = tmp_path / "sweeps" / "doc.yaml"
+            shutil.copy(world, root / "worlds" / world.name)
+        (root / "examples").symlink_to(SOURCE_DIR / "examples")
+        exe = os.environ.get("PARKSIM_EXE")
+        if exe:
+            (root / "build").symlink_to(pathlib.Path(exe).resolve().parents[1])
+        spec = root / "worlds" / "sweeps" / "doc.yaml"
         spec.write_text(text + "\n", encoding="utf-8")
         # --slurm expands and checks the whole spec but runs nothing.
         code, _, err = run_cli("sweep", spec, "--slurm", "--out", tmp_path / "out")
