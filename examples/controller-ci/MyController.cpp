@@ -3,10 +3,10 @@
 // can vary (`set: {controller.heading_gain: [...]}`). Wheel speeds are scaled into the robot's
 // limit.
 
-#include <algorithm>
 #include <cmath>
 
 #include <parksim/plugin/PluginApi.h>
+#include <parksim/sim/TrackingController.h>
 
 namespace {
 
@@ -36,13 +36,8 @@ class MyController : public parksim::Controller {
     const Twist cmd{
         v + def_.speed_gain * ex,
         in.reference_twist.omega_radps + def_.heading_gain * eth + def_.lateral_gain * v * ey};
-    WheelSpeeds w = toWheelSpeeds(cmd, robot_);
-    const double largest = std::max(std::abs(w.left_radps), std::abs(w.right_radps));
-    if (largest > robot_.max_wheel_speed_radps) {
-      const double k = robot_.max_wheel_speed_radps / largest;
-      w = {w.left_radps * k, w.right_radps * k};
-    }
-    return w;
+    // Both wheels scaled down together when one is beyond the limit: the curvature is kept.
+    return limitWheelSpeeds(toWheelSpeeds(cmd, robot_), robot_);
   }
 
  private:

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "ExamplePlugins.h"
+#include "parksim/sim/TrackingController.h"
 
 namespace example {
 
@@ -52,13 +53,8 @@ class PurePursuit : public parksim::Controller {
         cmd.omega_radps = cmd.v_mps * 2.0 * ty / d2;
       }
     }
-    WheelSpeeds w = toWheelSpeeds(cmd, robot_);
-    const double largest = std::max(std::abs(w.left_radps), std::abs(w.right_radps));
-    if (largest > robot_.max_wheel_speed_radps) {
-      const double k = robot_.max_wheel_speed_radps / largest;
-      w = {w.left_radps * k, w.right_radps * k};
-    }
-    return w;
+    // Both wheels scaled down together when one is beyond the limit: the curvature is kept.
+    return limitWheelSpeeds(toWheelSpeeds(cmd, robot_), robot_);
   }
 
  private:
