@@ -65,7 +65,7 @@ PlannerEntry hybridAStarPlanner() {
   PlannerInfo info;
   info.name = "hybrid-a-star";
   info.description = "Hybrid A* with Reeds-Shepp curves, then smoothed and timed";
-  info.default_budget = [](const Scenario& s) { return lotScaledBudget(20000, s.lot); };
+  info.default_budget = [](const Scenario& s) { return lotScaledBudget(20000, s); };
   return plannerEntry<HybridAStarPlanner>(std::move(info), HybridAStarDef{}, &bind);
 }
 
