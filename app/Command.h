@@ -6,11 +6,13 @@
 // parksim::Error, which main() prints as one line.
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "parksim/cli/Program.h"
+#include "parksim/core/UserCodeWatch.h"
 #include "parksim/pipeline/Verdict.h"
 
 namespace parksim::app {
@@ -26,6 +28,13 @@ int exitCodeFor(EpisodeStatus status);
 /// what failed ("plan_invalid: at t = ...", "controller_error: controller x threw ...").
 std::string verdictLine(const Verdict& verdict);
 
+/// Runs `body` in a watched child process when `isolate` (the request runs user code), so that
+/// user code that crashes or hangs ends as a verdict: "PROGRAM: planner_error: ..." on stderr,
+/// and nothing returned (the caller commits nothing and exits kExitUserCodeFailed). Otherwise
+/// body(nullptr). `body` returns the exit code; it must not commit the output directory.
+std::optional<int> runWatched(const char* program, bool isolate, const UserCodeLimits& limits,
+                              const std::function<int(UserCodeWatch*)>& body);
+
 using cli::OutputOptions;  // -q, -v and --progress, which every command takes
 
 using CommandRunner = std::function<int(const OutputOptions&)>;
@@ -39,5 +48,6 @@ CommandRunner setupReportCommand(CLI::App& sub);
 CommandRunner setupCompareCommand(CLI::App& sub);
 CommandRunner setupVerifyCommand(CLI::App& sub);
 CommandRunner setupListCommand(CLI::App& sub);
+CommandRunner setupImportCommand(CLI::App& sub);
 
 }  // namespace parksim::app

@@ -6,6 +6,7 @@
 // Exit status: 0 no regression, 4 regression, 2 bad input.
 
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -14,8 +15,10 @@
 #include "parksim/cli/TerminalText.h"
 #include "parksim/cli/Validators.h"
 #include "parksim/compare/ComparedTable.h"
+#include "parksim/compare/ComparisonJson.h"
 #include "parksim/compare/ComparisonReport.h"
 #include "parksim/core/AtomicFile.h"
+#include "parksim/pages/ComparisonPage.h"
 
 namespace parksim::app {
 
@@ -30,7 +33,15 @@ struct CompareOptions {
   double max_success_drop_percent = 100.0 * CompareDef{}.max_success_drop;
   std::string markdown;
   std::string junit;
+  std::string html;
 };
+
+// The sweep directory of a table as given: the directory itself, or a results.jsonl's folder.
+std::string sweepDir(const std::string& table) {
+  if (std::filesystem::is_directory(table)) return table;
+  const std::string folder = std::filesystem::path(table).parent_path().string();
+  return folder.empty() ? "." : folder;
+}
 
 int runCompare(CompareOptions o) {
   o.def.max_increase = o.max_increase_percent / 100.0;
@@ -51,6 +62,13 @@ int runCompare(CompareOptions o) {
   const std::string markdown = comparisonMarkdown(t, o.def, sources);
   if (!o.markdown.empty()) writeFileAtomically(o.markdown, markdown);
   if (!o.junit.empty()) writeJUnitFile(o.junit, comparisonJUnit(t, o.def));
+  if (!o.html.empty()) {
+    ComparisonPage page;
+    page.comparison = comparisonJson(t, o.def, sources, baseline.rows, candidate.rows);
+    page.baseline_dir = sweepDir(o.baseline);
+    page.candidate_dir = sweepDir(o.candidate);
+    writeComparisonPage(o.html, page);
+  }
   std::printf("%s", cli::printableLines(markdown).c_str());
   return t.regression() ? kExitToleranceNotMet : kExitOk;
 }
@@ -99,6 +117,9 @@ CommandRunner setupCompareCommand(CLI::App& sub) {
   cli::addReportFileOption(sub, "--junit", opt->junit,
                            "also write a JUnit XML report: a suite per group, a test case per "
                            "metric, failed where it regressed");
+  cli::addReportFileOption(sub, "--html", opt->html,
+                           "also write the comparison as a page that opens from file:// "
+                           "(groups, intervals, p-values, links to the paired episodes' pages)");
   return [opt](const OutputOptions&) { return runCompare(*opt); };
 }
 

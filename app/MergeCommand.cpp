@@ -15,8 +15,8 @@
 #include "app/Command.h"
 #include "parksim/cli/TerminalText.h"
 #include "parksim/core/Error.h"
+#include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/Merge.h"
-#include "parksim/sweep/ResultsTable.h"
 
 namespace parksim::app {
 

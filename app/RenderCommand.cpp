@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/Command.h"
+#include "parksim/cli/ComponentOptions.h"
 #include "parksim/cli/FiguresOption.h"
 #include "parksim/cli/GlBackendOption.h"
 #include "parksim/cli/OutputDir.h"
@@ -13,6 +14,7 @@
 #include "parksim/cli/TerminalText.h"
 #include "parksim/cli/Validators.h"
 #include "parksim/cli/WorldOptions.h"
+#include "parksim/command/CommandPlanner.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
@@ -37,12 +39,16 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     std::vector<double> steer_target;
     std::string figures = "all";
     cli::PlanCliOptions plan;
+    cli::PluginOptions plugins;
+    cli::UserCodeOptions user_code;
     cli::WorldOverrideOptions world_overrides;
     cli::GlBackendOption gl_backend;
   };
   auto opt = std::make_shared<Options>();
   sub.add_option("world", opt->world, "world file (YAML, see docs/world-format.md)")->required();
   opt->plan.addTo(sub);
+  opt->plugins.addTo(sub);
+  opt->user_code.addTo(sub);
   opt->world_overrides.addTo(sub);
   // render draws both of the study's planners unless --planner names one: no single default.
   CLI::Option* planner = sub.get_option("--planner");
@@ -87,17 +93,25 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     FigureInputs inputs;
     // Without --planner both of the study's planners are drawn (its Figs. 7 and 8).
     std::vector<std::string> planners = {opt->plan.planner};
-    if (app->count("--planner") == 0) planners = {"rrt", "rrt-goal-connect"};
+    if (!opt->plan.planner_command.empty()) {
+      planners = {kCommandPlanner};
+    } else if (app->count("--planner") == 0) {
+      planners = {"rrt", "rrt-goal-connect"};
+    }
     // Every input is read and checked before --out is touched.
     std::vector<EpisodeRequest> requests;
+    const std::shared_ptr<const Components> components = opt->plugins.load();
+    bool user_code = false;
     for (const std::string& name : planners) {
       cli::PlanCliOptions options = opt->plan;
       options.planner = name;
       EpisodeRequest& r = requests.emplace_back();
       r.world = world;
       r.plan = options.toSetup();
+      r.components = components;
       r.drive = false;
       checkEpisodeRequest(r);
+      user_code = user_code || runsUserCode(r);
     }
     if (!opt->executed.empty()) inputs.tracking = readTrackingRecord(opt->executed);
     std::optional<Pose2> target;
@@ -106,23 +120,35 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
     }
 
     cli::OutputDir out(opt->out);
-    std::string report;
-    for (std::size_t i = 0; i < planners.size(); ++i) {
-      const EpisodeOutcome outcome = runEpisodePipeline(requests[i]);
-      const std::string json_name = "/plan_" + planners[i] + ".json";
-      writeFileAtomically(out.path() + json_name, jsonText(outcome.plan_summary));
-      report += cli::printable(planners[i] + ": " + toString(outcome.plan->status) + " (" +
-                               opt->out + json_name + ")") +
-                "\n";
-      inputs.plans.push_back(planFigure(scenario, outcome.plan_setup, *outcome.plan));
-    }
-    inputs.steering = steeringExample(scenario, target);
-    for (const std::string& path : writeFigures(scenario, inputs, def, out.path() + "/figures")) {
-      report += cli::printable("wrote " + out.shown(path)) + "\n";
-    }
-    out.commit();
-    std::fputs(report.c_str(), stdout);
-    return 0;
+    // A user's planner runs in a watched child: its crash or hang is a verdict.
+    const std::optional<int> code =
+        runWatched("parksim render", user_code, opt->user_code.limits, [&](UserCodeWatch* watch) {
+          std::string report;
+          for (std::size_t i = 0; i < planners.size(); ++i) {
+            requests[i].watch = watch;
+            const EpisodeOutcome outcome = runEpisodePipeline(requests[i]);
+            if (!outcome.plan) {  // a user's planner failed (planner_error): nothing to draw
+              std::fprintf(stderr, "parksim render: %s\n",
+                           cli::printable(verdictLine(outcome.verdict)).c_str());
+              return exitCodeFor(outcome.verdict.status);
+            }
+            const std::string json_name = "/plan_" + planners[i] + ".json";
+            writeFileAtomically(out.path() + json_name, jsonText(outcome.plan_summary));
+            report += cli::printable(planners[i] + ": " + toString(outcome.plan->status) + " (" +
+                                     opt->out + json_name + ")") +
+                      "\n";
+            inputs.plans.push_back(planFigure(scenario, outcome.plan_setup, *outcome.plan));
+          }
+          inputs.steering = steeringExample(scenario, target);
+          for (const std::string& path :
+               writeFigures(scenario, inputs, def, out.path() + "/figures")) {
+            report += cli::printable("wrote " + out.shown(path)) + "\n";
+          }
+          std::fputs(report.c_str(), stdout);
+          return 0;
+        });
+    if (code == kExitOk) out.commit();
+    return code.value_or(kExitUserCodeFailed);
   };
 }
 

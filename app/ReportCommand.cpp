@@ -2,6 +2,8 @@
 // in DIR/report/ (or --out): summary.md and summary.csv per world x planner x realism preset,
 // box plots and a success matrix drawn by parksim's renderer, and one OMPL benchmark log per
 // world (ompl_<world>.log, with the cost-over-time progress) for Planner Arena.
+// DIR/report/index.html (or --out) is the same as a page (pages/SweepPage.h): every episode in a
+// table that sorts and filters, per-axis summaries, kept episodes linked to their own pages.
 // Every row's seal is checked (a changed row stops the report, naming its file and line); rows
 // of other world contents or builds are flagged on stderr and in summary.md.
 // Exit status: 0 when written, 2 on bad input.
@@ -19,10 +21,13 @@
 #include "parksim/cli/TerminalText.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
+#include "parksim/pages/JUnitPageLinks.h"
+#include "parksim/pages/SweepPage.h"
+#include "parksim/pipeline/Verdict.h"
+#include "parksim/results/JUnitReport.h"
 #include "parksim/results/OmplLog.h"
+#include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/Report.h"
-#include "parksim/sweep/ResultsJUnit.h"
-#include "parksim/sweep/ResultsTable.h"
 #include "parksim/sweep/SweepManifest.h"
 
 namespace parksim::app {
@@ -105,6 +110,25 @@ std::vector<std::string> writeOmplLogs(const std::vector<Json>& rows, const std:
   return written;
 }
 
+// DIR/report/index.html: the table as a page, linking the episodes' pages (relative to `out`,
+// where the report ends up, not the staging directory it is written into).
+std::string writeIndexPage(const std::string& dir, const std::string& out, const std::string& name,
+                           const std::vector<Json>& rows, const std::vector<std::string>& mixes,
+                           const std::string& staged) {
+  SweepPage page;
+  page.title = name;
+  page.source = dir;
+  page.rows = &rows;
+  page.axes = parameterColumns(rows);
+  for (const EpisodeStatus s : allEpisodeStatuses()) page.statuses.push_back(toString(s));
+  page.episodes_href = relativeHref(out, dir + "/episodes");
+  page.kept = keptEpisodePages(dir + "/episodes", rows);
+  page.warnings = mixes;
+  const std::string path = staged + "/index.html";
+  writeSweepPage(path, page);
+  return path;
+}
+
 int runReport(const std::string& dir, std::string out, const std::string& junit) {
   const std::string path = dir + "/results.jsonl";
   if (!std::filesystem::exists(path))
@@ -126,6 +150,7 @@ int runReport(const std::string& dir, std::string out, const std::string& junit)
   std::vector<std::string> written = writeReport(rows, name, staged.path());
   const std::vector<std::string> logs = writeOmplLogs(rows, name, staged.path());
   written.insert(written.end(), logs.begin(), logs.end());
+  written.push_back(writeIndexPage(dir, out, name, rows, mixes, staged.path()));
   std::string summary;
   {
     std::FILE* f = std::fopen((staged.path() + "/summary.md").c_str(), "r");
@@ -145,7 +170,9 @@ int runReport(const std::string& dir, std::string out, const std::string& junit)
   }
   staged.commit();
   if (!junit.empty()) {
-    writeJUnitFile(junit, resultsJUnit(rows, name));
+    JUnitReport report = episodesJUnit(rows, name, rowGroupNameOf);
+    linkJUnitToPages(report, junit, out + "/index.html", dir + "/episodes");
+    writeJUnitFile(junit, report);
     written.push_back(junit);
   }
   std::printf("%s\n", printableLines(summary).c_str());

@@ -25,11 +25,13 @@
 #include "parksim/cli/WorldOptions.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/pipeline/RealisationsJUnit.h"
 #include "parksim/realism/Distribution.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/renders/PngEncoder.h"
+#include "parksim/results/JUnitReport.h"
 #include "parksim/results/TrajectoryFile.h"
+#include "parksim/sweep/EpisodeRun.h"
+#include "parksim/sweep/Report.h"
 
 namespace parksim::app {
 
@@ -45,6 +47,7 @@ struct RunOptions {
   cli::PlanCliOptions plan;
   cli::PluginOptions plugins;
   cli::ControllerOptions controller;
+  cli::UserCodeOptions user_code;
   cli::WorldOverrideOptions world_overrides;
   bool frames = false;
   std::string figures;  // empty: all with --frames, else none
@@ -198,15 +201,15 @@ void printEpisode(const EpisodeOutcome& out, const std::string& dir) {
   std::printf(
       "%s-loop episode on %s: tracking error max %.3f mm (rms %.3f mm), final %.3f mm / %.3f "
       "deg\nfinal pose %.3f mm / %.3f deg from the goal%s; %d contact event%s; %.2f s "
-      "simulated in %.3f s (%.0fx real time)\nwrote %s/trajectory.csv, %s/%s and "
-      "%s/metrics.json\n",
+      "simulated in %.3f s (%.0fx real time)\nwrote %s/trajectory.csv, %s/%s, "
+      "%s/metrics.json and %s/report.html (open it in a browser)\n",
       toString(m.tracking), printable(out.world->scenario.name).c_str(), m.max_pos_err_m * 1e3,
       m.rms_pos_err_m * 1e3, m.final_pos_err_m * 1e3, m.final_heading_err_deg,
       m.goal_pos_err_m * 1e3, m.goal_heading_err_deg,
       m.goal_reached ? " (within tolerance)" : " (outside tolerance)", m.contacts,
       m.contacts == 1 ? "" : "s", m.sim_time_s, m.wall_time_s,
       m.wall_time_s > 0.0 ? m.sim_time_s / m.wall_time_s : 0.0, dir.c_str(), dir.c_str(),
-      written(out, "executed.").c_str(), dir.c_str());
+      written(out, "executed.").c_str(), dir.c_str(), dir.c_str());
   const ExecutionDef& exec = out.execution;
   if (exec.realism.active()) {
     std::printf(
@@ -271,6 +274,43 @@ void printVerdict(const EpisodeOutcome& out) {
                printable(verdictLine(out.verdict)).c_str());
 }
 
+// Plans (or takes the plan), drives, writes into `out` (not committed) and prints: the episode
+// as `parksim run` runs it, in this process or a watched child.
+int runEpisodeCommand(const RunOptions& o, EpisodeRequest& request, UserCodeWatch* watch,
+                      const cli::OutputDir& out, const OutputOptions& output) {
+  request.watch = watch;
+  const bool show = cli::progressWanted(output.progress, output.quiet);
+  const Scenario& scenario = request.world->scenario;
+  const PlanSetup setup = resolvedPlanSetup(request.plan, scenario, componentsOf(request).planners);
+  cli::Progress planning(std::string("planning (") + setup.planner + ")",
+                         std::max(1, setup.search.max_iterations), show && !request.given_plan);
+  request.progress.plan = cli::planProgress(planning);
+  std::unique_ptr<cli::Progress> frames;
+  request.progress.frames = [&frames, show](long done, long expected) {
+    if (!frames) frames = std::make_unique<cli::Progress>("frames", expected, show);
+    frames->update(done);
+  };
+  const EpisodeOutcome outcome = runEpisodePipeline(request);
+  planning.finish();
+  if (frames) frames->finish();
+  if (!o.junit.empty()) {
+    writeJUnitFile(o.junit, episodesJUnit(realisationRecords(request, outcome),
+                                          "parksim run " + scenario.name, rowGroupNameOf));
+  }
+  const std::string dir = printable(o.out);
+  if (outcome.driven()) {
+    printEpisode(outcome, dir);
+    if (outcome.recording)
+      std::printf("%s\n", cli::printableLines(out.shown(outcome.recording->message)).c_str());
+    int figures = 0;
+    for (const std::string& f : outcome.files) figures += f.rfind("figures/", 0) == 0 ? 1 : 0;
+    if (figures > 0) std::printf("%d figures: %s/figures/\n", figures, dir.c_str());
+    if (outcome.realisations.size() > 1) printRealisations(outcome);
+  }
+  printVerdict(outcome);
+  return exitCodeFor(outcome.verdict.status);
+}
+
 }  // namespace
 
 CommandRunner setupRunCommand(CLI::App& sub) {
@@ -279,6 +319,7 @@ CommandRunner setupRunCommand(CLI::App& sub) {
   opt->plan.addTo(sub);
   opt->plugins.addTo(sub);
   opt->controller.addTo(sub);
+  opt->user_code.addTo(sub);
   opt->world_overrides.addTo(sub);
   sub.add_option("--out", opt->out, "output directory")->capture_default_str();
   addEpisodeOptions(sub, *opt);
@@ -291,35 +332,12 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     checkEpisodeRequest(request);
     cli::OutputDir out(opt->out);
     request.out_dir = out.path();
-    const bool show = cli::progressWanted(output.progress, output.quiet);
-    const Scenario& scenario = request.world->scenario;
-    const PlanSetup setup =
-        resolvedPlanSetup(request.plan, scenario, componentsOf(request).planners);
-    cli::Progress planning(std::string("planning (") + setup.planner + ")",
-                           std::max(1, setup.search.max_iterations), show && !request.given_plan);
-    request.progress.plan = cli::planProgress(planning);
-    std::unique_ptr<cli::Progress> frames;
-    request.progress.frames = [&frames, show](long done, long expected) {
-      if (!frames) frames = std::make_unique<cli::Progress>("frames", expected, show);
-      frames->update(done);
-    };
-    const EpisodeOutcome outcome = runEpisodePipeline(request);
-    planning.finish();
-    if (frames) frames->finish();
-    out.commit();
-    if (!opt->junit.empty()) writeJUnitFile(opt->junit, realisationsJUnit(outcome));
-    const std::string dir = printable(opt->out);
-    if (outcome.driven()) {
-      printEpisode(outcome, dir);
-      if (outcome.recording)
-        std::printf("%s\n", cli::printableLines(out.shown(outcome.recording->message)).c_str());
-      int figures = 0;
-      for (const std::string& f : outcome.files) figures += f.rfind("figures/", 0) == 0 ? 1 : 0;
-      if (figures > 0) std::printf("%d figures: %s/figures/\n", figures, dir.c_str());
-      if (outcome.realisations.size() > 1) printRealisations(outcome);
-    }
-    printVerdict(outcome);
-    return exitCodeFor(outcome.verdict.status);
+    // A user's planner or controller runs in a watched child: its crash or hang is a verdict.
+    const std::optional<int> code = runWatched(
+        "parksim run", runsUserCode(request), opt->user_code.limits,
+        [&](UserCodeWatch* watch) { return runEpisodeCommand(*opt, request, watch, out, output); });
+    if (code) out.commit();
+    return code.value_or(kExitUserCodeFailed);
   };
 }
 

@@ -23,18 +23,22 @@
 #include <thread>
 
 #include "app/Command.h"
+#include "parksim/cli/ComponentOptions.h"
 #include "parksim/cli/Progress.h"
 #include "parksim/cli/ReportFileOption.h"
 #include "parksim/cli/TerminalText.h"
 #include "parksim/core/AtomicFile.h"
+#include "parksim/core/ChildProcess.h"
 #include "parksim/core/Error.h"
+#include "parksim/results/JUnitReport.h"
+#include "parksim/results/ResultsTable.h"
+#include "parksim/results/RowSeal.h"
 #include "parksim/sweep/EpisodeExpansion.h"
-#include "parksim/sweep/ResultsJUnit.h"
-#include "parksim/sweep/ResultsTable.h"
-#include "parksim/sweep/RowSeal.h"
+#include "parksim/sweep/Report.h"
 #include "parksim/sweep/Shard.h"
 #include "parksim/sweep/SlurmResubmit.h"
 #include "parksim/sweep/SlurmScript.h"
+#include "parksim/sweep/SweepJob.h"
 #include "parksim/sweep/SweepManifest.h"
 #include "parksim/sweep/SweepRunner.h"
 #include "parksim/sweep/SweepSpecReader.h"
@@ -63,6 +67,9 @@ struct SweepOptions {
   // what sweep.json recorded of the first submission.
   std::set<std::string> slurm_given;
   std::string junit;
+  bool list = false;               // print the episodes and run nothing
+  cli::PluginOptions plugins;      // besides the spec's plugins:
+  cli::UserCodeOptions user_code;  // the limits on user code in the worker processes
 };
 
 std::string duration(double s) {
@@ -110,6 +117,8 @@ class SignalWatcher {
     sigset_t set = signals();
     pthread_sigmask(SIG_BLOCK, &set, &old_mask_);
     watcher_ = std::thread([this] { watch(); });
+    // Worker processes are forked next: not while this thread is starting (OutputDir.cpp).
+    while (!started_.load()) std::this_thread::yield();
   }
   ~SignalWatcher() {
     stop_ = true;
@@ -128,10 +137,12 @@ class SignalWatcher {
   }
   void watch() {
     const sigset_t set = signals();
+    started_.store(true);
     while (!stop_.load()) {
       const timespec wait{0, 50'000'000};
       const int sig = sigtimedwait(&set, nullptr, &wait);
       if (sig <= 0) continue;
+      killChildProcessGroups();  // planner and controller commands, and what they started
       cli::endOpenProgressLine();
       ::signal(sig, SIG_DFL);
       sigset_t one;
@@ -143,6 +154,7 @@ class SignalWatcher {
   }
   sigset_t old_mask_{};
   std::atomic<bool> stop_{false};
+  std::atomic<bool> started_{false};
   std::thread watcher_;
 };
 
@@ -262,15 +274,6 @@ int resubmitMissing(const SweepOptions& o, const SweepSpec& spec,
   return sub.exit_code == 0 ? 0 : 1;
 }
 
-// The expectations a resumed table must meet: the worlds' contents now, this build.
-TableExpectations expectations(const std::vector<SweepWorld>& worlds,
-                               const nlohmann::ordered_json& provenance) {
-  TableExpectations expect;
-  for (const SweepWorld& w : worlds) expect.world_hashes[w->scenario.name] = w->content_hash;
-  expect.writer = rowWriter(provenance);
-  return expect;
-}
-
 // Lists up to ten failed episodes of the shard (sorted `episodes`), reading the table one row
 // at a time.
 void listFailures(const std::string& out, const std::vector<SweepEpisode>& episodes,
@@ -294,14 +297,31 @@ void listFailures(const std::string& out, const std::vector<SweepEpisode>& episo
 
 int runSweepCommand(const SweepOptions& o) {
   // Everything is read and checked before DIR is touched.
-  const SweepSpec spec = loadSweepSpec(o.spec);
-  const std::vector<SweepWorld> worlds = loadSweepWorlds(spec);
-  const std::vector<SweepEpisode> all = expandEpisodes(spec, worlds);
+  // --plugin adds to the spec's plugins: (loaded first, so the spec's may not reuse a name).
+  std::shared_ptr<const Components> extra;
+  if (!o.plugins.paths.empty()) extra = o.plugins.load();
+  const SweepPlan plan = prepareSweep(o.spec, extra.get());
+  const SweepSpec& spec = plan.spec;
+  const std::vector<SweepEpisode>& all = plan.episodes;
   const Shard shard = parseShard(o.shard);
+  if (o.list) {
+    // What the spec expands to (this shard's share), run nothing, write nothing: a sampled
+    // spec's draws can be read before a cluster spends hours on them.
+    if (!o.junit.empty() || o.slurm) throw Error("--list runs nothing: drop --junit and --slurm");
+    std::string out;
+    for (const SweepEpisode& e : selectShard(all, shard)) {
+      out += e.id + "\t" + canonicalString(e.params) + "\n";
+    }
+    std::fwrite(out.data(), 1, out.size(), stdout);
+    return 0;
+  }
   if (o.missing && !o.slurm) throw Error("--missing works on a Slurm sweep: add --slurm");
   if (o.wait && !o.missing) throw Error("--wait waits for the tasks --slurm --missing submits");
   if (o.slurm) {
     if (o.shard != "0/1") throw Error("--slurm writes a script for every shard; drop --shard");
+    if (!o.plugins.paths.empty()) {
+      throw Error("--plugin: a Slurm task runs the spec alone; name the plugins in its plugins:");
+    }
     if (!o.junit.empty()) {
       throw Error("--junit: --slurm runs nothing; after the jobs, parksim report DIR --junit FILE");
     }
@@ -310,41 +330,29 @@ int runSweepCommand(const SweepOptions& o) {
   const int workers = o.workers > 0
                           ? o.workers
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  const std::vector<SweepEpisode> episodes = selectShard(all, shard);
-
-  // A table of another id format (an older parksim's) is refused before anything is written.
-  SweepManifest existing;
-  (void)readSweepManifest(o.out, existing);
   SweepRunnerDef def;
-  // Refuses a table with other columns, a changed row, or rows of another world content or
-  // build, before anything is written.
-  ResultsTable table(o.out, expectations(worlds, def.provenance));
-  for (const std::string& repair : table.repairs()) {
-    std::fprintf(stderr, "repaired %s\n", printable(repair).c_str());
-  }
-  SweepManifest manifest{o.spec, spec.name, shard, {}};
-  for (const SweepEpisode& e : all) manifest.episode_ids.push_back(e.id);
-  writeSweepManifest(o.out, manifest);
-
   def.workers = workers;
-  def.episode.record = spec.record;
-  def.episode.episodes_dir = o.out + "/episodes";
-
-  std::size_t already = 0;
-  for (const SweepEpisode& e : episodes) already += table.done().count(e.id);
-  std::fprintf(
-      stderr, "parksim sweep %s: %zu episodes%s, %zu already in %s/results.jsonl, %d worker%s\n",
-      spec.name.c_str(), episodes.size(),
-      shard.count > 1 ? (" (shard " + o.shard + " of " + std::to_string(all.size()) + ")").c_str()
-                      : "",
-      already, printable(o.out).c_str(), workers, workers == 1 ? "" : "s");
+  def.limits = o.user_code.limits;
   const bool tty = isatty(STDERR_FILENO) == 1;
   SweepProgressFn progress;
   if (tty || o.progress) progress = ProgressPrinter(tty);
-  const SweepProgress p = [&] {
+  const auto started = [&](const SweepStart& s) {
+    for (const std::string& repair : s.repairs) {
+      std::fprintf(stderr, "repaired %s\n", printable(repair).c_str());
+    }
+    std::fprintf(
+        stderr, "parksim sweep %s: %zu episodes%s, %zu already in %s/results.jsonl, %d worker%s\n",
+        spec.name.c_str(), s.episodes,
+        shard.count > 1 ? (" (shard " + o.shard + " of " + std::to_string(all.size()) + ")").c_str()
+                        : "",
+        s.already, printable(o.out).c_str(), workers, workers == 1 ? "" : "s");
+  };
+  const SweepJobResult job = [&] {
     const SignalWatcher signals;
-    return runSweep(episodes, def, table, progress);
+    return runSweepJob(plan, shard, o.out, def, started, progress);
   }();
+  const std::vector<SweepEpisode>& episodes = job.episodes;
+  const SweepProgress& p = job.progress;
   if (!o.junit.empty()) {
     // The shard's episodes, those of earlier runs included (as the exit status counts them).
     std::set<std::string> ids;
@@ -353,12 +361,11 @@ int runSweepCommand(const SweepOptions& o) {
     for (nlohmann::ordered_json& row : readResultsJsonl(o.out + "/results.jsonl")) {
       if (ids.count(row.value("episode_id", "")) > 0) rows.push_back(std::move(row));
     }
-    writeJUnitFile(o.junit, resultsJUnit(rows, spec.name));
+    writeJUnitFile(o.junit, episodesJUnit(rows, spec.name, rowGroupNameOf));
   }
 
   // The verdict covers the shard's episodes, those of earlier runs included.
-  std::size_t failed = 0;
-  for (const SweepEpisode& e : episodes) failed += table.done().at(e.id) ? 0 : 1;
+  const std::size_t failed = job.failed;
   std::printf(
       "sweep %s: %zu episodes, %zu run now in %.1f s (%.2f episodes/s); %zu met their "
       "tolerance, %zu did not\nwrote %s/results.csv and %s/results.jsonl\n",
@@ -377,14 +384,22 @@ int runSweepCommand(const SweepOptions& o) {
 CommandRunner setupSweepCommand(CLI::App& sub) {
   auto opt = std::make_shared<SweepOptions>();
   sub.add_option("spec", opt->spec, "sweep spec (YAML, see docs/sweeps.md)")->required();
-  sub.add_option("--out", opt->out, "output directory (results.csv, results.jsonl, episodes/)")
-      ->required();
-  sub.add_option("--workers", opt->workers, "worker threads (default: one per CPU)")
+  CLI::Option* out =
+      sub.add_option("--out", opt->out, "output directory (results.csv, results.jsonl, episodes/)");
+  sub.add_flag("--list", opt->list,
+               "print the spec's episodes (of --shard), one line each: the episode id, a tab and "
+               "its canonical parameters (docs/sweeps.md); run nothing")
+      ->excludes(out);
+  sub.add_option("--workers", opt->workers,
+                 "workers: threads, or processes when a planner or controller is user code "
+                 "(default: one per CPU)")
       ->check(CLI::Range(1, 1024));
   sub.add_option("--shard", opt->shard,
                  "run only shard I of N (I from 0): the episodes at positions I, I+N, ... of the "
                  "sweep's canonical order")
       ->capture_default_str();
+  opt->plugins.addTo(sub);
+  opt->user_code.addTo(sub);
   sub.add_flag("--slurm", opt->slurm,
                "write OUT/sweep.sbatch (a Slurm job array, one task per shard) instead of "
                "running");
@@ -421,6 +436,7 @@ CommandRunner setupSweepCommand(CLI::App& sub) {
   const std::vector<const CLI::Option*> request = {cpus,      mem,     time_limit,
                                                    partition, account, max_parallel};
   return [opt, request](const OutputOptions& output) {
+    if (!opt->list && opt->out.empty()) throw Error("--out is required (or --list)");
     opt->progress = output.progress;
     for (const CLI::Option* option : request) {
       if (option->count() > 0) opt->slurm_given.insert(option->get_name());

@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
       setupVerifyCommand);
   add("list", "the planners and controllers (built in and plugins') with their parameters",
       setupListCommand);
+  add("import", "a ROS, SVG or Moving AI map as a world file to edit", setupImportCommand);
 
   // CLI11 says "A subcommand is required" about `parksim foo`; say what was wrong instead.
   if (argc > 1 && argv[1][0] != '-') {

@@ -9,14 +9,23 @@
 #include <cstddef>
 #include <cstdint>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/Geometry.h"
-#include "tests/support/StudyLot.h"
+#include "parksim/scenario/ScenarioReader.h"
 
 namespace parksim {
 namespace {
+
+// The study's lot as the project's worlds hold it (its obstacles, the head-in goal). Read from
+// the world file: a benchmark does not build on the tests' support code.
+const Scenario& studyLot() {
+  static const Scenario lot =
+      loadScenario(std::string(PARKSIM_SOURCE_DIR) + "/worlds/head_in.yaml");
+  return lot;
+}
 
 // Enough poses that the branch predictor cannot learn the answers; same seed for all methods.
 std::vector<Pose2> randomLotPoses(std::size_t count) {
@@ -43,7 +52,7 @@ void reportCollisionShare(benchmark::State& state, std::size_t colliding, std::s
 }
 
 void BM_IsFreeBullet(benchmark::State& state) {
-  const Scenario lot = testing::studyLot();
+  const Scenario& lot = studyLot();
   const BulletCollisionWorld world(lot);
   const std::vector<Pose2> poses = randomLotPoses(kPoseCount);
   const double margin = marginOf(state);
@@ -61,7 +70,7 @@ void BM_IsFreeBullet(benchmark::State& state) {
 // The exact reference as the tests use it: core's footprintAt and boxesOverlap against every
 // obstacle until the first overlap (boxesOverlap recomputes both boxes' axes each call).
 void BM_IsFreeHandSat(benchmark::State& state) {
-  const Scenario lot = testing::studyLot();
+  const Scenario& lot = studyLot();
   const std::vector<Pose2> poses = randomLotPoses(kPoseCount);
   const double margin = marginOf(state);
   std::size_t i = 0;
@@ -135,7 +144,7 @@ class PrecomputedSat {
 };
 
 void BM_IsFreePrecomputedSat(benchmark::State& state) {
-  const Scenario lot = testing::studyLot();
+  const Scenario& lot = studyLot();
   const PrecomputedSat sat(lot);
   const std::vector<Pose2> poses = randomLotPoses(kPoseCount);
   const double margin = marginOf(state);
@@ -151,7 +160,7 @@ void BM_IsFreePrecomputedSat(benchmark::State& state) {
 }
 
 void BM_Clearance(benchmark::State& state) {
-  const Scenario lot = testing::studyLot();
+  const Scenario& lot = studyLot();
   const BulletCollisionWorld world(lot);
   const std::vector<Pose2> poses = randomLotPoses(kPoseCount);
   std::size_t i = 0;

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/EpisodeExpansion.h"
-#include "parksim/sweep/ResultsTable.h"
 #include "parksim/sweep/SweepRunner.h"
 #include "parksim/sweep/SweepSpecReader.h"
 

@@ -25,6 +25,7 @@
 #include "bench/planning/BenchCsv.h"
 #include "bench/planning/BenchSummary.h"
 #include "bench/planning/ParksimRuns.h"
+#include "parksim/cli/ComponentOptions.h"
 #include "parksim/cli/OutputDir.h"
 #include "parksim/cli/PlanOptions.h"
 #include "parksim/cli/Program.h"
@@ -54,7 +55,8 @@ using Clock = std::chrono::steady_clock;
 struct BenchOptions {
   std::vector<std::string> worlds;
   int seeds = 100;
-  std::vector<std::string> planners;   // parksim planner kinds; empty: all
+  std::vector<std::string> planners;   // parksim planner names; empty: all
+  cli::PluginOptions plugins;          // --plugin: plugins' planners join the list
   std::vector<std::string> steerings;  // parksim steering kinds; empty: all
   bool smooth = false;                 // also run every parksim planner with smoothing
   std::string max_iterations = "auto";
@@ -123,17 +125,20 @@ struct BenchPlan {
   std::vector<OmplSpace> ompl_spaces;
   std::vector<Scenario> scenarios;
   int max_iterations = kAutoIterations;
+  std::shared_ptr<const Components> components;  // built-ins and plugins
 };
 
 // Parses and checks everything before anything runs: bad names, budgets or worlds fail first.
 BenchPlan benchPlanFrom(const BenchOptions& o) {
   if (o.seeds < 1) throw Error("--seeds must be at least 1");
   BenchPlan b;
+  b.components = o.plugins.load();
+  const PlannerRegistry& registry = b.components->planners;
   if (o.planners.empty()) {
-    b.planners = builtInPlanners().names();
+    b.planners = registry.names();
   } else if (o.planners != std::vector<std::string>{"none"}) {  // "none": OMPL alone
     for (const std::string& name : o.planners) {
-      (void)builtInPlanners().find(name);  // an unknown name fails here, before any run
+      (void)registry.find(name);  // an unknown name fails here, before any run
       b.planners.push_back(name);
     }
   }
@@ -173,12 +178,13 @@ void runParksimPlanners(const BenchOptions& o, const BenchPlan& b, const Scenari
                         std::vector<BenchRecord>& all) {
   for (std::size_t si = 0; si < b.steerings.size(); ++si) {
     for (const std::string& name : b.planners) {
-      const PlannerInfo& info = builtInPlanners().find(name).info;
+      const PlannerInfo& info = b.components->planners.find(name).info;
       if (!info.uses_steering && si > 0) continue;
       for (bool smooth : b.smoothing) {
         ParksimRunDef def;
         def.setup.steering_kind = b.steerings[si];
         def.setup.planner = name;
+        def.planners = &b.components->planners;
         def.setup.search.seed = static_cast<std::uint64_t>(seed);
         def.setup.search.max_iterations = b.max_iterations;
         def.setup.search.max_time_s = o.time_limit_s;
@@ -311,8 +317,10 @@ void addOptions(CLI::App& sub, BenchOptions* opt, OutputOptions& output) {
       ->capture_default_str()
       ->check(integerIn(1, 100'000));
   sub.add_option("--planners", opt->planners,
-                 "parksim planners, comma-separated (default: every planner kind; none: OMPL only)")
+                 "parksim planners, comma-separated (default: every planner, the plugins' too; "
+                 "none: OMPL only)")
       ->delimiter(',');
+  opt->plugins.addTo(sub);
   sub.add_option("--steering", opt->steerings,
                  "parksim steering functions, comma-separated (default: all)")
       ->delimiter(',');

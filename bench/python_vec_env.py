@@ -10,6 +10,8 @@ cost is included) drives
   single   ParkingEnv: one environment, reset() after each end
   vec-1    VecParkingEnv(n, threads=1): n sub-environments in one thread (autoreset)
   vec-2    VecParkingEnv(n, threads=2): the same in two threads
+  sb3-2    parksim.sb3.SB3VecEnv(n, threads=2): vec-2 behind Stable-Baselines3's VecEnv
+           interface (step_async + step_wait, a list of info dicts, same-step autoreset)
 for the "dynamics" (Bullet, ideal robot) and "kinematic" fidelities, 0.1-s steps. Steps are
 counted over all sub-environments. Configurations are interleaved over several rounds; the
 table gives the median steps/s, CPU seconds per wall second (2 = both cores busy), steps per
@@ -75,8 +77,22 @@ def run_physics(world, fidelity, steps, seed):
 
 def run_vec(world, fidelity, n, threads, vec_steps, seed):
     envs = parksim.VecParkingEnv(n, world=world, fidelity=fidelity, threads=threads)
-    rng = np.random.default_rng(seed)
     envs.reset(seed=seed)
+    return run_batch(envs, n, vec_steps, seed)
+
+
+def run_sb3(world, fidelity, n, threads, vec_steps, seed):
+    from parksim.sb3 import SB3VecEnv
+
+    envs = SB3VecEnv(n, world=world, fidelity=fidelity, threads=threads)
+    envs.seed(seed)
+    envs.reset()
+    return run_batch(envs, n, vec_steps, seed)  # its step(): step_async, then step_wait
+
+
+def run_batch(envs, n, vec_steps, seed):
+    """vec_steps steps of random actions (n per step, drawn in blocks)."""
+    rng = np.random.default_rng(seed)
     block = 1000
     start = time.perf_counter(), time.process_time()
     obs = None
@@ -128,6 +144,7 @@ def main():
                            args.seed),
                 "vec-1": (run_vec, world, fidelity, args.envs, 1, vec_steps, args.seed),
                 "vec-2": (run_vec, world, fidelity, args.envs, 2, vec_steps, args.seed),
+                "sb3-2": (run_sb3, world, fidelity, args.envs, 2, vec_steps, args.seed),
             }
             finals = {}
             for name, (run, *rest) in configs.items():
@@ -147,7 +164,7 @@ def main():
     for fidelity in fidelities:
         key = (fidelity, reference) if (fidelity, reference) in results else (fidelity, "single")
         base = statistics.median(r for r, _ in results[key])
-        for name in ("before", "physics", "single", "vec-1", "vec-2"):
+        for name in ("before", "physics", "single", "vec-1", "vec-2", "sb3-2"):
             rates = results.get((fidelity, name))
             if rates is None:
                 continue

@@ -10,8 +10,9 @@ set(PARKSIM_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/parksim)
 
 # Module targets keep their build names (parksim_sim) and are exported as parksim::sim; the
 # aliases give a project that adds parksim as a subdirectory the same names.
-set(parksim_modules core realism scenario collision planner sim plugin rl results render pipeline
-    sweep compare)
+set(parksim_modules core realism scenario collision planner sim plugin rl results command render
+    pages
+    pipeline sweep compare)
 foreach(module IN LISTS parksim_modules)
   set_target_properties(parksim_${module} PROPERTIES EXPORT_NAME ${module})
   add_library(parksim::${module} ALIAS parksim_${module})
@@ -25,8 +26,14 @@ foreach(module IN LISTS parksim_modules)
 endforeach()
 add_library(parksim::parksim ALIAS parksim_library)
 
+# parksim::cli: what command-line front-ends share (output directories as transactions, progress
+# lines, the options that fill the library's Def structs), for a consumer's own tools; not in
+# parksim::parksim, since it brings CLI11.
+set_target_properties(parksim_cli PROPERTIES EXPORT_NAME cli)
+add_library(parksim::cli ALIAS parksim_cli)
+
 list(TRANSFORM parksim_modules PREPEND parksim_ OUTPUT_VARIABLE parksim_module_targets)
-install(TARGETS ${parksim_module_targets} parksim_library
+install(TARGETS ${parksim_module_targets} parksim_library parksim_cli
   EXPORT parksimTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -38,7 +45,9 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/parksim/
   PATTERN "GlFunctions.h" EXCLUDE
   PATTERN "RendererPrograms.h" EXCLUDE
   PATTERN "RendererImpl.h" EXCLUDE
-  PATTERN "EncodeQueue.h" EXCLUDE)
+  PATTERN "EncodeQueue.h" EXCLUDE
+  # The pages' npm libraries (fetched by scripts/install-deps.sh), built into parksim_pages.
+  PATTERN "node_modules" EXCLUDE)
 install(EXPORT parksimTargets NAMESPACE parksim:: DESTINATION ${PARKSIM_CMAKE_DIR})
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/parksimConfig.cmake.in

@@ -2,8 +2,11 @@
 # Configures and builds parksim.
 #   scripts/build.sh [BUILD_DIR] [cmake arguments...] [--target TARGET...]
 # BUILD_DIR defaults to build. The cmake arguments apply when the directory is configured (and
-# again on a later call that passes them); --target builds only those targets and what they need,
-# otherwise everything the configuration enables. Examples:
+# again on a later call that passes them); --target builds only those targets and what they need.
+# Without --target it builds everything: the tests, the benchmarks and the Python module are
+# turned on (unless the arguments name PARKSIM_BUILD_TESTS, PARKSIM_BUILD_BENCH or
+# PARKSIM_PYTHON), so a directory scripts/demo.sh configured for the program alone gets them
+# too, and what they need is installed first (scripts/install-deps.sh test). Examples:
 #   scripts/build.sh build                                      everything (Release)
 #   scripts/build.sh build --target parksim                     the command line and its libraries
 #   scripts/build.sh build-sanitize -DPARKSIM_SANITIZE=ON --target parksim_tests
@@ -22,6 +25,17 @@ while [ $# -gt 0 ]; do
   cmake_args+=("$1")
   shift
 done
+
+# Everything: the parts a directory may have been configured without (scripts/demo.sh turns
+# them off to configure without the test packages) are turned on again.
+if [ ${#targets[@]} -eq 0 ]; then
+  for option in PARKSIM_BUILD_TESTS PARKSIM_BUILD_BENCH PARKSIM_PYTHON; do
+    [[ " ${cmake_args[*]} " == *" -D$option="* ]] || cmake_args+=("-D$option=ON")
+  done
+  # Their packages (GoogleTest, Google Benchmark, pybind11, NumPy, ...): installed when missing
+  # (as root), or named in one line. Only on Debian, whose packages the script knows.
+  if command -v dpkg-query >/dev/null; then scripts/install-deps.sh test; fi
+fi
 
 generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)

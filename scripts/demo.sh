@@ -9,8 +9,8 @@ cd "$(dirname "$0")/.."
 out=${1:-out/demo}
 scripts/install-deps.sh demo
 # A new build directory is configured for the program alone, so that configuring needs none of
-# the test packages; scripts/test.sh turns the rest on in the same directory later and reuses
-# what was compiled here.
+# the test packages; scripts/test.sh and scripts/build.sh without --target turn the rest on in
+# the same directory later and reuse what was compiled here.
 options=()
 if [ ! -f build/CMakeCache.txt ]; then
   options=(-DPARKSIM_BUILD_TESTS=OFF -DPARKSIM_BUILD_BENCH=OFF -DPARKSIM_PYTHON=OFF)

@@ -76,15 +76,18 @@ link() {  # link NAME OBJECTS... LIBS...
 # (parksim/realism/, all of it).
 realism=(parksim/realism/*.cpp)
 scenario=(parksim/scenario/*.cpp)
-# The results tables' readers and what they share (seals, ids, manifests, merge's sources).
-tables=(parksim/sweep/ResultsFile.cpp parksim/sweep/RowSeal.cpp parksim/sweep/EpisodeParams.cpp
-        parksim/sweep/SweepManifest.cpp parksim/sweep/Shard.cpp parksim/sweep/Merge.cpp
-        parksim/sweep/TableVerify.cpp)
+# The results tables' readers and what they share (the episode record's fields, seals, ids,
+# manifests, merge's sources).
+tables=(parksim/results/ResultsFile.cpp parksim/results/RowSeal.cpp parksim/results/TableVerify.cpp
+        parksim/results/EpisodeRecord.cpp parksim/sim/ExecutionDef.cpp
+        parksim/sweep/EpisodeParams.cpp parksim/sweep/SetValues.cpp parksim/sweep/SweepManifest.cpp
+        parksim/sweep/Shard.cpp parksim/sweep/Merge.cpp)
 declare -A sources
 sources[world]="tests/fuzz/WorldReaderFuzz.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
 sources[plan]="tests/fuzz/PlanReaderFuzz.cpp parksim/results/TrajectoryFile.cpp ${core[*]}"
 sources[spec]="tests/fuzz/SweepSpecFuzz.cpp parksim/sweep/SweepSpecReader.cpp
-  parksim/sweep/EpisodeSetup.cpp parksim/planner/PlannerKind.cpp parksim/planner/PlanScenario.cpp
+  parksim/command/CommandLine.cpp parksim/sweep/EpisodeSetup.cpp parksim/sweep/SetValues.cpp parksim/results/EpisodeRecord.cpp
+  parksim/planner/PlannerKind.cpp parksim/planner/PlanScenario.cpp
   parksim/results/ExecutedFile.cpp parksim/pipeline/EpisodeRequest.cpp
   parksim/sim/ExecutionDef.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
 sources[jsonl]="tests/fuzz/ResultsJsonlFuzz.cpp ${tables[*]} ${core[*]}"

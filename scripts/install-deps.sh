@@ -6,7 +6,11 @@
 #                                  libraries the parksim program links, ffmpeg for the video
 #   scripts/install-deps.sh test   (the default) the above, and what the tests, benchmarks, the
 #                                  Python module, fuzzing and the Slurm test use
+# Both then fetch the pinned npm libraries the HTML reports draw with (parksim/pages/web:
+# package.json and package-lock.json) with `npm ci` into parksim/pages/web/node_modules/ (not
+# in the repository); the build embeds their files (docs/pages.md).
 set -euo pipefail
+cd "$(dirname "$0")/.."
 
 set_name=${1:-test}
 
@@ -15,6 +19,8 @@ demo_packages=(
   build-essential cmake pkg-config ninja-build
   libbullet-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libnanoflann-dev libstb-dev zlib1g-dev libompl-dev
+  # SVG maps in world files (`map:`) are parsed by libxml2.
+  libxml2-dev
   libegl-dev libgl1-mesa-dri libfontconfig-dev fonts-dejavu-core ffmpeg
   # scripts/build.sh compiles with clang unless CXX names a compiler (half of GCC's time).
   clang
@@ -29,6 +35,9 @@ test_packages=(
   # pkill, which stops a task mid-shard in tests/sweep/slurm_missing_test.sh.
   slurm-wlm munge procps
   pybind11-dev python3 python3-dev python3-numpy python3-pytest python3-yaml python3-pandas
+  # Gymnasium's dependencies: the Python tests run against Gymnasium 1.3.0's source in
+  # ../shared/third_party (PARKSIM_THIRD_PARTY; tests/python/conftest.py), not packaged here.
+  python3-cloudpickle python3-typing-extensions
   jupyter-nbconvert python3-nbformat python3-ipykernel
   # JUnit reports (`--junit`) read by a real consumer and checked with xmllint.
   python3-junitparser libxml2-utils
@@ -39,6 +48,8 @@ test_packages=(
   # scripts/build.sh compiles through it where it is installed: a second build of the same
   # sources on one machine (a test.sh run again, another clone) costs seconds (CI does without).
   ccache
+  # The HTML reports opened from file:// in a real browser (tests/pages/test_pages.py).
+  chromium chromium-driver python3-selenium
 )
 
 case "$set_name" in
@@ -59,6 +70,21 @@ ensure_test_locale() {
   localedef -i de_DE -f UTF-8 de_DE.UTF-8
 }
 
+# npm for the reports' libraries, from Debian where no Node.js with its own npm is installed.
+command -v npm >/dev/null || packages+=(npm)
+
+# The pinned npm libraries, fetched again only when package-lock.json changed since the last
+# `npm ci` (its copy in node_modules/ is the stamp).
+fetch_page_libraries() {
+  local web=parksim/pages/web
+  if cmp -s "$web/package-lock.json" "$web/node_modules/.parksim-lock.json" 2>/dev/null; then
+    return 0
+  fi
+  echo "install-deps: npm ci in $web"
+  (cd "$web" && npm ci --ignore-scripts --no-audit --no-fund --loglevel=error)
+  cp "$web/package-lock.json" "$web/node_modules/.parksim-lock.json"
+}
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
@@ -67,6 +93,7 @@ done
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages for '$set_name' present"
   ensure_test_locale
+  fetch_page_libraries
   exit 0
 fi
 
@@ -80,3 +107,4 @@ export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
 apt-get install -y -qq --no-install-recommends "${missing[@]}"
 ensure_test_locale
+fetch_page_libraries

@@ -23,6 +23,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh test
 jobs=$(nproc)
+# A test that hangs fails after this long instead of holding CI until its limit (tests with a
+# TIMEOUT property of their own keep it). The slowest test takes about 60 s under the sanitizers.
+test_timeout=${PARKSIM_TEST_TIMEOUT:-600}
 
 # No compiler cache in CI (a clean clone, an empty cache): nothing else there uses a pass's
 # objects, and a cold cache only costs (each file preprocessed once more for its key).
@@ -32,7 +35,7 @@ shared_front_ends() {  # shared_front_ends BUILD_DIR: the front-ends and their t
   PARKSIM_CCACHE=$ccache scripts/build.sh "$1" -DPARKSIM_SHARED=ON \
     -DPARKSIM_BUILD_TESTS=ON -DPARKSIM_BUILD_BENCH=ON -DPARKSIM_PYTHON=ON \
     --target parksim_front_end_tests
-  ctest --test-dir "$1" --output-on-failure --parallel "$jobs" -L front_end
+  ctest --test-dir "$1" --output-on-failure --parallel "$jobs" --timeout "$test_timeout" -L front_end
 }
 
 if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
@@ -56,7 +59,7 @@ if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:intercept_tls_get_addr=0 \
   LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0" \
   UBSAN_OPTIONS=print_stacktrace=1 \
-    ctest --test-dir build-sanitize --output-on-failure --parallel "$jobs"
+    ctest --test-dir build-sanitize --output-on-failure --parallel "$jobs" --timeout "$test_timeout"
 
   echo "== Front-ends (Release, shared libraries) and their tests"
   # In build/, where the documentation's commands find them. The libraries compile alike
@@ -69,7 +72,7 @@ else
   echo "== Release build (static libraries): everything and every test"
   PARKSIM_CCACHE=$ccache scripts/build.sh build -DPARKSIM_SHARED=OFF -DPARKSIM_BUILD_TESTS=ON \
     -DPARKSIM_BUILD_BENCH=ON -DPARKSIM_PYTHON=ON
-  ctest --test-dir build --output-on-failure --parallel "$jobs"
+  ctest --test-dir build --output-on-failure --parallel "$jobs" --timeout "$test_timeout"
 fi
 
 echo "== Fuzzing the world-file and plan-file readers (bounded; docs/limits.md)"

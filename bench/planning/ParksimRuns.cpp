@@ -45,7 +45,7 @@ std::vector<std::pair<std::string, double>> phaseList(const PhaseTimes& t) {
 BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& world,
                        const ParksimRunDef& def) {
   const double cpu0 = threadCpuSeconds();
-  const PlanResult result = planScenario(scenario, world, def.setup);
+  const PlanResult result = planScenario(scenario, world, def.setup, {}, *def.planners);
   const double cpu = threadCpuSeconds() - cpu0;
   BenchRecord r;
   r.library = "parksim";
@@ -63,7 +63,7 @@ BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& wor
   r.scenario = scenario.name;
   r.seed = def.setup.search.seed;
   // The budget as planned: an automatic one resolved for this lot.
-  r.budget = budgetName(resolvedPlanSetup(def.setup, scenario).search);
+  r.budget = budgetName(resolvedPlanSetup(def.setup, scenario, *def.planners).search);
   r.solved = result.solved();
   r.status = toString(result.status);
   r.time_total_s = result.stats.times.total_s;

@@ -14,8 +14,10 @@
 namespace parksim::bench {
 
 struct ParksimRunDef {
-  PlanSetup setup;  ///< planner kind, seed, iteration and wall-time budgets, steering, validation
+  PlanSetup setup;  ///< planner, seed, iteration and wall-time budgets, steering, validation
   PathCheckDef check;
+  /// Where setup.planner is looked up: parksim's own, or with plugins' (--plugin).
+  const PlannerRegistry* planners = &builtInPlanners();
 };
 
 /// Plans `scenario` with `def.setup` against `world` and checks the path. The record's planner

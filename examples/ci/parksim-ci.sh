@@ -10,8 +10,9 @@
 #   PARKSIM   the parksim program (default: parksim on PATH)
 #   SPEC      the sweep spec (default: examples/ci/sweep.yaml)
 #   BASELINE  the stored baseline table, a results.jsonl (default: ci/baseline/results.jsonl)
-#   OUT       where the job writes (default: parksim-ci): sweep/, sweep.xml, compare.xml,
-#             compare.md
+#   OUT       where the job writes (default: parksim-ci): sweep/ (with its page,
+#             sweep/report/index.html, and each kept episode's, docs/pages.md), sweep.xml,
+#             compare.xml, compare.md, compare.html
 #   STRICT    1: also fail when an episode misses its tolerance (default 0: the JUnit report
 #             shows those; only a regression against the baseline fails the job)
 #   COMPARE_ARGS  more options for parksim compare (e.g. --confidence 0.99)
@@ -36,11 +37,14 @@ esac
 mkdir -p "$OUT"
 # A fresh sweep every time (a sweep directory resumes, and a stale one would hide a change), and
 # no report left from an earlier run.
-rm -rf "$OUT/sweep" "$OUT/sweep.xml" "$OUT/compare.xml" "$OUT/compare.md"
+rm -rf "$OUT/sweep" "$OUT/sweep.xml" "$OUT/compare.xml" "$OUT/compare.md" "$OUT/compare.html"
 sweep_status=0
-"$PARKSIM" sweep "$SPEC" --out "$OUT/sweep" --junit "$OUT/sweep.xml" || sweep_status=$?
+"$PARKSIM" sweep "$SPEC" --out "$OUT/sweep" || sweep_status=$?
 # 1: some episodes missed their tolerance (listed in sweep.xml); anything else is an error.
 if [ "$sweep_status" -ne 0 ] && [ "$sweep_status" -ne 1 ]; then exit "$sweep_status"; fi
+# The sweep's page (sweep/report/index.html) and the JUnit report, whose cases link to it and
+# to the pages of the episodes kept.
+"$PARKSIM" report "$OUT/sweep" --junit "$OUT/sweep.xml" > /dev/null
 
 if [ "$mode" = refresh ]; then
   mkdir -p "$(dirname "$BASELINE")"
@@ -52,7 +56,7 @@ fi
 compare_status=0
 # shellcheck disable=SC2086 # COMPARE_ARGS is a list of options
 "$PARKSIM" compare "$BASELINE" "$OUT/sweep" --markdown "$OUT/compare.md" \
-  --junit "$OUT/compare.xml" $COMPARE_ARGS || compare_status=$?
+  --junit "$OUT/compare.xml" --html "$OUT/compare.html" $COMPARE_ARGS || compare_status=$?
 # GitHub shows this file on the run's summary page.
 if [ -n "${GITHUB_STEP_SUMMARY:-}" ] && [ -f "$OUT/compare.md" ]; then
   cat "$OUT/compare.md" >> "$GITHUB_STEP_SUMMARY"

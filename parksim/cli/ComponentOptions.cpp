@@ -1,5 +1,8 @@
 #include "parksim/cli/ComponentOptions.h"
 
+#include "parksim/cli/Validators.h"
+#include "parksim/command/CommandController.h"
+#include "parksim/command/CommandLine.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/ParamSet.h"
 #include "parksim/core/Text.h"
@@ -16,16 +19,43 @@ void PluginOptions::addTo(CLI::App& sub) {
 std::shared_ptr<const Components> PluginOptions::load() const { return loadComponents(paths); }
 
 void ControllerOptions::addTo(CLI::App& sub) {
-  sub.add_option("--controller", name,
-                 "controller for closed-loop tracking, by name: " +
-                     joinNames(builtInControllers().names()) +
-                     " (or a plugin's); `parksim list` shows them with their parameters")
-      ->capture_default_str();
+  CLI::Option* by_name =
+      sub.add_option("--controller", name,
+                     "controller for closed-loop tracking, by name: " +
+                         joinNames(ownControllers().names()) +
+                         " (or a plugin's); `parksim list` shows them with their parameters")
+          ->capture_default_str();
   sub.add_option("--controller-param", params,
                  "NAME=VALUE: a parameter of the selected controller (repeatable)");
+  sub.add_option("--controller-command", command,
+                 "'CMD ...': control with a process in any language, run without a shell, one "
+                 "line per control tick on its stdin, 'LEFT RIGHT' back (the controller "
+                 "`command`, docs/your-code.md)")
+      ->excludes(by_name)
+      ->each([this](const std::string&) { name = kCommandController; });
 }
 
-ParamMap ControllerOptions::paramMap() const { return paramMapFrom(params, "--controller-param"); }
+void UserCodeOptions::addTo(CLI::App& sub) {
+  sub.add_option("--planner-timeout", limits.planner_s,
+                 "a user's planner (plugin, command) is stopped after this long, s")
+      ->capture_default_str()
+      ->check(realIn(0.001, 1e6));
+  sub.add_option("--controller-timeout", limits.controller_tick_s,
+                 "a user's controller is stopped when one command takes longer, s")
+      ->capture_default_str()
+      ->check(realIn(0.001, 1e6));
+}
+
+ParamMap ControllerOptions::paramMap() const {
+  ParamMap out = paramMapFrom(params, "--controller-param");
+  if (!command.empty()) {
+    if (out.count(kCommandParam) != 0) {
+      throw Error("--controller-command and --controller-param command=... both give the command");
+    }
+    out[kCommandParam] = quoteCommandLine(splitCommandLine(command, "--controller-command"));
+  }
+  return out;
+}
 
 ParamMap paramMapFrom(const std::vector<std::string>& entries, const std::string& option) {
   ParamMap out;

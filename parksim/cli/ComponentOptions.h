@@ -1,7 +1,8 @@
 #pragma once
 // The options that choose code by name: --plugin PATH (repeatable) loads plugins whose
 // planners and controllers --planner and --controller may then name; --controller and
-// --controller-param choose the controller that drives closed-loop tracking.
+// --controller-param (or --controller-command) choose the controller that drives closed-loop
+// tracking.
 
 #include <memory>
 #include <string>
@@ -10,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "parksim/core/ParamMap.h"
+#include "parksim/core/UserCodeWatch.h"
 #include "parksim/plugin/Components.h"
 
 namespace parksim::cli {
@@ -26,10 +28,21 @@ struct PluginOptions {
 struct ControllerOptions {
   std::string name = kDefaultController;
   std::vector<std::string> params;  ///< NAME=VALUE
+  /// --controller-command 'CMD ...': sets `name` to the controller `command` with this command
+  /// line as its `command` parameter (command/CommandController.h); excludes --controller.
+  std::string command;
 
   void addTo(CLI::App& sub);
   /// The parameters as a ParamMap (canonical text); throws Error on an entry without '='.
   ParamMap paramMap() const;
+};
+
+/// --planner-timeout and --controller-timeout: the limits on user code (UserCodeWatch.h), which
+/// runs in a watched child process.
+struct UserCodeOptions {
+  UserCodeLimits limits;
+
+  void addTo(CLI::App& sub);
 };
 
 /// "NAME=VALUE" entries of `option` as a ParamMap; a name given twice is an error.

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "parksim/cli/Progress.h"
+#include "parksim/core/ChildProcess.h"
 #include "parksim/core/Error.h"
 
 namespace parksim::cli {
@@ -28,13 +29,13 @@ constexpr const char* kMarker = ".parksim-out";
 
 // What parksim wrote before the marker existed; a directory holding only these is replaceable.
 bool isParksimOutput(const std::string& name) {
-  static const char* const names[] = {kMarker, "trajectory.csv", "plan.json", "executed.csv",
-                                      "metrics.json", "frames", "figures", "episode.mp4",
-                                      "episode.gif", "ffmpeg.log", "bench.csv", "summary.md",
-                                      "episode.partial.mp4", "episode.partial.gif",
-                                      // parksim report
-                                      "summary.csv", "success_matrix.png", "tracking_error.png",
-                                      "plan_time.png", "path_length.png", "duration.png"};
+  static const char* const names[] = {
+      kMarker, "trajectory.csv", "plan.json", "executed.csv", "metrics.json", "report.html",
+      "frames", "figures", "episode.mp4", "episode.gif", "ffmpeg.log", "bench.csv", "summary.md",
+      "episode.partial.mp4", "episode.partial.gif",
+      // parksim report
+      "summary.csv", "success_matrix.png", "tracking_error.png", "plan_time.png", "path_length.png",
+      "duration.png", "index.html", "parameters.csv"};
   for (const char* n : names) {
     if (name == n) return true;
   }
@@ -42,7 +43,8 @@ bool isParksimOutput(const std::string& name) {
     return name.size() >= s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0;
   };
   return (name.rfind("plan_", 0) == 0 && ends(".json")) ||
-         (name.rfind("ompl_", 0) == 0 && ends(".log")) || ends(".tmp");
+         (name.rfind("ompl_", 0) == 0 && ends(".log")) ||
+         (name.rfind("parameter_", 0) == 0 && ends(".png")) || ends(".tmp");
 }
 
 std::string errnoText() { return std::strerror(errno); }
@@ -65,6 +67,7 @@ struct OutputDir::Impl {
   bool committed = false;
   std::mutex mutex;  // commit vs. the signal watcher
   std::atomic<bool> stop{false};
+  std::atomic<bool> started{false};
   sigset_t old_mask{};
   std::thread watcher;
 
@@ -74,11 +77,13 @@ struct OutputDir::Impl {
     sigset_t set;
     sigemptyset(&set);
     for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set, s);
+    started.store(true);
     while (!stop.load()) {
       const timespec wait{0, 50'000'000};
       const int sig = sigtimedwait(&set, nullptr, &wait);
       if (sig <= 0) continue;
       {
+        killChildProcessGroups();  // a planner or controller command, and what it started
         std::lock_guard<std::mutex> hold(mutex);
         if (!committed) {
           // Other threads (PNG encoders, the episode) may still be writing into it by path:
@@ -173,6 +178,11 @@ OutputDir::OutputDir(const std::string& out) : impl_(std::make_unique<Impl>()) {
     // (blocked above) and the watcher removes a directory that exists, instead of racing
     // create_directory and leaving it behind.
     m.watcher = std::thread([&m] { m.watch(); });
+    // Not before the watcher waits: a process for user code may be forked next
+    // (pipeline/UserCodeIsolation.h), and a thread still starting may hold the allocator's locks
+    // (AddressSanitizer's allocator, before LLVM 17, takes none around fork), which the forked
+    // child then waits for forever.
+    while (!m.started.load()) std::this_thread::yield();
   } catch (...) {
     if (m.watcher.joinable()) {
       m.stop = true;

@@ -4,6 +4,8 @@
 
 #include "parksim/cli/ComponentOptions.h"
 #include "parksim/cli/Validators.h"
+#include "parksim/command/CommandLine.h"
+#include "parksim/command/CommandPlanner.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
 #include "parksim/core/ParamSet.h"
@@ -23,13 +25,19 @@ std::string namesOf(const std::vector<Kind>& kinds) {
 }  // namespace
 
 void PlanCliOptions::addTo(CLI::App& sub, const PlannerRegistry& planners) {
-  sub.add_option("--planner", planner,
-                 "planner by name: " + joinNames(planners.names()) +
-                     " (or a plugin's: --plugin); `parksim planners` lists them with their "
-                     "parameters")
-      ->capture_default_str();
+  CLI::Option* by_name =
+      sub.add_option("--planner", planner,
+                     "planner by name: " + joinNames(planners.names()) +
+                         " (or a plugin's: --plugin); `parksim list` lists them with their "
+                         "parameters")
+          ->capture_default_str();
   sub.add_option("--planner-param", planner_params,
                  "NAME=VALUE: a parameter of the selected planner (repeatable)");
+  sub.add_option("--planner-command", planner_command,
+                 "'CMD ... {problem} {out}': plan with a program in any language, run without a "
+                 "shell; it reads the problem file {problem} and writes {out}/trajectory.csv "
+                 "(the planner `command`, docs/your-code.md)")
+      ->excludes(by_name);
   sub.add_option("--steering", steering,
                  "steering function, one of: " + namesOf(allSteeringKinds()))
       ->capture_default_str();
@@ -82,6 +90,14 @@ PlanSetup PlanCliOptions::toSetup() const {
   PlanSetup setup;
   setup.planner = planner;
   setup.planner_params = paramMapFrom(planner_params, "--planner-param");
+  if (!planner_command.empty()) {
+    setup.planner = kCommandPlanner;
+    if (setup.planner_params.count(kCommandParam) != 0) {
+      throw Error("--planner-command and --planner-param command=... both give the command");
+    }
+    setup.planner_params[kCommandParam] =
+        quoteCommandLine(splitCommandLine(planner_command, "--planner-command"));
+  }
   setup.search.seed = seed;
   setup.search.max_iterations = parseIterationBudget(max_iterations);
   setup.search.max_time_s = time_limit_s;

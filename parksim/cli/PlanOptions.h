@@ -1,7 +1,7 @@
 #pragma once
-// The planning options every planning command takes (--planner, --planner-param, --steering,
-// --seed,
-// --max-iterations, --time-limit, --smooth, --smoothing-attempts, --timing,
+// The planning options every planning command takes (--planner, --planner-param,
+// --planner-command, --steering, --seed, --max-iterations, --time-limit, --smooth,
+// --smoothing-attempts, --timing,
 // --feedback-headroom, --turning-radius). Their defaults are the library's (PlanSetup{}): the
 // command line states them, it does not choose them.
 
@@ -26,6 +26,9 @@ struct PlanCliOptions {
   std::string planner = PlanSetup{}.planner;
   /// --planner-param NAME=VALUE, repeatable: the planner's own parameters (ParamMap.h).
   std::vector<std::string> planner_params;
+  /// --planner-command 'CMD ... {problem} {out}': the planner `command` with this command line
+  /// as its `command` parameter (command/CommandPlanner.h); excludes --planner.
+  std::string planner_command;
   std::string steering = toString(PlanSetup{}.steering_kind);
   std::uint64_t seed = PlanSetup{}.search.seed;
   std::string max_iterations = "auto";  ///< "auto": kAutoIterations, the lot's budget

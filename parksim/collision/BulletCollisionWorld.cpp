@@ -6,7 +6,9 @@
 #include <string>
 #include <utility>
 
+#include <BulletCollision/BroadphaseCollision/btDbvt.h>
 #include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
+#include <BulletCollision/CollisionShapes/btCompoundShape.h>
 #include <btBulletCollisionCommon.h>
 
 #include "parksim/collision/ObstacleShape.h"
@@ -65,6 +67,13 @@ struct CandidateCollector final : btBroadphaseAabbCallback {
   std::vector<int>& out_;
 };
 
+// Collects the child indices of a compound shape's tree leaves that meet a box.
+struct ChildCollector final : btDbvt::ICollide {
+  explicit ChildCollector(std::vector<int>& out) : out_(out) {}
+  void Process(const btDbvtNode* leaf) override { out_.push_back(leaf->dataAsInt); }
+  std::vector<int>& out_;
+};
+
 // Messages start with the scenario's file when it has one, as Error messages do elsewhere.
 std::string where(const Scenario& scenario) {
   return (scenario.source_path.empty() ? std::string("collision world") : scenario.source_path) +
@@ -115,6 +124,7 @@ struct BulletCollisionWorld::Impl {
   // query rather than kept per margin.
   mutable btBoxShape footprint_shape{btVector3(1, 1, 1)};
   mutable std::vector<int> candidates;
+  mutable std::vector<int> children;  // scratch: parts of a compound obstacle near the footprint
   mutable Stats stats;
 
   explicit Impl(const Scenario& scenario) : robot(scenario.robot) {
@@ -131,6 +141,13 @@ struct BulletCollisionWorld::Impl {
     shapes.reserve(n);
     objects.reserve(n);
     candidates.reserve(n);
+    std::size_t most_parts = 0;
+    for (const Obstacle& obstacle : scenario.obstacles) {
+      if (obstacle.shape == ObstacleShape::kCompound && obstacle.compound) {
+        most_parts = std::max(most_parts, obstacle.compound->parts.size());
+      }
+    }
+    children.reserve(most_parts);
     for (const Obstacle& obstacle : scenario.obstacles) {
       const std::string what = "obstacle '" + obstacle.name + "'";
       requirePositive(scenario, obstacle.box.half_extents.x(), what + " half extent x");
@@ -145,6 +162,10 @@ struct BulletCollisionWorld::Impl {
       if (obstacle.shape == ObstacleShape::kPolygon && !isStrictlyConvexCcw(obstacle.vertices)) {
         throw Error(where(scenario) + what +
                     " must be a convex polygon with counter-clockwise vertices");
+      }
+      if (obstacle.shape == ObstacleShape::kCompound &&
+          (!obstacle.compound || obstacle.compound->parts.empty())) {
+        throw Error(where(scenario) + what + " must have convex parts");
       }
       // Low obstacles pass under the chassis; the planner never meets them (blocksRobot).
       if (!blocksRobot(obstacle, robot)) continue;
@@ -239,6 +260,51 @@ struct BulletCollisionWorld::Impl {
                   static_cast<btScalar>(0.5 * robot.height_m)));
   }
 
+  // Fills `children` with the parts of compound obstacle i whose bounds meet the footprint's
+  // bounds grown by `grow_m`, from the compound shape's tree (in its frame: the obstacle's
+  // bounding-rectangle centre).
+  void collectChildren(int i, const Footprint& footprint, double grow_m) const {
+    const std::size_t k = static_cast<std::size_t>(i);
+    const auto* compound = static_cast<const btCompoundShape*>(shapes[k].get());
+    const Eigen::Vector2d c = footprint.center - boxes[k].box.center;
+    const double hx = std::abs(footprint.cos_yaw) * footprint.half_extents.x() +
+                      std::abs(footprint.sin_yaw) * footprint.half_extents.y() + grow_m +
+                      kBroadphasePad_m;
+    const double hy = std::abs(footprint.sin_yaw) * footprint.half_extents.x() +
+                      std::abs(footprint.cos_yaw) * footprint.half_extents.y() + grow_m +
+                      kBroadphasePad_m;
+    const btVector3 lo(btScalar(c.x() - hx), btScalar(c.y() - hy), btScalar(-boxes[k].height_m));
+    const btVector3 hi(btScalar(c.x() + hx), btScalar(c.y() + hy), btScalar(boxes[k].height_m));
+    children.clear();
+    ChildCollector collector(children);
+    compound->getDynamicAabbTree()->collideTV(compound->getDynamicAabbTree()->m_root,
+                                              btDbvtVolume::FromMM(lo, hi), collector);
+  }
+
+  // A compound obstacle: exact tests in double against the parts its tree finds near.
+  bool compoundPenetrates(int i, const Footprint& footprint) const {
+    collectChildren(i, footprint, 0.0);
+    const CompoundShape& shape = *boxes[static_cast<std::size_t>(i)].obstacle.compound;
+    return std::any_of(children.begin(), children.end(), [&](int c) {
+      ++stats.shape_tests;
+      return separationAlongAxes(footprint, shape.parts[static_cast<std::size_t>(c)]) < 0.0;
+    });
+  }
+
+  // Distance to obstacle i, exact; for a compound obstacle over the parts within `radius_m`
+  // (infinity when none is).
+  double distanceTo(int i, const Footprint& footprint, double radius_m) const {
+    const Obstacle& obstacle = boxes[static_cast<std::size_t>(i)].obstacle;
+    if (obstacle.shape != ObstacleShape::kCompound) return distance(footprint, obstacle);
+    collectChildren(i, footprint, radius_m);
+    double best = std::numeric_limits<double>::infinity();
+    for (int c : children) {
+      best = std::min(best,
+                      distance(footprint, obstacle.compound->parts[static_cast<std::size_t>(c)]));
+    }
+    return best;
+  }
+
   // Box-box test of the prepared footprint against obstacle i. The footprint is expressed in
   // the obstacle's frame (computed in double) so that Bullet's float arithmetic works on
   // offsets of a few decimetres instead of lot coordinates. Measured on the lot: answers stay
@@ -246,6 +312,9 @@ struct BulletCollisionWorld::Impl {
   // misclassify 0.14% of near-contact poses at 1e-7 m.
   bool penetrates(int i, const Footprint& footprint) const {
     const Box& obstacle = boxes[static_cast<std::size_t>(i)];
+    if (obstacle.obstacle.shape == ObstacleShape::kCompound) {
+      return compoundPenetrates(i, footprint);
+    }
     if (obstacle.obstacle.shape != ObstacleShape::kBox) {
       ++stats.shape_tests;
       return separation(footprint, obstacle.obstacle) < 0.0;
@@ -324,7 +393,7 @@ double BulletCollisionWorld::clearance(const Pose2& pose) const {
     m.collectCandidates(footprint, radius);
     double best = std::numeric_limits<double>::infinity();
     for (int i : m.candidates) {
-      best = std::min(best, distance(footprint, m.boxes[static_cast<std::size_t>(i)].obstacle));
+      best = std::min(best, m.distanceTo(i, footprint, radius));
       if (best == 0.0) return 0.0;
     }
     if (best <= radius) return best;

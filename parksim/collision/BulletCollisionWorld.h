@@ -2,9 +2,10 @@
 // Footprint queries against a scenario's static obstacles, answered by Bullet: a broadphase
 // (btDbvtBroadphase) picks the obstacles whose bounding boxes meet the footprint's, and the
 // box-box detector decides each box exactly; circles and convex polygons are decided exactly
-// in double by core's separation (Geometry.h). Obstacles no higher than the robot's ground
-// clearance are left out (blocksRobot). Bullet stays behind this header so that the
-// planner and the app never include it.
+// in double by core's separation (Geometry.h), and compound obstacles (non-convex polygons,
+// maps) part by part the same way, on the parts their compound shape's tree finds near. Obstacles
+// no higher than the robot's ground clearance are left out (blocksRobot). Bullet stays behind this
+// header so that the planner and the app never include it.
 
 #include <cstdint>
 #include <memory>

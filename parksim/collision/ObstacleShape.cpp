@@ -1,8 +1,11 @@
 #include "parksim/collision/ObstacleShape.h"
 
 #include <algorithm>
+#include <cmath>
 
+#include <BulletCollision/BroadphaseCollision/btDbvt.h>
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletCollision/CollisionShapes/btCompoundShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/CollisionShapes/btCylinderShape.h>
 
@@ -55,6 +58,65 @@ std::unique_ptr<btCollisionShape> polygonShape(const Obstacle& o, const Obstacle
   return shape;
 }
 
+// btCompoundShape does not own its children; this one does.
+class OwningCompoundShape final : public btCompoundShape {
+ public:
+  OwningCompoundShape() : btCompoundShape(false) {}
+  void add(const btTransform& local, std::unique_ptr<btCollisionShape> child) {
+    addChildShape(local, child.get());
+    children_.push_back(std::move(child));
+  }
+
+ private:
+  std::vector<std::unique_ptr<btCollisionShape>> children_;
+};
+
+// A rectangle among a compound's parts (a map's merged cells): its centre, half extents and
+// heading, when its four corners make one to within rounding of the map's rotation.
+bool asRectangle(const std::vector<Eigen::Vector2d>& part, OrientedBox& box) {
+  if (part.size() != 4) return false;
+  const Eigen::Vector2d e0 = part[1] - part[0];
+  const Eigen::Vector2d e1 = part[2] - part[1];
+  const Eigen::Vector2d e2 = part[3] - part[2];
+  const Eigen::Vector2d e3 = part[0] - part[3];
+  const double scale = e0.norm() * e1.norm();
+  if (!(scale > 0.0) || std::abs(e0.dot(e1)) > 1e-9 * scale ||
+      (e0 + e2).norm() > 1e-9 * e0.norm() || (e1 + e3).norm() > 1e-9 * e1.norm()) {
+    return false;
+  }
+  box.center = 0.25 * (part[0] + part[1] + part[2] + part[3]);
+  box.half_extents = {0.5 * e0.norm(), 0.5 * e1.norm()};
+  box.yaw = std::atan2(e0.y(), e0.x());
+  return true;
+}
+
+// Each part a child at its place relative to the obstacle's bounding-rectangle centre: boxes for
+// rectangles, hulls otherwise, with the margins of the policy. The children's bounding-volume
+// tree is built balanced once all are in (a map's thousands of rectangles).
+std::unique_ptr<btCollisionShape> compoundShape(const Obstacle& o, const ObstacleShapeDef& def) {
+  auto shape = std::make_unique<OwningCompoundShape>();
+  for (const std::vector<Eigen::Vector2d>& part : o.compound->parts) {
+    OrientedBox rect;
+    btTransform local;
+    local.setIdentity();
+    if (asRectangle(part, rect)) {
+      Obstacle piece = Obstacle::makeBox("", o.kind, rect, o.height_m);
+      const Eigen::Vector2d d = rect.center - o.box.center;
+      local.setOrigin(btVector3(btScalar(d.x()), btScalar(d.y()), 0));
+      local.setRotation(btQuaternion(btVector3(0, 0, 1), btScalar(rect.yaw)));
+      shape->add(local, boxShape(piece, def));
+      continue;
+    }
+    Obstacle piece = Obstacle::makePolygon("", o.kind, part, o.height_m);
+    const Eigen::Vector2d d = piece.box.center - o.box.center;
+    local.setOrigin(btVector3(btScalar(d.x()), btScalar(d.y()), 0));
+    shape->add(local, polygonShape(piece, def));
+  }
+  shape->createAabbTreeFromChildren();
+  shape->getDynamicAabbTree()->optimizeTopDown();
+  return shape;
+}
+
 }  // namespace
 
 std::unique_ptr<btCollisionShape> makeObstacleShape(const Obstacle& obstacle,
@@ -63,6 +125,7 @@ std::unique_ptr<btCollisionShape> makeObstacleShape(const Obstacle& obstacle,
     case ObstacleShape::kBox: break;
     case ObstacleShape::kCircle: return discShape(obstacle, def);
     case ObstacleShape::kPolygon: return polygonShape(obstacle, def);
+    case ObstacleShape::kCompound: return compoundShape(obstacle, def);
   }
   return boxShape(obstacle, def);
 }

@@ -6,7 +6,9 @@
 // header.
 //
 // The policy: a box is a btBoxShape, a disc a btCylinderShapeZ, a convex polygon the
-// btConvexHullShape of its vertices at the bottom and the top. The shape's frame is at the
+// btConvexHullShape of its vertices at the bottom and the top, a compound obstacle a
+// btCompoundShape of its parts (rectangles as boxes, other parts as hulls, each by the same
+// rules) with a balanced tree of the children's bounds. The shape's frame is at the
 // obstacle's box centre (for circles and polygons the centre of their axis-aligned bounding
 // rectangle) and half its height, so placed there it stands on the ground, z from 0 to the
 // obstacle's height. Whatever the margin, the shape's outer surface, margin included, is the

@@ -3,7 +3,7 @@
 #include <filesystem>
 
 #include "parksim/core/Error.h"
-#include "parksim/sweep/ResultsFile.h"
+#include "parksim/results/ResultsFile.h"
 #include "parksim/sweep/SweepManifest.h"
 
 namespace parksim {

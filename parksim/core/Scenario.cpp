@@ -86,11 +86,66 @@ Obstacle Obstacle::makePolygon(std::string name, ObstacleKind kind,
   return o;
 }
 
+Obstacle Obstacle::makeCompound(std::string name, ObstacleKind kind,
+                                std::shared_ptr<const CompoundShape> compound, double height_m) {
+  Obstacle o;
+  o.name = std::move(name);
+  o.kind = kind;
+  o.shape = ObstacleShape::kCompound;
+  o.box.center = compound->extent.center();
+  o.box.half_extents = 0.5 * compound->extent.sizes();
+  o.compound = std::move(compound);
+  o.height_m = height_m;
+  return o;
+}
+
+namespace {
+
+Eigen::AlignedBox2d boundsOf(const OrientedBox& box) {
+  Eigen::AlignedBox2d b;
+  b.setEmpty();
+  for (const Eigen::Vector2d& c : box.corners()) b.extend(c);
+  return b;
+}
+
+// Gap between two axis-aligned boxes, m: positive when apart (a lower bound of the gap between
+// anything inside them), otherwise <= 0.
+double boundsGap(const Eigen::AlignedBox2d& a, const Eigen::AlignedBox2d& b) {
+  const Eigen::Vector2d gap = (a.min() - b.max()).cwiseMax(b.min() - a.max());
+  return gap.maxCoeff();
+}
+
+// A compound obstacle overlaps the footprint exactly when one of its parts does (their union is
+// the obstacle); apart, the smallest part's gap (parts whose bounds are apart count with the
+// bounds' gap, also a lower bound).
+double compoundSeparation(const OrientedBox& footprint, const CompoundShape& shape) {
+  const Eigen::AlignedBox2d fb = boundsOf(footprint);
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < shape.parts.size(); ++i) {
+    const double gap = boundsGap(fb, shape.bounds[i]);
+    best = std::min(best, gap > 0.0 ? gap : separationAlongAxes(footprint, shape.parts[i]));
+  }
+  return best;
+}
+
+double compoundDistance(const OrientedBox& footprint, const CompoundShape& shape) {
+  const Eigen::AlignedBox2d fb = boundsOf(footprint);
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < shape.parts.size() && best > 0.0; ++i) {
+    if (boundsGap(fb, shape.bounds[i]) >= best) continue;
+    best = std::min(best, distance(footprint, shape.parts[i]));
+  }
+  return best;
+}
+
+}  // namespace
+
 double separation(const OrientedBox& footprint, const Obstacle& obstacle) {
   switch (obstacle.shape) {
     case ObstacleShape::kBox: return separationAlongAxes(footprint, obstacle.box);
     case ObstacleShape::kCircle: return separation(footprint, obstacle.circle());
     case ObstacleShape::kPolygon: return separationAlongAxes(footprint, obstacle.vertices);
+    case ObstacleShape::kCompound: return compoundSeparation(footprint, *obstacle.compound);
   }
   return separationAlongAxes(footprint, obstacle.box);
 }
@@ -100,6 +155,7 @@ double distance(const OrientedBox& footprint, const Obstacle& obstacle) {
     case ObstacleShape::kBox: return distance(footprint, obstacle.box);
     case ObstacleShape::kCircle: return std::max(0.0, separation(footprint, obstacle.circle()));
     case ObstacleShape::kPolygon: return distance(footprint, obstacle.vertices);
+    case ObstacleShape::kCompound: return compoundDistance(footprint, *obstacle.compound);
   }
   return distance(footprint, obstacle.box);
 }
@@ -122,8 +178,18 @@ std::vector<Eigen::Vector2d> outline(const Obstacle& obstacle, int circle_segmen
       return out;
     }
     case ObstacleShape::kPolygon: return obstacle.vertices;
+    case ObstacleShape::kCompound: {
+      const auto c = obstacle.box.corners();
+      return {c.begin(), c.end()};
+    }
   }
   return {};
+}
+
+std::vector<std::vector<Eigen::Vector2d>> convexPieces(const Obstacle& obstacle,
+                                                       int circle_segments) {
+  if (obstacle.shape == ObstacleShape::kCompound) return obstacle.compound->parts;
+  return {outline(obstacle, circle_segments)};
 }
 
 bool blocksRobot(const Obstacle& obstacle, const RobotDef& robot) {

@@ -3,6 +3,7 @@
 // and the physical parameters the simulation uses. Loaded once from a world file
 // (scenario/ScenarioReader.h); everything that changes during an episode lives elsewhere.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,7 +11,9 @@
 #include <Eigen/Core>
 
 #include "parksim/core/Angle.h"
+#include "parksim/core/CompoundShape.h"
 #include "parksim/core/Geometry.h"
+#include "parksim/core/OccupancyGrid.h"
 #include "parksim/core/Pose2.h"
 #include "parksim/core/RobotDef.h"
 
@@ -39,6 +42,8 @@ enum class ObstacleShape {
   kBox,      ///< `box` is the rectangle
   kCircle,   ///< a disc of `radius_m` around `box.center` (bollards, pillars)
   kPolygon,  ///< `vertices`, convex, counter-clockwise (islands, kerb corners)
+  /// `compound`: convex parts (a non-convex polygon, a polygon with holes, a map's cells)
+  kCompound,
 };
 
 /// An obstacle standing on the ground. Parked robots are boxes with the parked vehicle's
@@ -47,12 +52,15 @@ struct Obstacle {
   std::string name;                           ///< unique within the scenario, e.g. "wall_1"
   ObstacleKind kind = ObstacleKind::kBox;     ///< what it is; parked robots have mass
   ObstacleShape shape = ObstacleShape::kBox;  ///< which of the fields below is the footprint
-  /// kBox: the footprint in the lot frame. kCircle and kPolygon: the axis-aligned bounding
-  /// rectangle (centre = the disc's centre for circles), for code that only needs extents.
+  /// kBox: the footprint in the lot frame. kCircle, kPolygon and kCompound: the axis-aligned
+  /// bounding rectangle (centre = the disc's centre for circles), for code that only needs
+  /// extents.
   OrientedBox box;
   double radius_m = 0.0;                  ///< kCircle: radius, m
   std::vector<Eigen::Vector2d> vertices;  ///< kPolygon: lot frame, m, counter-clockwise
-  double height_m = 0.1;                  ///< m
+  /// kCompound: the convex parts and the outline, shared between copies.
+  std::shared_ptr<const CompoundShape> compound;
+  double height_m = 0.1;  ///< m
   /// Parked robots: mass, kg; unset means PhysicsDef::parked_robot_mass_kg.
   std::optional<double> mass_kg;
 
@@ -65,6 +73,9 @@ struct Obstacle {
   /// A convex polygon obstacle; `vertices` counter-clockwise (isStrictlyConvexCcw).
   static Obstacle makePolygon(std::string name, ObstacleKind kind,
                               std::vector<Eigen::Vector2d> vertices, double height_m);
+  /// An obstacle of convex parts (CompoundShape.h).
+  static Obstacle makeCompound(std::string name, ObstacleKind kind,
+                               std::shared_ptr<const CompoundShape> compound, double height_m);
 
   Circle circle() const { return {box.center, radius_m}; }
 };
@@ -79,8 +90,14 @@ double separation(const OrientedBox& footprint, const Obstacle& obstacle);
 double distance(const OrientedBox& footprint, const Obstacle& obstacle);
 
 /// The obstacle's outline, counter-clockwise, m: the corners of a box or a polygon, and for a
-/// circle a regular polygon of `circle_segments` vertices on it (for drawing only).
+/// circle a regular polygon of `circle_segments` vertices on it (for drawing only). A compound
+/// obstacle has no single outline: its bounding rectangle (draw its convexPieces).
 std::vector<Eigen::Vector2d> outline(const Obstacle& obstacle, int circle_segments = 48);
+
+/// The obstacle as convex polygons, counter-clockwise, m: its outline for a box, a circle or a
+/// convex polygon, its parts for a compound obstacle (for drawing and C-space slices).
+std::vector<std::vector<Eigen::Vector2d>> convexPieces(const Obstacle& obstacle,
+                                                       int circle_segments = 48);
 
 /// Obstacles no higher than the robot's ground clearance pass under its chassis: the planner
 /// ignores them and the simulated chassis does not touch them (the wheels touch the ground only).
@@ -154,6 +171,21 @@ std::optional<std::string> placementProblem(const Scenario& scenario, const Pose
 std::optional<std::string> goalPlacementProblem(const Scenario& scenario,
                                                 std::optional<double> margin_m = std::nullopt);
 
+/// A map a world's `map:` section brought in, kept so that figures can draw it under the lot.
+struct MapLayer {
+  std::string name;    ///< the map's obstacle name (its parts' prefix for drawings)
+  std::string source;  ///< the map file (relative to the working folder, as it was read)
+  /// 16 hex digits of the FNV-1a hash of the map's files (a ROS map's YAML and image): folded
+  /// into the world's content hash, so that an edited map is noticed.
+  std::string content_hash;
+  /// Grid maps (ROS, Moving AI): the cells as the map says them; null for drawings (SVG).
+  std::shared_ptr<const OccupancyGrid> grid;
+  /// The grid's occupied and unknown cells (as the map says them, before the world's choices
+  /// such as inflation) merged into rectangles (GridRectangles.h), for drawing.
+  std::shared_ptr<const std::vector<CellRect>> occupied_cells;
+  std::shared_ptr<const std::vector<CellRect>> unknown_cells;
+};
+
 struct Scenario {
   std::string name;         ///< from the file, e.g. "head_in"
   std::string source_path;  ///< file it was read from, for messages
@@ -163,6 +195,8 @@ struct Scenario {
   Pose2 start;
   GoalRegion goal;
   PhysicsDef physics;
+  /// The maps the obstacles came from, in the world's `map:` order (none for a hand-written lot).
+  std::vector<MapLayer> maps;
 };
 
 const char* toString(ObstacleKind kind);

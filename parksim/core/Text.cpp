@@ -104,4 +104,26 @@ std::string joinNames(const std::vector<std::string>& names) {
   return list;
 }
 
+std::string escapeTextShortened(std::string_view text, std::size_t max_bytes) {
+  std::string shown = escapeText(text);
+  if (shown.size() <= max_bytes) return shown;
+  std::size_t cut = max_bytes;
+  // Not inside a UTF-8 sequence (escapes are ASCII).
+  while (cut > 0 && (static_cast<unsigned char>(shown[cut]) & 0xC0) == 0x80) --cut;
+  return shown.substr(0, cut) + "...";
+}
+
+std::string shellQuoted(std::string_view text) {
+  std::string out = "'";
+  for (const char c : text) {
+    if (c == '\'') {
+      out += "'\\''";
+    } else {
+      out += c;
+    }
+  }
+  out += '\'';
+  return out;
+}
+
 }  // namespace parksim

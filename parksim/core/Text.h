@@ -26,6 +26,14 @@ bool isPrintableUtf8(std::string_view text);
 /// replaced by an escape (`\n`, `\t`, `\\x1b`, ...); printable UTF-8 passes unchanged.
 std::string escapeText(std::string_view text);
 
+/// `text` in single quotes as a POSIX shell reads it back (a ' inside as '\''): a path in a
+/// script, a word of a command line.
+std::string shellQuoted(std::string_view text);
+
+/// escapeText(text) cut to at most `max_bytes` bytes at a character boundary, "..." added when
+/// cut: user text (a program's error output, a command line) quoted in a one-line message.
+std::string escapeTextShortened(std::string_view text, std::size_t max_bytes);
+
 /// `names` joined by ", ": the choices an error message lists ("ideal, lab, odometry").
 std::string joinNames(const std::vector<std::string>& names);
 

@@ -7,6 +7,7 @@
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
+#include "parksim/pipeline/EpisodeReport.h"
 #include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/results/JsonFile.h"
@@ -47,6 +48,10 @@ void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
     return;
   }
   const Components& components = componentsOf(request);
+  const PlannerInfo& info = components.planners.find(out.plan_setup.planner).info;
+  // Where the planner's own code runs, for a watching process (UserCodeIsolation.h).
+  UserCodeWatch* watch = info.trusted ? nullptr : request.watch;
+  if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kPlanner, info.name);
   try {
     out.plan = planScenario(scenario, collision, out.plan_setup, request.progress.plan,
                             components.planners);
@@ -54,13 +59,14 @@ void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
     out.verdict = userCodeVerdict(e);
     return;
   }
+  if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kParksim, "");
   out.plan_summary = planSummary(scenario, out.plan_setup, *out.plan);
   if (!out.plan->solved()) {
     out.verdict = planFailedVerdict(*out.plan);
     return;
   }
   out.trajectory = out.plan->trajectory;
-  if (!components.planners.find(out.plan_setup.planner).info.trusted) {
+  if (!info.trusted) {
     checkForeignPlan(scenario, collision, out.plan_setup, out);
   }
 }
@@ -68,7 +74,8 @@ void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
 // The controller of one realisation: a fresh one from the registry (closed loop).
 EpisodeController controllerFor(const EpisodeRequest& request) {
   const ControllerEntry& entry = componentsOf(request).controllers.find(request.controller);
-  return {entry.make(request.controller_params), entry.info.name, entry.info.trusted};
+  return {entry.make(request.controller_params), entry.info.name, entry.info.trusted,
+          request.watch};
 }
 
 // A recorder filming into the request's directory, with the plan drawn.
@@ -141,6 +148,7 @@ nlohmann::json metricsOf(const EpisodeRequest& request, const EpisodeOutcome& ou
   doc.failure = out.verdict.reason;
   doc.plan_summary = out.plan_summary;
   if (recorder != nullptr) doc.gl_description = recorder->glDescription();
+  if (request.components) doc.plugins = pluginsProvenance(*request.components);
   for (const RealisationOutcome& r : out.realisations) {
     doc.realisations.push_back(
         {r.noise_seed, r.metrics, toString(r.verdict.status), r.verdict.met()});
@@ -168,10 +176,11 @@ void writeFiles(const EpisodeRequest& request, EpisodeOutcome& out) {
     writePlanFiles(dir, scenario, out.plan_setup, *out.plan);
     if (out.plan->solved()) out.files.push_back("trajectory.csv");
     out.files.push_back("plan.json");
-  } else {
+  } else if (!out.trajectory.empty()) {  // a given plan (a user planner that failed has none)
     writeTrajectoryCsv(dir + "/trajectory.csv", out.trajectory, scenario.robot);
     out.files.push_back("trajectory.csv");
   }
+  writeEpisodeReport(dir, out);
   if (!out.driven()) return;
   const RecordFormat format = request.record.format;
   writeExecutedFile(dir + "/" + executedFileName(format), out.episode.rows,

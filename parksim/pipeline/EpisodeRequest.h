@@ -19,6 +19,7 @@
 #include "parksim/core/ParamMap.h"
 #include "parksim/core/TrackingTolerance.h"
 #include "parksim/core/Trajectory.h"
+#include "parksim/core/UserCodeWatch.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/plugin/Components.h"
 #include "parksim/renders/Figures.h"
@@ -147,6 +148,10 @@ struct EpisodeRequest {
   /// Figures drawn into out_dir/figures/ (lot map, steering, C-space, plan, tracking error);
   /// none by default.
   FigureDef figures = noFigures();
+
+  /// Set in a process that runs user code under a watch (UserCodeIsolation.h): the episode
+  /// says there when it enters and leaves a user's planner or controller. Not owned.
+  UserCodeWatch* watch = nullptr;
 
   /// Directory the files go to (created when needed); empty: nothing is written.
   std::string out_dir;

@@ -109,6 +109,13 @@ void checkEpisodeRequest(const EpisodeRequest& request) {
   }
 }
 
+bool runsUserCode(const EpisodeRequest& request) {
+  const Components& c = componentsOf(request);
+  if (!request.given_plan && !c.planners.find(request.plan.planner).info.trusted) return true;
+  return request.drive && request.execution.tracking == TrackingMode::kClosed &&
+         !c.controllers.find(request.controller).info.trusted;
+}
+
 const Components& componentsOf(const EpisodeRequest& request) {
   return request.components ? *request.components : *builtInComponents();
 }

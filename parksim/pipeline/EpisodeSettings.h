@@ -35,6 +35,11 @@ EpisodeSettings resolveSettings(const EpisodeRequest& request);
 /// The planners and controllers `request` selects from (request.components, or parksim's own).
 const Components& componentsOf(const EpisodeRequest& request);
 
+/// Whether `request` runs code parksim does not own (an untrusted planner when it plans, an
+/// untrusted controller when it drives closed loop): front-ends then run it in a watched child
+/// (UserCodeIsolation.h).
+bool runsUserCode(const EpisodeRequest& request);
+
 /// The executed-row stride for `rate_hz` rows per simulated second at `time_step_s` (1 for
 /// rate 0: every step).
 int executedStride(double rate_hz, double time_step_s);

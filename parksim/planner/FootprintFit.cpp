@@ -18,6 +18,13 @@ FootprintFit::FootprintFit(const std::vector<Obstacle>& obstacles, const RobotDe
   bucket_m_ = 2.0 * reach_m_;
   for (const Obstacle& o : obstacles) {
     if (!blocksRobot(o, robot)) continue;
+    if (o.shape == ObstacleShape::kCompound) {
+      for (std::size_t p = 0; p < o.compound->parts.size(); ++p) {
+        const Eigen::AlignedBox2d& b = o.compound->bounds[p];
+        add({Obstacle{}, o.compound, p, b.min().x(), b.min().y(), b.max().x(), b.max().y()});
+      }
+      continue;
+    }
     double x0 = o.box.center.x();
     double y0 = o.box.center.y();
     double x1 = x0;
@@ -34,17 +41,26 @@ FootprintFit::FootprintFit(const std::vector<Obstacle>& obstacles, const RobotDe
       x1 = o.box.center.x() + o.radius_m;
       y1 = o.box.center.y() + o.radius_m;
     }
-    const int id = static_cast<int>(shapes_.size());
-    shapes_.push_back({o, x0, y0, x1, y1});
-    // Every bucket a reference point could be in while the footprint touches the obstacle.
-    const auto i0 = static_cast<std::int64_t>(std::floor((x0 - reach_m_) / bucket_m_));
-    const auto i1 = static_cast<std::int64_t>(std::floor((x1 + reach_m_) / bucket_m_));
-    const auto j0 = static_cast<std::int64_t>(std::floor((y0 - reach_m_) / bucket_m_));
-    const auto j1 = static_cast<std::int64_t>(std::floor((y1 + reach_m_) / bucket_m_));
-    for (std::int64_t i = i0; i <= i1; ++i) {
-      for (std::int64_t j = j0; j <= j1; ++j) buckets_[bucketKey(i, j)].push_back(id);
-    }
+    add({o, nullptr, 0, x0, y0, x1, y1});
   }
+}
+
+void FootprintFit::add(Shape shape) {
+  const int id = static_cast<int>(shapes_.size());
+  // Every bucket a reference point could be in while the footprint touches the shape.
+  const auto i0 = static_cast<std::int64_t>(std::floor((shape.x_min - reach_m_) / bucket_m_));
+  const auto i1 = static_cast<std::int64_t>(std::floor((shape.x_max + reach_m_) / bucket_m_));
+  const auto j0 = static_cast<std::int64_t>(std::floor((shape.y_min - reach_m_) / bucket_m_));
+  const auto j1 = static_cast<std::int64_t>(std::floor((shape.y_max + reach_m_) / bucket_m_));
+  shapes_.push_back(std::move(shape));
+  for (std::int64_t i = i0; i <= i1; ++i) {
+    for (std::int64_t j = j0; j <= j1; ++j) buckets_[bucketKey(i, j)].push_back(id);
+  }
+}
+
+double FootprintFit::separationOf(const OrientedBox& footprint, const Shape& shape) const {
+  if (shape.compound) return separationAlongAxes(footprint, shape.compound->parts[shape.part]);
+  return separation(footprint, shape.obstacle);
 }
 
 bool FootprintFit::fitsSomeHeading(double x, double y) const {
@@ -64,7 +80,7 @@ bool FootprintFit::fitsSomeHeading(double x, double y) const {
     const OrientedBox fp = footprintAt(robot_, Pose2{x, y, 2.0 * kPi * h / headings_}, margin_m_);
     bool free = true;
     for (int id : it->second) {
-      if (near(shapes_[id]) && separation(fp, shapes_[id].obstacle) < 0.0) {
+      if (near(shapes_[id]) && separationOf(fp, shapes_[id]) < 0.0) {
         free = false;
         break;
       }

@@ -2,11 +2,13 @@
 // Whether the robot fits at a position in some heading, from the obstacles' shapes: the free
 // test of the search heuristic's grid (ObstacleHeuristic.h), which asks it for every cell of a
 // window. The footprint, grown by a margin, is tested at evenly spread headings against the
-// obstacles near the position (found in buckets of about the footprint's size) with core's
-// exact separating-axis separation. A heuristic's answer: the searches check every move with
-// the MotionValidator; this only has to be fast, ~10x the Bullet query per cell.
+// obstacles near the position (found in buckets of about the footprint's size; a compound
+// obstacle's parts each on their own) with core's exact separating-axis separation. A heuristic's
+// answer: the searches check every move with the MotionValidator; this only has to be fast, ~10x
+// the Bullet query per cell.
 
 #include <cstdint>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
@@ -26,10 +28,15 @@ class FootprintFit {
   bool fitsSomeHeading(double x, double y) const;
 
  private:
+  // A box, circle or convex polygon, or one part of a compound obstacle.
   struct Shape {
-    Obstacle obstacle;
-    double x_min, y_min, x_max, y_max;  // bounding box
+    Obstacle obstacle;                              // unless a part
+    std::shared_ptr<const CompoundShape> compound;  // a part's obstacle
+    std::size_t part = 0;                           // its index there
+    double x_min, y_min, x_max, y_max;              // bounding box
   };
+  void add(Shape shape);
+  double separationOf(const OrientedBox& footprint, const Shape& shape) const;
   std::int64_t bucketKey(std::int64_t i, std::int64_t j) const { return i * 4194304 + j; }
 
   RobotDef robot_;

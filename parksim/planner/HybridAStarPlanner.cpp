@@ -8,6 +8,7 @@
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/planner/Planner.h"
 #include "parksim/planner/PlannerRegistry.h"
+#include "parksim/planner/ReachableBudget.h"
 #include "parksim/planner/ReedsSheppSteering.h"
 
 namespace parksim {
@@ -65,7 +66,14 @@ PlannerEntry hybridAStarPlanner() {
   PlannerInfo info;
   info.name = "hybrid-a-star";
   info.description = "Hybrid A* with Reeds-Shepp curves, then smoothed and timed";
-  info.default_budget = [](const Scenario& s) { return lotScaledBudget(20000, s); };
+  // 20,000 expansions per study lot of the free area it can reach from the start
+  // (ReachableBudget.h), measured in the robot's size as its cells are (lotSizeInStudyLots), at
+  // least the lot's.
+  info.default_budget = [](const Scenario& s) {
+    const double scale = s.robot.sizeScale();  // exactly 1 for the study's robot
+    return boundedBudget(20000.0 * reachableFreeArea(s) / (kStudyLotAreaM2 * scale * scale),
+                         lotScaledBudget(20000, s));
+  };
   return plannerEntry<HybridAStarPlanner>(std::move(info), HybridAStarDef{}, &bind);
 }
 

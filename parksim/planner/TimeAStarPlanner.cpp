@@ -5,6 +5,8 @@
 
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/planner/Planner.h"
+#include "parksim/core/Geometry.h"
+#include "parksim/planner/ReachableBudget.h"
 #include "parksim/planner/TimeAStar.h"
 
 namespace parksim {
@@ -66,8 +68,13 @@ PlannerEntry timeAStarPlanner() {
   info.name = "time-a-star";
   info.description =
       "Hybrid A* costed by driving time, spins in place, time-optimal free-space expansion";
-  // Its window, not the lot, sets the size of its search (SearchWindow.h).
-  info.default_budget = [](const Scenario&) { return 200000; };
+  // Its window, not the lot, sets the size of its search (SearchWindow.h): 200,000 expansions,
+  // or 8 per search cell (of its 72 headings; cells of footprint radius / 4, TimeAStarDef's
+  // default) of the free area it can reach from the start (ReachableBudget.h), whichever is more.
+  info.default_budget = [](const Scenario& s) {
+    const double cell = 0.25 * footprintRadius(s.robot);
+    return boundedBudget(8.0 * reachableFreeArea(s) / (cell * cell), 200000);
+  };
   return plannerEntry<TimeAStarPlanner>(std::move(info), TimeAStarDef{}, &bind);
 }
 

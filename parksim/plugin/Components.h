@@ -23,11 +23,22 @@ struct PluginRecord {
   std::vector<std::string> controllers;  ///< what it registered
 };
 
+/// What a run may select without a plugin: parksim's own planners (builtInPlanners) and
+/// controllers (builtInControllers), then the command planner and controller, which run a
+/// user's program (command/CommandPlanner.h, CommandController.h).
+PlannerRegistry ownPlanners();
+ControllerRegistry ownControllers();
+
 struct Components {
-  PlannerRegistry planners = builtInPlanners();
-  ControllerRegistry controllers = builtInControllers();
+  PlannerRegistry planners = ownPlanners();
+  ControllerRegistry controllers = ownControllers();
   std::vector<PluginRecord> plugins;  ///< in load order
 };
+
+/// The plugins as results record them: "name version hash" of each, in load order, joined by
+/// "; " (empty: none). The `plugins` column of a sweep's rows and metrics.json's
+/// provenance.plugins; a resumed or merged table must carry the same.
+std::string pluginsProvenance(const Components& components);
 
 /// parksim's own planners and controllers, no plugins. Built once, shared.
 std::shared_ptr<const Components> builtInComponents();

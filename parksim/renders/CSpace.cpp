@@ -95,6 +95,31 @@ std::vector<Eigen::Vector2d> cspaceSlice(const Obstacle& obstacle, const RobotDe
   return convexHull(std::move(points));
 }
 
+std::vector<std::vector<Eigen::Vector2d>> cspaceSlices(const Obstacle& obstacle,
+                                                       const RobotDef& robot, double theta_rad,
+                                                       int arc_segments) {
+  if (obstacle.shape != ObstacleShape::kCompound) {
+    return {cspaceSlice(obstacle, robot, theta_rad, arc_segments)};
+  }
+  const double c = std::cos(theta_rad);
+  const double s = std::sin(theta_rad);
+  std::vector<Eigen::Vector2d> reflected;
+  for (const Eigen::Vector2d& f : footprintCornersInRobotFrame(robot)) {
+    reflected.emplace_back(-(c * f.x() - s * f.y()), -(s * f.x() + c * f.y()));
+  }
+  std::vector<std::vector<Eigen::Vector2d>> out;
+  out.reserve(obstacle.compound->parts.size());
+  for (const std::vector<Eigen::Vector2d>& part : obstacle.compound->parts) {
+    std::vector<Eigen::Vector2d> points;
+    points.reserve(part.size() * reflected.size());
+    for (const Eigen::Vector2d& f : reflected) {
+      for (const Eigen::Vector2d& v : part) points.push_back(v + f);
+    }
+    out.push_back(convexHull(std::move(points)));
+  }
+  return out;
+}
+
 bool insideConvex(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& p,
                   double tolerance_m) {
   if (polygon.size() < 3) return false;

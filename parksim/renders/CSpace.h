@@ -32,6 +32,13 @@ std::vector<Eigen::Vector2d> cspaceSlice(const OrientedBox& obstacle, const Robo
 std::vector<Eigen::Vector2d> cspaceSlice(const Obstacle& obstacle, const RobotDef& robot,
                                          double theta_rad, int arc_segments = 8);
 
+/// The slices of the obstacle's convex pieces (core's convexPieces) at heading `theta_rad`, as
+/// cspaceSlice makes them: one for a box, circle or convex polygon; one per part for a compound
+/// obstacle, whose slice is their union (exact: the Minkowski sum distributes over the union).
+std::vector<std::vector<Eigen::Vector2d>> cspaceSlices(const Obstacle& obstacle,
+                                                       const RobotDef& robot, double theta_rad,
+                                                       int arc_segments = 8);
+
 /// Corners of the footprint relative to the reference point, in the robot's frame (x forward),
 /// counter-clockwise, m.
 std::vector<Eigen::Vector2d> footprintCornersInRobotFrame(const RobotDef& robot);

@@ -225,9 +225,18 @@ Scene buildCSpaceSliceFigure(const Scenario& scenario, double theta_rad, const S
   Scene scene = buildLotScene(scenario, style);
   const Rgba8 fill = withAlpha(style.cspace, 80);
   const Rgba8 edge = darker(style.cspace, 0.2);
+  const Rgba8 compound_fill = mix(style.lot, style.cspace, 80.0 / 255.0);
   for (const Obstacle& obstacle : scenario.obstacles) {
     // Obstacles that pass under the chassis are no C-space obstacles (blocksRobot).
     if (!blocksRobot(obstacle, scenario.robot)) continue;
+    if (obstacle.shape == ObstacleShape::kCompound) {
+      // The union of the parts' slices: opaque and without outlines, so that where the parts'
+      // slices overlap nothing shows.
+      for (auto& slice : cspaceSlices(obstacle, scenario.robot, theta_rad)) {
+        scene.polygons.push_back({std::move(slice), Layers::kCSpace, compound_fill});
+      }
+      continue;
+    }
     const std::vector<Eigen::Vector2d> slice = cspaceSlice(obstacle, scenario.robot, theta_rad);
     scene.polygons.push_back({slice, Layers::kCSpace, fill});
     ScenePolyline outline{{}, edge, style.outline_px * 1.3f, true};
@@ -277,8 +286,9 @@ Scene buildCSpaceStackFigure(const Scenario& scenario, int slices, const SceneSt
                             Layers::kGround,
                             style.lot});
   for (const Obstacle& o : scenario.obstacles) {
-    scene.polygons.push_back(
-        {outline(o, style.circle_segments), Layers::kGrid, style.colorFor(o.kind)});
+    for (auto& piece : convexPieces(o, style.circle_segments)) {
+      scene.polygons.push_back({std::move(piece), Layers::kGrid, style.colorFor(o.kind)});
+    }
   }
   const Rgba8 cool = rgb(60, 110, 200);
   for (int k = 0; k < slices; ++k) {
@@ -288,6 +298,13 @@ Scene buildCSpaceStackFigure(const Scenario& scenario, int slices, const SceneSt
     const Rgba8 color = mix(cool, style.cspace, 0.5 * (1.0 + std::cos(theta)));
     for (const Obstacle& o : scenario.obstacles) {
       if (!blocksRobot(o, scenario.robot)) continue;
+      if (o.shape == ObstacleShape::kCompound) {
+        // The parts' slices, without outlines (their seams are no edges of the union).
+        for (auto& slice : cspaceSlices(o, scenario.robot, theta)) {
+          scene.polygons.push_back({std::move(slice), z, color});
+        }
+        continue;
+      }
       const std::vector<Eigen::Vector2d> slice = cspaceSlice(o, scenario.robot, theta);
       scene.polygons.push_back({slice, z, color});
       ScenePolyline outline{{}, darker(color, 0.45), style.tree_px, true};

@@ -2,50 +2,15 @@
 
 #include <fcntl.h>
 #include <signal.h>
-#include <sys/prctl.h>
-#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdlib>
 #include <cstring>
-#include <string_view>
 
 extern char** environ;
 
 namespace parksim {
-
-namespace {
-
-bool isExecutableFile(const std::string& path) {
-  struct stat st {};
-  return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && ::access(path.c_str(), X_OK) == 0;
-}
-
-}  // namespace
-
-std::string findExecutable(const std::string& program) {
-  if (program.empty()) return {};
-  if (program.find('/') != std::string::npos) {
-    return isExecutableFile(program) ? program : std::string();
-  }
-  const char* path_env = std::getenv("PATH");
-  if (path_env == nullptr) return {};
-  std::string_view rest(path_env);
-  while (true) {
-    const std::size_t colon = rest.find(':');
-    // An empty PATH entry means the current directory.
-    const std::string_view dir = rest.substr(0, colon);
-    std::string candidate(dir.empty() ? std::string_view(".") : dir);
-    candidate += '/';
-    candidate += program;
-    if (isExecutableFile(candidate)) return candidate;
-    if (colon == std::string_view::npos) break;
-    rest.remove_prefix(colon + 1);
-  }
-  return {};
-}
 
 ProcessResult runProcess(const std::vector<std::string>& argv, const std::string& log_path) {
   ProcessResult result;
@@ -69,13 +34,7 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const std::string
     return result;
   }
   if (pid == 0) {
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (::getppid() != parent) ::_exit(127);  // the parent died before prctl took effect
-    sigset_t none;
-    sigemptyset(&none);
-    ::sigprocmask(SIG_SETMASK, &none, nullptr);
-    ::signal(SIGXFSZ, SIG_DFL);
-    ::signal(SIGPIPE, SIG_DFL);
+    resetForkedChild(parent);
     const int in = ::open("/dev/null", O_RDONLY);
     const int out = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (in < 0 || out < 0 || ::dup2(in, STDIN_FILENO) < 0 || ::dup2(out, STDOUT_FILENO) < 0 ||

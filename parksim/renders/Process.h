@@ -6,11 +6,9 @@
 #include <string>
 #include <vector>
 
-namespace parksim {
+#include "parksim/core/ChildProcess.h"  // findExecutable
 
-/// The program's path: `program` itself when it contains a '/', else the first executable
-/// `program` in a directory of $PATH. Empty when there is none.
-std::string findExecutable(const std::string& program);
+namespace parksim {
 
 struct ProcessResult {
   bool started = false;  ///< false: the program could not be started (see error)

@@ -74,6 +74,22 @@ void addGrid(Scene& scene, const LotBounds& lot, const SceneStyle& style) {
   }
 }
 
+// A grid map's occupied and unknown cells, faintly, between the ground and its grid lines.
+void addMapCells(Scene& scene, const Scenario& scenario, const SceneStyle& style) {
+  for (const MapLayer& map : scenario.maps) {
+    if (!map.grid) continue;
+    const auto add = [&](const std::shared_ptr<const std::vector<CellRect>>& rects, Rgba8 color) {
+      if (!rects || color.a == 0) return;
+      for (const CellRect& r : *rects) {
+        const auto c = map.grid->corners(r);
+        scene.polygons.push_back({{c.begin(), c.end()}, Layers::kMap, color});
+      }
+    };
+    add(map.unknown_cells, style.map_unknown);
+    add(map.occupied_cells, style.map_occupied);
+  }
+}
+
 // Tracking errors are sub-millimetre when all goes well: two decimals, and no "-0.00".
 std::string formatOverlayLine2(const Overlay& o) {
   auto tidy = [](double v) { return std::abs(v) < 0.005 ? 0.0 : v; };
@@ -96,6 +112,7 @@ Scene buildLotScene(const Scenario& scenario, const SceneStyle& style,
                              {lot.x_min_m, lot.y_max_m}},
                             Layers::kGround,
                             style.lot});
+  addMapCells(scene, scenario, style);
   addGrid(scene, lot, style);
   scene.lines.push_back(
       boxOutline(OrientedBox{extent.center(), {0.5 * extent.width(), 0.5 * extent.height()}, 0.0},
@@ -116,21 +133,24 @@ Scene buildLotScene(const Scenario& scenario, const SceneStyle& style,
       scene.boxes.push_back(box);
       continue;
     }
-    // Round and polygonal obstacles: their outline, moved as the body moved from where the
+    // Round, polygonal and compound obstacles: their convex pieces (a compound obstacle's
+    // parts, in one colour, so that they read as one), moved as the body moved from where the
     // scenario put it (the body's frame is the bounding rectangle's centre and yaw).
-    ScenePrism prism{outline(obstacle, style.circle_segments), 0.0, obstacle.height_m, color};
-    if (i < obstacle_poses.size()) {
-      const Pose2 now = obstacle_poses[i];
-      const double turn = now.theta - obstacle.box.yaw;
-      const double c = std::cos(turn);
-      const double s = std::sin(turn);
-      for (Eigen::Vector2d& p : prism.footprint) {
-        const Eigen::Vector2d d = p - obstacle.box.center;
-        p = Eigen::Vector2d(now.x + c * d.x() - s * d.y(), now.y + s * d.x() + c * d.y());
+    for (std::vector<Eigen::Vector2d>& piece : convexPieces(obstacle, style.circle_segments)) {
+      ScenePrism prism{std::move(piece), 0.0, obstacle.height_m, color};
+      if (i < obstacle_poses.size()) {
+        const Pose2 now = obstacle_poses[i];
+        const double turn = now.theta - obstacle.box.yaw;
+        const double c = std::cos(turn);
+        const double s = std::sin(turn);
+        for (Eigen::Vector2d& p : prism.footprint) {
+          const Eigen::Vector2d d = p - obstacle.box.center;
+          p = Eigen::Vector2d(now.x + c * d.x() - s * d.y(), now.y + s * d.x() + c * d.y());
+        }
       }
+      for (const Eigen::Vector2d& p : prism.footprint) growExtent(extent, p);
+      scene.prisms.push_back(std::move(prism));
     }
-    for (const Eigen::Vector2d& p : prism.footprint) growExtent(extent, p);
-    scene.prisms.push_back(std::move(prism));
   }
 
   // The goal footprint, where the robot must end, dashed so the robot parked on it shows.

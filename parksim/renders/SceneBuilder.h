@@ -75,6 +75,7 @@ void addPath(Scene& scene, std::span<const Pose2> poses, double z_m, Rgba8 color
 /// painter's order agree in every view.
 struct Layers {
   static constexpr double kGround = 0.0;
+  static constexpr double kMap = 0.0001;  ///< a map's cells under the lot (MapLayer)
   static constexpr double kGrid = 0.0002;
   static constexpr double kCSpace = 0.0004;
   static constexpr double kTree = 0.0006;

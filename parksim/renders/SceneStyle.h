@@ -33,6 +33,10 @@ struct SceneStyle {
   Rgba8 executed = rgb(235, 90, 20);    ///< executed path
   Rgba8 footprint = rgb(40, 40, 40);    ///< footprint outlines along a path
   Rgba8 cspace = rgb(200, 60, 60);      ///< C-space obstacle slices
+  /// A map's occupied and unknown cells as its file says them, drawn faintly under the lot's
+  /// obstacles (a world's `map:` section), so that an import can be seen to be right.
+  Rgba8 map_occupied{40, 40, 48, 70};
+  Rgba8 map_unknown{70, 110, 200, 45};
   Rgba8 text = rgb(20, 20, 20);
   Rgba8 text_background{255, 255, 255, 200};
   Rgba8 axis = rgb(60, 60, 60);  ///< plot and figure axes, ticks

@@ -5,67 +5,16 @@
 #include "parksim/core/Error.h"
 #include "parksim/core/Provenance.h"
 #include "parksim/realism/Distribution.h"
+#include "parksim/results/EpisodeRecord.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/PlanFile.h"
 
 namespace parksim {
 
 nlohmann::json metricsToJson(const EpisodeMetrics& m) {
-  nlohmann::json j;
-  j["tracking"] = toString(m.tracking);
-  j["max_pos_err_m"] = m.max_pos_err_m;
-  j["rms_pos_err_m"] = m.rms_pos_err_m;
-  j["final_pos_err_m"] = m.final_pos_err_m;
-  j["max_heading_err_deg"] = m.max_heading_err_deg;
-  j["rms_heading_err_deg"] = m.rms_heading_err_deg;
-  j["final_heading_err_deg"] = m.final_heading_err_deg;
-  j["final_x_m"] = m.final_pose.x;
-  j["final_y_m"] = m.final_pose.y;
-  j["final_theta_rad"] = m.final_pose.theta;
-  j["goal_pos_err_m"] = m.goal_pos_err_m;
-  j["goal_heading_err_deg"] = m.goal_heading_err_deg;
-  j["goal_reached"] = m.goal_reached;
-  j["contacts"] = m.contacts;
-  // JSON has no infinity; -1 keeps the key a number for tools that read it as one.
-  j["first_contact_t_s"] = m.first_contact_t_s;
-  j["first_contact_body"] = m.first_contact_body;
-  nlohmann::json bodies = nlohmann::json::array();
-  for (const ContactEvent& e : m.contact_events) {
-    if (std::find(bodies.begin(), bodies.end(), e.body) == bodies.end()) bodies.push_back(e.body);
-  }
-  j["contact_bodies"] = bodies;
-  j["max_parked_displacement_m"] = m.max_parked_displacement_m;
-  for (const ParkedRobotDisplacement& p : m.parked) {
-    j["parked_displacement_m." + p.name] = p.max_m;
-  }
-  j["plan_duration_s"] = m.plan_duration_s;
-  j["sim_time_s"] = m.sim_time_s;
-  j["steps"] = m.steps;
-  j["time_step_s"] = m.time_step_s;
-  j["ended_at_rest"] = m.ended_at_rest;
-  j["wall_time_s"] = m.wall_time_s;
-  j["real_time_factor"] = m.wall_time_s > 0.0 ? m.sim_time_s / m.wall_time_s : 0.0;
-  j["realism"] = m.realism;
-  j["noise_seed"] = m.noise_seed;
-  j["estimator"] = m.estimator;
-  j["max_est_pos_err_m"] = m.max_est_pos_err_m;
-  j["rms_est_pos_err_m"] = m.rms_est_pos_err_m;
-  j["max_est_heading_err_deg"] = m.max_est_heading_err_deg;
-  j["final_est_pos_err_m"] = m.final_est_pos_err_m;
-  j["max_slip_mps"] = m.max_slip_mps;
-  j["rms_slip_mps"] = m.rms_slip_mps;
-  j["slip_fraction"] = m.slip_fraction;
-  j["max_motor_torque_nm"] = m.max_motor_torque_nm;
-  j["max_motor_effort"] = m.max_motor_effort;
-  j["true_left_radius_m"] = m.true_left_radius_m;
-  j["true_right_radius_m"] = m.true_right_radius_m;
-  j["true_track_m"] = m.true_track_m;
-  j["left_motor_gain"] = m.left_motor_gain;
-  j["right_motor_gain"] = m.right_motor_gain;
-  j["pose_samples_taken"] = m.pose_samples_taken;
-  j["pose_samples_dropped"] = m.pose_samples_dropped;
-  j["pose_samples_received"] = m.pose_samples_received;
-  return j;
+  EpisodeFacts facts;
+  facts.metrics = &m;
+  return metricsRecord(facts);
 }
 
 EpisodeMetrics metricsFromJson(const nlohmann::json& j) {
@@ -98,6 +47,10 @@ EpisodeMetrics metricsFromJson(const nlohmann::json& j) {
   if (j.contains("tracking") && j.at("tracking").is_string()) {
     m.tracking = trackingModeFromString(j.at("tracking").get<std::string>());
   }
+  if (j.contains("controller") && j.at("controller").is_string()) {
+    m.controller = j.at("controller").get<std::string>();
+  }
+
   return m;
 }
 
@@ -156,11 +109,19 @@ void addRealisations(nlohmann::json& j, const std::vector<MetricsDocument::Reali
 }  // namespace
 
 nlohmann::json metricsDocumentJson(const MetricsDocument& doc) {
-  nlohmann::json j = metricsToJson(doc.metrics);
+  EpisodeFacts facts;
+  facts.metrics = &doc.metrics;
+  facts.plan_summary = &doc.plan_summary;
+  facts.judged = true;
+  facts.status = doc.status;
+  facts.met = doc.met;
+  facts.failure = doc.failure;
+  nlohmann::json j = metricsRecord(facts);
   // Held in a variable: a range-for over a temporary's items() would dangle.
   const nlohmann::json provenance = provenanceToJson(buildProvenance());
   for (const auto& [key, value] : provenance.items()) j["provenance." + key] = value;
   if (!doc.gl_description.empty()) j["provenance.gl"] = doc.gl_description;
+  if (!doc.plugins.empty()) j["provenance.plugins"] = doc.plugins;
   j["world"] = doc.world;
   j["scenario"] = doc.scenario;
   j["tolerance.max_pos_err_m"] = doc.tolerance.max_pos_err_m;
@@ -168,9 +129,7 @@ nlohmann::json metricsDocumentJson(const MetricsDocument& doc) {
   j["tolerance.goal_heading_err_deg"] = doc.tolerance.goal_heading_err_deg;
   j["tolerance.max_contacts"] = doc.tolerance.max_contacts;
   j["tolerance.max_parked_displacement_m"] = doc.tolerance.max_parked_displacement_m;
-  j["status"] = doc.status;
-  j["met_tolerance"] = doc.met;
-  j["failure"] = doc.failure;
+  // Every key of plan.json, with a plan_ prefix: the record's plan fields among them, alike.
   addPlanKeys(j, doc.plan_summary);
   if (doc.realisations.size() > 1) addRealisations(j, doc.realisations);
   return j;

@@ -12,9 +12,10 @@
 
 namespace parksim {
 
-/// metrics.json's content, flat: every value is a number, a boolean or a string, except
-/// contact_bodies (a list of names, in the order they were first touched). Parked robots get
-/// one key each, parked_displacement_m.<name>. Keys are listed in docs/simulation.md.
+/// The measurements' part of metrics.json, flat: every field of the episode record
+/// (EpisodeRecord.h) read from the metrics alone. Every value is a number, a boolean or a
+/// string, except contact_bodies (a list of names, in the order they were first touched).
+/// Parked robots get one key each, parked_displacement_m.<name>.
 nlohmann::json metricsToJson(const EpisodeMetrics& metrics);
 
 /// The metrics a TrackingTolerance checks, read back from metricsToJson's keys. Throws Error
@@ -37,6 +38,9 @@ struct MetricsDocument {
   nlohmann::json plan_summary;
   /// "provenance.gl": the renderer when the episode was filmed, else empty (no key).
   std::string gl_description;
+  /// "provenance.plugins": the plugins loaded (plugin/Components.h, pluginsProvenance), else
+  /// empty (no key).
+  std::string plugins;
 
   struct Realisation {
     std::uint64_t noise_seed = 0;
@@ -49,8 +53,10 @@ struct MetricsDocument {
   std::vector<Realisation> realisations;
 };
 
-/// metrics.json's content for `doc`: metricsToJson(doc.metrics) with "provenance.<key>" of
-/// this build, the world, the tolerance, the verdict, the plan keys and the realisations.
+/// metrics.json's content for `doc`: the episode record's metrics.json fields (the
+/// measurements, the verdict, the plan's statistics) with every key of plan.json as
+/// plan_<key>, "provenance.<key>" of this build, the world, the tolerance and the
+/// realisations.
 nlohmann::json metricsDocumentJson(const MetricsDocument& doc);
 
 }  // namespace parksim

@@ -211,7 +211,7 @@ std::optional<std::string> planFileProblem(const Trajectory& traj) {
   return std::nullopt;
 }
 
-Trajectory parseTrajectoryCsv(std::string_view text, const std::string& path) {
+Trajectory parseTrajectoryCsvRows(std::string_view text, const std::string& path) {
   Trajectory traj;
   scanSeries(text, path, "trajectory file", PlanFileLimits::kMaxTimeS,
              {{"t"}, {"x"}, {"y"}, {"theta"}, {"omega_left"}, {"omega_right"}}, true,
@@ -222,6 +222,11 @@ Trajectory parseTrajectoryCsv(std::string_view text, const std::string& path) {
                p.wheels = {v[4], v[5]};
                traj.points.push_back(p);
              });
+  return traj;
+}
+
+Trajectory parseTrajectoryCsv(std::string_view text, const std::string& path) {
+  Trajectory traj = parseTrajectoryCsvRows(text, path);
   if (traj.points.empty()) throw Error(path + ": trajectory has no rows");
   return traj;
 }

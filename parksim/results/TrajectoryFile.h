@@ -42,6 +42,10 @@ Trajectory readTrajectoryCsv(const std::string& path);
 /// As readTrajectoryCsv, from text in memory; `source_name` prefixes messages.
 Trajectory parseTrajectoryCsv(std::string_view text, const std::string& source_name);
 
+/// As parseTrajectoryCsv, except that a valid header without rows gives an empty trajectory
+/// instead of an error: how a planner that is a command says "no plan" (docs/your-code.md).
+Trajectory parseTrajectoryCsvRows(std::string_view text, const std::string& source_name);
+
 /// Largest file checkTimeSeriesCsv reads: as readCsvFile's (core/Csv.h), 32 MiB.
 inline constexpr std::uintmax_t kMaxSeriesFileBytes = 32u << 20;
 

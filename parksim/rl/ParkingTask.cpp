@@ -8,6 +8,7 @@
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
 #include "parksim/rl/TaskDrive.h"
+#include "parksim/rl/TaskReward.h"
 
 namespace parksim {
 
@@ -38,6 +39,11 @@ long stepsPerAction(const ParkingTaskDef& def, double dt) {
   return std::max(1L, std::lround(def.control_period_s / dt));
 }
 
+// The step at which an episode is truncated: the task's own limit, else the hard one.
+long stepLimit(const ParkingTaskDef& def) {
+  return def.max_episode_steps > 0 ? def.max_episode_steps : kMaxTaskEpisodeSteps;
+}
+
 }  // namespace
 
 struct ParkingTask::Impl {
@@ -48,27 +54,9 @@ struct ParkingTask::Impl {
         period_s(static_cast<double>(steps_per_action) * s.physics.time_step_s),
         collision(std::make_unique<BulletCollisionWorld>(scenario)),
         drive(def.fidelity == TaskFidelity::kDynamics
-                  ? makeDynamicDrive(scenario, def, def.max_episode_steps, steps_per_action)
-                  : makeKinematicDrive(scenario, def, *collision)) {
-    const RobotDef& r = scenario.robot;
-    const double v_max = r.max_wheel_speed_radps * r.wheel_radius_m;
-    const double omega_max = 2.0 * v_max / r.wheel_base_m;
-    // The reference point is inside the lot when an action starts (else the episode was
-    // truncated), and one action carries it at most v_max * period; doubled for the estimate's
-    // error and for pushes. Speeds get half again for overshoot and collisions.
-    const double margin = 2.0 * v_max * period_s;
-    // The goal's part has the robot's position and heading bounds, not the goal's values:
-    // Gymnasium's checker warns of bounds with low == high, and a task may move its goal.
-    const LotBounds& lot = scenario.lot;
-    const auto x_min = static_cast<float>(lot.x_min_m - margin);
-    const auto y_min = static_cast<float>(lot.y_min_m - margin);
-    const auto x_max = static_cast<float>(lot.x_max_m + margin);
-    const auto y_max = static_cast<float>(lot.y_max_m + margin);
-    const auto v = static_cast<float>(1.5 * v_max);
-    const auto omega = static_cast<float>(1.5 * omega_max);
-    low = {x_min, y_min, -1.0F, -1.0F, -v, -omega, x_min, y_min, -1.0F, -1.0F};
-    high = {x_max, y_max, 1.0F, 1.0F, v, omega, x_max, y_max, 1.0F, 1.0F};
-  }
+                  ? makeDynamicDrive(scenario, def, stepLimit(def), steps_per_action)
+                  : makeKinematicDrive(scenario, def, *collision)),
+        bounds(taskObservationBounds(scenario, period_s)) {}
 
   Scenario scenario;
   ParkingTaskDef def;
@@ -76,8 +64,7 @@ struct ParkingTask::Impl {
   double period_s;
   std::unique_ptr<BulletCollisionWorld> collision;  // before drive: the kinematic drive uses it
   std::unique_ptr<TaskDrive> drive;
-  TaskObservation low{};
-  TaskObservation high{};
+  TaskObservationBounds bounds;
 
   TaskSeed seeding;
   Pose2 start;
@@ -87,6 +74,7 @@ struct ParkingTask::Impl {
   bool running = false;
   DriveState state;
   TaskStep last;
+  double potential = 0.0;  // of the last observed state (rl/TaskReward.h)
 
   Pose2 drawStart(std::mt19937_64& rng) const {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -102,14 +90,7 @@ struct ParkingTask::Impl {
   }
 
   void observe() {
-    const Pose2& e = state.estimate;
-    const Pose2& g = scenario.goal.pose;
-    const std::array<double, kTaskObservationSize> values = {
-        e.x, e.y, std::cos(e.theta), std::sin(e.theta), state.twist.v_mps, state.twist.omega_radps,
-        g.x, g.y, std::cos(g.theta), std::sin(g.theta)};
-    for (std::size_t i = 0; i < kTaskObservationSize; ++i) {
-      last.observation[i] = std::clamp(static_cast<float>(values[i]), low[i], high[i]);
-    }
+    last.observation = taskObservation(state.estimate, state.twist, scenario.goal.pose, bounds);
     TaskInfo& info = last.info;
     info.pose = state.pose;
     info.estimate = state.estimate;
@@ -117,8 +98,13 @@ struct ParkingTask::Impl {
     info.goal_pos_err_m = positionDistance(state.pose, scenario.goal.pose);
     info.goal_heading_err_rad = goalHeadingError(scenario.goal, state.pose.theta);
     info.is_success = info.goal_pos_err_m <= def.success_position_m &&
-                      info.goal_heading_err_rad <= def.success_heading_rad;
+                      info.goal_heading_err_rad <= def.success_heading_rad &&
+                      state.contacts.empty();
     info.contacts = state.contacts;
+  }
+
+  double currentPotential() const {
+    return taskPotential(def, last.info.goal_pos_err_m, last.info.goal_heading_err_rad);
   }
 
   const TaskStep& begin(const Pose2& pose, std::uint64_t seed) {
@@ -129,6 +115,7 @@ struct ParkingTask::Impl {
     running = false;  // until the drive has the new episode
     drive->reset(start, noise_seed, state);
     observe();
+    potential = currentPotential();
     last.reward = 0.0;
     last.terminated = last.truncated = false;
     running = true;
@@ -137,14 +124,17 @@ struct ParkingTask::Impl {
 
   void judge() {
     const TaskInfo& info = last.info;
-    const bool contact = !info.contacts.empty();
-    last.reward = -std::sqrt(info.goal_pos_err_m / def.distance_scale_m +
-                             def.heading_weight * info.goal_heading_err_rad / kPi);
-    if (contact) last.reward += def.contact_reward;
-    if (info.is_success) last.reward += def.success_reward;
-    last.terminated = info.is_success || (contact && def.terminate_on_contact);
-    const bool outside = !scenario.lot.contains(info.pose.x, info.pose.y);
-    last.truncated = !last.terminated && (steps >= def.max_episode_steps || outside);
+    TaskOutcome outcome;
+    outcome.success = info.is_success;
+    outcome.contact = !info.contacts.empty();
+    outcome.exit = !scenario.lot.contains(info.pose.x, info.pose.y);
+    outcome.terminated =
+        outcome.success || outcome.exit || (outcome.contact && def.terminate_on_contact);
+    const double before = potential;
+    potential = currentPotential();
+    last.reward = taskReward(def, before, potential, outcome);
+    last.terminated = outcome.terminated;
+    last.truncated = steps >= stepLimit(def);
     running = !(last.terminated || last.truncated);
   }
 };
@@ -187,13 +177,8 @@ const TaskStep& ParkingTask::step(const TaskAction& action) {
                             "reset to start the next one"
                           : "parking task: no episode yet; reset first");
   }
-  if (!std::isfinite(action.left) || !std::isfinite(action.right)) {
-    throw Error("action: wheel speed fractions must be finite numbers, got (" +
-                formatGeneral(action.left) + ", " + formatGeneral(action.right) + ")");
-  }
-  const double max = d.scenario.robot.max_wheel_speed_radps;
-  const WheelSpeeds wheels{std::clamp(action.left, -1.0, 1.0) * max,
-                           std::clamp(action.right, -1.0, 1.0) * max};
+  checkTaskAction(action);
+  const WheelSpeeds wheels = taskWheelSpeeds(action, d.scenario.robot);
   d.running = false;  // a drive that throws (a diverged simulation) leaves no usable episode
   d.drive->act(wheels, d.steps_per_action, d.state);
   ++d.steps;
@@ -208,8 +193,8 @@ const TaskStep& ParkingTask::last() const { return impl_->last; }
 Pose2 ParkingTask::episodeStart() const { return impl_->start; }
 std::uint64_t ParkingTask::episodeNoiseSeed() const { return impl_->noise_seed; }
 double ParkingTask::controlPeriod() const { return impl_->period_s; }
-const TaskObservation& ParkingTask::observationLow() const { return impl_->low; }
-const TaskObservation& ParkingTask::observationHigh() const { return impl_->high; }
+const TaskObservation& ParkingTask::observationLow() const { return impl_->bounds.low; }
+const TaskObservation& ParkingTask::observationHigh() const { return impl_->bounds.high; }
 
 std::vector<Pose2> ParkingTask::obstaclePoses() const {
   if (!impl_->started) {

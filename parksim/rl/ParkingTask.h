@@ -15,17 +15,9 @@
 #include "parksim/core/Pose2.h"
 #include "parksim/core/Scenario.h"
 #include "parksim/rl/ParkingTaskDef.h"
+#include "parksim/rl/TaskSpaces.h"
 
 namespace parksim {
-
-/// An action: the left and right wheel speeds as fractions of RobotDef::max_wheel_speed_radps;
-/// values outside [-1, 1] are clipped.
-struct TaskAction {
-  double left = 0.0;
-  double right = 0.0;
-};
-
-using TaskObservation = std::array<float, kTaskObservationSize>;
 
 /// What the last reset or step produced, besides the observation and reward.
 struct TaskInfo {
@@ -34,6 +26,7 @@ struct TaskInfo {
   double t_s = 0.0;  ///< simulated time since the episode's start, s
   double goal_pos_err_m = 0.0;
   double goal_heading_err_rad = 0.0;  ///< either heading when the goal allows it
+  /// Within the success thresholds with no contact during the step (then terminated).
   bool is_success = false;
   /// Obstacles (scenario order, ascending) the chassis penetrated during the last action.
   std::vector<int> contacts;
@@ -41,8 +34,11 @@ struct TaskInfo {
 
 struct TaskStep {
   TaskObservation observation{};
-  double reward = 0.0;  ///< 0 after a reset
+  double reward = 0.0;  ///< 0 after a reset (rl/TaskReward.h)
+  /// Success, leaving the lot, or a contact (when ParkingTaskDef::terminate_on_contact).
   bool terminated = false;
+  /// max_episode_steps actions taken (also when the last one terminated, as Gymnasium's
+  /// TimeLimit has it), or kMaxTaskEpisodeSteps.
   bool truncated = false;
   TaskInfo info;
 };
@@ -75,7 +71,8 @@ class ParkingTask {
   const TaskStep& resetAt(const Pose2& start, std::uint64_t noise_seed);
 
   /// Holds `action` for one control period. Throws Error, before anything moves, when an action
-  /// value is not finite, or when no episode is running (none started, or it ended).
+  /// value is not finite (checkTaskAction), or when no episode is running (none started, or it
+  /// ended).
   const TaskStep& step(const TaskAction& action);
 
   /// Whether an episode has been started and has not ended (terminated or truncated).
@@ -90,9 +87,7 @@ class ParkingTask {
 
   /// The control period after rounding to physics steps, s.
   double controlPeriod() const;
-  /// Bounds of every observation: the lot grown by what one action can carry the robot past
-  /// it (the robot's and the goal's positions), and 1.5 x the robot's speed limits;
-  /// observations are clipped into them.
+  /// Bounds of every observation (taskObservationBounds); observations are clipped into them.
   const TaskObservation& observationLow() const;
   const TaskObservation& observationHigh() const;
   /// Planar pose (box centre, yaw) of every obstacle now, in scenario order.

@@ -29,16 +29,19 @@ const char* toString(TaskFidelity fidelity);
 /// Parses "dynamics" or "kinematic"; throws Error otherwise.
 TaskFidelity taskFidelityFromString(const std::string& name);
 
-/// Size of the observation vector: x, y, cos(theta), sin(theta), v, omega of the robot as the
-/// controller sees it, then x, y, cos(theta), sin(theta) of the goal.
-inline constexpr std::size_t kTaskObservationSize = 10;
+/// Most actions one episode lasts, whatever max_episode_steps says: an episode nobody ends
+/// (max_episode_steps 0 and no caller's time limit) still ends (docs/limits.md).
+inline constexpr int kMaxTaskEpisodeSteps = 1'000'000;
 
 struct ParkingTaskDef {
   TaskFidelity fidelity = TaskFidelity::kDynamics;
   /// Each action is held this long, s; rounded to a whole number (at least one) of the world's
   /// physics steps, in both fidelities, so that they share a clock.
   double control_period_s = 0.1;
-  /// The episode is truncated after this many actions.
+  /// The episode is truncated after this many actions, as Gymnasium's TimeLimit truncates it:
+  /// truncated is true at this step even when the step also terminated. 0: no limit of the
+  /// task's own (a caller's time limit governs: gymnasium.make's TimeLimit); at most
+  /// kMaxTaskEpisodeSteps either way.
   int max_episode_steps = 300;
   /// reset() perturbs the world's start by up to this much in x and in y, m (uniform) ...
   double start_position_noise_m = 0.02;
@@ -50,15 +53,29 @@ struct ParkingTaskDef {
   /// ... and the true heading within this of the goal's (either heading when the goal allows
   /// it), rad. The world's own goal tolerances (1 mm / 0.5 deg in the study) are for plans.
   double success_heading_rad = degToRad(5.0);
-  /// Reward per action, as highway-env's parking-v0: -sqrt(d / distance_scale_m +
-  /// heading_weight * e / pi), d the distance to the goal position (m), e the heading error
-  /// (rad) ...
+  /// The reward (docs/python.md, "Reward"): the task's outcome, success_reward on success,
+  /// contact_reward on a step with a contact, exit_reward when the robot leaves the lot, and
+  /// nothing per step; plus potential-based shaping, discount * phi(s') - phi(s) with
+  /// phi = -shaping_weight * D and phi = 0 once the episode has terminated, D the goal distance
+  /// of highway-env's parking-v0: sqrt(d / distance_scale_m + heading_weight * e / pi), d the
+  /// distance to the goal position (m), e the heading error (rad). Shaping of this form does
+  /// not change which policy is best for a learner discounting by `discount` (Ng, Harada and
+  /// Russell 1999): from any start, every successful park returns more than every crash, exit
+  /// and time-out.
   double distance_scale_m = 0.1;
   double heading_weight = 0.3;
-  /// ... plus this on every action during which the chassis penetrated an obstacle ...
-  double contact_reward = -1.0;
-  /// ... plus this on success.
+  /// The learner's discount factor, gamma, in (0, 1]: set it to the learner's (0.99 is
+  /// Stable-Baselines3's default).
+  double discount = 0.99;
+  /// Weight of the shaping potential, >= 0; 0 leaves the outcome's rewards alone (their order
+  /// then holds for every discount).
+  double shaping_weight = 1.0;
+  /// Success: the robot within the success thresholds, with no contact during the step.
   double success_reward = 10.0;
+  /// On every action during which the chassis penetrated an obstacle.
+  double contact_reward = -10.0;
+  /// When the true reference point leaves the lot (the episode terminates).
+  double exit_reward = -10.0;
   /// A contact ends the episode (terminated); otherwise the robot may push on.
   bool terminate_on_contact = true;
   /// Motors, sensors and estimate (kDynamics only; kKinematic requires the ideal robot).

@@ -1,12 +1,10 @@
 #include "parksim/rl/TaskBatch.h"
 
 #include <algorithm>
-#include <cmath>
 #include <string>
 #include <thread>
 
 #include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
 #include "parksim/rl/StepPool.h"
 
 namespace parksim {
@@ -33,15 +31,18 @@ StepPoolDef poolDef(const TaskBatchDef& def, std::size_t count) {
 struct TaskBatch::Impl {
   Impl(const Scenario& scenario, const ParkingTaskDef& task, std::size_t count,
        const TaskBatchDef& def)
-      : pool(poolDef(def, count)) {
+      : pool(poolDef(def, count)), autoreset(def.autoreset) {
     tasks.reserve(count);
     for (std::size_t i = 0; i < count; ++i) tasks.emplace_back(scenario, task);
     results.resize(count);
+    starts.resize(count);
   }
 
   StepPool pool;
+  TaskAutoreset autoreset;
   std::vector<ParkingTask> tasks;
   std::vector<TaskStep> results;
+  std::vector<TaskStep> starts;  // kSameStep: what each task continues from
 };
 
 TaskBatch::TaskBatch(const Scenario& scenario, const ParkingTaskDef& task, std::size_t count,
@@ -64,7 +65,10 @@ const std::vector<TaskStep>& TaskBatch::reset(
   for (std::size_t i = 0; i < seeds.size(); ++i) {
     if (seeds[i]) d.tasks[i].seed(*seeds[i]);
   }
-  d.pool.run(d.tasks.size(), [&d](std::size_t i) { d.results[i] = d.tasks[i].reset(); });
+  d.pool.run(d.tasks.size(), [&d](std::size_t i) {
+    d.results[i] = d.tasks[i].reset();
+    if (d.autoreset == TaskAutoreset::kSameStep) d.starts[i] = d.results[i];
+  });
   return d.results;
 }
 
@@ -75,20 +79,22 @@ const std::vector<TaskStep>& TaskBatch::step(std::span<const TaskAction> actions
                 std::to_string(d.tasks.size()) + " tasks");
   }
   for (std::size_t i = 0; i < actions.size(); ++i) {
-    if (!std::isfinite(actions[i].left) || !std::isfinite(actions[i].right)) {
-      throw Error("action " + std::to_string(i) +
-                  ": wheel speed fractions must be finite numbers, got (" +
-                  formatGeneral(actions[i].left) + ", " + formatGeneral(actions[i].right) + ")");
-    }
+    checkTaskAction(actions[i], static_cast<long>(i));
   }
-  d.pool.run(d.tasks.size(), [&d, actions](std::size_t i) {
+  const bool same_step = d.autoreset == TaskAutoreset::kSameStep;
+  d.pool.run(d.tasks.size(), [&d, actions, same_step](std::size_t i) {
     ParkingTask& task = d.tasks[i];
     d.results[i] = task.running() ? task.step(actions[i]) : task.reset();
+    if (same_step) d.starts[i] = task.running() ? d.results[i] : task.reset();
   });
   return d.results;
 }
 
 const std::vector<TaskStep>& TaskBatch::last() const { return impl_->results; }
+
+const std::vector<TaskStep>& TaskBatch::started() const { return impl_->starts; }
+
+TaskAutoreset TaskBatch::autoreset() const { return impl_->autoreset; }
 
 ParkingTask& TaskBatch::task(std::size_t i) { return impl_->tasks.at(i); }
 

@@ -24,12 +24,23 @@ inline constexpr std::size_t kMaxBatchTasks = 4096;
 /// Most threads a batch starts.
 inline constexpr int kMaxBatchThreads = 256;
 
+/// What TaskBatch::step does with a task whose episode ended.
+enum class TaskAutoreset {
+  /// Gymnasium's default ("next step"): the step reports the episode's last step; the next
+  /// step resets the task instead of stepping it, its action ignored.
+  kNextStep,
+  /// Stable-Baselines3's VecEnv and Gymnasium's "same step": the task is reset within the step
+  /// that ended its episode; last() reports that last step and started() the new episode.
+  kSameStep,
+};
+
 struct TaskBatchDef {
   /// Threads that step the batch, the caller's included, at most kMaxBatchThreads; 0: one per
   /// hardware thread. Never more than the batch has tasks.
   int threads = 0;
   /// How long idle threads poll for the next step before they sleep, s (StepPoolDef).
   double spin_s = 50e-6;
+  TaskAutoreset autoreset = TaskAutoreset::kNextStep;
 };
 
 class TaskBatch {
@@ -51,15 +62,21 @@ class TaskBatch {
   /// entry per task (Error otherwise).
   const std::vector<TaskStep>& reset(const std::vector<std::optional<std::uint64_t>>& seeds);
 
-  /// Holds actions[i] on task i for one control period; a task whose episode ended at the
-  /// previous step (or was never started) is reset instead, its action ignored: it reports its
-  /// first observation, reward 0, neither terminated nor truncated (Gymnasium's default
-  /// autoreset, "next step"). Throws Error, before any task moves, when the number of actions
-  /// is not size() or an action value is not finite (naming the task).
+  /// Holds actions[i] on task i for one control period. A task whose episode ended at the
+  /// previous step (kNextStep), or was never started, is reset instead, its action ignored: it
+  /// reports its first observation, reward 0, neither terminated nor truncated. Under
+  /// kSameStep a task whose episode ends in this step is reset right after it (started()).
+  /// Throws Error, before any task moves, when the number of actions is not size() or an
+  /// action value is not finite (naming the task: "action 3: ...").
   const std::vector<TaskStep>& step(std::span<const TaskAction> actions);
 
   /// The result of every task's last reset or step.
   const std::vector<TaskStep>& last() const;
+  /// kSameStep: what each task continues from after the last reset or step: where that step
+  /// ended the episode (last()[i] terminated or truncated), the first step of the episode the
+  /// task was reset to; otherwise the step itself. Empty steps under kNextStep.
+  const std::vector<TaskStep>& started() const;
+  TaskAutoreset autoreset() const;
   ParkingTask& task(std::size_t i);
   const ParkingTask& task(std::size_t i) const;
 

@@ -1,5 +1,8 @@
 #include "parksim/scenario/ScenarioOverrides.h"
 
+#include <algorithm>
+#include <cctype>
+
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
 #include "parksim/scenario/WorldDocument.h"
@@ -91,6 +94,48 @@ void applyOverride(YAML::Node& document, const ScenarioOverride& o) {
       node.reset(node[step.index]);
     }
   }
+}
+
+namespace {
+
+// Text YAML reads as a plain scalar of exactly that text (a number, a name): letters, digits,
+// '.', '_', '+', and '-' other than as a list's dash. Anything else goes through the parser.
+bool isPlainWord(std::string_view t) {
+  if (t.empty() ||
+      (t[0] == '-' &&
+       (t.size() == 1 || !(std::isdigit(static_cast<unsigned char>(t[1])) || t[1] == '.')))) {
+    return false;
+  }
+  return std::all_of(t.begin(), t.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '.' || c == '_' || c == '+' ||
+           c == '-';
+  });
+}
+
+}  // namespace
+
+bool replaceScalar(YAML::Node& document, const ScenarioOverride& o) {
+  // A sweep sets numbers per episode: those skip the parser (a fifth of a world's read).
+  const bool plain = isPlainWord(o.value);
+  const YAML::Node value = plain ? YAML::Node() : parseValue(o);
+  if (!plain && !value.IsScalar()) return false;
+  const std::string& text = plain ? o.value : value.Scalar();
+  const std::string tag = plain ? std::string("?") : value.Tag();
+  YAML::Node node = document;
+  for (const PathStep& step : splitPath(o)) {
+    // Looked up through a const node: a missing key is not created.
+    const YAML::Node& here = node;
+    if (!step.key.empty()) {
+      if (!here.IsMap() || !here[step.key]) return false;
+      node.reset(here[step.key]);
+    } else {
+      if (!here.IsSequence() || step.index >= here.size()) return false;
+      node.reset(here[step.index]);
+    }
+  }
+  if (!node.IsScalar() || node.Tag() != tag) return false;
+  node = text;
+  return true;
 }
 
 namespace {

@@ -12,9 +12,12 @@
 #include <vector>
 
 #include "parksim/core/Angle.h"
+#include "parksim/core/ConvexPartition.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
+#include "parksim/core/PolygonRegion.h"
 #include "parksim/core/Text.h"
+#include "parksim/scenario/MapSection.h"
 #include "parksim/scenario/PhysicalRanges.h"
 #include "parksim/scenario/RealismSections.h"
 #include "parksim/scenario/WorldDocument.h"
@@ -41,7 +44,9 @@ constexpr double kMaxYawDeg = 3600.0;
 // millimetres stay resolvable in double.
 constexpr double kMaxCoordinate_m = 10000.0;
 constexpr double kMaxLength_m = 10000.0;
-constexpr std::size_t kMaxPolygonVertices = 256;
+// Vertices of a polygon's outline or of one hole (all together at most
+// kMaxPolygonRegionVertices).
+constexpr std::size_t kMaxPolygonVertices = 10000;
 
 double coordinate(const YamlField& f) { return f.inRange(-kMaxCoordinate_m, kMaxCoordinate_m); }
 
@@ -229,7 +234,9 @@ PhysicsDef readPhysics(const YamlField& field) {
   return physics;
 }
 
-ObstacleKind readKind(const YamlField& field) {
+}  // namespace
+
+ObstacleKind readObstacleKind(const YamlField& field) {
   const std::string kind = field.text();
   if (kind == "wall") return ObstacleKind::kWall;
   if (kind == "curb") return ObstacleKind::kCurb;
@@ -244,36 +251,62 @@ ObstacleKind readKind(const YamlField& field) {
              "; expected one of: wall, curb, island, box, bollard, pillar");
 }
 
+namespace {
+
 Eigen::Vector2d readPoint(const YamlField& field) {
   field.numbers(2, "[x, y]");
   const std::vector<YamlField> xy = field.items();
   return {coordinate(xy[0]), coordinate(xy[1])};
 }
 
-// Vertices in either winding; stored counter-clockwise. Convexity is required because the
-// exact queries (separating axes, C-space slices) are exact for convex shapes.
-std::vector<Eigen::Vector2d> readVertices(const YamlField& field) {
+// One ring of [x, y] points.
+std::vector<Eigen::Vector2d> readRing(const YamlField& field) {
   const std::vector<YamlField> items = field.listUpTo(kMaxPolygonVertices);
   if (items.size() < 3) {
     field.fail("a polygon needs at least 3 vertices [x, y], got " + std::to_string(items.size()));
   }
-  std::vector<Eigen::Vector2d> vertices;
-  for (const YamlField& item : items) vertices.push_back(readPoint(item));
-  if (signedDoubleArea(vertices) < 0.0) std::reverse(vertices.begin(), vertices.end());
-  if (!isStrictlyConvexCcw(vertices)) {
-    field.fail(
-        "must be a convex polygon: vertices in order around it, no repeated or collinear "
-        "vertices, no self-crossing");
+  std::vector<Eigen::Vector2d> ring;
+  for (const YamlField& item : items) ring.push_back(readPoint(item));
+  return ring;
+}
+
+// Any simple polygon, with holes: vertices in either winding. A convex one without holes is
+// stored as it is (counter-clockwise); any other is cut into convex parts exactly
+// (ConvexPartition.h), because the exact queries and Bullet's shapes are convex.
+Obstacle readPolygon(const Obstacle& base, const YamlField& vertices,
+                     const std::optional<YamlField>& holes_field) {
+  PolygonWithHoles region;
+  region.outer = readRing(vertices);
+  if (holes_field) {
+    for (const YamlField& hole : holes_field->listUpTo(kMaxPolygonVertices)) {
+      region.holes.push_back(readRing(hole));
+    }
   }
-  return vertices;
+  if (region.holes.empty()) {
+    std::vector<Eigen::Vector2d> ccw = region.outer;
+    if (signedDoubleArea(ccw) < 0.0) std::reverse(ccw.begin(), ccw.end());
+    if (isStrictlyConvexCcw(ccw)) {
+      return Obstacle::makePolygon(base.name, base.kind, std::move(ccw), base.height_m);
+    }
+  }
+  if (const std::optional<std::string> problem = regionProblem(region)) {
+    (holes_field && problem->rfind("hole", 0) == 0 ? *holes_field : vertices)
+        .fail("must be a simple polygon (holes inside it, apart): " + *problem);
+  }
+  const PolygonWithHoles tidy = normalizedRegion(region);
+  std::vector<std::vector<Eigen::Vector2d>> rings{tidy.outer};
+  rings.insert(rings.end(), tidy.holes.begin(), tidy.holes.end());
+  return Obstacle::makeCompound(base.name, base.kind,
+                                CompoundShape::make(convexPartition(region), std::move(rings)),
+                                base.height_m);
 }
 
 Obstacle readObstacle(const YamlField& field) {
-  const YamlMap m =
-      field.map({"name", "kind", "center", "size", "yaw_deg", "radius", "vertices", "height"});
+  const YamlMap m = field.map(
+      {"name", "kind", "center", "size", "yaw_deg", "radius", "vertices", "holes", "height"});
   Obstacle obstacle;
   obstacle.name = m.required("name").name();
-  obstacle.kind = readKind(m.required("kind"));
+  obstacle.kind = readObstacleKind(m.required("kind"));
   const std::optional<YamlField> size = m.optional("size");
   const std::optional<YamlField> radius = m.optional("radius");
   const std::optional<YamlField> vertices = m.optional("vertices");
@@ -281,9 +314,10 @@ Obstacle readObstacle(const YamlField& field) {
   if (shapes != 1) {
     const YamlField at = shapes == 0 ? m.required("kind") : *(vertices ? vertices : radius);
     YamlField(at.node(), field.path(), at.line(), field.source())
-        .fail(
-            "give exactly one shape: size (a box), radius (a circle) or vertices (a convex "
-            "polygon)");
+        .fail("give exactly one shape: size (a box), radius (a circle) or vertices (a polygon)");
+  }
+  if (const std::optional<YamlField> holes = m.optional("holes"); holes && !vertices) {
+    holes->fail("holes belong to a polygon (vertices)");
   }
   if (vertices) {
     for (const char* key : {"center", "yaw_deg"}) {
@@ -291,8 +325,7 @@ Obstacle readObstacle(const YamlField& field) {
         f->fail("a polygon is placed by its vertices alone");
       }
     }
-    obstacle = Obstacle::makePolygon(obstacle.name, obstacle.kind, readVertices(*vertices),
-                                     obstacle.height_m);
+    obstacle = readPolygon(obstacle, *vertices, m.optional("holes"));
   } else if (radius) {
     if (const std::optional<YamlField> f = m.optional("yaw_deg")) {
       f->fail("a circle has no heading");
@@ -446,14 +479,26 @@ World readWorldDocument(const YAML::Node& document, const std::string& source_na
   const YamlField root(document, "", 1, source_name);
   const YamlMap top(root);
   readFormat(top.required("format"));
-  top.rejectUnknownKeys({"format", "name", "lot", "robot", "obstacles", "parked_robots", "start",
-                         "goal", "physics", "realism", "tolerance"});
+  top.rejectUnknownKeys({"format", "name", "lot", "map", "robot", "obstacles", "parked_robots",
+                         "start", "goal", "physics", "realism", "tolerance"});
   World world;
   world.sections = readRealismSections(top);
   Scenario& s = world.scenario;
   s.source_path = source_name;
   s.name = top.required("name").name();
-  s.lot = readLot(top.required("lot"));
+  // Maps first: without `lot:` their extent is the lot.
+  NameRegistry names;
+  std::optional<MapSection> maps;
+  if (const std::optional<YamlField> list = top.optional("map")) {
+    maps = readMapSection(*list, source_name);
+    s.maps = std::move(maps->layers);
+  }
+  if (top.optional("lot") || !maps || maps->extent.isEmpty()) {
+    s.lot = readLot(top.required("lot"));
+  } else {
+    s.lot = {maps->extent.min().x(), maps->extent.min().y(), maps->extent.max().x(),
+             maps->extent.max().y()};
+  }
   // The robot comes before the parked robots whatever the key order: they share its footprint.
   const std::optional<YamlField> robot = top.optional("robot");
   const std::optional<YamlField> physics = top.optional("physics");
@@ -465,7 +510,13 @@ World readWorldDocument(const YAML::Node& document, const std::string& source_na
     (robot ? *robot : physics ? *physics : root).fail(*problem);
   }
 
-  NameRegistry names;
+  if (maps) {
+    const YamlField list = *top.optional("map");
+    for (Obstacle& o : maps->obstacles) {
+      names.add(list, o.name);
+      s.obstacles.push_back(std::move(o));
+    }
+  }
   if (const std::optional<YamlField> list = top.optional("obstacles")) {
     for (const YamlField& entry : list->listUpTo(kMaxObstacles)) {
       s.obstacles.push_back(readObstacle(entry));

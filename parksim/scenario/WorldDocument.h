@@ -16,9 +16,6 @@
 
 namespace parksim {
 
-/// The text of the world file at `path`, with loadScenario's checks (type, size) and messages.
-std::string readWorldFile(const std::string& path);
-
 /// Parses world-file text into its one YAML document. Throws Error on syntax errors, an empty
 /// text or several documents.
 YAML::Node loadWorldDocument(std::string_view yaml_text, const std::string& source_name);
@@ -26,9 +23,19 @@ YAML::Node loadWorldDocument(std::string_view yaml_text, const std::string& sour
 /// Validates a world document into a World (parseWorld's second half).
 World readWorldDocument(const YAML::Node& document, const std::string& source_name);
 
+class YamlField;
+
+/// An obstacle's `kind` (wall, curb, island, box, bollard, pillar); a map entry's too.
+ObstacleKind readObstacleKind(const YamlField& field);
+
 /// Replaces the node at o.path in `document` by o.value (ScenarioOverrides.h). Throws Error
 /// naming the override on a bad path or value.
 void applyOverride(YAML::Node& document, const ScenarioOverride& o);
+
+/// When o.path leads to a scalar of `document` and o.value is a scalar of the same tag (plain
+/// or quoted), sets that scalar's text to o.value's, in place, and returns true: what
+/// applyOverride would leave, without new nodes. False, changing nothing, otherwise.
+bool replaceScalar(YAML::Node& document, const ScenarioOverride& o);
 
 /// A reader message is "<source>:<line>: <field path>: <what>"; when the field is an
 /// overridden one (or inside one), its file line is meaningless: rethrows `e` naming the

@@ -241,11 +241,12 @@ YamlMap::YamlMap(const YamlField& field) : field_(field) {
   // walk, done with an explicit stack and each map visited once: a map merged a second time
   // (by a fan-out of aliases, or by a cycle back to itself) adds nothing, so skipping it keeps
   // the meaning while work and stack depth stay bounded (a "billion laughs" of merge keys).
-  std::set<std::string> seen;
+  // Small linear sets: a map has a dozen keys, and worlds are read per sweep episode.
+  std::vector<const std::string*> seen;
   std::vector<YamlField> pending{field_};
   // Identity of a node: its position in the text, then YAML::Node::is among the few that
   // share a position (nodes of override values parsed from other text).
-  std::unordered_map<std::size_t, std::vector<YAML::Node>> visited;
+  std::vector<std::pair<std::size_t, YAML::Node>> visited;
   std::size_t work = 0;
   const auto count = [&work](const YamlField& at, std::size_t items) {
     work += items;
@@ -254,28 +255,35 @@ YamlMap::YamlMap(const YamlField& field) : field_(field) {
               " maps and keys (the limit for one map)");
     }
   };
+  const auto contains = [](const std::vector<const std::string*>& names, const std::string& s) {
+    return std::any_of(names.begin(), names.end(), [&s](const std::string* n) { return *n == s; });
+  };
   while (!pending.empty()) {
     const YamlField source = pending.back();
     pending.pop_back();
     if (!source.node().IsMap()) source.fail("a merge key takes a map or a list of maps");
-    std::vector<YAML::Node>& same_place =
-        visited[static_cast<std::size_t>(source.node().Mark().pos)];
-    const bool again = std::any_of(same_place.begin(), same_place.end(),
-                                   [&source](const YAML::Node& v) { return v.is(source.node()); });
+    const auto pos = static_cast<std::size_t>(source.node().Mark().pos);
+    const bool again = std::any_of(visited.begin(), visited.end(), [&](const auto& v) {
+      return v.first == pos && v.second.is(source.node());
+    });
     if (again) continue;
-    same_place.push_back(source.node());
-    std::set<std::string> keys_here;
+    visited.emplace_back(pos, source.node());
+    std::vector<const std::string*> keys_here;
     std::vector<YamlField> merges_here;
     for (const auto& entry : source.node()) {
       count(source, 1);
       const YAML::Node& key = entry.first;
-      const std::string key_path =
-          field_.path().empty() ? key.Scalar() : field_.path() + "." + key.Scalar();
-      const YamlField at = source.child(key, key_path, key);
-      if (!key.IsScalar() || key.Scalar().empty()) at.fail("keys must be names");
-      if (!keys_here.insert(key.Scalar()).second) at.fail("duplicate key");
+      // The field of this entry, for messages and merges only (a path per key costs).
+      const auto at = [&] {
+        const std::string key_path =
+            field_.path().empty() ? key.Scalar() : field_.path() + "." + key.Scalar();
+        return source.child(key, key_path, key);
+      };
+      if (!key.IsScalar() || key.Scalar().empty()) at().fail("keys must be names");
+      if (contains(keys_here, key.Scalar())) at().fail("duplicate key");
+      keys_here.push_back(&key.Scalar());
       if (isMergeKey(key)) {
-        const YamlField value = source.child(entry.second, key_path, key);
+        const YamlField value = source.child(entry.second, at().path(), key);
         // Counted before a long list of aliases is built.
         count(value, entry.second.IsSequence() ? entry.second.size() : 1);
         if (entry.second.IsSequence()) {
@@ -285,7 +293,10 @@ YamlMap::YamlMap(const YamlField& field) : field_(field) {
         }
         continue;
       }
-      if (seen.insert(key.Scalar()).second) entries_.emplace_back(key, entry.second);
+      if (!contains(seen, key.Scalar())) {
+        seen.push_back(&key.Scalar());
+        entries_.emplace_back(key, entry.second);
+      }
     }
     pending.insert(pending.end(), merges_here.rbegin(), merges_here.rend());
   }

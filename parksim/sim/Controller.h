@@ -56,6 +56,9 @@ struct ControllerSetup {
   /// True when ControllerInput::pose is an estimate (a realism with an estimator), false when
   /// it is the true pose.
   bool estimated_pose = false;
+  /// True for the ideal robot (no realism active): the input's pose, twist and wheel speeds are
+  /// the truth, and every physics step is a tick.
+  bool ideal_robot = true;
 };
 
 /// What the robot knows at one control tick. Poses are in the lot frame.
@@ -68,6 +71,9 @@ struct ControllerInput {
   /// Measured wheel speeds, rad/s: the true speeds with the ideal robot; under a realism the
   /// encoders' difference over the last control period.
   WheelSpeeds wheel_speeds_radps;
+  /// The body's (v, omega): the true twist with the ideal robot; under a realism the twist of
+  /// the measured wheel speeds (nominal radius and wheel base).
+  Twist twist;
   Pose2 reference;  ///< the plan's pose at t_s
   /// The plan's twist and wheel speeds over the interval this tick's command will act (from
   /// the tick plus the latency, for one period): the feed-forward.

@@ -73,6 +73,9 @@ void validate(const Scenario& scenario, const SimModelDef& model) {
     if (o.shape == ObstacleShape::kPolygon && !isStrictlyConvexCcw(o.vertices)) {
       throw Error("simulation: " + o.name + " must be a convex counter-clockwise polygon");
     }
+    if (o.shape == ObstacleShape::kCompound && (!o.compound || o.compound->parts.empty())) {
+      throw Error("simulation: " + o.name + " must have convex parts");
+    }
     if (o.mass_kg) requirePositive(*o.mass_kg, (o.name + " mass").c_str());
   }
   const TrueRobotDef& body = model.body;

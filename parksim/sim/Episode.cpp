@@ -204,6 +204,7 @@ struct Episode::Impl {
     setup.period_s = loop ? loop->holdPeriod() : dt;
     setup.latency_s = loop ? loop->def.control.latency_s : 0.0;
     setup.estimated_pose = loop && loop->def.estimator.kind != EstimatorKind::kTruth;
+    setup.ideal_robot = !loop;
     if (controller.trusted) {
       controller.controller->reset(setup);
       return;
@@ -236,10 +237,12 @@ struct Episode::Impl {
       }
       tick_encoders = r.encoder;
       tick_t = in.t_s;
+      in.twist = toTwist(in.wheel_speeds_radps, scenario.robot);
     } else {
       in.pose = lotFrame(state.local_pose);
       in.encoders_rad = state.wheel_angles;
       in.wheel_speeds_radps = state.wheels;
+      in.twist = state.twist;
     }
     in.reference_twist = reference.twistAt(act_mid);
     in.feedforward = reference.wheelsAt(act_mid);
@@ -276,12 +279,17 @@ struct Episode::Impl {
   // Runs a user's controller call; what it throws ends the episode with a controller error.
   template <class F>
   void guarded(F&& call, const char* what) {
+    UserCodeWatch* watch = controller.watch;
+    if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kController, controller.name);
     try {
       call();
+      if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kParksim, "");
     } catch (const std::exception& e) {
+      if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kParksim, "");
       fail(std::string("threw in ") + what + " at t = " +
            formatFixed(static_cast<double>(world.steps()) * dt, 3) + " s: " + e.what());
     } catch (...) {
+      if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kParksim, "");
       fail(std::string("threw something that is not a std::exception in ") + what);
     }
   }

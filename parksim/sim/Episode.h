@@ -17,6 +17,7 @@
 #include "parksim/core/Pose2.h"
 #include "parksim/core/Scenario.h"
 #include "parksim/core/Trajectory.h"
+#include "parksim/core/UserCodeWatch.h"
 #include "parksim/sim/Controller.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/EpisodeMetrics.h"
@@ -49,6 +50,8 @@ struct EpisodeController {
   /// within the wheel-speed limit) and what it throws or gets wrong ends the episode with a
   /// controller error (EpisodeMetrics::controller_error) instead of propagating.
   bool trusted = true;
+  /// Told when an untrusted controller's code starts and ends (UserCodeWatch.h); may be null.
+  UserCodeWatch* watch = nullptr;
 };
 
 /// Physics steps the episode of `plan` may take at most: (plan duration + max_stop_time_s) /

@@ -1,28 +1,38 @@
 #include "parksim/sweep/EpisodeExpansion.h"
 
+#include "parksim/plugin/PluginLoader.h"
+
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <thread>
 
 #include "parksim/core/Error.h"
 #include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/sweep/EpisodeSetup.h"
+#include "parksim/sweep/SetValues.h"
 
 namespace parksim {
 
 std::vector<SweepWorld> loadSweepWorlds(const SweepSpec& spec) {
   std::vector<SweepWorld> worlds;
   for (std::size_t i = 0; i < spec.world_paths.size(); ++i) {
-    worlds.push_back(std::make_shared<const World>(loadWorld(spec.world_paths[i])));
+    const std::string& path = spec.world_paths[i];
+    worlds.push_back(std::make_shared<const SweepWorldFile>(path, readWorldFile(path)));
     for (std::size_t j = 0; j < i; ++j) {
-      if (worlds[j]->scenario.name == worlds[i]->scenario.name) {
+      if (worlds[j]->world.scenario.name == worlds[i]->world.scenario.name) {
         throw Error(spec.source_path + ":" + std::to_string(spec.worlds_line) +
                     ": worlds: " + spec.world_files[j] + " and " + spec.world_files[i] +
-                    " both name their scenario '" + worlds[i]->scenario.name +
+                    " both name their scenario '" + worlds[i]->world.scenario.name +
                     "' (episode ids use the name; rename one)");
       }
     }
   }
   return worlds;
 }
+
+SweepWorldFile::SweepWorldFile(std::string path_in, std::string text)
+    : path(std::move(path_in)), file(std::move(text), path), world(file.read()) {}
 
 namespace {
 
@@ -36,7 +46,7 @@ void checkOffsets(const SweepSpec& spec, const std::vector<SweepWorld>& worlds) 
         EpisodeParams p;
         (start ? p.start_offset : p.goal_offset) = offsets[i];
         try {
-          (void)episodeRequest(p, world, spec.tolerance);
+          (void)episodeRequest(p, episodeWorld(p, world), spec.tolerance);
         } catch (const Error& e) {
           const int line = i < lines.size() ? lines[i] : 0;
           throw Error(spec.source_path + (line > 0 ? ":" + std::to_string(line) : "") + ": " + key +
@@ -49,14 +59,157 @@ void checkOffsets(const SweepSpec& spec, const std::vector<SweepWorld>& worlds) 
   check(spec.goal_offsets, spec.goal_offset_lines, "goal_offsets", false);
 }
 
+// A message about a world read with set: values, at the spec's line of the value it names
+// ("set: PATH=VALUE: ..."), else at the spec with the episode's values.
+Error setError(const SweepSpec& spec, const EpisodeParams& p, const SweepWorld& world,
+               const std::string& what) {
+  for (const SetAxis& axis : spec.set) {
+    if (what.rfind("set: " + axis.path + "=", 0) == 0) {
+      return Error(spec.source_path + ":" + std::to_string(axis.line) + ": " + what +
+                   (spec.world_files.size() > 1 ? " (in " + world->path + ")" : ""));
+    }
+  }
+  std::string values;
+  for (const auto& [path, value] : p.world_set) {
+    values += (values.empty() ? "" : ", ") + path + "=" + value;
+  }
+  return Error(spec.source_path + ": set: " + values +
+               (p.sample ? " (sample " + std::to_string(*p.sample) + ")" : "") + ": " + what);
+}
+
+// Each grid value of each world-value axis on each world, alone, as `--set PATH=VALUE` checks
+// it: a bad path or value is named by its line before any combination is tried.
+void checkSetValues(const SweepSpec& spec, const std::vector<SweepWorld>& worlds) {
+  for (const SetAxis& axis : spec.set) {
+    if (axis.target() != SetAxis::Target::kWorld) continue;
+    for (const std::string& value : axis.values) {
+      EpisodeParams p;
+      p.world_set[axis.path] = value;
+      for (const SweepWorld& world : worlds) {
+        try {
+          (void)episodeWorld(p, world);
+        } catch (const Error& e) {
+          throw setError(spec, p, world, e.what());
+        }
+      }
+    }
+  }
+}
+
+// Every planner and controller of the axes is registered and takes its own parameters and each
+// value of the set: axes' planner.NAME and controller.NAME, each refused at its line in the
+// spec (the combinations are checked again as whole requests when they expand).
+template <class Registry>
+void checkChoices(const SweepSpec& spec, const Registry& registry,
+                  const std::vector<ComponentChoice>& choices, SetAxis::Target target) {
+  const auto at = [&](int line, const std::string& what) {
+    return Error(spec.source_path + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " +
+                 what);
+  };
+  for (const ComponentChoice& c : choices) {
+    try {
+      (void)registry.make(c.name, c.params);
+    } catch (const Error& e) {
+      throw at(c.line, (c.path.empty() ? std::string() : c.path + ": ") + e.what());
+    }
+    for (const SetAxis& axis : spec.set) {
+      if (axis.target() != target) continue;
+      if (c.params.count(axis.parameterName()) > 0) {
+        throw at(axis.line, axis.path + ": " + c.name + "'s entry gives it already");
+      }
+      for (const std::string& value : axis.values) {
+        ParamMap params = c.params;
+        params[axis.parameterName()] = value;
+        try {
+          (void)registry.make(c.name, params);
+        } catch (const Error& e) {
+          throw at(axis.line, axis.path + "=" + value + ": " + e.what());
+        }
+      }
+    }
+  }
+}
+
+void checkComponents(const SweepSpec& spec, const Components& components) {
+  checkChoices(spec, components.planners, spec.planners, SetAxis::Target::kPlanner);
+  checkChoices(spec, components.controllers, spec.controllers, SetAxis::Target::kController);
+}
+
+// The set: part of an episode: world values, planner and controller parameters, the sample.
+struct SetCombination {
+  ParamMap world_set;
+  ParamMap planner_params;
+  ParamMap controller_params;
+  std::optional<std::uint64_t> sample;
+};
+
+void assign(const SetAxis& axis, const std::string& value, SetCombination& c) {
+  switch (axis.target()) {
+    case SetAxis::Target::kWorld: c.world_set[axis.path] = value; break;
+    case SetAxis::Target::kPlanner: c.planner_params[axis.parameterName()] = value; break;
+    case SetAxis::Target::kController: c.controller_params[axis.parameterName()] = value; break;
+  }
+}
+
+// The grid of the set: axes with lists (their product), each with every sample's draws.
+std::vector<SetCombination> setCombinations(const SweepSpec& spec) {
+  std::vector<SetCombination> grid(1);
+  for (const SetAxis& axis : spec.set) {
+    if (axis.distribution) continue;
+    std::vector<SetCombination> next;
+    next.reserve(grid.size() * axis.values.size());
+    for (const SetCombination& c : grid) {
+      for (const std::string& value : axis.values) {
+        next.push_back(c);
+        assign(axis, value, next.back());
+      }
+    }
+    grid = std::move(next);
+  }
+  if (!spec.samples) return grid;
+  std::vector<SetCombination> all;
+  all.reserve(grid.size() * spec.samples->count);
+  for (const SetCombination& c : grid) {
+    for (std::uint64_t i = 0; i < spec.samples->count; ++i) {
+      all.push_back(c);
+      all.back().sample = i;
+      for (const SetAxis& axis : spec.set) {
+        if (axis.distribution) {
+          assign(axis, drawSetValue(*axis.distribution, *spec.samples, i, axis.path), all.back());
+        }
+      }
+    }
+  }
+  return all;
+}
+
 }  // namespace
 
-std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
-                                         const std::vector<SweepWorld>& worlds) {
-  checkOffsets(spec, worlds);
+namespace {
+
+// The episodes of one world and one set: combination, each checked as a request. The
+// combination's world is read once for all of them (from `own`, this thread's copy of the
+// file) and then let go: a sampled spec has one per sample.
+std::vector<SweepEpisode> expandCombination(const SweepSpec& spec, const SweepWorld& file,
+                                            const std::string& world_file,
+                                            const SetCombination& set, const WorldFile& own,
+                                            const std::shared_ptr<const Components>& components) {
+  EpisodeParams base;
+  base.world = file->world.scenario.name;
+  base.world_file = world_file;
+  base.sample = set.sample;
+  base.world_set = set.world_set;
+  base.planner_params = set.planner_params;
+  base.controller_params = set.controller_params;
+  std::shared_ptr<const World> world;
+  try {
+    world = episodeWorld(base, file, own);
+  } catch (const Error& e) {
+    throw setError(spec, base, file, e.what());
+  }
   std::vector<SweepEpisode> out;
-  for (std::size_t w = 0; w < worlds.size(); ++w) {
-    for (const std::string& planner : spec.planners)
+  for (const ComponentChoice& planner : spec.planners)
+    for (const ComponentChoice& controller : spec.controllers)
       for (const std::string& steering : spec.steerings)
         for (const bool smooth : spec.smoothing)
           for (const std::uint64_t seed : spec.seeds)
@@ -67,10 +220,12 @@ std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
                     for (const std::uint64_t noise_seed : spec.noise_seeds)
                       for (const PoseOffset& start : spec.start_offsets)
                         for (const PoseOffset& goal : spec.goal_offsets) {
-                          EpisodeParams p;
-                          p.world = worlds[w]->scenario.name;
-                          p.world_file = spec.world_files.at(w);
-                          p.planner = planner;
+                          EpisodeParams p = base;
+                          p.planner = planner.name;
+                          p.planner_params.insert(planner.params.begin(), planner.params.end());
+                          p.controller = controller.name;
+                          p.controller_params.insert(controller.params.begin(),
+                                                     controller.params.end());
                           p.steering = steering;
                           p.smooth = smooth;
                           p.seed = seed;
@@ -81,17 +236,101 @@ std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
                           p.noise_seed = noise_seed;
                           p.start_offset = start;
                           p.goal_offset = goal;
-                          out.push_back({p, episodeId(p), worlds[w], &spec.tolerance});
+                          // Every combination is checked before anything runs: a bad offset
+                          // stops the sweep before it writes anything.
+                          try {
+                            checkEpisodeRequest(
+                                episodeRequest(p, world, spec.tolerance, components));
+                          } catch (const Error& err) {
+                            if (p.world_set.empty()) {
+                              throw Error(spec.source_path + ": " + err.what());
+                            }
+                            throw setError(spec, p, file, err.what());
+                          }
+                          std::string id = episodeId(p);
+                          out.push_back(
+                              {std::move(p), std::move(id), file, components, &spec.tolerance});
                         }
-  }
-  // Every combination is checked before anything runs: a bad offset stops the sweep before it
-  // writes anything.
-  for (const SweepEpisode& e : out) {
+  return out;
+}
+
+}  // namespace
+
+std::shared_ptr<const Components> loadSweepComponents(const SweepSpec& spec,
+                                                      const Components* extra) {
+  if (spec.plugin_paths.empty() && extra == nullptr) return builtInComponents();
+  auto components = std::make_shared<Components>();
+  for (std::size_t i = 0; i < spec.plugin_paths.size(); ++i) {
     try {
-      checkEpisodeRequest(episodeRequest(e.params, e.world, spec.tolerance));
-    } catch (const Error& err) {
-      throw Error(spec.source_path + ": " + err.what());
+      loadPlugin(*components, spec.plugin_paths[i]);
+    } catch (const Error& e) {
+      throw Error(spec.source_path + ":" + std::to_string(spec.plugins_line) +
+                  ": plugins: " + e.what());
     }
+  }
+  if (extra != nullptr) {
+    for (const PlannerEntry& e : extra->planners.entries()) {
+      if (!components->planners.tryFind(e.info.name)) components->planners.add(e, e.info.plugin);
+    }
+    for (const ControllerEntry& e : extra->controllers.entries()) {
+      if (!components->controllers.tryFind(e.info.name)) {
+        components->controllers.add(e, e.info.plugin);
+      }
+    }
+  }
+  return components;
+}
+
+std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
+                                         const std::vector<SweepWorld>& worlds,
+                                         const std::shared_ptr<const Components>& components) {
+  checkOffsets(spec, worlds);
+  checkSetValues(spec, worlds);
+  checkComponents(spec, *components);
+  const std::vector<SetCombination> combinations = setCombinations(spec);
+  // World x combination, expanded on every core: each combination with world values reads its
+  // world again (10,000 samples of the study's lot: 10,000 reads).
+  const std::size_t tasks = worlds.size() * combinations.size();
+  std::vector<std::vector<SweepEpisode>> parts(tasks);
+  std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> first_error{tasks};
+  std::vector<std::exception_ptr> errors(tasks);
+  const auto work = [&] {
+    std::vector<std::unique_ptr<WorldFile>> own(worlds.size());
+    for (;;) {
+      const std::size_t t = next.fetch_add(1);
+      if (t >= tasks || t > first_error.load()) return;
+      const std::size_t w = t / combinations.size();
+      if (!own[w]) {
+        const std::lock_guard<std::mutex> lock(worlds[w]->mutex);
+        own[w] = std::make_unique<WorldFile>(worlds[w]->file);
+      }
+      try {
+        parts[t] = expandCombination(spec, worlds[w], spec.world_files.at(w),
+                                     combinations[t % combinations.size()], *own[w], components);
+      } catch (...) {
+        errors[t] = std::current_exception();
+        std::size_t seen = first_error.load();
+        while (t < seen && !first_error.compare_exchange_weak(seen, t)) {
+        }
+      }
+    }
+  };
+  const std::size_t threads = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1,
+                                                      std::max<std::size_t>(tasks, 1));
+  std::vector<std::thread> pool;
+  for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  // The first error in the serial order, whichever thread met it first.
+  if (first_error.load() < tasks) std::rethrow_exception(errors[first_error.load()]);
+  std::vector<SweepEpisode> out;
+  std::size_t total = 0;
+  for (const auto& part : parts) total += part.size();
+  out.reserve(total);
+  for (auto& part : parts) {
+    for (SweepEpisode& e : part) out.push_back(std::move(e));
+    std::vector<SweepEpisode>().swap(part);
   }
   std::sort(out.begin(), out.end(),
             [](const SweepEpisode& a, const SweepEpisode& b) { return a.id < b.id; });

@@ -4,34 +4,56 @@
 // lists.
 
 #include <memory>
+#include <mutex>
+#include <string>
 #include <vector>
 
+#include "parksim/plugin/Components.h"
 #include "parksim/scenario/World.h"
 #include "parksim/sweep/EpisodeParams.h"
 #include "parksim/sweep/SweepSpec.h"
 
 namespace parksim {
 
-/// A world of the sweep, loaded once and shared by its episodes.
-using SweepWorld = std::shared_ptr<const World>;
+/// A world file of the sweep, read once and shared by its episodes: the world it reads as, and
+/// its parsed text, to which an episode's set: values are applied as `--set` applies them.
+struct SweepWorldFile {
+  SweepWorldFile(std::string path, std::string text);
+  std::string path;  ///< as opened
+  WorldFile file;
+  World world;  ///< file.read()
+  /// Held while `file` is read or copied: workers read it side by side.
+  mutable std::mutex mutex;
+};
+using SweepWorld = std::shared_ptr<const SweepWorldFile>;
 
 /// Reads the spec's worlds (world_paths order). Throws Error naming the world file, or the
 /// spec's `worlds:` line when two files name their scenario alike (ids use the name).
 std::vector<SweepWorld> loadSweepWorlds(const SweepSpec& spec);
+
+/// The planners and controllers a sweep's axes may name: parksim's own, the spec's `plugins:`
+/// (loaded in order) and `extra`'s (a front-end's own, e.g. Python objects; added after them).
+/// Throws Error naming the spec's line when a plugin cannot be loaded.
+std::shared_ptr<const Components> loadSweepComponents(const SweepSpec& spec,
+                                                      const Components* extra = nullptr);
 
 /// One episode to run: its parameters, its id and the world it runs in.
 struct SweepEpisode {
   EpisodeParams params;
   std::string id;  ///< episodeId(params)
   SweepWorld world;
+  /// Where its planner and controller are found (loadSweepComponents).
+  std::shared_ptr<const Components> components;
   /// The spec's tolerance overrides (points into the spec passed to expandEpisodes).
   const ToleranceOverrides* tolerance = {};
 };
 
 /// Every combination, sorted by id. `worlds` must be loadSweepWorlds(spec); the spec must
-/// outlive the result. Throws Error (prefixed with the spec's file) when a combination is not a
-/// valid request or two combinations share an id.
-std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
-                                         const std::vector<SweepWorld>& worlds);
+/// outlive the result. Throws Error (prefixed with the spec's file, and its line where one
+/// entry is to blame) when a planner or controller is unknown or refuses its parameters, a
+/// combination is not a valid request, or two combinations share an id.
+std::vector<SweepEpisode> expandEpisodes(
+    const SweepSpec& spec, const std::vector<SweepWorld>& worlds,
+    const std::shared_ptr<const Components>& components = builtInComponents());
 
 }  // namespace parksim

@@ -7,9 +7,14 @@
 
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "parksim/core/UserCodeWatch.h"
+#include "parksim/pipeline/EpisodeOutcome.h"
+#include "parksim/pipeline/Verdict.h"
+#include "parksim/results/EpisodeRecord.h"
 #include "parksim/sweep/EpisodeExpansion.h"
 #include "parksim/sweep/SweepSpec.h"
 
@@ -24,11 +29,30 @@ struct EpisodeRunDef {
   std::mutex* film_mutex = nullptr;
 };
 
-/// The episode's results row, without provenance (see ResultsTable.h for its keys): id,
-/// parameters, status (the verdict's, pipeline/Verdict.h), met_tolerance, failure (the
-/// verdict's one line; empty when met), plan statistics, simulation metrics (absent when the
-/// plan failed), timing and world_hash (the world's content_hash). Throws Error when a file
-/// cannot be written.
-nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const EpisodeRunDef& def);
+/// The episode's results row, without provenance: its id, its parameters (EpisodeParams.h)
+/// and the episode record read from its outcome (results/EpisodeRecord.h: the verdict, the
+/// plan's statistics, the measurements when it was driven, timing, world_hash). Throws Error
+/// when a file cannot be written.
+/// `watch`, when given, is told when the episode's user code runs (a sweep's worker process,
+/// SweepRunner.h).
+nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const EpisodeRunDef& def,
+                                       UserCodeWatch* watch = nullptr);
+
+/// The episode's request, without the sweep's recording choices.
+EpisodeRequest sweepEpisodeRequest(const SweepEpisode& episode);
+
+/// The row of an episode whose user code crashed or hung its process (`verdict`: the
+/// planner_error or controller_error of pipeline/Verdict.h's userCodeVerdict): nothing measured.
+nlohmann::ordered_json failedEpisodeRow(const SweepEpisode& episode, const Verdict& verdict);
+
+/// A row: `id` (none when empty), the parameters and the record read from `facts`.
+nlohmann::ordered_json episodeRow(const std::string& id, const EpisodeParams& params,
+                                  const EpisodeFacts& facts);
+
+/// One request's realisations as records without ids (one record for a plan that was not
+/// driven): its parameters (episodeParamsOf) with each realisation's noise seed, and that
+/// realisation's measurements and verdict. `parksim run --junit` reports them.
+std::vector<nlohmann::ordered_json> realisationRecords(const EpisodeRequest& request,
+                                                       const EpisodeOutcome& outcome);
 
 }  // namespace parksim

@@ -15,9 +15,9 @@
 #include <set>
 
 #include "parksim/core/Error.h"
+#include "parksim/results/ResultsFile.h"
+#include "parksim/results/RowSeal.h"
 #include "parksim/sweep/EpisodeParams.h"
-#include "parksim/sweep/ResultsFile.h"
-#include "parksim/sweep/RowSeal.h"
 #include "parksim/sweep/SweepManifest.h"
 
 namespace parksim {
@@ -122,6 +122,7 @@ MergeResult mergeResults(const std::vector<std::string>& source_dirs,
   std::map<std::string, Seen> by_id;
   std::set<std::string> duplicated;
   std::set<std::string> conflicting;
+  std::set<std::string, std::less<>> set_keys;
   TableOrigins origins;
   for (const std::string& dir : source_dirs) {
     addManifest(dir);
@@ -136,6 +137,7 @@ MergeResult mergeResults(const std::vector<std::string>& source_dirs,
     r.sources.push_back(path);
     scanResultsJsonl(path, [&](const TableRow& t) {
       origins.add(t.row, path, t.line);
+      addSetKeys(t.row, set_keys);
       const Seen seen{source, t.offset, t.text.size(), fnv1a64(withoutTiming(t.row).dump())};
       const auto [it, inserted] = by_id.emplace(t.row["episode_id"].get<std::string>(), seen);
       if (inserted) return;
@@ -149,6 +151,7 @@ MergeResult mergeResults(const std::vector<std::string>& source_dirs,
   r.duplicated.assign(duplicated.begin(), duplicated.end());
   r.conflicting.assign(conflicting.begin(), conflicting.end());
   r.mixes = origins.mixes();
+  r.set_columns.assign(set_keys.begin(), set_keys.end());
   if (any_manifest) {
     r.expected = expected.size();
     for (const std::string& id : expected) {
@@ -165,7 +168,7 @@ void writeMergedTable(const std::string& dir, const MergeResult& merged) {
   LineSource lines(merged.sources);
   // The sources stay open (or are reopened) by descriptor or path: renaming the merged files
   // over a source only happens in commit(), after every line was read.
-  ResultsTableWriter writer(dir);
+  ResultsTableWriter writer(dir, merged.set_columns);
   for (const MergedRow& row : merged.rows) {
     const std::string& line = lines.read(row);
     writer.add(line, nlohmann::ordered_json::parse(line));
@@ -181,6 +184,29 @@ std::vector<nlohmann::ordered_json> mergedRows(const MergeResult& merged) {
     rows.push_back(nlohmann::ordered_json::parse(lines.read(row)));
   }
   return rows;
+}
+
+TableVerification verifyResults(const std::string& dir, std::size_t max_listed) {
+  TableVerification v;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw Error(dir + ": not a directory");
+  const std::vector<std::string> sources = mergeSources(dir);
+  const bool sharded = !(sources.size() == 1 && sources.front() == dir);
+  // The whole sweep's ids are in the top folder's manifest (and a lone table's own).
+  SweepManifest manifest;
+  const bool has_manifest = readSweepManifest(dir, manifest);
+  const std::vector<std::string>* expected = has_manifest ? &manifest.episode_ids : nullptr;
+  if (sharded && fs::exists(dir + "/results.jsonl", ec)) verifyTable(dir, expected, max_listed, v);
+  for (const std::string& source : sources) {
+    if (fs::exists(source + "/results.jsonl", ec)) {
+      verifyTable(source, sharded ? nullptr : expected, max_listed, v);
+    }
+  }
+  if (v.tables.empty()) {
+    throw Error(dir + ": no results table (results.jsonl) here" +
+                (sharded ? std::string(" or in its shards/") : std::string()));
+  }
+  return v;
 }
 
 }  // namespace parksim

@@ -14,6 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "parksim/results/TableVerify.h"
+
 namespace parksim {
 
 /// Where one merged row is.
@@ -37,11 +39,19 @@ struct MergeResult {
   std::vector<std::string> unexpected;  ///< in a table but in no manifest (when there are any)
   /// The sources mix world contents or builds (TableOrigins::mixes), one line each.
   std::vector<std::string> mixes;
+  /// The set keys of the rows (results.csv's set columns), sorted.
+  std::vector<std::string> set_columns;
 };
 
 /// The source directories `parksim merge DIR` reads: DIR/shards/* that hold results.jsonl,
 /// sorted by shard number; DIR itself when it has no shards folder.
 std::vector<std::string> mergeSources(const std::string& dir);
+
+/// `parksim verify DIR`: checks DIR's results table and, for a Slurm sweep, the table of every
+/// DIR/shards/* (results/TableVerify.h); the episodes of DIR/sweep.json a table lacks are a
+/// note. At most `max_listed` problems are listed per table. Throws Error when DIR holds no
+/// results table at all.
+TableVerification verifyResults(const std::string& dir, std::size_t max_listed = 20);
 
 /// Reads DIR/results.jsonl (and DIR/sweep.json when present) of every source, and the
 /// manifests of `manifest_dirs` (a Slurm sweep's top folder). A source without results.jsonl

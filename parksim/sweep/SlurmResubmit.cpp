@@ -8,7 +8,7 @@
 
 #include "parksim/core/Error.h"
 #include "parksim/renders/Process.h"
-#include "parksim/sweep/ResultsTable.h"
+#include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/Shard.h"
 
 namespace parksim {

@@ -4,23 +4,10 @@
 
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
+#include "parksim/core/Text.h"
 
 namespace parksim {
 namespace {
-
-// Single quotes for the shell: paths may hold spaces.
-std::string quoted(const std::string& s) {
-  std::string out = "'";
-  for (const char c : s) {
-    if (c == '\'') {
-      out += "'\\''";
-    } else {
-      out += c;
-    }
-  }
-  out += '\'';
-  return out;
-}
 
 // Text on a comment or #SBATCH line (paths): any character but a line break or control byte.
 const std::string& onOneLine(const std::string& value, const char* what) {
@@ -102,9 +89,9 @@ std::string sbatchScript(const SlurmDef& d) {
   s += "shard=\"${SLURM_ARRAY_TASK_ID:?run this script with sbatch}\"\n";
   // N is fixed here, not SLURM_ARRAY_TASK_COUNT: a resubmission of some shards (--array=3,7)
   // must still cut the sweep into the same N shards.
-  s += quoted(d.parksim_exe) + " sweep " + quoted(d.spec_path) + " --shard \"$shard/" + n +
-       "\" --workers \"${SLURM_CPUS_PER_TASK:-" + std::to_string(d.cpus_per_task) + "}\" --out " +
-       quoted(d.out_dir) + "/shards/\"$shard\" --progress\n";
+  s += shellQuoted(d.parksim_exe) + " sweep " + shellQuoted(d.spec_path) + " --shard \"$shard/" +
+       n + "\" --workers \"${SLURM_CPUS_PER_TASK:-" + std::to_string(d.cpus_per_task) +
+       "}\" --out " + shellQuoted(d.out_dir) + "/shards/\"$shard\" --progress\n";
   s += "rc=$?\n";
   s += "# 1 = some episodes missed their tolerance: results, not a failed task.\n";
   s += "if [ \"$rc\" -le 1 ]; then exit 0; fi\n";

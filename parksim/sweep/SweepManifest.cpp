@@ -9,14 +9,14 @@
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/InputFile.h"
+#include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/EpisodeParams.h"
-#include "parksim/sweep/ResultsTable.h"
 
 namespace parksim {
 
 namespace {
 
-// 2: episode ids of format 2 (EpisodeParams.h), recorded as episode_id_format.
+// 2: episode ids of format 2 or later (EpisodeParams.h), recorded as episode_id_format.
 const std::string kManifestFormat = "parksim-sweep-manifest/2";
 
 }  // namespace
@@ -70,10 +70,15 @@ SweepManifest parseSweepManifest(std::string_view text, const std::string& path)
                             : it->get<long long>();
     return v < lo ? hi + 1 : v;
   };
-  if (!j.is_object() || text_of("format") != kManifestFormat ||
-      whole("episode_id_format", 0, 1000) != kEpisodeIdFormat) {
-    throw not_manifest;
+  if (!j.is_object() || text_of("format") != kManifestFormat) throw not_manifest;
+  const std::optional<long long> id_format = whole("episode_id_format", 0, 1000);
+  if (id_format && *id_format >= 2 && *id_format < kEpisodeIdFormat) {
+    throw Error(path + ": written by an earlier parksim, whose episode ids (format " +
+                std::to_string(*id_format) + ") hash other text than this parksim's (format " +
+                std::to_string(kEpisodeIdFormat) +
+                "): sweep into a new --out (docs/sweeps.md, \"Episode ids\")");
   }
+  if (id_format != kEpisodeIdFormat) throw not_manifest;
   const auto ids = j.find("episode_ids");
   if (ids == j.end() || !ids->is_array()) throw not_manifest;
   SweepManifest m;

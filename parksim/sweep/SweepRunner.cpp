@@ -1,5 +1,6 @@
 #include "parksim/sweep/SweepRunner.h"
 
+#include <poll.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -8,10 +9,13 @@
 #include <deque>
 #include <exception>
 #include <mutex>
+#include <set>
 #include <thread>
+#include <tuple>
 
 #include "parksim/core/Error.h"
 #include "parksim/core/Provenance.h"
+#include "parksim/pipeline/EpisodeSettings.h"
 
 namespace parksim {
 
@@ -29,25 +33,53 @@ nlohmann::ordered_json provenanceColumns() {
   return j;
 }
 
-SweepProgress runSweep(const std::vector<SweepEpisode>& episodes, const SweepRunnerDef& def,
-                       ResultsTable& table, const SweepProgressFn& progress) {
-  if (def.workers < 1) throw Error("workers must be at least 1");
-  const auto t0 = std::chrono::steady_clock::now();
-  std::vector<const SweepEpisode*> todo;
-  SweepProgress p;
-  p.total = episodes.size();
+bool sweepRunsUserCode(const std::vector<SweepEpisode>& episodes) {
+  // Asked once per planner, controller and tracking: a request reads its world again.
+  std::set<std::tuple<const Components*, std::string, std::string, std::string>> asked;
   for (const SweepEpisode& e : episodes) {
-    const auto it = table.done().find(e.id);
-    if (it == table.done().end()) {
-      todo.push_back(&e);
-    } else {
-      ++p.done;
-      if (!it->second) ++p.failed;
+    if (!asked.emplace(e.components.get(), e.params.planner, e.params.controller, e.params.tracking)
+             .second) {
+      continue;
     }
+    if (runsUserCode(sweepEpisodeRequest(e))) return true;
   }
-  if (progress) progress(p);
-  if (todo.empty()) return p;
+  return false;
+}
 
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// The calling thread's side of a run: adds provenance, appends, counts, reports.
+class RowSink {
+ public:
+  RowSink(const SweepRunnerDef& def, ResultsTable& table, const SweepProgressFn& progress,
+          SweepProgress& p)
+      : def_(def), table_(table), progress_(progress), p_(p) {}
+
+  void append(nlohmann::ordered_json row) {
+    for (const auto& [key, value] : def_.provenance.items()) row[key] = value;
+    const bool met = row.value("met_tolerance", false);
+    table_.append(row);
+    ++p_.done;
+    ++p_.ran;
+    if (!met) ++p_.failed;
+    p_.elapsed_s = std::chrono::duration<double>(Clock::now() - t0_).count();
+    if (progress_) progress_(p_);
+  }
+
+ private:
+  const SweepRunnerDef& def_;
+  ResultsTable& table_;
+  const SweepProgressFn& progress_;
+  SweepProgress& p_;
+  Clock::time_point t0_ = Clock::now();
+};
+
+// Returns a worker's exception (the rows before it are appended), or null.
+std::exception_ptr runOnThreads(const std::vector<const SweepEpisode*>& todo,
+                                const SweepRunnerDef& def, const EpisodeRunDef& episode_def,
+                                RowSink& sink) {
   std::mutex mutex;
   std::condition_variable ready;
   std::deque<nlohmann::ordered_json> finished;
@@ -55,10 +87,6 @@ SweepProgress runSweep(const std::vector<SweepEpisode>& episodes, const SweepRun
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
   int running = 0;
-
-  EpisodeRunDef episode_def = def.episode;
-  std::mutex film_mutex;
-  episode_def.film_mutex = &film_mutex;
 
   auto work = [&] {
     for (;;) {
@@ -93,14 +121,7 @@ SweepProgress runSweep(const std::vector<SweepEpisode>& episodes, const SweepRun
       nlohmann::ordered_json row = std::move(finished.front());
       finished.pop_front();
       lock.unlock();
-      for (const auto& [key, value] : def.provenance.items()) row[key] = value;
-      const bool met = row.value("met_tolerance", false);
-      table.append(row);
-      ++p.done;
-      ++p.ran;
-      if (!met) ++p.failed;
-      p.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      if (progress) progress(p);
+      sink.append(std::move(row));
     }
   } catch (...) {
     stop.store(true);
@@ -108,6 +129,84 @@ SweepProgress runSweep(const std::vector<SweepEpisode>& episodes, const SweepRun
     throw;
   }
   for (std::thread& t : threads) t.join();
+  return error;
+}
+
+// Each worker a process (UserCodeIsolation.h) that runs episode after episode and sends back
+// its row as JSON text: nlohmann writes a double's shortest round-trip form, so the row read
+// back is the row the worker made.
+// Returns parksim's own failure in a worker (the rows before it are appended), or null.
+std::exception_ptr runInProcesses(const std::vector<const SweepEpisode*>& todo,
+                                  const SweepRunnerDef& def, const EpisodeRunDef& episode_def,
+                                  RowSink& sink) {
+  const WatchedWorker::Work work = [&](std::uint64_t task, UserCodeWatch& watch) {
+    return runSweepEpisode(*todo.at(task), episode_def, &watch).dump();
+  };
+  const std::size_t n = std::min<std::size_t>(def.workers, todo.size());
+  std::vector<std::unique_ptr<WatchedWorker>> pool;
+  for (std::size_t k = 0; k < n; ++k) {
+    pool.push_back(std::make_unique<WatchedWorker>(work, def.limits, def.fork_hooks));
+  }
+  std::size_t next = 0;
+  std::size_t busy = 0;
+  std::string error;  // parksim's own failure: the sweep stops after the running episodes
+  for (;;) {
+    for (std::unique_ptr<WatchedWorker>& w : pool) {
+      if (next >= todo.size() || !error.empty()) break;
+      if (w->dead()) w = std::make_unique<WatchedWorker>(work, def.limits, def.fork_hooks);
+      if (!w->idle()) continue;
+      w->start(next++);
+      ++busy;
+    }
+    if (busy == 0) break;
+    std::vector<pollfd> fds;
+    for (const std::unique_ptr<WatchedWorker>& w : pool) fds.push_back({w->fd(), POLLIN, 0});
+    // Wakes for an answer, or every 50 ms to check the limits of the workers' user code.
+    ::poll(fds.data(), fds.size(), 50);
+    for (std::unique_ptr<WatchedWorker>& w : pool) {
+      std::optional<WorkerResult> r = w->poll();
+      if (!r) continue;
+      --busy;
+      const SweepEpisode& episode = *todo.at(r->task);
+      if (r->answer) {
+        sink.append(nlohmann::ordered_json::parse(*r->answer));
+      } else if (r->user_failure) {
+        sink.append(failedEpisodeRow(episode, userCodeVerdict(*r->user_failure)));
+      } else if (error.empty()) {
+        error = "episode " + episode.id + ": " + r->failure;
+      }
+    }
+  }
+  return error.empty() ? nullptr : std::make_exception_ptr(Error(error));
+}
+
+}  // namespace
+
+SweepProgress runSweep(const std::vector<SweepEpisode>& episodes, const SweepRunnerDef& def,
+                       ResultsTable& table, const SweepProgressFn& progress) {
+  if (def.workers < 1) throw Error("workers must be at least 1");
+  std::vector<const SweepEpisode*> todo;
+  SweepProgress p;
+  p.total = episodes.size();
+  for (const SweepEpisode& e : episodes) {
+    const auto it = table.done().find(e.id);
+    if (it == table.done().end()) {
+      todo.push_back(&e);
+    } else {
+      ++p.done;
+      if (!it->second) ++p.failed;
+    }
+  }
+  if (progress) progress(p);
+  if (todo.empty()) return p;
+
+  EpisodeRunDef episode_def = def.episode;
+  std::mutex film_mutex;
+  episode_def.film_mutex = &film_mutex;
+  RowSink sink(def, table, progress, p);
+  const std::exception_ptr error = def.processes || sweepRunsUserCode(episodes)
+                                       ? runInProcesses(todo, def, episode_def, sink)
+                                       : runOnThreads(todo, def, episode_def, sink);
   table.sync();
   if (error) std::rethrow_exception(error);
   return p;

@@ -1,16 +1,24 @@
 #pragma once
-// Runs a sweep's episodes on N worker threads and appends each finished episode to the results
-// table at once, from one writer (the calling thread), in order of completion. Each row's
-// content depends only on its episode (timing keys aside), never on the worker count or the
-// order in which episodes finish.
+// Runs a sweep's episodes on N workers and appends each finished episode to the results table
+// at once, from one writer (the calling thread), in order of completion. Each row's content
+// depends only on its episode (timing keys aside), never on the worker count, the order in
+// which episodes finish, or whether the workers are threads or processes.
+//
+// Workers are threads while every planner and controller of the episodes is parksim's own.
+// When one is user code (a plugin's, a Python object's, a command's: pipeline/EpisodeSettings.h
+// runsUserCode), they are processes (pipeline/UserCodeIsolation.h, one per worker, reused from
+// episode to episode): an episode whose user code crashes or hangs past its limit then becomes
+// a row with its planner_error or controller_error, the worker is replaced, and the sweep goes
+// on.
 
 #include <cstddef>
 #include <functional>
 #include <vector>
 
+#include "parksim/pipeline/UserCodeIsolation.h"
+#include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/EpisodeExpansion.h"
 #include "parksim/sweep/EpisodeRun.h"
-#include "parksim/sweep/ResultsTable.h"
 
 namespace parksim {
 
@@ -29,15 +37,25 @@ using SweepProgressFn = std::function<void(const SweepProgress&)>;
 nlohmann::ordered_json provenanceColumns();
 
 struct SweepRunnerDef {
-  int workers = 1;  ///< threads, >= 1
+  int workers = 1;  ///< threads or processes, >= 1
   EpisodeRunDef episode;
   nlohmann::ordered_json provenance = provenanceColumns();  ///< added to every row
+  /// Limits on user code, in worker processes (core/UserCodeWatch.h).
+  UserCodeLimits limits;
+  /// Run around each fork of a worker process (an embedding interpreter's).
+  ForkHooks fork_hooks;
+  /// Processes even when no episode runs user code.
+  bool processes = false;
 };
+
+/// Whether `episodes` run user code, so that runSweep runs them in worker processes.
+bool sweepRunsUserCode(const std::vector<SweepEpisode>& episodes);
 
 /// Runs the episodes of `episodes` not yet in `table` and appends their rows (with provenance).
 /// Calls `progress` (if set) from the calling thread once at the start and after every row.
 /// A worker's exception (a file that cannot be written) stops the others after their current
 /// episode and is rethrown; rows written until then stay. Returns the final progress.
+/// Processes are forked from the calling thread.
 SweepProgress runSweep(const std::vector<SweepEpisode>& episodes, const SweepRunnerDef& def,
                        ResultsTable& table, const SweepProgressFn& progress = {});
 

@@ -1,12 +1,15 @@
 #pragma once
-// A sweep: the axes whose product is the set of episodes, what to record per episode and the
-// tolerance every episode must meet. Read from a YAML file (format `parksim-sweep/1`,
-// docs/sweeps.md) by SweepSpecReader.h.
+// A sweep: the axes whose product is the set of episodes (parksim's own knobs, and `set:` axes
+// over any value a world file or a planner or controller takes, on a grid or sampled), what to
+// record per episode and the tolerance every episode must meet. Read from a YAML file (format
+// `parksim-sweep/1`, docs/sweeps.md) by SweepSpecReader.h.
 
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "parksim/scenario/ScenarioOverrides.h"
 
 #include "parksim/pipeline/EpisodeRequest.h"
 #include "parksim/sweep/EpisodeParams.h"
@@ -33,6 +36,57 @@ struct SweepRecordDef {
   bool film_video = false;        ///< also episode.mp4 (needs ffmpeg)
 };
 
+/// A distribution a `set:` value is drawn from, once per sample (SetValues.h has the
+/// generator).
+struct SetDistribution {
+  enum class Kind {
+    kUniform,  ///< {uniform: [a, b]}: a + (b - a) u, u uniform in [0, 1)
+    kNormal,   ///< {normal: [mean, sd]}
+    kChoice,   ///< {choice: [v1, v2, ...]}: each with the same chance
+  };
+  Kind kind = Kind::kUniform;
+  double a = 0.0;  ///< uniform: the low end; normal: the mean
+  double b = 0.0;  ///< uniform: the high end; normal: the standard deviation (> 0)
+  std::vector<std::string> choices;  ///< kChoice: the values, as canonical text
+};
+
+/// One `set:` axis: a path a `--set PATH=VALUE` can name (a world value: robot, physics,
+/// realism, tolerance, goal, obstacles, ...), or `planner.NAME` / `controller.NAME`, a parameter
+/// of the selected planner or controller; with a list of values (a grid) or a distribution
+/// (drawn `samples:` times).
+struct SetAxis {
+  std::string path;
+  /// The grid's values as canonical text (numbers in their shortest round-trip form, booleans
+  /// true/false, lists and maps as compact JSON, other text as written); empty for a
+  /// distribution.
+  std::vector<std::string> values;
+  std::optional<SetDistribution> distribution;
+  int line = 0;  ///< of the path in the spec, for errors found with the worlds
+
+  enum class Target { kWorld, kPlanner, kController };
+  /// What the path sets: planner. and controller. paths are the selected implementation's
+  /// parameters (EpisodeParams::planner_params, controller_params), the others world values.
+  Target target() const;
+  /// The parameter's name for kPlanner and kController ("planner.step_m": "step_m").
+  std::string parameterName() const;
+};
+
+/// `samples:`: how many times the spec's distributions are drawn, and the seed of the draws.
+struct SampleDef {
+  std::uint64_t count = 0;
+  std::uint64_t seed = 0;
+};
+
+/// One entry of the planners or controllers axis.
+struct ComponentChoice {
+  std::string name;  ///< the registered name ("command" for `{command: [...]}`)
+  ParamMap params;   ///< its fixed parameters (ParamMap.h)
+  int line = 0;      ///< its line in the spec, for errors found when the spec expands
+  std::string path;  ///< where in the spec ("planners[1]"), likewise
+
+  friend bool operator==(const ComponentChoice&, const ComponentChoice&) = default;
+};
+
 struct SweepSpec {
   std::string source_path;  ///< the spec file, for messages
   std::string name;         ///< sweep name (job names, report titles)
@@ -42,10 +96,19 @@ struct SweepSpec {
   /// The same files as paths to open (resolved against the spec file's folder).
   std::vector<std::string> world_paths;
   int worlds_line = 0;  ///< line of `worlds:` in the spec, for errors found when loading them
+  /// `plugins:`: shared libraries whose planners and controllers the axes may name
+  /// (plugin/PluginLoader.h), as the spec names them and resolved against its folder.
+  std::vector<std::string> plugin_files;
+  std::vector<std::string> plugin_paths;
+  int plugins_line = 0;
 
   // Axes: every combination is one episode. Defaults: one value each, the library's
   // (EpisodeParams{}, which takes them from PlanSetup{} and EpisodeRequest{}).
-  std::vector<std::string> planners = {EpisodeParams{}.planner};
+  /// `planners:` and `controllers:`: each entry a registered name with its own fixed
+  /// parameters (a command's, or `params:`), which the set: axes' planner.NAME and
+  /// controller.NAME join.
+  std::vector<ComponentChoice> planners = {{EpisodeParams{}.planner, {}, 0, ""}};
+  std::vector<ComponentChoice> controllers = {{EpisodeParams{}.controller, {}, 0, ""}};
   std::vector<std::string> steerings = {EpisodeParams{}.steering};
   std::vector<bool> smoothing = {EpisodeParams{}.smooth};
   std::vector<std::uint64_t> seeds = {EpisodeParams{}.seed};
@@ -60,6 +123,13 @@ struct SweepSpec {
   /// Lines of the offsets in the spec (0: not from a file), for errors found with the worlds.
   std::vector<int> start_offset_lines = {0};
   std::vector<int> goal_offset_lines = {0};
+
+  /// `set:` axes, sorted by path. Grid values multiply the episodes like the axes above; with
+  /// distributions, `samples` draws each of them `count` times (sample 0, 1, ...), and every
+  /// draw is one more combination.
+  std::vector<SetAxis> set;
+  std::optional<SampleDef> samples;
+  int samples_line = 0;
 
   SweepRecordDef record;
   /// Overrides of the tracking tolerance (ToleranceOverrides): an episode meets its tolerance

@@ -3,6 +3,7 @@
 #include <glob.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -12,14 +13,21 @@
 #include <optional>
 #include <sstream>
 
+#include "parksim/command/CommandLine.h"
+#include "parksim/command/CommandPlanner.h"
+#include "parksim/core/ComponentRegistry.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/InputFile.h"
+#include "parksim/core/NumberFormat.h"
+#include "parksim/core/ParamSet.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/planner/TreePlanner.h"
 #include "parksim/realism/RealismDef.h"
+#include "parksim/results/EpisodeRecord.h"
 #include "parksim/scenario/YamlField.h"
 #include "parksim/sim/ExecutionDef.h"
 #include "parksim/sweep/EpisodeSetup.h"
+#include "parksim/sweep/SetValues.h"
 
 namespace parksim {
 namespace {
@@ -132,6 +140,14 @@ std::vector<PoseOffset> offsetsAxis(const YamlField& field, std::vector<int>& li
   }
   rejectDuplicates(items, values);
   return values;
+}
+
+// Combinations the set: axes add: the grid's values times the samples drawn.
+double setCombinations(const SweepSpec& spec) {
+  double n = spec.samples ? static_cast<double>(spec.samples->count) : 1.0;
+  for (const SetAxis& a : spec.set)
+    n *= a.distribution ? 1.0 : static_cast<double>(a.values.size());
+  return n;
 }
 
 bool hasGlobChars(const std::string& s) { return s.find_first_of("*?[") != std::string::npos; }
@@ -256,6 +272,232 @@ void readTolerance(const YamlField& field, ToleranceOverrides& t) {
   }
 }
 
+// Deep enough for any world value (a pose, a polygon's points); bounds a hostile spec.
+constexpr int kMaxValueDepth = 8;
+
+// A scalar's canonical text (SetValues.h): a number in its shortest round-trip form, true or
+// false, other text as written.
+std::string canonicalScalar(const YamlField& f) {
+  const std::string& text = f.node().Scalar();
+  if (text.empty()) f.fail("must not be empty");
+  double v = 0.0;
+  if (parseDouble(text, v)) {
+    if (!std::isfinite(v)) f.fail("must be a finite number, got " + text);
+    return canonicalNumber(v);
+  }
+  return text;
+}
+
+nlohmann::ordered_json canonicalJson(const YamlField& f, int depth) {
+  if (depth > kMaxValueDepth) f.fail("is nested too deeply for a world value");
+  if (f.node().IsScalar()) return setValueJson(canonicalScalar(f));
+  if (f.node().IsSequence()) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const YamlField& item : f.items()) list.push_back(canonicalJson(item, depth + 1));
+    return list;
+  }
+  if (f.node().IsMap()) {
+    const YamlMap m(f);
+    std::vector<std::string> keys = m.keys();
+    std::sort(keys.begin(), keys.end());  // the world reader does not care; ids would
+    nlohmann::ordered_json map = nlohmann::ordered_json::object();
+    for (const std::string& k : keys) map[k] = canonicalJson(*m.optional(k), depth + 1);
+    return map;
+  }
+  f.fail("must be a value");
+}
+
+// One value of a set: axis as canonical text: scalars as they are, lists and maps as compact
+// JSON. Planner and controller parameters take scalars only.
+std::string canonicalValue(const YamlField& f, bool scalar_only) {
+  if (f.node().IsScalar()) return canonicalScalar(f);
+  if (scalar_only) f.fail("must be a number, true, false or text (a parameter's value)");
+  return canonicalJson(f, 0).dump();
+}
+
+bool isIdentifier(std::string_view s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+  });
+}
+
+// The path of a set: axis, checked for what the spec can tell without the worlds (the world
+// reader checks the rest, per world, when the episodes are expanded).
+void checkSetPath(const YamlField& key_field, const std::string& path) {
+  const auto bad = [&](const std::string& why) { key_field.fail(why); };
+  if (path.empty()) bad("an empty path");
+  if (!std::all_of(path.begin(), path.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '.' ||
+               c == '[' || c == ']';
+      })) {
+    bad("a path is keys joined by '.' and list items as [i], e.g. robot.max_wheel_speed_radps "
+        "or obstacles[2].center");
+  }
+  const std::string root = path.substr(0, path.find_first_of(".["));
+  if (root == "planner" || root == "controller") {
+    if (path.size() <= root.size() + 1 || path[root.size()] != '.' ||
+        !isIdentifier(std::string_view(path).substr(root.size() + 1))) {
+      bad(root + " parameters are " + root + ".NAME, NAME of letters, digits and _");
+    }
+    return;
+  }
+  if (root == "name" || root == "format") {
+    bad("the world's " + root + " is not a value to vary (episode ids name the world by it)");
+  }
+  if (!isSetKey(path)) {
+    bad("'" + path + "' is a column of the results table; set the fields inside it (e.g. " + path +
+        ".FIELD)");
+  }
+}
+
+// {uniform: [a, b]}, {normal: [mean, sd]} or {choice: [...]}.
+SetDistribution readDistribution(const YamlField& field, bool scalar_only) {
+  const YamlMap m = field.map({"uniform", "normal", "choice"});
+  const std::vector<std::string> keys = m.keys();
+  if (keys.size() != 1) field.fail("a distribution is one of uniform, normal or choice");
+  const YamlField f = *m.optional(keys.front());
+  SetDistribution d;
+  if (keys.front() == "choice") {
+    d.kind = SetDistribution::Kind::kChoice;
+    if (!f.node().IsSequence() || f.items().empty()) f.fail("must list at least one value");
+    const std::vector<YamlField> items = f.items();
+    for (const YamlField& item : items) d.choices.push_back(canonicalValue(item, scalar_only));
+    rejectDuplicates(items, d.choices);
+    return d;
+  }
+  const bool uniform = keys.front() == "uniform";
+  d.kind = uniform ? SetDistribution::Kind::kUniform : SetDistribution::Kind::kNormal;
+  const std::vector<double> v = f.numbers(2, uniform ? "[low, high]" : "[mean, sd]");
+  d.a = v[0];
+  d.b = v[1];
+  if (uniform && !(d.a < d.b)) f.fail("the low end must be below the high end");
+  if (!uniform && !(d.b > 0.0)) f.fail("the standard deviation must be positive");
+  return d;
+}
+
+void readSet(const YamlField& field, SweepSpec& spec) {
+  const YamlMap m(field);
+  for (const std::string& path : m.keys()) {
+    const YamlField value = *m.optional(path);
+    checkSetPath(value, path);
+    SetAxis axis;
+    axis.path = path;
+    axis.line = value.line();
+    const bool scalar_only = axis.target() != SetAxis::Target::kWorld;
+    if (value.node().IsMap()) {
+      axis.distribution = readDistribution(value, scalar_only);
+    } else {
+      const std::vector<YamlField> items = axisItems(value);
+      for (const YamlField& item : items) axis.values.push_back(canonicalValue(item, scalar_only));
+      rejectDuplicates(items, axis.values);
+    }
+    // The parameters of planner.NAME and controller.NAME axes belong to the selected planner
+    // or controller, which validates them: when the spec expands, against the planners and
+    // controllers the spec's plugins bring (EpisodeExpansion.cpp, checkComponents).
+    spec.set.push_back(std::move(axis));
+  }
+  std::sort(spec.set.begin(), spec.set.end(),
+            [](const SetAxis& a, const SetAxis& b) { return a.path < b.path; });
+}
+
+// A planners: or controllers: entry: a registered name; {command: [program, arg, ...]} (the
+// `command` planner or controller, a program resolved against the spec's folder when it names a
+// path); or {name: NAME} / the command, with params: {NAME: value, ...}, its own parameters.
+ComponentChoice componentChoice(const YamlField& item, const std::string& base_dir,
+                                const char* what) {
+  ComponentChoice c;
+  c.line = item.line();
+  c.path = item.path();
+  if (!item.node().IsMap()) {
+    c.name = item.name();
+    if (!isComponentName(c.name)) item.fail("is not a " + std::string(what) + "'s name");
+    return c;
+  }
+  const YamlMap m = item.map({"name", "command", "params"});
+  const auto name = m.optional("name");
+  const auto command = m.optional("command");
+  if (name.has_value() == command.has_value()) {
+    item.fail("needs name: or command: (one of them)");
+  }
+  if (name) {
+    c.name = name->name();
+    if (!isComponentName(c.name)) name->fail("is not a " + std::string(what) + "'s name");
+  } else {
+    c.name = kCommandPlanner;  // the command planner and the command controller share it
+    std::vector<std::string> words;
+    for (const YamlField& w : command->node().IsSequence() ? command->listUpTo(kMaxCommandWords)
+                                                           : std::vector<YamlField>{*command}) {
+      words.push_back(w.text());
+    }
+    if (!command->node().IsSequence()) words = splitCommandLine(words.front(), command->path());
+    if (words.empty() || words.front().empty()) command->fail("names no program");
+    // A program given as a path is the spec's neighbour, as worlds and plugins are.
+    if (words.front().find('/') != std::string::npos && !fs::path(words.front()).is_absolute() &&
+        !base_dir.empty()) {
+      words.front() = (fs::path(base_dir) / words.front()).lexically_normal().string();
+    }
+    c.params[kCommandParam] = quoteCommandLine(words);
+  }
+  if (const auto params = m.optional("params")) {
+    const YamlMap pm(*params);
+    for (const std::string& key : pm.keys()) {
+      const YamlField v = *pm.optional(key);
+      if (!v.node().IsScalar()) v.fail("must be a number, true, false or a text");
+      if (key == kCommandParam && command) v.fail("is given by command:");
+      c.params[key] = canonicalParamText(v.text());
+    }
+  }
+  return c;
+}
+
+std::vector<ComponentChoice> componentsAxis(const YamlField& field, const std::string& base_dir,
+                                            const char* what) {
+  const std::vector<YamlField> items = axisItems(field);
+  std::vector<ComponentChoice> out;
+  for (const YamlField& item : items) {
+    ComponentChoice c = componentChoice(item, base_dir, what);
+    for (const ComponentChoice& earlier : out) {
+      if (earlier.name == c.name && earlier.params == c.params) {
+        item.fail("lists this " + std::string(what) + " a second time");
+      }
+    }
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+// plugins: paths of shared libraries, resolved against the spec's folder.
+void readPlugins(const YamlField& field, const std::string& base_dir, SweepSpec& spec) {
+  spec.plugins_line = field.line();
+  for (const YamlField& item : field.listUpTo(64)) {
+    const std::string written = item.text();
+    const fs::path path = fs::path(written).is_absolute() || base_dir.empty()
+                              ? fs::path(written)
+                              : fs::path(base_dir) / written;
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) item.fail("no such file: " + path.string());
+    const std::string normal = fs::absolute(path, ec).lexically_normal().string();
+    if (std::find(spec.plugin_paths.begin(), spec.plugin_paths.end(), normal) !=
+        spec.plugin_paths.end()) {
+      item.fail("lists " + written + " a second time");
+    }
+    spec.plugin_files.push_back(written);
+    spec.plugin_paths.push_back(normal);
+  }
+}
+
+void readSamples(const YamlField& field, SweepSpec& spec) {
+  const YamlMap m = field.map({"count", "seed"});
+  const YamlField count = m.required("count");
+  const std::uint64_t n = seedValue(count);
+  if (n < 1 || n > kMaxEpisodes) {
+    count.fail("must be in [1, " + std::to_string(kMaxEpisodes) + "], got " +
+               count.node().Scalar());
+  }
+  spec.samples = SampleDef{n, seedValue(m.required("seed"))};
+  spec.samples_line = field.line();
+}
+
 }  // namespace
 
 SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_name,
@@ -268,9 +510,11 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
   if (format.text() != kFormat) {
     format.fail("expected \"" + std::string(kFormat) + "\", got \"" + format.text() + "\"");
   }
-  top.rejectUnknownKeys({"format", "name", "worlds", "planners", "steering", "smoothing", "seeds",
-                         "max_iterations", "tracking", "timing", "realism", "noise_seeds",
-                         "start_offsets", "goal_offsets", "record", "tolerance"});
+  top.rejectUnknownKeys({"format",        "name",         "worlds",  "planners",
+                         "steering",      "smoothing",    "seeds",   "max_iterations",
+                         "tracking",      "timing",       "realism", "noise_seeds",
+                         "start_offsets", "goal_offsets", "set",     "samples",
+                         "record",        "tolerance",    "plugins", "controllers"});
 
   SweepSpec spec;
   spec.source_path = source_name;
@@ -278,11 +522,14 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
   spec.name = top.required("name").name();
   readWorlds(top.required("worlds"), base_dir, spec);
 
-  const std::vector<std::string> planner_names = builtInPlanners().names();
+  if (const auto f = top.optional("plugins")) readPlugins(*f, base_dir, spec);
   std::vector<std::string> steering_names;
   for (SteeringKind k : allSteeringKinds()) steering_names.emplace_back(toString(k));
   if (const auto f = top.optional("planners")) {
-    spec.planners = namesAxis(*f, planner_names, "planner");
+    spec.planners = componentsAxis(*f, base_dir, "planner");
+  }
+  if (const auto f = top.optional("controllers")) {
+    spec.controllers = componentsAxis(*f, base_dir, "controller");
   }
   if (const auto f = top.optional("steering")) {
     spec.steerings = namesAxis(*f, steering_names, "steering");
@@ -337,14 +584,39 @@ SweepSpec parseSweepSpec(std::string_view yaml_text, const std::string& source_n
   if (const auto f = top.optional("goal_offsets")) {
     spec.goal_offsets = offsetsAxis(*f, spec.goal_offset_lines);
   }
+  if (const auto f = top.optional("set")) readSet(*f, spec);
+  if (const auto f = top.optional("samples")) readSamples(*f, spec);
+  // realism. paths change the world's realism: section, which a preset of the realism: axis
+  // replaces: those episodes would not have the values their columns say.
+  for (const SetAxis& axis : spec.set) {
+    if (axis.path.rfind("realism.", 0) != 0) continue;
+    for (const std::string& r : spec.realism) {
+      if (r != "world") {
+        throw Error(source_name + ":" + std::to_string(axis.line) + ": set." + axis.path +
+                    ": changes the world's realism: section, which realism: " + r +
+                    " replaces; use realism: world and set realism.preset: " + r);
+      }
+    }
+  }
+  const auto drawn = std::find_if(spec.set.begin(), spec.set.end(),
+                                  [](const SetAxis& a) { return a.distribution.has_value(); });
+  if (drawn != spec.set.end() && !spec.samples) {
+    throw Error(source_name + ":" + std::to_string(drawn->line) + ": set." + drawn->path +
+                ": a distribution is drawn samples: times; add samples: {count: N, seed: S}");
+  }
+  if (drawn == spec.set.end() && spec.samples) {
+    throw Error(source_name + ":" + std::to_string(spec.samples_line) +
+                ": samples: draws the set: values that are distributions ({uniform: [a, b]}, "
+                "{normal: [mean, sd]}, {choice: [...]}); this spec has none");
+  }
   if (const auto f = top.optional("record")) readRecord(*f, spec.record);
   if (const auto f = top.optional("tolerance")) readTolerance(*f, spec.tolerance);
 
   const double count = static_cast<double>(spec.world_files.size()) * spec.planners.size() *
-                       spec.steerings.size() * spec.smoothing.size() * spec.seeds.size() *
-                       spec.max_iterations.size() * spec.tracking.size() * spec.timing.size() *
-                       spec.realism.size() * spec.noise_seeds.size() * spec.start_offsets.size() *
-                       spec.goal_offsets.size();
+                       spec.controllers.size() * spec.steerings.size() * spec.smoothing.size() *
+                       spec.seeds.size() * spec.max_iterations.size() * spec.tracking.size() *
+                       spec.timing.size() * spec.realism.size() * spec.noise_seeds.size() *
+                       spec.start_offsets.size() * spec.goal_offsets.size() * setCombinations(spec);
   if (count > static_cast<double>(kMaxEpisodes)) {
     root.fail("expands to " + std::to_string(static_cast<long long>(count)) +
               " episodes, more than the limit of " + std::to_string(kMaxEpisodes));

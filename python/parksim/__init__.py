@@ -11,6 +11,7 @@ are metrics.json's keys, and results are bit-identical to `parksim run` for the 
 See docs/python.md.
 """
 
+import importlib as _importlib
 import json as _json
 import os as _os
 import sys as _sys
@@ -55,6 +56,16 @@ def _fail_in_one_line(message):
 if (_problem := _interpreter_problem()) is not None:
     _fail_in_one_line(_problem)
 
+try:
+    _parksim = _importlib.import_module(__name__ + "._parksim")
+except ModuleNotFoundError as _missing:
+    if _missing.name != __name__ + "._parksim":
+        raise
+    # The sources without the compiled module (python/parksim/, or a build that stopped).
+    _fail_in_one_line("parksim: the compiled module is not built; from the repository's top "
+                      "folder: scripts/build.sh build, then run with "
+                      "PYTHONPATH=$PWD/build/python /usr/bin/python3")
+
 from ._parksim import (  # noqa: F401,E402  (re-exported)
     CollisionChecker,
     DynamicsWorld,
@@ -69,6 +80,9 @@ from ._parksim import (  # noqa: F401,E402  (re-exported)
     SearchDef,
     ParkingTaskDef,
     PlanResult,
+    PlanningProblem,
+    PolicyController,
+    ControllerInput,
     PlanSetup,
     ReedsSheppDef,
     RobotDef,
@@ -83,10 +97,10 @@ from ._parksim import (  # noqa: F401,E402  (re-exported)
     read_trajectory,
     render_figure,
     run,
+    sweep,
     write_figures,
     write_png,
 )
-from . import _parksim  # noqa: E402
 
 __version__ = "0.3.0"
 
@@ -96,6 +110,13 @@ def _plain(value):
     if hasattr(value, "tolist"):
         return value.tolist()
     raise TypeError(f"a world dict holds numbers, strings, lists and dicts, not {type(value)}")
+
+
+def episode_fields():
+    """The episode record's fields (parksim/results/EpisodeRecord.h), one dict each: key (its
+    column in a sweep's results table), metrics_key (its key in run().metrics and
+    metrics.json), group, type, unit, meaning."""
+    return _parksim._episode_fields()
 
 
 def worlds_dir():
@@ -173,9 +194,11 @@ from .records import read_record  # noqa: E402
 __all__ = [
     "CollisionChecker", "DynamicsWorld", "Episode", "Error", "ExecutionDef", "FIGURE_NAMES",
     "FrameDef", "FrameRecorder", "MotionValidatorDef", "MoveToPoseDef", "ParkingEnv",
-    "ParkingTaskDef", "SearchDef",
-    "PlanResult", "PlanSetup", "ReedsSheppDef", "RobotDef", "RotateTranslateRotateDef", "RunResult",
-    "SimModelDef", "World", "cspace_slice", "encode_png", "load_world", "plan",
+    "ParkingTaskDef", "SearchDef", "PlanResult", "PlanningProblem", "PolicyController",
+    "ControllerInput", "PlanSetup", "ReedsSheppDef", "RobotDef", "RotateTranslateRotateDef",
+    "RunResult", "SimModelDef", "World", "cspace_slice", "encode_png", "episode_fields",
+    "load_world", "plan",
     "read_png", "read_record", "read_trajectory", "render_figure", "render_frame", "run", "spaces",
+    "sweep",
     "write_figures", "write_png", "VecParkingEnv", "world_names", "worlds_dir",
 ]

@@ -32,6 +32,34 @@ except ImportError:
 _MAX_SEED = 2**64 - 1
 
 
+def task_options(options):
+    """ParkingTaskDef options as the compiled task takes them: max_episode_steps=None (no limit
+    of the environment's own) is 0."""
+    if "max_episode_steps" in options and options["max_episode_steps"] is None:
+        options = dict(options, max_episode_steps=0)
+    return options
+
+
+def own_step_limit(definition):
+    """The environment's own step limit, None where it has none (max_episode_steps 0)."""
+    return definition.max_episode_steps or None
+
+
+def task_spaces(observation_low, observation_high, num_envs=None):
+    """(action_space, observation_space) of the parking task (rl/TaskSpaces.h): the action two
+    wheel speed fractions in [-1, 1], the observation 10 values within the task's bounds; with
+    num_envs, the batched spaces of that many. The one definition of both for ParkingEnv,
+    VecParkingEnv, the Stable-Baselines3 adapter and anything that runs their policies."""
+    low = np.asarray(observation_low, dtype=np.float32)
+    high = np.asarray(observation_high, dtype=np.float32)
+    action_shape = (2,)
+    if num_envs is not None:
+        low, high = np.tile(low, (num_envs, 1)), np.tile(high, (num_envs, 1))
+        action_shape = (num_envs, 2)
+    return (_Box(-1.0, 1.0, shape=action_shape, dtype=np.float32),
+            _Box(low, high, dtype=np.float32))
+
+
 def world_from(world):
     """A World from a World, a path, an installed world's name, or None (head_in)."""
     if isinstance(world, _parksim.World):
@@ -63,25 +91,31 @@ class ParkingEnv(_Base):
     robot), or a preset ("ideal", "lab", "odometry"); it needs fidelity="dynamics".
     Other options are parksim.ParkingTaskDef's fields (help(parksim.ParkingTaskDef)):
     fidelity ("dynamics": Bullet; "kinematic": exact arcs against the collision checker, no
-    dynamics, for pre-training), control_period_s, max_episode_steps, start noise, success
-    thresholds, reward weights, terminate_on_contact, model (a SimModelDef or dict).
+    dynamics, for pre-training), control_period_s, max_episode_steps (None: no limit of the
+    environment's own), start noise, success thresholds, reward (discount: set it to your
+    learner's), terminate_on_contact, model (a SimModelDef or dict).
 
     Action: Box(-1, 1, (2,), float32), the left and right wheel speeds as fractions of the
-    robot's maximum, held for control_period_s (whole physics steps). Exactly two finite
-    numbers; anything else raises ValueError, and values outside [-1, 1] are clipped.
+    robot's maximum, held for control_period_s (whole physics steps). Exactly two finite real
+    numbers; anything else (another shape, strings, complex numbers, booleans, objects, NaN)
+    raises ValueError "action: expected two finite numbers ..., got ...", and values outside
+    [-1, 1] are clipped.
 
     Observation: Box(low, high, (10,), float32), bounds from the lot and the robot's limits:
         x, y, cos(theta), sin(theta), v, omega, x_goal, y_goal, cos(theta_goal), sin(theta_goal)
     (m, m/s, rad/s). The robot's part is what its controller knows: the true state for the
     ideal robot, the realism's estimate (and encoder speeds) otherwise.
 
-    Reward per step, as parking-v0's: -sqrt(d / distance_scale_m + heading_weight * e / pi),
-    d and e the true distance and heading error to the goal, plus contact_reward when the
-    chassis penetrated an obstacle during the step and success_reward on success.
+    Reward (docs/python.md, "Reward"): success_reward (10) on success, contact_reward (-10) on
+    a step with a contact, exit_reward (-10) on leaving the lot, nothing per step; plus
+    potential-based shaping discount * phi(s') - phi(s), phi = -shaping_weight * D (0 once
+    terminated), D = sqrt(d / distance_scale_m + heading_weight * e / pi) of the true distance
+    d and heading error e to the goal. For a learner discounting by `discount` (0.99), every
+    successful park returns more than every crash, exit and time-out from the same start.
 
-    terminated: success, or a contact when terminate_on_contact. truncated: max_episode_steps
-    actions, or the true reference point left the lot. A step after either raises RuntimeError:
-    call reset().
+    terminated: success (no contact during the step), leaving the lot, or a contact when
+    terminate_on_contact. truncated: max_episode_steps actions, as Gymnasium's TimeLimit (also
+    on a step that terminated). A step after either raises RuntimeError: call reset().
 
     info: pose and estimated_pose (arrays x, y, theta), t, goal_pos_err_m,
     goal_heading_err_rad, is_success, contacts (bool array, one per obstacle of world.obstacles).
@@ -98,18 +132,18 @@ class ParkingEnv(_Base):
         if render_mode not in (None, "rgb_array"):
             raise ValueError(f"render_mode must be None or 'rgb_array', got {render_mode!r}")
         self.world = world_from(world)
-        self._options = dict(options, realism=realism, model=model)
+        self._options = task_options(dict(options, realism=realism, model=model))
         self._task = _parksim._ParkingTask(self.world, **self._options)
         self.render_mode = render_mode
         definition = self._task.definition
         self.fidelity = definition.fidelity
         self.control_period_s = self._task.control_period_s
-        self.max_episode_steps = definition.max_episode_steps
+        self.max_episode_steps = own_step_limit(definition)
+        self.discount = definition.discount  # the reward's: a learner's gamma should be it
         # Per instance: the class's metadata describes the default period only.
         self.metadata = dict(type(self).metadata, render_fps=1.0 / self.control_period_s)
-        self.action_space = _Box(-1.0, 1.0, shape=(2,), dtype=np.float32)
-        self.observation_space = _Box(self._task.observation_low, self._task.observation_high,
-                                      dtype=np.float32)
+        self.action_space, self.observation_space = task_spaces(self._task.observation_low,
+                                                                self._task.observation_high)
         self._seeded = False
         self._actions = []  # this episode's actions, to replay it when unpickled
 
@@ -153,7 +187,7 @@ class ParkingEnv(_Base):
             raise RuntimeError(
                 "ParkingEnv.step: the episode has ended (terminated or truncated); call reset()"
                 if self._seeded else "ParkingEnv.step: call reset() before step()")
-        result = self._task.step(action)  # ValueError on a wrong shape or a non-finite value
+        result = self._task.step(action)  # ValueError on anything but two finite numbers
         self._actions.append(np.asarray(action, dtype=np.float64).reshape(2))
         return result
 
@@ -191,6 +225,18 @@ class ParkingEnv(_Base):
         self._task.seed_state = seed_state
 
 
+def registered_env(**kwargs):
+    """gymnasium.make's entry point for "parksim/Parking-v0": a ParkingEnv without a step limit
+    of its own, as make() wraps it in TimeLimit(max_episode_steps) (the registered 300, or
+    make's own argument; -1: no TimeLimit, then kMaxTaskEpisodeSteps ends an episode). The
+    vector entry point, VecParkingEnv, takes make_vec's max_episode_steps itself."""
+    kwargs.setdefault("max_episode_steps", None)
+    return ParkingEnv(**kwargs)
+
+
+registered_env.metadata = ParkingEnv.metadata  # make() reads the render modes from it
+
+
 def _register():  # pragma: no cover - depends on what is installed
     if "parksim/Parking-v0" in _gym.registry:
         return
@@ -199,7 +245,7 @@ def _register():  # pragma: no cover - depends on what is installed
     kwargs = {"max_episode_steps": _parksim.ParkingTaskDef().max_episode_steps}
     if "vector_entry_point" in inspect.signature(_gym.register).parameters:
         kwargs["vector_entry_point"] = "parksim.vector:VecParkingEnv"
-    _gym.register(id="parksim/Parking-v0", entry_point="parksim.env:ParkingEnv", **kwargs)
+    _gym.register(id="parksim/Parking-v0", entry_point="parksim.env:registered_env", **kwargs)
 
 
 if _gym is not None:

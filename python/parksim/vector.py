@@ -16,25 +16,31 @@ importable, VecParkingEnv is a gymnasium.vector.VectorEnv.
 import numpy as np
 
 from . import _parksim
-from .env import checked_seed, fresh_seed, world_from
+from .env import checked_seed, fresh_seed, own_step_limit, task_options, task_spaces, world_from
 
 try:  # pragma: no cover - depends on what is installed
     import gymnasium as _gym
-    from gymnasium.spaces import Box as _Box
     from gymnasium.vector import VectorEnv as _Base
 
     try:
         from gymnasium.vector import AutoresetMode as _AutoresetMode
 
-        _NEXT_STEP = _AutoresetMode.NEXT_STEP
+        _NEXT_STEP, _SAME_STEP = _AutoresetMode.NEXT_STEP, _AutoresetMode.SAME_STEP
     except ImportError:  # gymnasium 1.0: "next step" is the only mode
-        _NEXT_STEP = "next_step"
+        _NEXT_STEP, _SAME_STEP = "next_step", "same_step"
 except ImportError:
     _gym = None
-    from .spaces import Box as _Box
-
     _Base = object
-    _NEXT_STEP = "next_step"
+    _NEXT_STEP, _SAME_STEP = "next_step", "same_step"
+
+
+def _autoreset_mode(mode):
+    """The mode as metadata holds it (Gymnasium's AutoresetMode where importable), from a mode
+    or its value ("next_step", "same_step"); ValueError otherwise."""
+    for name, known in (("next_step", _NEXT_STEP), ("same_step", _SAME_STEP)):
+        if mode in (name, known, getattr(known, "value", known)):
+            return known
+    raise ValueError(f"autoreset_mode must be 'next_step' or 'same_step', got {mode!r}")
 
 
 class VecParkingEnv(_Base):
@@ -42,6 +48,11 @@ class VecParkingEnv(_Base):
 
     threads: threads that step the batch, the calling one included (None or 0: one per
     hardware thread, at most num_envs). Trajectories do not depend on it.
+    autoreset_mode: "next_step" (Gymnasium's default) or "same_step" (the sub-environment is
+    reset within the step that ended its episode; infos["final_obs"] and infos["final_info"]
+    hold the last step's, as Gymnasium's SyncVectorEnv gives them); an AutoresetMode too.
+    max_episode_steps: as ParkingEnv's (300; None: no limit of the environment's own), and
+    what gymnasium.make_vec's max_episode_steps sets.
     world, realism, model and the ParkingTaskDef options: as ParkingEnv's; in particular
     fidelity="kinematic" (exact arcs against the collision checker, no Bullet dynamics: the
     pre-training fidelity) or "dynamics" (the default).
@@ -54,29 +65,31 @@ class VecParkingEnv(_Base):
     metadata = {"render_modes": ["rgb_array"], "autoreset_mode": _NEXT_STEP}
 
     def __init__(self, num_envs, world=None, *, threads=None, render_mode=None, realism=None,
-                 model=None, **options):
+                 model=None, autoreset_mode=_NEXT_STEP, **options):
         num_envs = int(num_envs)
         if num_envs < 1:
             raise ValueError(f"num_envs must be at least 1, got {num_envs}")
         if render_mode not in (None, "rgb_array"):
             raise ValueError(f"render_mode must be None or 'rgb_array', got {render_mode!r}")
+        mode = _autoreset_mode(autoreset_mode)
         self.world = world_from(world)
         self._batch = _parksim._TaskBatch(self.world, num_envs, threads=int(threads or 0),
-                                          realism=realism, model=model, **options)
+                                          same_step=mode == _SAME_STEP,
+                                          **task_options(dict(options, realism=realism,
+                                                              model=model)))
         self.num_envs = num_envs
         self.render_mode = render_mode
         self.threads = self._batch.threads
         definition = self._batch.definition
         self.fidelity = definition.fidelity
         self.control_period_s = self._batch.control_period_s
-        self.max_episode_steps = definition.max_episode_steps
-        self.metadata = dict(type(self).metadata, render_fps=1.0 / self.control_period_s)
+        self.max_episode_steps = own_step_limit(definition)
+        self.discount = definition.discount  # the reward's: a learner's gamma should be it
+        self.metadata = dict(type(self).metadata, render_fps=1.0 / self.control_period_s,
+                             autoreset_mode=mode)
         low, high = self._batch.observation_low, self._batch.observation_high
-        self.single_action_space = _Box(-1.0, 1.0, shape=(2,), dtype=np.float32)
-        self.single_observation_space = _Box(low, high, dtype=np.float32)
-        self.action_space = _Box(-1.0, 1.0, shape=(num_envs, 2), dtype=np.float32)
-        self.observation_space = _Box(np.tile(low, (num_envs, 1)), np.tile(high, (num_envs, 1)),
-                                      dtype=np.float32)
+        self.single_action_space, self.single_observation_space = task_spaces(low, high)
+        self.action_space, self.observation_space = task_spaces(low, high, num_envs)
         self.spec = None
         self.closed = False
         self._seeded = [False] * num_envs
@@ -115,11 +128,31 @@ class VecParkingEnv(_Base):
         return self._batch.reset(seeds)
 
     def step(self, actions):
-        """actions: (num_envs, 2) wheel speed fractions; ValueError on another shape or a
-        non-finite value (nothing steps then)."""
+        """actions: (num_envs, 2) wheel speed fractions; ValueError on another shape, anything
+        but real numbers or a non-finite value (nothing steps then)."""
         if not all(self._seeded):
             raise RuntimeError("VecParkingEnv.step: call reset() before step()")
-        return self._batch.step(actions)
+        result = self._batch.step(actions)
+        if self.metadata["autoreset_mode"] != _SAME_STEP:
+            return result
+        last_obs, rewards, terminated, truncated, last_infos = result
+        obs, infos = self._batch.started()
+        ended = terminated | truncated
+        if ended.any():
+            # As Gymnasium's vector environments add them: an object array of the ended
+            # sub-environments' last observations, and their last infos under masks.
+            final_obs = np.full(self.num_envs, None, dtype=object)
+            for i in np.flatnonzero(ended):
+                final_obs[i] = last_obs[i]
+            final_info = {}
+            for key, value in last_infos.items():
+                if not key.startswith("_"):
+                    kept = np.zeros_like(value)
+                    kept[ended] = value[ended]
+                    final_info[key], final_info["_" + key] = kept, ended.copy()
+            infos.update(final_obs=final_obs, _final_obs=ended.copy(), final_info=final_info,
+                         _final_info=ended.copy())
+        return obs, rewards, terminated, truncated, infos
 
     def render(self):
         if self.render_mode != "rgb_array" or not all(self._seeded):

@@ -21,12 +21,14 @@ namespace parksim::python {
 
 namespace py = pybind11;
 
-void bindDefs(py::module_& m);     // DefBindings.cpp: the ...Def structs, options as kwargs
-void bindWorld(py::module_& m);    // WorldBindings.cpp: World, load_world, collision, C-space
-void bindPlan(py::module_& m);     // PlanBindings.cpp: plan(), PlanResult, trajectories
-void bindEpisode(py::module_& m);  // EpisodeBindings.cpp: run(), Episode, DynamicsWorld
-void bindRender(py::module_& m);   // RenderBindings.cpp: images, figures, FrameRecorder
-void bindTasks(py::module_& m);    // TaskBindings.cpp: the reinforcement-learning tasks
+void bindDefs(py::module_& m);      // DefBindings.cpp: the ...Def structs, options as kwargs
+void bindWorld(py::module_& m);     // WorldBindings.cpp: World, load_world, collision, C-space
+void bindPlan(py::module_& m);      // PlanBindings.cpp: plan(), PlanResult, trajectories
+void bindEpisode(py::module_& m);   // EpisodeBindings.cpp: run(), Episode, DynamicsWorld
+void bindRender(py::module_& m);    // RenderBindings.cpp: images, figures, FrameRecorder
+void bindTasks(py::module_& m);     // TaskBindings.cpp: the reinforcement-learning tasks
+void bindUserCode(py::module_& m);  // UserCodeBindings.cpp: Python planners and controllers
+void bindSweep(py::module_& m);     // SweepBindings.cpp: sweep()
 
 /// A loaded world (scenario/World.h): immutable, shared by every plan and episode made from it.
 /// It keeps the text it was read from, so that it pickles as that text and re-reads it.

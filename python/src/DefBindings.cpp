@@ -250,8 +250,11 @@ void bindTaskDefs(py::module_& m) {
       .def_readwrite("success_heading_rad", &ParkingTaskDef::success_heading_rad)
       .def_readwrite("distance_scale_m", &ParkingTaskDef::distance_scale_m)
       .def_readwrite("heading_weight", &ParkingTaskDef::heading_weight)
-      .def_readwrite("contact_reward", &ParkingTaskDef::contact_reward)
+      .def_readwrite("discount", &ParkingTaskDef::discount)
+      .def_readwrite("shaping_weight", &ParkingTaskDef::shaping_weight)
       .def_readwrite("success_reward", &ParkingTaskDef::success_reward)
+      .def_readwrite("contact_reward", &ParkingTaskDef::contact_reward)
+      .def_readwrite("exit_reward", &ParkingTaskDef::exit_reward)
       .def_readwrite("terminate_on_contact", &ParkingTaskDef::terminate_on_contact)
       .def_readwrite("model", &ParkingTaskDef::model)
       .def_readwrite("kinematic_check_m", &ParkingTaskDef::kinematic_check_m);

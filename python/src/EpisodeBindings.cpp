@@ -9,10 +9,12 @@
 #include "parksim/core/Error.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
+#include "parksim/results/EpisodeRecord.h"
 #include "parksim/results/MetricsFile.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
+#include "python/src/UserCode.h"
 
 namespace parksim::python {
 
@@ -155,6 +157,7 @@ py::dict robotState(const RobotState& s) {
 EpisodeRequest requestFrom(const WorldHandle& world, py::dict& options, bool planning) {
   EpisodeRequest r;
   r.world = world.world;
+  takeComponents(options, r);
   if (planning) r.plan = planSetupFrom(options);
   const auto take = [&options](const char* key) -> py::object {
     if (!options.contains(key)) return py::none();
@@ -419,9 +422,41 @@ void bindDynamicsWorld(py::module_& m) {
       });
 }
 
+// The episode record's fields (results/EpisodeRecord.h): what run().metrics and a sweep's row
+// hold, and under which keys.
+void bindEpisodeFields(py::module_& m) {
+  m.def(
+      "_episode_fields",
+      [] {
+        static const char* const kGroups[] = {"identity", "parameter",  "outcome",
+                                              "plan",     "simulation", "realism",
+                                              "timing",   "provenance", "seal"};
+        static const char* const kTypes[] = {"string", "boolean", "integer",
+                                             "number", "list",    "object"};
+        py::list fields;
+        for (const EpisodeField& f : episodeFields()) {
+          py::dict d;
+          d["key"] = std::string(f.key);
+          d["metrics_key"] = std::string(f.metrics_key);
+          d["group"] = kGroups[static_cast<int>(f.group)];
+          d["type"] = kTypes[static_cast<int>(f.type)];
+          d["unit"] = std::string(f.unit);
+          d["meaning"] = std::string(f.meaning);
+          d["read"] = f.read != nullptr;
+          d["csv"] = f.csv;
+          d["per_name"] = f.per_name;
+          fields.append(d);
+        }
+        return fields;
+      },
+      "The episode record's fields: key (results table), metrics_key (run().metrics and "
+      "metrics.json), group, type, unit, meaning.");
+}
+
 }  // namespace
 
 void bindEpisode(py::module_& m) {
+  bindEpisodeFields(m);
   bindRunResult(m);
   bindEpisodeHandle(m);
   bindDynamicsWorld(m);

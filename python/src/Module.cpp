@@ -15,4 +15,6 @@ PYBIND11_MODULE(_parksim, m) {
   bindEpisode(m);
   bindRender(m);
   bindTasks(m);
+  bindUserCode(m);
+  bindSweep(m);
 }

@@ -8,6 +8,7 @@
 #include "parksim/results/TrajectoryFile.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
+#include "python/src/UserCode.h"
 
 namespace parksim::python {
 
@@ -82,6 +83,7 @@ void bindPlan(py::module_& m) {
         py::dict options = optionsDict(kwargs);
         EpisodeRequest request;
         request.world = world.world;
+        takeComponents(options, request);
         request.plan = planSetupFrom(options);
         rejectUnknownOptions(options, "plan");
         return planWorld(world, request);

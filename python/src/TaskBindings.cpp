@@ -72,19 +72,60 @@ py::dict infoDict(const TaskInfo& info, std::size_t obstacles) {
 
 Pose2 startFrom(const py::handle& start) { return poseFrom(start); }
 
-// An action as (left, right): exactly two numbers, a sequence or an array of shape (2,).
-TaskAction actionFrom(const py::handle& action) {
-  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(action);
-  if (!a) throw py::value_error("action: expected two numbers (left, right wheel speed fractions)");
-  if (a.ndim() != 1 || a.shape(0) != 2) {
-    std::string shape;
-    for (py::ssize_t i = 0; i < a.ndim(); ++i) {
-      shape += (i ? ", " : "") + std::to_string(a.shape(i));
-    }
-    if (a.ndim() == 1) shape += ",";
-    throw py::value_error("action: expected shape (2,) (left, right wheel speed fractions), got (" +
-                          shape + ")");
+// What a refused action was, for the message: its kind of values or its shape.
+std::string describeAction(const py::handle& action, const py::array& a) {
+  if (!a) {
+    std::string text = py::repr(action).cast<std::string>();
+    if (text.size() > 60) text = text.substr(0, 57) + "...";
+    return text;
   }
+  switch (a.dtype().kind()) {
+    case 'U':
+    case 'S': return "strings";
+    case 'c': return "complex numbers";
+    case 'b': return "booleans";
+    case 'O': return "Python objects";
+    case 'i':
+    case 'u':
+    case 'f': break;
+    default: return "values of dtype " + py::str(a.dtype()).cast<std::string>();
+  }
+  std::string shape;
+  for (py::ssize_t i = 0; i < a.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(a.shape(i));
+  if (a.ndim() == 1) shape += ",";
+  return "shape (" + shape + ")";
+}
+
+// Wheel speed fractions as float64, of shape (2,) (an action, rows < 0) or (rows, 2) (a
+// batch's): real numbers only (integers or floats). Strings, complex numbers, booleans and
+// objects, which NumPy would convert (dropping an imaginary part), are refused like a wrong
+// shape, in one line: ValueError "action: expected two finite numbers (...), got <what it
+// was>" ("actions: expected shape (n, 2) ..." for a batch). Non-finite values are the task's
+// to refuse, in the same words.
+py::array_t<double> wheelFractions(const py::handle& action, py::ssize_t rows) {
+  py::array a;
+  try {
+    a = py::array::ensure(action);
+  } catch (const py::error_already_set&) {
+    // ensure() clears NumPy's error and returns null; some objects raise from __array__.
+  }
+  const bool shaped = a && (rows < 0 ? a.ndim() == 1 && a.shape(0) == 2
+                                     : a.ndim() == 2 && a.shape(0) == rows && a.shape(1) == 2);
+  const char kind = a ? a.dtype().kind() : '\0';
+  if (!shaped || (kind != 'i' && kind != 'u' && kind != 'f')) {
+    const std::string expected =
+        rows < 0 ? std::string("action: ") + kTaskActionExpected
+                 : "actions: expected shape (" + std::to_string(rows) +
+                       ", 2) of finite numbers (a left, right wheel speed fraction pair per "
+                       "environment)";
+    throw py::value_error(expected + ", got " + describeAction(action, a));
+  }
+  return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+}
+
+// An action as (left, right): exactly two real numbers, a sequence or an array of shape (2,).
+TaskAction actionFrom(const py::handle& action) {
+  const auto a = wheelFractions(action, -1);
   return {a.at(0), a.at(1)};
 }
 
@@ -280,12 +321,13 @@ void bindBatch(py::module_& m) {
                           "Parking tasks stepped together in threads (rl/TaskBatch.h); "
                           "parksim.VecParkingEnv wraps it.")
       .def(py::init([](const WorldHandle& world, std::size_t n, int threads, double spin_s,
-                       const py::kwargs& kwargs) {
+                       bool same_step, const py::kwargs& kwargs) {
              py::dict options = optionsDict(kwargs);
              const ParkingTaskDef def = taskDefFrom(world, options, "VecParkingEnv");
              TaskBatchDef batch_def;
              batch_def.threads = threads;
              batch_def.spin_s = spin_s;
+             batch_def.autoreset = same_step ? TaskAutoreset::kSameStep : TaskAutoreset::kNextStep;
              auto h = std::make_unique<BatchHandle>();
              h->scenario = world.scenario;
              h->batch = std::make_unique<TaskBatch>(*world.scenario, def, n, batch_def);
@@ -293,7 +335,7 @@ void bindBatch(py::module_& m) {
              return h;
            }),
            py::arg("world"), py::arg("num_envs"), py::arg("threads") = 0,
-           py::arg("spin_s") = TaskBatchDef{}.spin_s)
+           py::arg("spin_s") = TaskBatchDef{}.spin_s, py::arg("same_step") = false)
       .def_property_readonly("num_envs", [](const BatchHandle& h) { return h.batch->size(); })
       .def_property_readonly("threads", [](const BatchHandle& h) { return h.batch->threads(); })
       .def_property_readonly("control_period_s",
@@ -322,13 +364,8 @@ void bindBatch(py::module_& m) {
           "Seeds sub-environment i with seeds[i] where not None, then resets all.")
       .def("step",
            [](BatchHandle& h, const py::handle& actions) {
-             const auto a =
-                 py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(actions);
              const auto n = static_cast<py::ssize_t>(h.batch->size());
-             if (!a || a.ndim() != 2 || a.shape(0) != n || a.shape(1) != 2) {
-               throw py::value_error("actions: expected shape (" + std::to_string(n) +
-                                     ", 2) (one left, right pair per environment)");
-             }
+             const auto a = wheelFractions(actions, n);
              const double* d = a.data();
              for (std::size_t i = 0; i < h.actions.size(); ++i) {
                h.actions[i] = {d[2 * i], d[2 * i + 1]};
@@ -341,6 +378,18 @@ void bindBatch(py::module_& m) {
              out.fill(h.batch->last());
              return py::make_tuple(out.obs, out.reward, out.terminated, out.truncated, out.infos());
            })
+      .def(
+          "started",
+          [](const BatchHandle& h) {
+            if (h.batch->autoreset() != TaskAutoreset::kSameStep) {
+              throw py::value_error("started: the batch was made with same_step=False");
+            }
+            BatchArrays out(h.batch->size(), h.scenario->obstacles.size());
+            out.fill(h.batch->started());
+            return py::make_tuple(out.obs, out.infos());
+          },
+          "same_step batches: (observations, infos) each task continues from: the new "
+          "episode's first where the last step ended one, else the step's.")
       .def("seed_state",
            [](const BatchHandle& h, std::size_t i) {
              const TaskSeed s = h.batch->task(i).seedState();

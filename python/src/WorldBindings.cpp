@@ -42,6 +42,7 @@ const char* shapeName(ObstacleShape shape) {
     case ObstacleShape::kBox: return "box";
     case ObstacleShape::kCircle: return "circle";
     case ObstacleShape::kPolygon: return "polygon";
+    case ObstacleShape::kCompound: return "compound";
   }
   return "box";
 }
@@ -51,7 +52,7 @@ py::dict obstacleDict(const Obstacle& o) {
   d["name"] = o.name;
   d["kind"] = toString(o.kind);
   d["shape"] = shapeName(o.shape);
-  // Boxes: the box; circles and polygons: their axis-aligned bounding rectangle.
+  // Boxes: the box; circles, polygons and compounds: their axis-aligned bounding rectangle.
   d["center"] = py::make_tuple(o.box.center.x(), o.box.center.y());
   d["size"] = py::make_tuple(2.0 * o.box.half_extents.x(), 2.0 * o.box.half_extents.y());
   d["yaw"] = o.box.yaw;
@@ -59,6 +60,16 @@ py::dict obstacleDict(const Obstacle& o) {
   d["corners"] = corners(o.box);
   if (o.shape == ObstacleShape::kCircle) d["radius"] = o.radius_m;
   if (o.shape == ObstacleShape::kPolygon) d["vertices"] = polygon(o.vertices);
+  if (o.shape == ObstacleShape::kCompound) {
+    // Its convex parts (their union is the obstacle) and its outline rings (outlines
+    // counter-clockwise, holes clockwise; none for a map's cells).
+    py::list parts;
+    for (const auto& part : o.compound->parts) parts.append(polygon(part));
+    py::list rings;
+    for (const auto& ring : o.compound->rings) rings.append(polygon(ring));
+    d["parts"] = parts;
+    d["rings"] = rings;
+  }
   return d;
 }
 

@@ -318,7 +318,7 @@ TEST_F(Cli, MessagesSayWhatIsWrongInFewWords) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.out,
             "parksim: unknown command 'foo'; commands: plan, run, render, sweep, merge, report, "
-            "compare, verify\n");
+            "compare, verify, list, import\n");
   // Bounds are stated, not printed as the 309-digit largest double.
   r = parksim("plan " + world("head_in.yaml") + " --seed -1");
   EXPECT_EQ(r.exit_code, 2);

@@ -47,6 +47,25 @@ TEST(ParksimBench, WritesTheCsvWithItsRequiredColumns) {
   EXPECT_EQ(summary.find("issue"), std::string::npos) << summary;  // speaks to users
 }
 
+// A plugin's planner is benchmarked beside the built-ins, its paths checked like theirs.
+TEST(ParksimBench, APluginsPlannerRunsBesideTheBuiltIns) {
+  const fs::path out = testing::testOutputDir("parksim_bench_plugin");
+  fs::remove_all(out);
+  const CliRun r = runBench(testing::sourceDir() + "/worlds/head_in.yaml --seeds 2 --plugin " +
+                            testing::binaryDir() +
+                            "/examples/plugins/libparksim_example_plugins.so"
+                            " --planners example,time-a-star --steering balkcom-mason --out " +
+                            out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string csv = slurp(out / "bench.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * 2) << csv;
+  EXPECT_NE(csv.find("\nparksim,example,balkcom-mason,"), std::string::npos) << csv;
+  EXPECT_NE(slurp(out / "summary.md").find("Every solved path passed"), std::string::npos);
+  // Without the plugin the name is unknown.
+  EXPECT_EQ(runBench(testing::sourceDir() + "/worlds/head_in.yaml --planners example").exit_code,
+            2);
+}
+
 TEST(ParksimBench, BadInputIsOneLineAndExitTwo) {
   const CliRun r = runBench(testing::sourceDir() + "/worlds/head_in.yaml --seeds 0");
   EXPECT_EQ(r.exit_code, 2) << r.out;

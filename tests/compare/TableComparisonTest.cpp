@@ -22,8 +22,8 @@
 
 #include "parksim/compare/ComparedTable.h"
 #include "parksim/core/Error.h"
+#include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/EpisodeParams.h"
-#include "parksim/sweep/ResultsTable.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
@@ -318,6 +318,43 @@ TEST(TableComparison, SameTablesAndSeedGiveTheSameNumbers) {
                 std::bit_cast<std::uint64_t>(y.groups[g].metrics[m].ci_low));
     }
   }
+}
+
+// A parameter study's episodes (set: values, samples) pair by id like any other: the candidate
+// is the baseline's episodes with the tracking error at the highest wheel speed doubled, and
+// the comparison sees them paired, each value's episodes matched to their own.
+TEST(TableComparison, SetEpisodesPairByTheirIds) {
+  std::mt19937_64 rng(7);
+  std::vector<Json> baseline;
+  for (const char* speed : {"6", "8", "10"}) {
+    for (std::uint64_t sample = 0; sample < 10; ++sample) {
+      EpisodeParams p;
+      p.world = "head_in";
+      p.sample = sample;
+      p.world_set["robot.max_wheel_speed_radps"] = speed;
+      p.planner_params["step_m"] = "0.05";
+      Json row = syntheticRow("head_in", 1, kLab, rng, 1.7e-3);
+      Json with_set;
+      with_set["episode_id"] = episodeId(p);
+      appendParamColumns(p, with_set);
+      for (const auto& [key, value] : row.items()) {
+        if (!with_set.contains(key)) with_set[key] = value;
+      }
+      baseline.push_back(with_set);
+    }
+  }
+  std::vector<Json> candidate = baseline;
+  for (Json& row : candidate) {
+    if (row["robot.max_wheel_speed_radps"] == 10) {
+      row["max_pos_err_m"] = 2.0 * row["max_pos_err_m"].get<double>();
+    }
+  }
+  const TableComparison t = compareTables(throughTheWriter(baseline, "baseline"),
+                                          throughTheWriter(candidate, "candidate"), CompareDef{});
+  ASSERT_EQ(t.groups.size(), 1u);
+  EXPECT_TRUE(t.groups[0].paired);
+  EXPECT_EQ(t.groups[0].shared_ids, 30);
+  EXPECT_TRUE(trackingFlagged(t, "head_in"));
 }
 
 }  // namespace

@@ -118,8 +118,11 @@ def test_check_against_the_same_code_passes_with_reports(job):
     summary.unlink(missing_ok=True)
     p = run_script("check", env, tmp)
     assert p.returncode == 0, p.stdout + p.stderr
-    for name in ("sweep.xml", "compare.xml", "compare.md"):
+    for name in ("sweep.xml", "compare.xml", "compare.md", "compare.html",
+                 "sweep/report/index.html"):
         assert (tmp / "job" / name).is_file(), name
+    xml = (tmp / "job" / "sweep.xml").read_text(encoding="utf-8")
+    assert 'name="html_report" value="sweep/report/index.html"' in xml
     md = (tmp / "job" / "compare.md").read_text(encoding="utf-8")
     assert md.startswith("## parksim compare: no regression")
     assert "6 paired" in md

@@ -1,4 +1,4 @@
-// libFuzzer harness for the results.csv reader (CsvFollower in parksim/sweep/ResultsFile.h,
+// libFuzzer harness for the results.csv reader (CsvFollower in parksim/results/ResultsFile.h,
 // through verifyResults in TableVerify.h, which `parksim verify` and a resumed sweep use): a
 // valid results.jsonl beside a results.csv of any bytes must give a verdict listing problems,
 // never a crash, a sanitizer report or a hang; results.csv as the writer renders it must pass.
@@ -11,8 +11,9 @@
 #include <string_view>
 
 #include "parksim/core/Error.h"
-#include "parksim/sweep/ResultsFile.h"
-#include "parksim/sweep/TableVerify.h"
+#include "parksim/results/ResultsFile.h"
+#include "parksim/results/TableVerify.h"
+#include "parksim/sweep/Merge.h"
 #include "tests/fuzz/FuzzSupport.h"
 
 namespace {

@@ -1,5 +1,5 @@
 // libFuzzer harness for the results.jsonl reader (scanResultsJsonl in
-// parksim/sweep/ResultsFile.h, which sweep, merge, report and verify use): any bytes must give
+// parksim/results/ResultsFile.h, which sweep, merge, report and verify use): any bytes must give
 // checked rows or a parksim::Error naming a line, never a crash, a sanitizer report or a hang.
 // The rows it accepts are rendered as the writer would (CSV, origins), and a scan that goes on
 // past problems (verify's) must see the same rows. Built and run by scripts/fuzz.sh.
@@ -7,12 +7,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <set>
 #include <string>
 #include <string_view>
 
 #include "parksim/core/Error.h"
-#include "parksim/sweep/ResultsFile.h"
-#include "parksim/sweep/RowSeal.h"
+#include "parksim/results/ResultsFile.h"
+#include "parksim/results/RowSeal.h"
 #include "tests/fuzz/FuzzSupport.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -25,7 +26,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     parksim::scanResultsJsonl(file.path(), [&](const parksim::TableRow& r) {
       // An accepted row is sealed, and renders as a CSV line ending in its checksum.
       if (parksim::sealProblem(r.text)) std::abort();
-      const std::string csv = parksim::csvRow(r.row);
+      std::set<std::string, std::less<>> set_keys;
+      parksim::addSetKeys(r.row, set_keys);
+      const std::string csv =
+          parksim::csvRow(r.row, parksim::resultColumns({set_keys.begin(), set_keys.end()}));
       if (csv.empty() || csv.back() != '\n') std::abort();
       origins.add(r.row, file.path(), r.line);
       ++strict_rows;

@@ -26,8 +26,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (spec.world_files.empty() || spec.world_files.size() != spec.world_paths.size()) {
       std::abort();
     }
-    if (spec.planners.empty() || spec.seeds.empty() || spec.start_offsets.empty() ||
-        spec.start_offsets.size() != spec.start_offset_lines.size() ||
+    if (spec.planners.empty() || spec.controllers.empty() || spec.seeds.empty() ||
+        spec.start_offsets.empty() || spec.start_offsets.size() != spec.start_offset_lines.size() ||
         spec.goal_offsets.size() != spec.goal_offset_lines.size()) {
       std::abort();
     }

@@ -15,6 +15,12 @@ ls "$tmp"/prefix/lib*/cmake/parksim/parksimConfigVersion.cmake >/dev/null
 # The OMPL plugin, which the consumer's default plan loads (its smoothing uses Reeds-Shepp
 # curves) through the run path the package gives it: nothing in the build tree is reachable.
 ls "$tmp"/prefix/lib*/parksim/libparksim_ompl_plugin.so >/dev/null
+# The pages' npm libraries, built into parksim_pages, are installed beside it with their
+# licences (docs/pages.md); their packages stay out of the headers.
+test -f "$tmp/prefix/share/parksim/pages/uplot/LICENSE"
+test -f "$tmp/prefix/share/parksim/pages/tabulator-tables/dist/js/tabulator.min.js"
+test -f "$tmp/prefix/include/parksim/pages/EpisodePage.h"
+test ! -e "$tmp/prefix/include/parksim/pages/web/node_modules"
 
 generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)
@@ -25,6 +31,26 @@ cmake -S "$src/examples/consumer" -B "$tmp/consumer" "${generator[@]}" "${launch
   -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$tmp/prefix" >/dev/null
 cmake --build "$tmp/consumer" >/dev/null
 "$tmp/consumer/park" "$src/worlds/head_in.yaml" 1
+
+# The command-line front-ends' support library is exported too: a tool of the consumer's own
+# links parksim::cli (and CLI11 through it) and runs.
+mkdir -p "$tmp/cli-probe"
+cat >"$tmp/cli-probe/CMakeLists.txt" <<'CMAKE'
+cmake_minimum_required(VERSION 3.22)
+project(cli_probe LANGUAGES CXX)
+find_package(parksim 0.3 REQUIRED)
+add_executable(probe main.cpp)
+target_link_libraries(probe PRIVATE parksim::cli)
+CMAKE
+cat >"$tmp/cli-probe/main.cpp" <<'CPP'
+#include <parksim/cli/TerminalText.h>
+#include <cstdio>
+int main() { std::puts(parksim::cli::printable("a\tb").c_str()); }
+CPP
+cmake -S "$tmp/cli-probe" -B "$tmp/cli-probe/build" "${generator[@]}" "${launcher[@]}" \
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$tmp/prefix" >/dev/null
+cmake --build "$tmp/cli-probe/build" >/dev/null
+test "$("$tmp/cli-probe/build/probe")" = 'a\x09b'
 
 # The version file refuses another minor version.
 cat >"$tmp/version.cmake" <<'CMAKE'

@@ -17,6 +17,37 @@ bool fitsExactly(const testing::SatChecker& checker, double x, double y, double 
   return false;
 }
 
+TEST(FootprintFit, ACompoundObstacleFitsLikeItsPartsEachAnObstacle) {
+  // A U and an L as compound obstacles, against the same parts as convex polygons.
+  const std::vector<std::vector<Eigen::Vector2d>> u{
+      {{0.6, 0.3}, {1.0, 0.3}, {1.0, 0.4}, {0.6, 0.4}},
+      {{0.6, 0.4}, {0.7, 0.4}, {0.7, 0.8}, {0.6, 0.8}},
+      {{0.9, 0.4}, {1.0, 0.4}, {1.0, 0.8}, {0.9, 0.8}}};
+  const std::vector<std::vector<Eigen::Vector2d>> l{
+      {{1.3, 0.2}, {1.6, 0.2}, {1.35, 0.3}}, {{1.3, 0.2}, {1.35, 0.3}, {1.35, 0.7}, {1.3, 0.7}}};
+  Scenario compound;
+  Scenario separate;
+  for (const auto* parts : {&u, &l}) {
+    compound.obstacles.push_back(
+        Obstacle::makeCompound("c", ObstacleKind::kWall, CompoundShape::make(*parts, {}), 0.1));
+    for (const auto& part : *parts) {
+      separate.obstacles.push_back(Obstacle::makePolygon("p", ObstacleKind::kWall, part, 0.1));
+    }
+  }
+  const FootprintFit a(compound.obstacles, compound.robot, 0.0005);
+  const FootprintFit b(separate.obstacles, separate.robot, 0.0005);
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> x(0.4, 1.8), y(0.0, 1.0);
+  int blocked = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double px = x(rng);
+    const double py = y(rng);
+    ASSERT_EQ(a.fitsSomeHeading(px, py), b.fitsSomeHeading(px, py)) << px << ", " << py;
+    blocked += !a.fitsSomeHeading(px, py);
+  }
+  EXPECT_GT(blocked, 500);
+}
+
 TEST(FootprintFit, AgreesWithTheExactCheckAtEveryHeadingTested) {
   Scenario s = testing::studyLot();
   // A bollard and a polygon as well as the study's boxes.

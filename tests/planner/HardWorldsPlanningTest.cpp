@@ -9,6 +9,7 @@
 
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/ReachableBudget.h"
 #include "parksim/planner/TimeOptimalTiming.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "tests/support/PlanChecks.h"
@@ -119,15 +120,19 @@ TEST(DefaultPlanning, BudgetGrowsWithTheLot) {
   // 100 m^2 / 2.16 m^2 = 46.3 study lots.
   EXPECT_EQ(defaultIterationBudget(builtInPlanners().find("rrt-connect").info, world("big_lot")),
             92593);
-  // time-a-star searches a window around start and goal whatever the lot.
+  // time-a-star: 200,000 expansions, or 8 per search cell of the free area it can reach
+  // (ReachableBudget.h), capped at 10^6: the study lot gets the floor, the 10 x 10 m lot the cap.
   EXPECT_EQ(defaultIterationBudget(builtInPlanners().find("time-a-star").info, world("head_in")),
-            defaultIterationBudget(builtInPlanners().find("time-a-star").info, world("big_lot")));
+            200000);
+  EXPECT_EQ(defaultIterationBudget(builtInPlanners().find("time-a-star").info, world("big_lot")),
+            1000000);
 }
 
 TEST(DefaultPlanning, AnAutomaticBudgetIsTheLotsAndAGivenOneIsKept) {
   const Scenario big = world("big_lot");
   PlanSetup setup;
   EXPECT_EQ(setup.search.max_iterations, kAutoIterations);
+  // time-a-star's grows with the free area its search can reach (ReachableBudget.h).
   EXPECT_EQ(resolvedPlanSetup(setup, big).search.max_iterations,
             defaultIterationBudget(builtInPlanners().find("time-a-star").info, big));
   setup.planner = "rrt-star";

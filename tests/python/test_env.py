@@ -24,18 +24,19 @@ def test_a_thousand_random_steps_keep_the_contract(env):
     obs, info = env.reset(seed=7)
     assert obs.shape == (10,) and obs.dtype == np.float32
     assert env.observation_space.contains(obs)
-    episodes = 0
+    episodes, steps = 0, 0
     for _ in range(1000):
+        steps += 1
         action = env.action_space.sample()
         assert env.action_space.contains(action)
         obs, reward, terminated, truncated, info = env.step(action)
         assert obs.shape == (10,) and np.all(np.isfinite(obs))
         assert isinstance(reward, float) and np.isfinite(reward)
         assert isinstance(terminated, bool) and isinstance(truncated, bool)
-        assert not (terminated and truncated)
+        assert truncated == (steps == 200)  # as Gymnasium's TimeLimit, also when terminated
         assert {"pose", "t", "goal_pos_err_m", "is_success", "contacts"} <= set(info)
         if terminated or truncated:
-            episodes += 1
+            episodes, steps = episodes + 1, 0
             obs, info = env.reset()
     assert episodes >= 1  # 200-step limit: at least one episode ended
 
@@ -59,13 +60,16 @@ def test_reward_is_the_documented_distance_and_success_terminates(head_in_path):
 
     import yaml
 
+    def phi(info):  # the documented potential: -D, D parking-v0's goal distance
+        return -math.sqrt(info["goal_pos_err_m"] / 0.1
+                          + 0.3 * info["goal_heading_err_rad"] / math.pi)
+
     env = parksim.ParkingEnv(world=head_in_path, start_position_noise_m=0.0,
                              start_heading_noise_rad=0.0)
-    env.reset(seed=0)
-    _, reward, terminated, _, info = env.step([0.0, 0.0])
-    expected = -math.sqrt(info["goal_pos_err_m"] / 0.1
-                          + 0.3 * info["goal_heading_err_rad"] / math.pi)
-    assert reward == pytest.approx(expected)
+    assert env.discount == 0.99
+    _, start = env.reset(seed=0)
+    _, reward, terminated, _, info = env.step([0.5, 0.2])
+    assert reward == pytest.approx(0.99 * phi(info) - phi(start), rel=1e-12)
     assert not terminated and not info["is_success"]
 
     # The same lot with the robot starting on the goal: success at the first step.
@@ -73,10 +77,10 @@ def test_reward_is_the_documented_distance_and_success_terminates(head_in_path):
     data["start"] = data["goal"]["pose"]
     at_goal = parksim.ParkingEnv(world=parksim.load_world(data), start_position_noise_m=0.0,
                                  start_heading_noise_rad=0.0)
-    at_goal.reset(seed=0)
+    _, start = at_goal.reset(seed=0)
     _, reward, terminated, truncated, info = at_goal.step([0.0, 0.0])
     assert info["is_success"] and terminated and not truncated
-    assert reward > 10.0 - 0.5
+    assert reward == pytest.approx(10.0 - phi(start), rel=1e-12)  # phi(terminal) = 0
 
 
 def test_render_returns_an_image(head_in):

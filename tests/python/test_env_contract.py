@@ -30,9 +30,12 @@ def actions(seed, n, scale=1.0):
     return (scale * rng.uniform(-1.0, 1.0, size=(n, 2))).astype(np.float32)
 
 
+EXPECTED = r"^action: expected two finite numbers \(left, right wheel speed fractions\), got "
+
+
 def test_non_finite_actions_raise_and_move_nothing(head_in, env):
     for bad in ([np.nan, 0.0], [0.0, np.inf], [-np.inf, 0.5]):
-        with pytest.raises(ValueError, match="must be finite"):
+        with pytest.raises(ValueError, match=EXPECTED + r"\(.*\)$"):
             env.step(bad)
     # The refused actions left no trace: the episode continues as an untouched one does.
     fresh = parksim.ParkingEnv(world=head_in)
@@ -44,9 +47,39 @@ def test_non_finite_actions_raise_and_move_nothing(head_in, env):
 def test_wrong_action_shapes_raise(env):
     for bad, shape in (([[0.1, 0.2]], r"\(1, 2\)"), ([0.1, 0.2, 0.3], r"\(3,\)"),
                        (0.5, r"\(\)"), (np.zeros((2, 1)), r"\(2, 1\)")):
-        with pytest.raises(ValueError, match=r"expected shape \(2,\).*got " + shape):
+        with pytest.raises(ValueError, match=EXPECTED + "shape " + shape + "$"):
             env.step(bad)
     assert env.step(np.array([0.1, 0.2], dtype=np.float32))[0].shape == (10,)
+
+
+def test_actions_are_numbers_only(head_in, env):
+    # NumPy would parse the strings and drop the imaginary part (with a ComplexWarning): each
+    # is refused with the message every bad action gets, in one line, and nothing moves.
+    import decimal
+    import warnings
+
+    refused = {"strings": ["0.1", "0.2"], "complex numbers": [0.1 + 0.5j, 0.2],
+               "booleans": [True, False], "Python objects": [decimal.Decimal("0.1"), 0.2]}
+    vec = parksim.VecParkingEnv(2, world=head_in, fidelity="kinematic")
+    vec.reset(seed=0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # no ComplexWarning either
+        for kind, bad in refused.items():
+            with pytest.raises(ValueError, match=EXPECTED + kind + "$") as single:
+                env.step(bad)
+            assert "\n" not in str(single.value)
+            with pytest.raises(ValueError, match=r"^actions: expected shape \(2, 2\) of finite "
+                                                 r"numbers .*, got " + kind + "$"):
+                vec.step([bad, bad])
+        with pytest.raises(ValueError, match=EXPECTED + "strings$"):
+            env.step("left")  # NumPy makes a 0-d array of it
+        with pytest.raises(ValueError, match=EXPECTED + r"\[\[0.1\], \[0.2, 0.3\]\]$"):
+            env.step([[0.1], [0.2, 0.3]])  # no array at all: its repr
+    # Integers and floats of any width are numbers: the same step as the float64 pair.
+    fresh = parksim.ParkingEnv(world=head_in)
+    fresh.reset(seed=3)
+    for action in ([1, 0], np.array([1, 0], dtype=np.int8), np.array([1.0, 0.0], np.float16)):
+        assert np.array_equal(env.step(action)[0], fresh.step([1.0, 0.0])[0])
 
 
 def test_stepping_after_the_end_raises(head_in):
@@ -135,6 +168,7 @@ FAKE_GYMNASIUM = {
         import enum
         class AutoresetMode(enum.Enum):
             NEXT_STEP = "NextStep"
+            SAME_STEP = "SameStep"
         class VectorEnv:
             _np_random = None
             def reset(self, *, seed=None, options=None):
@@ -172,13 +206,36 @@ def test_registration_has_max_episode_steps_and_only_with_gymnasium(tmp_path):
                          env=environ, timeout=60)
     assert out.returncode == 0, out.stderr
     calls = eval(out.stdout)  # the stand-in's record of register() calls
-    assert calls == [{"id": "parksim/Parking-v0", "entry_point": "parksim.env:ParkingEnv",
+    assert calls == [{"id": "parksim/Parking-v0", "entry_point": "parksim.env:registered_env",
                       "max_episode_steps": parksim.ParkingTaskDef().max_episode_steps,
                       "vector_entry_point": "parksim.vector:VecParkingEnv"}]
     assert calls[0]["max_episode_steps"] == 300
     # Without gymnasium (Debian's interpreter): nothing to register with, and nothing breaks.
     if importlib.util.find_spec("gymnasium") is None:
         assert "gymnasium" not in sys.modules
+
+
+def test_without_gymnasium_the_stand_in_spaces_serve(tmp_path):
+    # Debian's interpreter has no Gymnasium: the stand-ins, with the same behaviour.
+    code = textwrap.dedent("""
+        import sys
+        sys.modules["gymnasium"] = None  # import gymnasium fails
+        import numpy as np, parksim
+        env = parksim.ParkingEnv(fidelity="kinematic")
+        assert type(env.action_space) is parksim.spaces.Box
+        assert type(env).__mro__[1] is object
+        first = env.reset(seed=4)[0]
+        assert np.array_equal(first, env.reset(seed=4)[0])
+        assert env.observation_space.contains(env.step(env.action_space.sample())[0])
+        vec = parksim.VecParkingEnv(2, fidelity="kinematic", autoreset_mode="same_step")
+        assert vec.metadata["autoreset_mode"] == "same_step"
+        assert np.array_equal(vec.reset(seed=4)[0][0], first)
+        print("ok")
+    """)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         env=dict(os.environ), timeout=60, cwd=tmp_path)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == ["ok"]
 
 
 def test_render_fps_follows_the_control_period(head_in):

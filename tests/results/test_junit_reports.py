@@ -197,9 +197,11 @@ def test_run_junit_has_one_case_per_realisation(tmp_path):
     check_schema(tmp_path / "run.xml")
     xml = junitparser.JUnitXml.fromfile(str(tmp_path / "run.xml"))
     suites = list(xml)
-    assert len(suites) == 1 and suites[0].name == "head_in / time-a-star / lab"
+    # Named as a sweep names the same episodes: one writer for both.
+    assert len(suites) == 1 and suites[0].name == "head_in / time-a-star+smooth / lab"
     cases = list(suites[0])
-    assert [c.name for c in cases] == ["noise_seed=7", "noise_seed=8", "noise_seed=9"]
+    assert [c.name for c in cases] == ["seed=1 noise_seed=7", "seed=1 noise_seed=8",
+                                       "seed=1 noise_seed=9"]
     metrics = json.loads((tmp_path / "run" / "metrics.json").read_text())
     statuses = [metrics[f"realisation.{i}.status"] for i in range(3)]
     for case, status in zip(cases, statuses):

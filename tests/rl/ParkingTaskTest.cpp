@@ -1,5 +1,6 @@
 // The parking task: exact kinematic arcs, contacts that stop the robot, seeding, the episode's
-// end, refused actions, observation bounds, and the dynamics fidelity's estimate under realism.
+// end (Gymnasium's TimeLimit semantics), refused actions, observation bounds, and the dynamics
+// fidelity's estimate under realism. The reward's own tests: TaskRewardTest.cpp.
 
 #include "parksim/rl/ParkingTask.h"
 
@@ -60,10 +61,14 @@ TEST(ParkingTask, KinematicRobotStopsAtTheLastFreePoseBeforeAnObstacle) {
   const TaskStep step = task.step({1.0, 1.0});
   ASSERT_EQ(step.info.contacts, std::vector<int>{0});
   EXPECT_FALSE(step.terminated);
+  EXPECT_FALSE(step.info.is_success);
+  // Not terminated: the shaping sees the pose reached, then the contact's penalty.
+  const auto phi = [&def, &s](const Pose2& p) {
+    return -std::sqrt(positionDistance(p, s.goal.pose) / def.distance_scale_m +
+                      def.heading_weight * goalHeadingError(s.goal, p.theta) / kPi);
+  };
   EXPECT_DOUBLE_EQ(step.reward,
-                   -std::sqrt(step.info.goal_pos_err_m / def.distance_scale_m +
-                              def.heading_weight * step.info.goal_heading_err_rad / kPi) +
-                       def.contact_reward);
+                   def.discount * phi(step.info.pose) - phi({0.5, 0.5, 0.0}) + def.contact_reward);
   const BulletCollisionWorld collision(s);
   EXPECT_TRUE(collision.isFree(step.info.pose));
   // Stopped within one check of the wall: the front edge at most kinematic_check_m short.
@@ -110,7 +115,9 @@ TEST(ParkingTask, RefusesNonFiniteActionsWithoutMoving) {
       task.step(bad);
       FAIL() << "accepted a non-finite action";
     } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find("must be finite"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("action: expected two finite numbers"),
+                std::string::npos)
+          << e.what();
     }
   }
   EXPECT_EQ(task.steps(), 0);
@@ -135,12 +142,47 @@ TEST(ParkingTask, EndsAtTheStepLimitAndRefusesToStepAfterwards) {
   EXPECT_TRUE(task.running());
 }
 
-TEST(ParkingTask, LeavingTheLotTruncatesAndObservationsStayInTheirBounds) {
+TEST(ParkingTask, TheStepLimitTruncatesAStepThatTerminatesAsTimeLimitDoes) {
+  // Gymnasium's TimeLimit sets truncated at the limit whatever the step did.
+  Scenario s = openLot({0.5, 0.5, 0.0});
+  s.goal.pose = s.start;
+  ParkingTaskDef def = kinematic();
+  def.max_episode_steps = 1;
+  ParkingTask task(s, def);
+  task.resetAt(s.start, 0);
+  const TaskStep step = task.step({0.0, 0.0});
+  EXPECT_TRUE(step.terminated && step.info.is_success);
+  EXPECT_TRUE(step.truncated);
+}
+
+TEST(ParkingTask, WithoutALimitOfItsOwnAnEpisodeRunsPastTheDefault) {
+  ParkingTaskDef def = kinematic();
+  def.max_episode_steps = 0;  // a caller's time limit governs
+  ParkingTask task(openLot(), def);
+  task.resetAt({0.5, 0.5, 0.0}, 0);
+  for (int i = 0; i < 2 * ParkingTaskDef{}.max_episode_steps; ++i) {
+    ASSERT_FALSE(task.step({0.0, 0.0}).truncated) << i;
+  }
+  EXPECT_TRUE(task.running());
+  def.max_episode_steps = kMaxTaskEpisodeSteps + 1;
+  EXPECT_THROW(ParkingTask(openLot(), def), Error);
+  def.max_episode_steps = -1;
+  EXPECT_THROW(ParkingTask(openLot(), def), Error);
+}
+
+TEST(ParkingTask, LeavingTheLotTerminatesAndObservationsStayInTheirBounds) {
   const Scenario s = openLot({1.99, 1.0, 0.0});
   ParkingTask task(s, kinematic());
   task.resetAt({1.99, 1.0, 0.0}, 0);
   const TaskStep step = task.step({1.0, 1.0});
-  EXPECT_TRUE(step.truncated);
+  EXPECT_TRUE(step.terminated);
+  EXPECT_FALSE(step.truncated);
+  // The exit's penalty, and the shaping's last term: phi(terminal) = 0.
+  const ParkingTaskDef def;
+  const double phi0 =
+      -std::sqrt(positionDistance({1.99, 1.0, 0.0}, s.goal.pose) / def.distance_scale_m +
+                 def.heading_weight * goalHeadingError(s.goal, 0.0) / kPi);
+  EXPECT_DOUBLE_EQ(step.reward, -phi0 + def.exit_reward);
   for (std::size_t i = 0; i < kTaskObservationSize; ++i) {
     EXPECT_GE(step.observation[i], task.observationLow()[i]) << i;
     EXPECT_LE(step.observation[i], task.observationHigh()[i]) << i;

@@ -1,5 +1,5 @@
 // The batch: the same trajectories with 1 and 2 threads, task i as a lone task seeded s + i,
-// autoreset at the next step, refused actions.
+// autoreset at the next step or within the same step, refused actions.
 
 #include "parksim/rl/TaskBatch.h"
 
@@ -91,6 +91,38 @@ TEST(TaskBatch, TaskIIsALoneTaskSeededWithItsSeedAndResetAfterEachEnd) {
       }
     }
   }
+}
+
+TEST(TaskBatch, SameStepAutoresetResetsWithinTheStepThatEndedTheEpisode) {
+  ParkingTaskDef def;
+  def.fidelity = TaskFidelity::kKinematic;
+  def.max_episode_steps = 5;
+  const auto a = actions(3, 20);
+  TaskBatch batch(testing::studyLot(), def, 3,
+                  {.threads = 2, .autoreset = TaskAutoreset::kSameStep});
+  batch.reset({std::uint64_t{100}, std::uint64_t{101}, std::uint64_t{102}});
+  std::vector<ParkingTask> lone;
+  for (std::size_t i = 0; i < 3; ++i) {
+    lone.emplace_back(testing::studyLot(), def);
+    lone[i].seed(100 + i);
+    expectSame(batch.started()[i], lone[i].reset());
+  }
+  int ends = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    batch.step(a[k]);
+    for (std::size_t i = 0; i < 3; ++i) {
+      SCOPED_TRACE("task " + std::to_string(i) + " step " + std::to_string(k));
+      // Every step is a real one (no step spent on a reset): the lone task's.
+      expectSame(batch.last()[i], lone[i].step(a[k][i]));
+      if (lone[i].running()) {
+        expectSame(batch.started()[i], batch.last()[i]);
+      } else {
+        ++ends;
+        expectSame(batch.started()[i], lone[i].reset());
+      }
+    }
+  }
+  EXPECT_EQ(ends, 12);  // 5-step episodes: 4 ends in 20 steps, each task
 }
 
 TEST(TaskBatch, RefusesBadActionsBeforeAnyTaskMoves) {

@@ -306,7 +306,7 @@ TEST(ScenarioReader, MergeKeysCopyWhatTheMapDoesNotSay) {
                           "  - &a {name: a, kind: box, center: [1.8, 0.2], size: [0.1, 0.1]}\n"
                           "  - {<<: *a, name: b, colour: red}\n")),
             "t.yaml:8: obstacles[1].colour: unknown field; expected one of: name, kind, center, "
-            "size, yaw_deg, radius, vertices, height");
+            "size, yaw_deg, radius, vertices, holes, height");
 }
 
 // Merge keys are resolved with each merged map visited once: a map that merges itself
@@ -590,7 +590,7 @@ const BadCase kBadCases[] = {
      "t.yaml:3: lot.y_max: missing required field"},
     {"MissingObstacleSize", valid("obstacles:\n  - {name: a, kind: box, center: [1, 1]}\n"),
      "t.yaml:7: obstacles[0]: give exactly one shape: size (a box), radius (a circle) or "
-     "vertices (a convex polygon)"},
+     "vertices (a polygon)"},
     {"MissingObstacleName", valid("obstacles:\n  - kind: box\n"),
      "t.yaml:7: obstacles[0].name: missing required field"},
     {"MissingParkedRobotPose", valid("parked_robots:\n  - name: p\n"),
@@ -598,7 +598,7 @@ const BadCase kBadCases[] = {
 
     // Unknown fields, at every level.
     {"UnknownTopLevelField", valid("nmae: t\n"),
-     "t.yaml:6: nmae: unknown field; expected one of: format, name, lot, robot, obstacles, "
+     "t.yaml:6: nmae: unknown field; expected one of: format, name, lot, map, robot, obstacles, "
      "parked_robots, start, goal, physics, realism, tolerance"},
     {"UnknownLotField", "format: parksim-world/1\nname: t\nlot: {x_min: 0, y_min: 0, z_max: 1}\n",
      "t.yaml:3: lot.z_max: unknown field; expected one of: x_min, y_min, x_max, y_max"},
@@ -616,7 +616,7 @@ const BadCase kBadCases[] = {
      "heading_tolerance_deg, either_heading"},
     {"UnknownObstacleField", valid("obstacles:\n  - name: a\n    kind: box\n    colour: red\n"),
      "t.yaml:9: obstacles[0].colour: unknown field; expected one of: name, kind, center, size, "
-     "yaw_deg, radius, vertices, height"},
+     "yaw_deg, radius, vertices, holes, height"},
     {"UnknownParkedRobotField",
      valid("parked_robots:\n  - {name: p, pose: [1, 1, 0]}\n  - {name: q, yaw_deg: 3}\n"),
      "t.yaml:8: parked_robots[1].yaw_deg: unknown field; expected one of: name, pose, height, "
@@ -827,7 +827,8 @@ const BadCase kBadCases[] = {
     {"TerminalEscapeInNameIsEscaped", "format: parksim-world/1\nname: \"\\e[31mred\"\n",
      "t.yaml:2: name: must be UTF-8 text without control characters, got \"\\x1b[31mred\""},
     {"TerminalEscapeInKeyIsEscaped", valid("\"\\e[2J\": 1\n"),
-     "t.yaml:6: \\x1b[2J: unknown field; expected one of: format, name, lot, robot, obstacles, "
+     "t.yaml:6: \\x1b[2J: unknown field; expected one of: format, name, lot, map, robot, "
+     "obstacles, "
      "parked_robots, start, goal, physics, realism, tolerance"},
     {"ControlCharacterInObstacleName",
      valid("obstacles: [{name: \"a\\tb\", kind: box, center: [1.9, 0.1], size: [0.1, 0.1]}]\n"),
@@ -837,7 +838,7 @@ const BadCase kBadCases[] = {
     {"TwoShapes",
      valid("obstacles: [{name: a, kind: box, center: [1, 1], size: [1, 1], radius: 0.1}]\n"),
      "t.yaml:6: obstacles[0]: give exactly one shape: size (a box), radius (a circle) or "
-     "vertices (a convex polygon)"},
+     "vertices (a polygon)"},
     {"CircleWithYaw",
      valid("obstacles: [{name: a, kind: bollard, center: [1.9, 0.1], radius: 0.05, "
            "yaw_deg: 10}]\n"),
@@ -851,16 +852,25 @@ const BadCase kBadCases[] = {
     {"PolygonOfTwoVertices",
      valid("obstacles: [{name: a, kind: island, vertices: [[1.8, 0], [1.9, 0]]}]\n"),
      "t.yaml:6: obstacles[0].vertices: a polygon needs at least 3 vertices [x, y], got 2"},
-    {"NonConvexPolygon",
+    {"SelfCrossingPolygon",
      valid("obstacles:\n  - name: a\n    kind: island\n"
-           "    vertices: [[1.6, 0], [1.9, 0], [1.9, 0.3], [1.8, 0.1], [1.6, 0.3]]\n"),
-     "t.yaml:9: obstacles[0].vertices: must be a convex polygon: vertices in order around it, no "
-     "repeated or collinear vertices, no self-crossing"},
-    {"CollinearPolygon",
-     valid("obstacles: [{name: a, kind: island, vertices: [[1.6, 0], [1.7, 0], [1.8, 0], "
+           "    vertices: [[1.6, 0], [1.9, 0.3], [1.9, 0], [1.6, 0.2]]\n"),
+     "t.yaml:9: obstacles[0].vertices: must be a simple polygon (holes inside it, apart): the "
+     "outline crosses or touches itself (edges from vertex 0 and vertex 2): a polygon must be "
+     "simple"},
+    {"RepeatedVertex",
+     valid("obstacles: [{name: a, kind: island, vertices: [[1.6, 0], [1.7, 0], [1.7, 0], "
            "[1.8, 0.1]]}]\n"),
-     "t.yaml:6: obstacles[0].vertices: must be a convex polygon: vertices in order around it, no "
-     "repeated or collinear vertices, no self-crossing"},
+     "t.yaml:6: obstacles[0].vertices: must be a simple polygon (holes inside it, apart): the "
+     "outline, vertex 2: repeats the vertex before it"},
+    {"HoleOutsidePolygon",
+     valid("obstacles: [{name: a, kind: island, vertices: [[1.6, 0], [1.9, 0], [1.9, 0.3]], "
+           "holes: [[[1.0, 1.0], [1.1, 1.0], [1.1, 1.1]]]}]\n"),
+     "t.yaml:6: obstacles[0].holes: must be a simple polygon (holes inside it, apart): hole 0 lies "
+     "outside the outline"},
+    {"HolesWithoutVertices",
+     valid("obstacles: [{name: a, kind: box, center: [1, 1], size: [1, 1], holes: []}]\n"),
+     "t.yaml:6: obstacles[0].holes: holes belong to a polygon (vertices)"},
     {"VertexNotAPair",
      valid("obstacles: [{name: a, kind: island, vertices: [[1.6, 0], [1.7], [1.8, 0.1]]}]\n"),
      "t.yaml:6: obstacles[0].vertices[1]: must be a list [x, y] of 2 numbers, got a list of 1"},
@@ -902,6 +912,40 @@ INSTANTIATE_TEST_SUITE_P(ScenarioReader, RejectsBadInput, ::testing::ValuesIn(kB
                          [](const ::testing::TestParamInfo<BadCase>& param_info) {
                            return std::string(param_info.param.name);
                          });
+
+TEST(ScenarioReader, AnyPolygonWithHolesIsCutIntoConvexPartsExactly) {
+  // An L-shaped kerb, and a square island with a square hole, both clockwise.
+  const Scenario s = parseScenario(
+      valid("obstacles:\n"
+            "  - {name: l, kind: curb, vertices: [[1.6, 0], [1.6, 0.3], [1.7, 0.3], [1.7, 0.1], "
+            "[1.9, 0.1], [1.9, 0]]}\n"
+            "  - name: ring\n    kind: island\n    height: 0.2\n"
+            "    vertices: [[1.0, 0.8], [1.0, 1.1], [1.3, 1.1], [1.3, 0.8]]\n"
+            "    holes: [[[1.1, 0.9], [1.1, 1.0], [1.2, 1.0], [1.2, 0.9]]]\n"),
+      "t.yaml");
+  const Obstacle& l = s.obstacles[0];
+  ASSERT_EQ(l.shape, ObstacleShape::kCompound);
+  EXPECT_EQ(l.compound->parts.size(), 2u);
+  EXPECT_EQ(l.compound->rings.size(), 1u);
+  const Obstacle& ring = s.obstacles[1];
+  ASSERT_EQ(ring.shape, ObstacleShape::kCompound);
+  EXPECT_EQ(ring.height_m, 0.2);
+  EXPECT_EQ(ring.compound->rings.size(), 2u);
+  double area = 0.0;
+  for (const auto& part : ring.compound->parts) area += 0.5 * signedDoubleArea(part);
+  EXPECT_NEAR(area, 0.09 - 0.01, 1e-12);
+  // The footprint fits in the hole, and touches the ring once it moves.
+  const RobotDef robot;
+  EXPECT_GT(separation(footprintAt(robot, {1.175, 0.95, 0.0}), ring), 0.0);
+  EXPECT_LT(separation(footprintAt(robot, {1.195, 0.95, 0.0}), ring), 0.0);
+  // Convex polygons stay as they were.
+  EXPECT_EQ(parseScenario(valid("obstacles: [{name: t, kind: island, vertices: [[1.6, 0], [1.9, "
+                                "0], [1.9, 0.3]]}]\n"),
+                          "t.yaml")
+                .obstacles[0]
+                .shape,
+            ObstacleShape::kPolygon);
+}
 
 }  // namespace
 }  // namespace parksim

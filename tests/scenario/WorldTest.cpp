@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -52,6 +53,64 @@ TEST(World, AnOverriddenFieldIsNamedByItsOverride) {
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()).rfind("--set tolerance.max_contacts=-1: ", 0), 0u) << e.what();
   }
+}
+
+// A world file parsed once and read many times (a sweep's set: values) reads exactly as
+// parseWorld with the same overrides: the same world, the same hash, the same messages; reads
+// with the same paths change values in place, others start from the file again.
+TEST(WorldFile, ReadsAsParseWorldWhateverTheOrderOfReads) {
+  const std::string text = std::string(kWorld) + "robot: {wheel_radius: 0.02}\n";
+  WorldFile file(text, "t.yaml");
+  using Overrides = std::vector<ScenarioOverride>;
+  const auto o = [](const std::string& path, const std::string& value) {
+    return ScenarioOverride{path, value, "set: " + path + "=" + value};
+  };
+  const std::vector<Overrides> reads = {
+      {},
+      {o("robot.wheel_radius", "0.025"), o("tolerance.max_contacts", "5")},
+      {o("robot.wheel_radius", "0.03"), o("tolerance.max_contacts", "6")},   // in place
+      {o("robot.wheel_radius", "-1"), o("tolerance.max_contacts", "6")},     // refused
+      {o("robot.wheel_radius", "0.021"), o("tolerance.max_contacts", "2")},  // after a refusal
+      {o("robot.max_wheel_speed_radps", "7")},                               // other paths
+      {o("robot.max_wheel_speed_radps", "\"7\"")},  // quoted: not a number, as in a file
+      {o("robot.max_wheel_speed_radps", "[7]")},
+      {o("robot.max_wheel_speed_radps", "8")},
+      {o("robot.max_wheel_speed_radps", "9e0")},
+      {o("robot.max_wheel_speed_radps", "nine")},
+      {o("robot.max_wheel_speed_radps", "- 9")},  // a list, parsed
+      {o("robot.max_wheel_speed_radps", "+9.5")},
+      {},
+  };
+  for (const Overrides& overrides : reads) {
+    std::string expected_error;
+    World expected;
+    try {
+      expected = parseWorld(text, "t.yaml", overrides);
+    } catch (const Error& e) {
+      expected_error = e.what();
+    }
+    std::string error;
+    World got;
+    try {
+      got = file.read(overrides);
+    } catch (const Error& e) {
+      error = e.what();
+    }
+    const std::string what = overrides.empty() ? "(none)" : overrides.front().label;
+    EXPECT_EQ(error, expected_error) << what;
+    if (!error.empty()) continue;
+    EXPECT_EQ(got.content_hash, expected.content_hash) << what;
+    EXPECT_EQ(got.scenario.robot.wheel_radius_m, expected.scenario.robot.wheel_radius_m) << what;
+    EXPECT_EQ(got.scenario.robot.max_wheel_speed_radps,
+              expected.scenario.robot.max_wheel_speed_radps)
+        << what;
+    EXPECT_EQ(got.sections.tolerance.max_contacts, expected.sections.tolerance.max_contacts)
+        << what;
+  }
+  // A copy reads alike and shares nothing with the original.
+  const WorldFile copy(file);
+  EXPECT_EQ(copy.read({o("robot.wheel_radius", "0.026")}).scenario.robot.wheel_radius_m, 0.026);
+  EXPECT_EQ(file.read().scenario.robot.wheel_radius_m, 0.02);
 }
 
 }  // namespace

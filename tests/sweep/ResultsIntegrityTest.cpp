@@ -11,10 +11,10 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/Error.h"
+#include "parksim/results/ResultsTable.h"
+#include "parksim/results/RowSeal.h"
+#include "parksim/results/TableVerify.h"
 #include "parksim/sweep/Merge.h"
-#include "parksim/sweep/ResultsTable.h"
-#include "parksim/sweep/RowSeal.h"
-#include "parksim/sweep/TableVerify.h"
 #include "tests/support/RunParksim.h"
 #include "tests/sweep/SweepTestSupport.h"
 
@@ -146,22 +146,22 @@ TEST(ResultsIntegrity, ResumeRefusesRowsOfAnotherWorldContentOrBuild) {
   const std::string dir = scratchDir();
   appendRows(dir, 1, 3);
   const Json provenance = row(0);
-  TableExpectations same{{{"head_in", "00000000000000aa"}}, rowWriter(provenance)};
+  TableExpectations same{{{"head_in", "00000000000000aa"}}, rowWriter(provenance), {}};
   EXPECT_NO_THROW(ResultsTable table(dir, same));
-  TableExpectations edited{{{"head_in", "00000000000000bb"}}, ""};
+  TableExpectations edited{{{"head_in", "00000000000000bb"}}, "", {}};
   EXPECT_EQ(errorOf([&] { ResultsTable table(dir, edited); }),
             dir +
                 "/results.jsonl:1: episode 0000000000000001 ran on another content of world "
                 "'head_in' (world_hash 00000000000000aa; the world file now: "
                 "00000000000000bb): the world file changed since; sweep into a new --out (or "
                 "restore the file)");
-  TableExpectations rebuilt{{}, rowWriter(row(0, "00000000000000aa", "0.3.1"))};
+  TableExpectations rebuilt{{}, rowWriter(row(0, "00000000000000aa", "0.3.1")), {}};
   EXPECT_NE(errorOf([&] { ResultsTable table(dir, rebuilt); })
                 .find("was written by parksim 0.3.0 (commit 0123456789ab, Release, GNU 12.2.0, "
                       "Bullet double), not by this parksim 0.3.1"),
             std::string::npos);
   // Rows of a world the sweep does not read (an edited spec) are kept as they are.
-  TableExpectations other{{{"parallel", "00000000000000cc"}}, ""};
+  TableExpectations other{{{"parallel", "00000000000000cc"}}, "", {}};
   EXPECT_NO_THROW(ResultsTable table(dir, other));
 }
 

@@ -5,6 +5,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <thread>
@@ -43,6 +45,28 @@ std::map<std::string, int> idCounts(const std::string& jsonl) {
   return counts;
 }
 
+// Starts `parksim sweep SPEC --out OUT --workers 1` and kills it (SIGKILL) once it has written
+// `rows` rows, or whenever it gets there: the assertions after it hold either way.
+void sweepThenKill(const std::string& spec, const std::string& out, std::size_t rows) {
+  const std::string exe = testing::parksimExe();
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    const int devnull = ::open("/dev/null", O_WRONLY);
+    dup2(devnull, 1);
+    dup2(devnull, 2);
+    execl(exe.c_str(), exe.c_str(), "sweep", spec.c_str(), "--out", out.c_str(), "--workers", "1",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  for (int i = 0; i < 4000 && lines(out + "/results.jsonl") < rows; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  kill(child, SIGKILL);
+  int status = 0;
+  waitpid(child, &status, 0);
+}
+
 TEST(SweepCli, BadSpecExitsTwoWithALocatedErrorAndWritesNothing) {
   const std::string dir = scratchDir();
   writeText(dir + "/bad.yaml", studySpec("planners: [rrt, nope]\n"));
@@ -57,24 +81,7 @@ TEST(SweepCli, SurvivesAKillAndCompletesEachEpisodeOnceThenReports) {
   const std::string dir = scratchDir();
   writeText(dir + "/spec.yaml", studySpec("planners: rrt-goal-connect\nseeds: {from: 1, to: 6}\n"));
   const std::string out = dir + "/out";
-  const std::string exe = testing::parksimExe();
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    const int devnull = ::open("/dev/null", O_WRONLY);
-    dup2(devnull, 1);
-    dup2(devnull, 2);
-    execl(exe.c_str(), exe.c_str(), "sweep", (dir + "/spec.yaml").c_str(), "--out", out.c_str(),
-          "--workers", "1", static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  // Kill it once it has written a row (or whenever it gets there: the assertions hold either way).
-  for (int i = 0; i < 4000 && lines(out + "/results.jsonl") < 2; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  kill(child, SIGKILL);
-  int status = 0;
-  waitpid(child, &status, 0);
+  sweepThenKill(dir + "/spec.yaml", out, 2);
 
   const auto again = runParksim("sweep " + dir + "/spec.yaml --out " + out + " --workers 2");
   EXPECT_EQ(again.exit_code, 0) << again.out;
@@ -280,6 +287,94 @@ TEST(SweepCli, MissingNeedsASlurmSweep) {
       runParksim("sweep " + dir + "/spec.yaml --out " + dir + "/out --slurm --missing");
   EXPECT_EQ(none.exit_code, 2) << none.out;
   EXPECT_NE(none.out.find("/out/sweep.json: no Slurm sweep here"), std::string::npos) << none.out;
+}
+
+// The cheapest whole episode (bench/scale/tiny.yaml: 3 ms), with `axes`.
+std::string tinySpec(const std::string& axes) {
+  return "format: parksim-sweep/1\nname: tiny\nworlds: [" + testing::sourceDir() +
+         "/bench/scale/tiny.yaml]\nplanners: hybrid-a-star\ntracking: open\n" + axes;
+}
+
+// The rows of a table by id, timing and provenance aside: what must not depend on how the
+// episodes were run.
+std::map<std::string, nlohmann::json> rowsById(const std::string& jsonl) {
+  std::map<std::string, nlohmann::json> rows;
+  std::size_t start = 0;
+  const std::string text = slurp(jsonl);
+  while (start < text.size()) {
+    const std::size_t nl = text.find('\n', start);
+    nlohmann::json row = nlohmann::json::parse(text.substr(start, nl - start));
+    for (const char* key : {"plan_time_s", "plan_first_solution_s", "sim_wall_s", "episode_wall_s",
+                            "plan_cost_history", "plan_phase_times_s", "row_checksum", "host"}) {
+      row.erase(key);
+    }
+    rows[row["episode_id"].get<std::string>()] = row;
+    start = nl + 1;
+  }
+  return rows;
+}
+
+// The example: two values of a robot limit, two episodes per other combination, each
+// value in its column, every id different; a bad path or value refused with the spec's line.
+TEST(SweepCli, SetAxesAreColumnsAndPartOfTheIds) {
+  const std::string dir = scratchDir();
+  writeText(dir + "/spec.yaml",
+            tinySpec("seeds: [1, 2]\nset: {robot.max_wheel_speed_radps: [6, 10]}\n"));
+  const auto r = runParksim("sweep " + dir + "/spec.yaml --out " + dir + "/out --workers 2");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  const std::map<std::string, nlohmann::json> rows = rowsById(dir + "/out/results.jsonl");
+  ASSERT_EQ(rows.size(), 4u);
+  std::map<double, int> per_value;
+  for (const auto& [id, row] : rows) ++per_value[row["robot.max_wheel_speed_radps"].get<double>()];
+  EXPECT_EQ(per_value, (std::map<double, int>{{6.0, 2}, {10.0, 2}}));
+  const std::string header = slurp(dir + "/out/results.csv").substr(0, 400);
+  EXPECT_NE(header.find(",sample,robot.max_wheel_speed_radps,status,"), std::string::npos)
+      << header;
+  for (const char* axes : {"set:\n  robot.max_wheel_speed_radps: [6, -10]\n",
+                           "set:\n  robot.max_wheel_speed: [6]\n"}) {
+    writeText(dir + "/bad.yaml", tinySpec(axes));
+    const auto bad = runParksim("sweep " + dir + "/bad.yaml --out " + dir + "/bad");
+    EXPECT_EQ(bad.exit_code, 2) << bad.out;
+    EXPECT_NE(bad.out.find("bad.yaml:7: set: robot.max_wheel_speed"), std::string::npos) << bad.out;
+    EXPECT_FALSE(fs::exists(dir + "/bad"));
+  }
+}
+
+// samples: {count: 20, seed: 1}: the same 20 episodes, values and ids, twice, in one process,
+// sharded two ways, and resumed after a kill.
+TEST(SweepCli, ASampledSpecGivesTheSameEpisodesHoweverItRuns) {
+  const std::string dir = scratchDir();
+  writeText(dir + "/spec.yaml", tinySpec("set:\n  robot.max_wheel_speed_radps: {uniform: [6, 12]}\n"
+                                         "  goal.position_tolerance: {normal: [0.003, 0.0003]}\n"
+                                         "samples: {count: 20, seed: 1}\n"));
+  const std::string spec = dir + "/spec.yaml";
+  const auto list = runParksim("sweep " + spec + " --list");
+  EXPECT_EQ(list.exit_code, 0);
+  EXPECT_EQ(list.out, runParksim("sweep " + spec + " --list").out);
+  EXPECT_EQ(std::count(list.out.begin(), list.out.end(), '\n'), 20);
+
+  EXPECT_EQ(runParksim("sweep " + spec + " --out " + dir + "/one --workers 1").exit_code, 0);
+  const std::map<std::string, nlohmann::json> one = rowsById(dir + "/one/results.jsonl");
+  ASSERT_EQ(one.size(), 20u);
+  for (const auto& [id, row] : one) {
+    EXPECT_NE(list.out.find(id), std::string::npos) << id;
+    EXPECT_TRUE(row["sample"].is_number()) << id;
+  }
+  // Sharded two ways, then merged.
+  for (int i = 0; i < 2; ++i) {
+    const std::string shard = std::to_string(i) + "/2";
+    EXPECT_EQ(runParksim("sweep " + spec + " --shard " + shard + " --out " + dir +
+                         "/sharded/shards/" + std::to_string(i))
+                  .exit_code,
+              0);
+  }
+  EXPECT_EQ(runParksim("merge " + dir + "/sharded").exit_code, 0);
+  EXPECT_EQ(rowsById(dir + "/sharded/results.jsonl"), one);
+  // Killed after its first rows and resumed.
+  const std::string out = dir + "/killed";
+  sweepThenKill(spec, out, 3);
+  EXPECT_EQ(runParksim("sweep " + spec + " --out " + out).exit_code, 0);
+  EXPECT_EQ(rowsById(out + "/results.jsonl"), one);
 }
 
 }  // namespace

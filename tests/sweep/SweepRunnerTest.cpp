@@ -15,8 +15,8 @@
 
 #include "parksim/core/Error.h"
 #include "parksim/results/ExecutedFile.h"
+#include "parksim/results/RowSeal.h"
 #include "parksim/sweep/Merge.h"
-#include "parksim/sweep/RowSeal.h"
 #include "parksim/sweep/Shard.h"
 #include "parksim/sweep/SweepManifest.h"
 #include "parksim/sweep/SweepSpecReader.h"
@@ -309,7 +309,7 @@ TEST(ResultsTableFile, RefusesADeviceOrFifoAsTheTable) {
       0u);
   std::filesystem::remove(dir + "/sweep.json");
   testing::writeText(dir + "/sweep.json",
-                     "{\"format\": \"parksim-sweep-manifest/2\", \"episode_id_format\": 2, "
+                     "{\"format\": \"parksim-sweep-manifest/2\", \"episode_id_format\": 3, "
                      "\"name\": 5, \"episode_ids\": []}");
   EXPECT_EQ(message([&] { readSweepManifest(dir, m); }),
             dir + "/sweep.json: not a sweep manifest (format parksim-sweep-manifest/2)");
@@ -337,7 +337,18 @@ TEST(SweepManifestFile, RefusesATableOfAnotherEpisodeIdFormat) {
   ASSERT_TRUE(readSweepManifest(dir, m));
   EXPECT_EQ(m.episode_ids, written.episode_ids);
   EXPECT_EQ(m.shard.index, 1);
-  EXPECT_NE(slurp(dir + "/sweep.json").find("\"episode_id_format\": 2"), std::string::npos);
+  EXPECT_NE(slurp(dir + "/sweep.json").find("\"episode_id_format\": 3"), std::string::npos);
+  // A table of format 2 (before the set: axes) is refused by name too.
+  testing::writeText(dir + "/sweep.json",
+                     "{\"format\": \"parksim-sweep-manifest/2\", \"episode_id_format\": 2, "
+                     "\"episode_ids\": []}");
+  why.clear();
+  try {
+    readSweepManifest(dir, m);
+  } catch (const Error& e) {
+    why = e.what();
+  }
+  EXPECT_NE(why.find("episode ids (format 2) hash other text"), std::string::npos) << why;
 }
 
 }  // namespace

@@ -16,12 +16,12 @@
 
 #include <gtest/gtest.h>
 
+#include "parksim/results/ResultsTable.h"
+#include "parksim/results/TableVerify.h"
 #include "parksim/sweep/EpisodeExpansion.h"
 #include "parksim/sweep/Merge.h"
-#include "parksim/sweep/ResultsTable.h"
 #include "parksim/sweep/SweepRunner.h"
 #include "parksim/sweep/SweepSpecReader.h"
-#include "parksim/sweep/TableVerify.h"
 #include "tests/sweep/SweepTestSupport.h"
 
 namespace {
@@ -75,6 +75,66 @@ struct Sample {
   long long allocations;
 };
 
+struct Flatness {
+  double bytes_per_row = 0.0;  ///< heap growth per row over the second half (least squares)
+  double early = 0.0;          ///< allocations per row, rows tenth..half
+  double late = 0.0;           ///< and over the second half
+};
+
+// Runs `episodes` on one worker into DIR's table, sampling the heap twenty times.
+Flatness runMeasured(const SweepSpec& spec, const std::vector<SweepEpisode>& episodes,
+                     const std::string& dir) {
+  const std::size_t rows = episodes.size();
+  const std::size_t every = rows / 20;
+  std::vector<Sample> samples;
+  {
+    TableExpectations expect;
+    for (const SetAxis& axis : spec.set) expect.set_columns.push_back(axis.path);
+    ResultsTable table(dir, expect);
+    SweepRunnerDef def;
+    def.workers = 1;
+    def.episode.episodes_dir = dir + "/episodes";
+    // The progress callback runs on the writer after each row.
+    runSweep(episodes, def, table, [&](const SweepProgress& p) {
+      if (p.done % every == 0 && p.done > 0) {
+        samples.push_back({p.done, g_live_bytes.load(), g_allocations.load()});
+      }
+    });
+  }
+  EXPECT_EQ(samples.size(), 20u);
+  const std::size_t half = rows / 2;
+  double n = 0, mx = 0, my = 0;
+  for (const Sample& s : samples) {
+    if (s.rows < half) continue;
+    n += 1;
+    mx += static_cast<double>(s.rows);
+    my += static_cast<double>(s.live_bytes);
+  }
+  mx /= n;
+  my /= n;
+  double sxy = 0, sxx = 0;
+  for (const Sample& s : samples) {
+    if (s.rows < half) continue;
+    sxy += (static_cast<double>(s.rows) - mx) * (static_cast<double>(s.live_bytes) - my);
+    sxx += (static_cast<double>(s.rows) - mx) * (static_cast<double>(s.rows) - mx);
+  }
+  const auto at = [&samples](std::size_t r) {
+    for (const Sample& s : samples)
+      if (s.rows == r) return s;
+    return Sample{};
+  };
+  const std::size_t tenth = 2 * every;
+  Flatness f;
+  f.bytes_per_row = sxy / sxx;
+  f.early = double(at(half).allocations - at(tenth).allocations) / double(half - tenth);
+  f.late = double(at(rows).allocations - at(half).allocations) / double(rows - half);
+  std::printf(
+      "heap growth after %zu rows: %.1f bytes/row; allocations per row %.1f (rows %zu-%zu), "
+      "%.1f (rows %zu-%zu), ratio %.4f\n",
+      half, f.bytes_per_row, f.early, tenth, half, f.late, half, rows, f.late / f.early);
+  return f;
+}
+
 TEST(SweepScale, HeapAndWorkPerRowStayFlatOverTwoThousandRows) {
   if (!kCounting) GTEST_SKIP() << "AddressSanitizer replaces operator new: nothing to count";
   const std::string dir = testing::scratchDir();
@@ -87,52 +147,9 @@ TEST(SweepScale, HeapAndWorkPerRowStayFlatOverTwoThousandRows) {
   const std::vector<SweepWorld> worlds = loadSweepWorlds(spec);
   const std::vector<SweepEpisode> episodes = expandEpisodes(spec, worlds);
   ASSERT_EQ(episodes.size(), kRows);
-
-  std::vector<Sample> samples;
-  {
-    ResultsTable table(dir);
-    SweepRunnerDef def;
-    def.workers = 1;
-    def.episode.episodes_dir = dir + "/episodes";
-    // The progress callback runs on the writer after each row: a sample every 100 rows.
-    runSweep(episodes, def, table, [&samples](const SweepProgress& p) {
-      if (p.done % 100 == 0 && p.done > 0) {
-        samples.push_back({p.done, g_live_bytes.load(), g_allocations.load()});
-      }
-    });
-  }
-  ASSERT_EQ(samples.size(), kRows / 100);
-  // Heap growth per row after the first 1,000 rows (least squares over the samples there).
-  double n = 0, mx = 0, my = 0;
-  for (const Sample& s : samples) {
-    if (s.rows < 1000) continue;
-    n += 1;
-    mx += static_cast<double>(s.rows);
-    my += static_cast<double>(s.live_bytes);
-  }
-  mx /= n;
-  my /= n;
-  double sxy = 0, sxx = 0;
-  for (const Sample& s : samples) {
-    if (s.rows < 1000) continue;
-    sxy += (static_cast<double>(s.rows) - mx) * (static_cast<double>(s.live_bytes) - my);
-    sxx += (static_cast<double>(s.rows) - mx) * (static_cast<double>(s.rows) - mx);
-  }
-  const double bytes_per_row = sxy / sxx;
-  // Allocations per row, rows 200-1000 against rows 1000-2000.
-  const auto at = [&samples](std::size_t rows) {
-    for (const Sample& s : samples)
-      if (s.rows == rows) return s;
-    return Sample{};
-  };
-  const double early = double(at(1000).allocations - at(200).allocations) / 800.0;
-  const double late = double(at(2000).allocations - at(1000).allocations) / 1000.0;
-  std::printf(
-      "heap growth after 1,000 rows: %.1f bytes/row; allocations per row %.1f (rows "
-      "200-1000), %.1f (rows 1000-2000), ratio %.4f\n",
-      bytes_per_row, early, late, late / early);
-  EXPECT_LE(bytes_per_row, 200.0);
-  EXPECT_NEAR(late / early, 1.0, 0.02);
+  const Flatness f = runMeasured(spec, episodes, dir);
+  EXPECT_LE(f.bytes_per_row, 200.0);
+  EXPECT_NEAR(f.late / f.early, 1.0, 0.02);
 
   // Reading the whole table back: resume (open and check), merge and verify hold one row at a
   // time: their heap at the end of the read is independent of the rows but for the ids.
@@ -153,6 +170,25 @@ TEST(SweepScale, HeapAndWorkPerRowStayFlatOverTwoThousandRows) {
   // would be ~8 KB).
   EXPECT_LE(resume_peak, static_cast<long long>(kRows) * 300);
   EXPECT_LE(merge_held, static_cast<long long>(kRows) * 400);
+}
+
+// A sampled parameter study (set: values drawn per sample, each episode reading its world
+// again with them): as flat. 1,000 rows.
+TEST(SweepScale, ASampledStudyStaysFlatToo) {
+  if (!kCounting) GTEST_SKIP() << "AddressSanitizer replaces operator new: nothing to count";
+  const std::string dir = testing::scratchDir();
+  const SweepSpec spec =
+      parseSweepSpec("format: parksim-sweep/1\nname: sampled\nworlds: [" + testing::sourceDir() +
+                         "/bench/scale/tiny.yaml]\nplanners: hybrid-a-star\ntracking: open\n"
+                         "set:\n  robot.max_wheel_speed_radps: {uniform: [6, 12]}\n"
+                         "  goal.position_tolerance: {uniform: [0.002, 0.004]}\n"
+                         "samples: {count: 1000, seed: 1}\n",
+                     "sampled.yaml", "");
+  const std::vector<SweepEpisode> episodes = expandEpisodes(spec, loadSweepWorlds(spec));
+  ASSERT_EQ(episodes.size(), 1000u);
+  const Flatness f = runMeasured(spec, episodes, dir);
+  EXPECT_LE(f.bytes_per_row, 200.0);
+  EXPECT_NEAR(f.late / f.early, 1.0, 0.02);
 }
 
 }  // namespace

@@ -35,7 +35,12 @@ TEST(SweepSpecReader, ReadsEveryAxis) {
                 "tolerance: {max_pos_err_m: 0.01, max_contacts: 1}\n"),
       "spec.yaml", "");
   EXPECT_EQ(s.world_paths.size(), 1u);
-  EXPECT_EQ(s.planners, (std::vector<std::string>{"rrt", "rrt-star"}));
+  ASSERT_EQ(s.planners.size(), 2u);
+  EXPECT_EQ(s.planners[0].name, "rrt");
+  EXPECT_EQ(s.planners[1].name, "rrt-star");
+  EXPECT_TRUE(s.planners[1].params.empty());
+  ASSERT_EQ(s.controllers.size(), 1u);
+  EXPECT_EQ(s.controllers[0].name, "tracking");
   EXPECT_EQ(s.steerings, (std::vector<std::string>{"rotate-translate-rotate"}));
   EXPECT_EQ(s.smoothing, (std::vector<bool>{false, true}));
   EXPECT_EQ(s.seeds, (std::vector<std::uint64_t>{3, 4, 5, 6, 7}));

@@ -1,0 +1,27 @@
+#include "parksim/rl/TaskReward.h"
+
+#include <cmath>
+
+#include "parksim/core/Angle.h"
+
+namespace parksim {
+
+double taskGoalDistance(const ParkingTaskDef& def, double pos_err_m, double heading_err_rad) {
+  return std::sqrt(pos_err_m / def.distance_scale_m + def.heading_weight * heading_err_rad / kPi);
+}
+
+double taskPotential(const ParkingTaskDef& def, double pos_err_m, double heading_err_rad) {
+  return -def.shaping_weight * taskGoalDistance(def, pos_err_m, heading_err_rad);
+}
+
+double taskReward(const ParkingTaskDef& def, double before, double after,
+                  const TaskOutcome& outcome) {
+  // A terminal state's potential is 0: the telescoping sum then ends at -phi(s_0).
+  double reward = (outcome.terminated ? 0.0 : def.discount * after) - before;
+  if (outcome.success) reward += def.success_reward;
+  if (outcome.contact) reward += def.contact_reward;
+  if (outcome.exit) reward += def.exit_reward;
+  return reward;
+}
+
+}  // namespace parksim

@@ -1,0 +1,121 @@
+// A user's plan, planner and controller through the command line (docs/your-code.md): a plan
+// that collides or breaks a limit is never driven (exit 5), a plugin's component that crashes or
+// hangs is a verdict (exit 6) with nothing written, and bad plugins are one-line input errors.
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "tests/support/RunParksim.h"
+#include "tests/support/TestPaths.h"
+
+namespace parksim {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using ::testing::MatchesRegex;
+using testing::CliRun;
+
+class UserCodeCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = testing::testOutputDir("user_code_cli") /
+           ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  std::string world(const std::string& name) const {
+    return testing::sourceDir() + "/worlds/" + name + ".yaml";
+  }
+  std::string out(const std::string& sub) const { return (dir_ / sub).string(); }
+  static std::string faulty() {
+    return testing::binaryDir() + "/tests/plugin/libparksim_faulty_plugin.so";
+  }
+  static std::string examples() {
+    return testing::binaryDir() + "/examples/plugins/libparksim_example_plugins.so";
+  }
+  // head_in with a 5 cm box dropped on the default plan's middle row (issue 30's example).
+  std::string droppedBox() const {
+    std::ifstream in(world("head_in"));
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string key = "obstacles:\n";
+    text.insert(text.find(key) + key.size(),
+                "  - {name: dropped_box, kind: box, center: [0.752, 0.435], size: [0.05, 0.05]}\n");
+    const std::string path = out("dropped_box.yaml");
+    std::ofstream(path) << text;
+    return path;
+  }
+  fs::path dir_;
+};
+
+TEST_F(UserCodeCli, ACollidingPlanFileIsInvalidAndNotDriven) {
+  CliRun r = testing::runParksim("plan " + world("head_in") + " --out " + out("plan"));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  r = testing::runParksim("run " + droppedBox() + " --plan " + out("plan") +
+                          "/trajectory.csv --out " + out("run"));
+  EXPECT_EQ(r.exit_code, 5) << r.out;
+  EXPECT_THAT(r.out, MatchesRegex("(.|\n)*parksim run: plan_invalid: at t = [0-9.]+ s \\(x [0-9.]+ "
+                                  "m, y [0-9.]+ m, -?[0-9.]+ deg\\) the footprint overlaps "
+                                  "dropped_box\n"));
+  EXPECT_FALSE(fs::exists(dir_ / "run" / "executed.csv"));
+  // Over the world's wheel-speed limit: the limit is named.
+  r = testing::runParksim("run " + world("head_in") + " --plan " + out("plan") +
+                          "/trajectory.csv --set robot.max_wheel_speed_radps=5 --out " +
+                          out("slow"));
+  EXPECT_EQ(r.exit_code, 5) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("exceed robot.max_wheel_speed_radps 5"));
+}
+
+TEST_F(UserCodeCli, CrashesAndHangsOfPluginCodeAreVerdictsWithNothingWritten) {
+  for (const std::string& args :
+       {" --controller segfault-controller", " --controller hanging-controller",
+        " --planner segfault-planner", " --planner hanging-planner"}) {
+    SCOPED_TRACE(args);
+    const CliRun r = testing::runParksim(
+        "run " + world("head_in") + " --plugin " + faulty() + args +
+        " --planner-timeout 0.5 --controller-timeout 0.5 --out " + out("crash"));
+    EXPECT_EQ(r.exit_code, 6) << r.out;
+    const bool planner = args.find("planner") != std::string::npos;
+    EXPECT_THAT(r.out, HasSubstr(std::string("parksim run: ") +
+                                 (planner ? "planner_error: planner " : "controller_error: "
+                                                                        "controller ")));
+    EXPECT_FALSE(fs::exists(dir_ / "crash"));
+  }
+  // One that throws is caught in the process: its record up to the failure is kept.
+  const CliRun r = testing::runParksim("run " + world("head_in") + " --plugin " + faulty() +
+                                       " --controller throwing-controller --out " + out("throw"));
+  EXPECT_EQ(r.exit_code, 6) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("controller_error: controller throwing-controller threw in command "
+                               "at t = 1.000 s: lost track"));
+  EXPECT_TRUE(fs::exists(dir_ / "throw" / "executed.csv"));
+}
+
+TEST_F(UserCodeCli, PluginsAreListedAndSelectedByName) {
+  CliRun r = testing::runParksim("list --plugin " + examples());
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("  example "));
+  EXPECT_THAT(r.out, HasSubstr("  pure-pursuit "));
+  EXPECT_THAT(r.out, HasSubstr("plugin parksim-examples 1.0.0: "));
+  r = testing::runParksim("run " + world("parallel") + " --plugin " + examples() +
+                          " --planner example --controller pure-pursuit --out " + out("ex"));
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  // Unknown names and parameters, and files that are not plugins: one line, exit 2, nothing.
+  for (const std::string& args :
+       {std::string(" --planner exampel --plugin ") + examples(),
+        std::string(" --controller pure-pursuit"),
+        std::string(" --controller-param bandwith_radps=3"),
+        std::string(" --plugin ") + world("head_in"), std::string(" --plugin /no/such.so")}) {
+    SCOPED_TRACE(args);
+    r = testing::runParksim("run " + world("head_in") + args + " --out " + out("bad"));
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+    EXPECT_FALSE(fs::exists(dir_ / "bad"));
+  }
+}
+
+}  // namespace
+}  // namespace parksim

@@ -1,0 +1,44 @@
+// Shared libraries that are not plugins parksim can load, one per way of being wrong; built
+// several times with BROKEN_KIND set (CMakeLists.txt): the loader must refuse each in one line.
+
+#include <cstdint>
+
+#include "parksim/plugin/PluginApi.h"
+
+namespace {
+
+void registerNothing(parksim::PluginRegistrar&) {}
+
+void registerTakenName(parksim::PluginRegistrar& r) {
+  // "tracking" is parksim's own controller.
+  parksim::ControllerInfo info;
+  info.name = "tracking";
+  r.addController({info, [](const parksim::ParamMap&) -> std::unique_ptr<parksim::Controller> {
+                     return nullptr;
+                   }});
+}
+
+}  // namespace
+
+#if BROKEN_KIND == 1  // built against another plugin API version
+extern "C" __attribute__((visibility("default"))) const parksim::PluginDescriptor*
+parksim_plugin() {
+  static const parksim::PluginDescriptor d{PARKSIM_PLUGIN_API_VERSION + 1,
+                                           parksim::pluginAbiFingerprint(), "future", "9",
+                                           registerNothing};
+  return &d;
+}
+#elif BROKEN_KIND == 2  // built against headers with other type layouts
+extern "C" __attribute__((visibility("default"))) const parksim::PluginDescriptor*
+parksim_plugin() {
+  static const parksim::PluginDescriptor d{PARKSIM_PLUGIN_API_VERSION, 0x1234, "other-abi", "1",
+                                           registerNothing};
+  return &d;
+}
+#elif BROKEN_KIND == 3  // registers nothing
+PARKSIM_PLUGIN("empty", "1", registerNothing)
+#elif BROKEN_KIND == 4  // registers a name parksim already has
+PARKSIM_PLUGIN("taken", "1", registerTakenName)
+#else                   // no entry point at all
+extern "C" __attribute__((visibility("default"))) int not_a_parksim_plugin() { return 0; }
+#endif

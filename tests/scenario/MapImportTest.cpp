@@ -1,0 +1,115 @@
+// A map as a world file to edit: the map: reference or its obstacles written out, a lot from
+// its extent, free placeholders for start and goal; a world that loads, or nothing.
+
+#include "parksim/scenario/MapImport.h"
+
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "parksim/core/Error.h"
+#include "tests/support/MapFiles.h"
+
+namespace parksim {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Whether any obstacle blocks the footprint at `pose`.
+bool blocked(const Scenario& s, const Pose2& pose) {
+  const OrientedBox fp = footprintAt(s.robot, pose);
+  for (const Obstacle& o : s.obstacles) {
+    if (separation(fp, o) < 0.0) return true;
+  }
+  return false;
+}
+
+void expectSameObstacles(const Scenario& a, const Scenario& b) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> x(a.lot.x_min_m, a.lot.x_max_m);
+  std::uniform_real_distribution<double> y(a.lot.y_min_m, a.lot.y_max_m);
+  std::uniform_real_distribution<double> yaw(-3.14, 3.14);
+  int hits = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const Pose2 p{x(rng), y(rng), yaw(rng)};
+    ASSERT_EQ(blocked(a, p), blocked(b, p)) << p.x << ", " << p.y;
+    hits += blocked(a, p);
+  }
+  EXPECT_GT(hits, 100);
+}
+
+TEST(MapImport, WritesAWorldThatLoadsWithTheMapOrItsObstacles) {
+  const fs::path src = fs::path(testing::sourceDir()) / "worlds" / "maps";
+  const fs::path dir = testing::freshDir("map_import");
+  MapImportDef def;
+  def.map = (src / "lot.svg").string();
+  def.world = (dir / "lot.yaml").string();
+  def.layers = {"Walls", "Obstacles"};
+  const MapImport ref = importMap(def);
+  EXPECT_EQ(ref.kind, "svg");
+  EXPECT_NE(ref.text.find("map:\n  - {svg: \""), std::string::npos) << ref.text;
+  EXPECT_EQ(ref.world.scenario.lot.x_max_m, 3.0);
+  EXPECT_FALSE(placementProblem(ref.world.scenario, ref.world.scenario.start));
+  EXPECT_GT(positionDistance(ref.world.scenario.start, ref.world.scenario.goal.pose), 2.0);
+  // Written where the test says: the map's path is relative to that folder and loads from it.
+  testing::writeText(def.world, ref.text);
+  EXPECT_EQ(loadWorld(def.world).scenario.obstacles.size(), ref.world.scenario.obstacles.size());
+
+  def.list_obstacles = true;
+  const MapImport listed = importMap(def);
+  EXPECT_EQ(listed.text.find("map:"), std::string::npos);
+  EXPECT_NE(listed.text.find("holes:"), std::string::npos);  // the planter ring
+  expectSameObstacles(ref.world.scenario, listed.world.scenario);
+
+  // A map's cells written out: each merged rectangle as a polygon.
+  def.map = (src / "lab.yaml").string();
+  def.layers.clear();
+  const MapImport cells = importMap(def);
+  def.list_obstacles = false;
+  expectSameObstacles(importMap(def).world.scenario, cells.world.scenario);
+}
+
+TEST(MapImport, RefusesWhatItCannotImport) {
+  const fs::path src = fs::path(testing::sourceDir()) / "worlds" / "maps";
+  const auto errorOf = [](MapImportDef def) {
+    try {
+      (void)importMap(def);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  MapImportDef def;
+  def.world = "w.yaml";
+  def.map = "photo.jpg";
+  EXPECT_EQ(errorOf(def),
+            "photo.jpg: cannot tell the map's kind from its name: a ROS map server YAML (.yaml), "
+            "an SVG drawing (.svg) or a Moving AI grid (.map)");
+  def.map = (src / "warehouse.map").string();
+  EXPECT_EQ(errorOf(def), def.map + ": a Moving AI grid has no cell size: give one (--cell, m)");
+  // Every shape of the drawing, its page frame included: no room for the robot.
+  def.map = (src / "lot.svg").string();
+  EXPECT_EQ(errorOf(def).rfind("the map leaves no free place for parksim's default robot", 0), 0u);
+  // Too many obstacles to write out: a noisy 300 x 300 grid.
+  const fs::path dir = testing::freshDir("map_import_noise");
+  std::mt19937_64 rng(9);
+  std::vector<std::vector<int>> rows(300, std::vector<int>(300, 254));
+  for (auto& row : rows) {
+    for (int& v : row) v = rng() % 3 == 0 ? 0 : 254;
+  }
+  for (int j = 0; j < 20; ++j) {
+    for (int i = 0; i < 20; ++i)
+      rows[static_cast<std::size_t>(j)][static_cast<std::size_t>(i)] = 254;
+  }
+  testing::writePgm(dir / "noise.pgm", rows);
+  testing::writeText(dir / "noise.yaml", "image: noise.pgm\nresolution: 0.1\norigin: [0, 0, 0]\n");
+  def.map = (dir / "noise.yaml").string();
+  def.list_obstacles = true;
+  EXPECT_NE(errorOf(def).find("beyond a world file's limits (10000 obstacles, 1 MiB): import it "
+                              "as a map: reference instead"),
+            std::string::npos)
+      << errorOf(def);
+}
+
+}  // namespace
+}  // namespace parksim
