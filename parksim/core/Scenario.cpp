@@ -205,7 +205,7 @@ double placementMargin(const RobotDef& robot) { return 0.5 * motionCheckResoluti
 std::optional<std::string> placementProblem(const Scenario& s, const Pose2& pose,
                                             std::optional<double> margin) {
   const double margin_m = margin ? *margin : placementMargin(s.robot);
-  const std::string margin_text = shortest(margin_m * 1000.0) + " mm";
+  const std::string margin_text = brief(margin_m * 1000.0) + " mm";
   const double inset = margin_m - kPlacementTolerance_m;
   const LotBounds& lot = s.lot;
   if (!(pose.x >= lot.x_min_m + inset && pose.x <= lot.x_max_m - inset &&
