@@ -48,7 +48,7 @@ void PlanCliOptions::addTo(CLI::App& sub, const PlannerRegistry& planners) {
   sub.add_option("--max-iterations", max_iterations,
                  "iteration budget (A* planners: node expansions); auto: 200000 per search for "
                  "time-a-star, else 2000 (tree planners) or 20000 (hybrid-a-star) times "
-                 "max(1, lot area / 2.16 m^2)")
+                 "max(1, lot area / 2.16 m^2 / (robot size / 85 mm)^2)")
       ->capture_default_str();
   sub.add_option("--time-limit", time_limit_s,
                  "wall-time budget of the search, s (0: none); the plan then depends on the "

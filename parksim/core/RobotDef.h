@@ -3,6 +3,13 @@
 
 namespace parksim {
 
+/// The study robot's size: the longer side of its 80 x 85 mm footprint, m. What parksim tuned
+/// for the study's robot and holds for a robot of any size (margins, motion-check steps, the
+/// simulation's sliders, the film's camera) is the study's value times RobotDef::sizeScale().
+inline constexpr double kStudyRobotSize_m = 0.085;
+/// The study robot's top speed: 10 rad/s wheels of 20 mm radius, m/s.
+inline constexpr double kStudyTopSpeed_mps = 10.0 * 0.020;
+
 struct RobotDef {
   /// Footprint length along the heading, m.
   double length_m = 0.080;
@@ -28,6 +35,18 @@ struct RobotDef {
   /// Offset of the footprint's centre from the reference point along the heading, m
   /// (negative: the centre lies behind the axle).
   double footprintCenterOffset() const { return front_overhang_m - 0.5 * length_m; }
+
+  /// The robot's size: the longer side of its footprint, m.
+  double size() const { return length_m > width_m ? length_m : width_m; }
+  /// Its size in study robots (size() / kStudyRobotSize_m): exactly 1 for the study's robot, so
+  /// a study value times it is that value to the bit.
+  double sizeScale() const { return size() / kStudyRobotSize_m; }
+  /// Top speed of the reference point, m/s.
+  double topSpeed() const { return max_wheel_speed_radps * wheel_radius_m; }
+  /// The time it takes to drive its own size at top speed, in the study robot's (0.425 s):
+  /// exactly 1 for the study's robot, 3.33 for a 4.25 m car at 3 m/s. Durations tuned for the
+  /// study's robot (a steering horizon) are this many times longer for another.
+  double timeScale() const { return sizeScale() / (topSpeed() / kStudyTopSpeed_mps); }
 };
 
 }  // namespace parksim

@@ -196,15 +196,24 @@ bool blocksRobot(const Obstacle& obstacle, const RobotDef& robot) {
   return obstacle.height_m > robot.ground_clearance_m;
 }
 
-std::optional<std::string> placementProblem(const Scenario& s, const Pose2& pose, double margin_m) {
-  const std::string margin = shortest(margin_m * 1000.0) + " mm";
+double motionCheckResolution(const RobotDef& robot) {
+  return kStudyMotionCheckResolution_m * robot.sizeScale();
+}
+
+double placementMargin(const RobotDef& robot) { return 0.5 * motionCheckResolution(robot); }
+
+std::optional<std::string> placementProblem(const Scenario& s, const Pose2& pose,
+                                            std::optional<double> margin) {
+  const double margin_m = margin ? *margin : placementMargin(s.robot);
+  const std::string margin_text = brief(margin_m * 1000.0) + " mm";
   const double inset = margin_m - kPlacementTolerance_m;
   const LotBounds& lot = s.lot;
   if (!(pose.x >= lot.x_min_m + inset && pose.x <= lot.x_max_m - inset &&
         pose.y >= lot.y_min_m + inset && pose.y <= lot.y_max_m - inset)) {
     const bool outside = !lot.contains(pose.x, pose.y);
     return "reference point (" + shortest(pose.x) + ", " + shortest(pose.y) + ") is " +
-           (outside ? "outside the lot" : "closer than the " + margin + " margin to the lot edge") +
+           (outside ? "outside the lot"
+                    : "closer than the " + margin_text + " margin to the lot edge") +
            " [" + shortest(lot.x_min_m) + ", " + shortest(lot.x_max_m) + "] x [" +
            shortest(lot.y_min_m) + ", " + shortest(lot.y_max_m) + "]";
   }
@@ -218,13 +227,13 @@ std::optional<std::string> placementProblem(const Scenario& s, const Pose2& pose
       return "robot footprint overlaps " + name;
     }
     return "robot footprint is " + brief(distance(footprint, obstacle) * 1000.0) + " mm from " +
-           name + "; start and goal keep at least the " + margin +
+           name + "; start and goal keep at least the " + margin_text +
            " margin of the planner's motion checks";
   }
   return std::nullopt;
 }
 
-std::optional<std::string> goalPlacementProblem(const Scenario& s, double margin_m) {
+std::optional<std::string> goalPlacementProblem(const Scenario& s, std::optional<double> margin_m) {
   std::optional<std::string> problem = placementProblem(s, s.goal.pose, margin_m);
   if (problem && s.goal.either_heading) {
     const Pose2 turned{s.goal.pose.x, s.goal.pose.y, wrapAngle(s.goal.pose.theta + kPi)};

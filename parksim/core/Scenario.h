@@ -135,11 +135,23 @@ struct PhysicsDef {
   double obstacle_friction = 0.5;      ///< walls, islands and parked robots
 };
 
+/// The planner's motion-check resolution for the study's robot, m: no footprint point moves
+/// more than this between two checked poses (MotionValidator.h).
+inline constexpr double kStudyMotionCheckResolution_m = 0.001;
+
+/// The motion-check resolution for `robot`: the study's, times the robot's size in study robots
+/// (RobotDef::sizeScale), so every robot's checks are as fine, and its plans keep the same
+/// clearance, relative to its size: 1 mm for the study's 85 mm robot, 50 mm for a 4.25 m car.
+double motionCheckResolution(const RobotDef& robot);
+
 /// Start and goal must keep this clearance from every obstacle and from the lot edge: half the
-/// planner's motion-check resolution (MotionValidatorDef::resolution_m, 1 mm), the margin by
-/// which it grows the footprint at every checked pose. A pose closer than that could never be
-/// left or reached by a checked motion.
-constexpr double kPlacementMargin_m = 0.0005;
+/// planner's motion-check resolution, the margin by which it grows the footprint at every
+/// checked pose. A pose closer than that could never be left or reached by a checked motion.
+/// The study's robot's margin; placementMargin(robot) is any robot's.
+inline constexpr double kPlacementMargin_m = 0.5 * kStudyMotionCheckResolution_m;
+
+/// Half motionCheckResolution(robot): 0.5 mm for the study's robot.
+double placementMargin(const RobotDef& robot);
 
 /// Rounding the placement check forgives: a bumper computed 1e-17 m inside the margin passes.
 constexpr double kPlacementTolerance_m = 1e-9;
@@ -147,17 +159,17 @@ constexpr double kPlacementTolerance_m = 1e-9;
 struct Scenario;
 
 /// The one rule for start and goal poses, applied by the world reader and by the planner
-/// alike: the reference point lies at least `margin_m` inside the lot bounds, and the footprint
-/// grown by `margin_m` overlaps no obstacle that blocks the robot (see blocksRobot), both up to
-/// kPlacementTolerance_m. Returns what is wrong (naming the margin and the obstacle), or
-/// nothing when the pose is fine.
+/// alike: the reference point lies at least `margin_m` (unset: placementMargin of the
+/// scenario's robot) inside the lot bounds, and the footprint grown by `margin_m` overlaps no
+/// obstacle that blocks the robot (see blocksRobot), both up to kPlacementTolerance_m. Returns
+/// what is wrong (naming the margin and the obstacle), or nothing when the pose is fine.
 std::optional<std::string> placementProblem(const Scenario& scenario, const Pose2& pose,
-                                            double margin_m = kPlacementMargin_m);
+                                            std::optional<double> margin_m = std::nullopt);
 
 /// placementProblem for the goal: with `either_heading` the goal is fine when either heading
 /// is; the message is that of the goal pose as written.
 std::optional<std::string> goalPlacementProblem(const Scenario& scenario,
-                                                double margin_m = kPlacementMargin_m);
+                                                std::optional<double> margin_m = std::nullopt);
 
 /// A map a world's `map:` section brought in, kept so that figures can draw it under the lot.
 struct MapLayer {

@@ -9,7 +9,8 @@ namespace parksim {
 
 BalkcomMasonSteering::BalkcomMasonSteering(const RobotDef& robot, const BalkcomMasonDef& def)
     : robot_(robot), def_(def) {
-  if (!(def.period_s > 0.0) || !(def.horizon_s > 0.0)) {
+  def_.horizon_s = steeringHorizon(def.horizon_s, robot);
+  if (!(def.period_s > 0.0) || !(def_.horizon_s > 0.0)) {
     throw Error("balkcom-mason steering: period and horizon must be positive");
   }
   if (!(def.speed_fraction > 0.0 && def.speed_fraction <= 1.0)) {

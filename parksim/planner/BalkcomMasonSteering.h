@@ -14,8 +14,10 @@
 namespace parksim {
 
 struct BalkcomMasonDef {
-  double period_s = 0.1;   ///< control period: commands are held this long, s
-  double horizon_s = 1.0;  ///< length of a fixed-horizon trajectory, s
+  double period_s = 0.1;  ///< control period: commands are held this long, s
+  /// Length of a fixed-horizon trajectory, s; 0: 1 s for the study's robot, in proportion to
+  /// the robot's time (steeringHorizon, SteeringFunction.h).
+  double horizon_s = 0.0;
   /// Fraction of the robot's wheel speed limit the steering may use, in (0, 1].
   double speed_fraction = 1.0;
 };

@@ -67,10 +67,12 @@ PlannerEntry hybridAStarPlanner() {
   info.name = "hybrid-a-star";
   info.description = "Hybrid A* with Reeds-Shepp curves, then smoothed and timed";
   // 20,000 expansions per study lot of the free area it can reach from the start
-  // (ReachableBudget.h), at least the lot's.
+  // (ReachableBudget.h), measured in the robot's size as its cells are (lotSizeInStudyLots), at
+  // least the lot's.
   info.default_budget = [](const Scenario& s) {
-    return boundedBudget(20000.0 * reachableFreeArea(s) / kStudyLotAreaM2,
-                         lotScaledBudget(20000, s.lot));
+    const double scale = s.robot.sizeScale();  // exactly 1 for the study's robot
+    return boundedBudget(20000.0 * reachableFreeArea(s) / (kStudyLotAreaM2 * scale * scale),
+                         lotScaledBudget(20000, s));
   };
   return plannerEntry<HybridAStarPlanner>(std::move(info), HybridAStarDef{}, &bind);
 }

@@ -9,10 +9,19 @@
 
 namespace parksim {
 
+MotionValidatorDef resolvedValidation(const MotionValidatorDef& def, const RobotDef& robot) {
+  MotionValidatorDef resolved = def;
+  if (resolved.resolution_m == 0.0) resolved.resolution_m = motionCheckResolution(robot);
+  return resolved;
+}
+
 MotionValidator::MotionValidator(const FootprintChecker& checker, const RobotDef& robot,
-                                 const LotBounds& lot, const MotionValidatorDef& def)
-    : checker_(checker), robot_(robot), def_(def) {
-  if (!(def.resolution_m > 0.0)) throw Error("motion validator: resolution_m must be positive");
+                                 const LotBounds& lot, const MotionValidatorDef& requested)
+    : checker_(checker), robot_(robot), def_(resolvedValidation(requested, robot)) {
+  const MotionValidatorDef& def = def_;
+  if (!(def.resolution_m > 0.0)) {
+    throw Error("motion validator: resolution_m must be positive (or 0: the robot's)");
+  }
   // The placement rule's bounds (core's placementProblem), rounding forgiveness included: a goal
   // the world reader accepted 1e-10 m inside the margin was refused here as "within half the
   // motion-check resolution of the lot edge".

@@ -19,9 +19,16 @@
 namespace parksim {
 
 struct MotionValidatorDef {
-  /// Largest distance any footprint point travels between two checks, m.
-  double resolution_m = 0.001;
+  /// Largest distance any footprint point travels between two checks, m; also twice the
+  /// clearance every checked pose keeps. 0 (the default): motionCheckResolution(robot)
+  /// (core/Scenario.h), 1 mm for the study's 85 mm robot and in proportion to any robot's size,
+  /// so a car's plans keep as much clearance for its size as the study robot's do.
+  double resolution_m = 0.0;
 };
+
+/// `def` with its automatic resolution made for `robot` (what MotionValidator uses and result
+/// files record).
+MotionValidatorDef resolvedValidation(const MotionValidatorDef& def, const RobotDef& robot);
 
 /// Not thread-safe: it counts queries and reuses a scratch buffer; use one per thread.
 class MotionValidator {
@@ -53,6 +60,7 @@ class MotionValidator {
   /// Number of footprint queries made so far.
   long queries() const { return queries_; }
 
+  /// The definition as used: the resolution resolved for the robot.
   const MotionValidatorDef& def() const { return def_; }
 
  private:

@@ -30,7 +30,8 @@ WheelSpeeds limitAcceleration(const WheelSpeeds& w, const WheelSpeeds& prev, dou
 
 MoveToPoseSteering::MoveToPoseSteering(const RobotDef& robot, const MoveToPoseDef& def)
     : robot_(robot), def_(def), finisher_(robot, RotateTranslateRotateDef{def.period_s}) {
-  if (!(def.period_s > 0.0) || !(def.horizon_s > 0.0) || !(def.max_duration_s > 0.0)) {
+  def_.horizon_s = steeringHorizon(def.horizon_s, robot);
+  if (!(def.period_s > 0.0) || !(def_.horizon_s > 0.0) || !(def.max_duration_s > 0.0)) {
     throw Error("steering: period, horizon and max duration must be positive");
   }
   if (!(def.k_rho > 0.0) || !(def.k_alpha - def.k_rho > 0.0) || !(def.k_beta < 0.0)) {

@@ -17,11 +17,13 @@
 namespace parksim {
 
 struct MoveToPoseDef {
-  double k_rho = 0.3;                   ///< 1/s, distance gain (v = k_rho * rho)
-  double k_alpha = 1.5;                 ///< 1/s, bearing gain
-  double k_beta = -0.3;                 ///< 1/s, goal-heading gain
-  double period_s = 0.1;                ///< control period: commands are held this long, s
-  double horizon_s = 1.0;               ///< length of a fixed-horizon trajectory, s
+  double k_rho = 0.3;     ///< 1/s, distance gain (v = k_rho * rho)
+  double k_alpha = 1.5;   ///< 1/s, bearing gain
+  double k_beta = -0.3;   ///< 1/s, goal-heading gain
+  double period_s = 0.1;  ///< control period: commands are held this long, s
+  /// Length of a fixed-horizon trajectory, s; 0: 1 s for the study's robot, in proportion to
+  /// the robot's time (steeringHorizon, SteeringFunction.h).
+  double horizon_s = 0.0;
   double max_duration_s = 60.0;         ///< to-goal mode gives up after this long, s
   double position_tolerance_m = 0.001;  ///< to-goal mode: accepted distance to the target, m
   double heading_tolerance_rad = 0.5 * 3.14159265358979323846 / 180.0;  ///< accepted heading error

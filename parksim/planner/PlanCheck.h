@@ -33,9 +33,11 @@ struct PlanViolation {
 
 /// Checks `plan` (well-formed: malformedPlan is empty) for `scenario`, returning its first
 /// violation, or nothing when it may be driven:
-/// - it starts at the world's start (within 1 mm and 0.5 deg);
+/// - it starts at the world's start (within 0.5 deg and the robot's motion-check resolution,
+///   motionCheckResolution: 1 mm for the study's robot);
 /// - each row's pose is where the previous row's wheel speeds lead (within `validation`'s
-///   resolution of footprint travel): a plan is the exact integral of its wheel speeds;
+///   resolution of footprint travel, by default the robot's): a plan is the exact integral of
+///   its wheel speeds;
 /// - wheel speeds within the robot's limit, and each change of a wheel's speed (from rest at
 ///   the start, to rest at the end) within the acceleration limit times the row's period;
 /// - the swept footprint, without gaps, free of every obstacle and the reference point inside

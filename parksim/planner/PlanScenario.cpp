@@ -142,6 +142,7 @@ const ParamMap& PlanningProblem::params() const { return setup.planner_params; }
 PlanSetup resolvedPlanSetup(const PlanSetup& setup, const Scenario& scenario,
                             const PlannerRegistry& registry) {
   PlanSetup resolved = setup;
+  resolved.validation = resolvedValidation(setup.validation, scenario.robot);
   if (resolved.search.max_iterations == kAutoIterations) {
     resolved.search.max_iterations =
         defaultIterationBudget(registry.find(setup.planner).info, scenario);

@@ -96,7 +96,7 @@ struct PlannerInfo {
   /// Keeps improving its plan until its budget ends (RRT*), rather than stopping at the first.
   bool anytime = false;
   /// The iteration budget when the setup says kAutoIterations, for a scenario. Empty: 2000
-  /// iterations times max(1, lot area / the study lot's area).
+  /// iterations times max(1, the lot's size in study lots, lotSizeInStudyLots).
   std::function<int(const Scenario&)> default_budget;
   /// Its declared parameters (ParamSet.h), for help texts and docs.
   std::vector<ParamInfo> params;

@@ -25,11 +25,19 @@ const PlannerRegistry& builtInPlanners();
 /// Area of the study's lot (1.8 x 1.2 m), the unit of the default budgets' scaling, m^2.
 inline constexpr double kStudyLotAreaM2 = 1.8 * 1.2;
 
-/// `base` iterations times max(1, lot area / the study lot's area), rounded up and capped at
-/// 10^6, so budgets grow with the space to search and stay bounded (docs/limits.md).
-int lotScaledBudget(int base, const LotBounds& lot);
+/// The lot's area in study lots, both measured in their robot's size: lot area / size^2 over the
+/// study lot's area / the study robot's size^2. A search grows a tree or a grid in steps and
+/// cells of the robot's size (TreePlannerDef, TimeAStarDef, HybridAStarDef), so this is how
+/// much more there is to search than in the study: 1 for the study's robot in its lot, 1.27 for
+/// a 4.25 m car in an 86 x 80 m warehouse, 0.05 for the car in an 18.7 x 14.4 m lot.
+double lotSizeInStudyLots(const Scenario& scenario);
 
-/// `info`'s budget for `scenario` (PlannerInfo::default_budget, or lotScaledBudget(2000)).
+/// `base` iterations times max(1, lotSizeInStudyLots(scenario)), rounded up and capped at
+/// 10^6, so budgets grow with the space to search and stay bounded (docs/limits.md). For the
+/// study's robot, base x max(1, lot area / 2.16 m^2).
+int lotScaledBudget(int base, const Scenario& scenario);
+
+/// `info`'s budget for `scenario` (PlannerInfo::default_budget, or lotScaledBudget(2000, ...)).
 int defaultIterationBudget(const PlannerInfo& info, const Scenario& scenario);
 
 }  // namespace parksim

@@ -24,7 +24,7 @@ double reachableFreeArea(const Scenario& s) {
       std::max(footprintRadius(s.robot), std::max(w, h) / kReachableGridCellsPerSide);
   const int nx = std::max(1, static_cast<int>(std::ceil(w / cell)));
   const int ny = std::max(1, static_cast<int>(std::ceil(h / cell)));
-  const FootprintFit fit(s.obstacles, s.robot, 0.5 * MotionValidatorDef{}.resolution_m);
+  const FootprintFit fit(s.obstacles, s.robot, placementMargin(s.robot));
   // 0 unknown, 1 free, 2 blocked: cells are tested as the fill reaches them.
   std::vector<char> state(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny), 0);
   const auto index = [&](int i, int j) { return static_cast<std::size_t>(j) * nx + i; };

@@ -37,8 +37,9 @@ struct ReedsSheppSteering::Curve {
 
 ReedsSheppSteering::ReedsSheppSteering(const RobotDef& robot, const ReedsSheppDef& def)
     : robot_(robot), def_(def) {
+  def_.horizon_s = steeringHorizon(def.horizon_s, robot);
   if (!(def.turning_radius_m > 0.0)) throw Error("reeds-shepp steering: radius must be positive");
-  if (!(def.period_s > 0.0) || !(def.horizon_s > 0.0)) {
+  if (!(def.period_s > 0.0) || !(def_.horizon_s > 0.0)) {
     throw Error("reeds-shepp steering: period and horizon must be positive");
   }
   if (!(def.speed_fraction > 0.0 && def.speed_fraction <= 1.0)) {

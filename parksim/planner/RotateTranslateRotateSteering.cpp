@@ -18,7 +18,8 @@ constexpr double kSamePositionM = 1e-12;
 RotateTranslateRotateSteering::RotateTranslateRotateSteering(const RobotDef& robot,
                                                              const RotateTranslateRotateDef& def)
     : robot_(robot), def_(def) {
-  if (!(def.period_s > 0.0) || !(def.horizon_s > 0.0)) {
+  def_.horizon_s = steeringHorizon(def.horizon_s, robot);
+  if (!(def.period_s > 0.0) || !(def_.horizon_s > 0.0)) {
     throw Error("rotate-translate-rotate steering: period and horizon must be positive");
   }
   if (!(def.speed_fraction > 0.0 && def.speed_fraction <= 1.0) ||

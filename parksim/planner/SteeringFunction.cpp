@@ -5,6 +5,10 @@
 
 namespace parksim {
 
+double steeringHorizon(double horizon_s, const RobotDef& robot) {
+  return horizon_s == 0.0 ? kStudySteeringHorizon_s * robot.timeScale() : horizon_s;
+}
+
 void finishAtTarget(SteerResult& result, const Pose2& to, SteerMode mode, double horizon_s,
                     double period_s) {
   std::vector<TrajectoryPoint>& points = result.trajectory.points;

@@ -4,6 +4,7 @@
 
 #include "parksim/core/DiffDrive.h"
 #include "parksim/core/Pose2.h"
+#include "parksim/core/RobotDef.h"
 #include "parksim/core/Trajectory.h"
 
 namespace parksim {
@@ -38,6 +39,15 @@ struct SteerResult {
 /// missed by rounding only, so trajectories continuing from `to` join bit for bit.
 void finishAtTarget(SteerResult& result, const Pose2& to, SteerMode mode, double horizon_s,
                     double period_s);
+
+/// The steering functions' fixed horizon for the study's robot, s.
+inline constexpr double kStudySteeringHorizon_s = 1.0;
+
+/// A steering Def's horizon_s as used: itself when set, or when 0 (the defaults)
+/// kStudySteeringHorizon_s in the robot's time (RobotDef::timeScale), so a tree grows by as
+/// many of its robot's lengths per extension as the study robot's does in 1 s: 3.3 s for a
+/// 4.25 m car at 3 m/s.
+double steeringHorizon(double horizon_s, const RobotDef& robot);
 
 class SteeringFunction {
  public:

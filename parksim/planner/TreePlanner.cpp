@@ -154,10 +154,25 @@ PlanResult TreeSearch::run(const PlanProgress& progress) {
 
 }  // namespace detail
 
+TreePlannerDef resolvedTreeDef(const TreePlannerDef& def, const RobotDef& robot) {
+  TreePlannerDef resolved = def;
+  const double scale = robot.sizeScale();  // exactly 1 for the study's robot
+  if (resolved.connect_radius_m == 0.0) resolved.connect_radius_m = kStudyConnectRadius_m * scale;
+  if (resolved.extend_distance_m == 0.0) {
+    resolved.extend_distance_m = kStudyExtendDistance_m * scale;
+  }
+  return resolved;
+}
+
 TreePlanner::TreePlanner(const RobotDef& robot, const LotBounds& lot,
                          const SteeringFunction& steering, const MotionValidator& validator,
-                         const TreePlannerDef& def)
-    : robot_(robot), lot_(lot), steering_(steering), validator_(validator), def_(def) {
+                         const TreePlannerDef& requested)
+    : robot_(robot),
+      lot_(lot),
+      steering_(steering),
+      validator_(validator),
+      def_(resolvedTreeDef(requested, robot)) {
+  const TreePlannerDef& def = def_;
   if (def.max_iterations < 0) throw Error("planner: max_iterations must be >= 0");
   if (!(def.goal_bias >= 0.0 && def.goal_bias <= 1.0)) {
     throw Error("planner: goal_bias must be in [0, 1]");

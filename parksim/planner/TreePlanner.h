@@ -52,19 +52,27 @@ namespace parksim {
 /// "rrt-star" and "rrt-connect" (TreePlanners.cpp).
 enum class TreeVariant { kRrt, kRrtGoalConnect, kRrtStar, kRrtConnect };
 
+/// TreePlannerDef's lengths for the study's robot, m: a robot of another size gets them in
+/// proportion (RobotDef::sizeScale) when its Def leaves them 0.
+inline constexpr double kStudyConnectRadius_m = 0.1;
+inline constexpr double kStudyExtendDistance_m = 0.15;
+
 /// The tree planner's own parameters, on top of the search settings every planner shares.
 struct TreePlannerDef : SearchDef {
   TreeVariant variant = TreeVariant::kRrtGoalConnect;
-  double goal_bias = 0.05;        ///< probability of sampling a goal pose instead of a random one
-  double connect_radius_m = 0.1;  ///< kRrt: SE(2) distance to the goal that triggers a to-goal try
+  double goal_bias = 0.05;  ///< probability of sampling a goal pose instead of a random one
+  /// kRrt: SE(2) distance to the goal that triggers a to-goal try, m; 0: 0.1 m for the study's
+  /// robot, in proportion to the robot's size.
+  double connect_radius_m = 0.0;
   /// Length that turns heading into distance in the SE(2) metric, m: poses are embedded as
   /// (x, y, l cos theta, l sin theta). 0 selects the footprint radius, so a heading change moves
   /// the metric by the chord the farthest footprint corner travels.
   double heading_length_m = 0.0;
 
   /// kRrtStar and the goal tree of kRrtConnect: a new node lies at most this far (SE(2) metric)
-  /// from the tree node nearest to its sample, m.
-  double extend_distance_m = 0.15;
+  /// from the tree node nearest to its sample, m; 0: 0.15 m for the study's robot, in
+  /// proportion to the robot's size.
+  double extend_distance_m = 0.0;
   /// kRrtStar: number of nearest neighbours considered as parents and for rewiring; 0 selects
   /// k = ceil(e (1 + 1/3) ln n), the usual k-nearest RRT* rule for a 3-dimensional space.
   int rewire_neighbours = 0;
@@ -75,6 +83,9 @@ struct TreePlannerDef : SearchDef {
   /// others can be cheaper, since the cost is at least the length).
   bool informed_sampling = true;
 };
+
+/// `def` with its automatic lengths (connect_radius_m, extend_distance_m) made for `robot`.
+TreePlannerDef resolvedTreeDef(const TreePlannerDef& def, const RobotDef& robot);
 
 class TreePlanner {
  public:

@@ -39,12 +39,16 @@ class TreePlannerAdapter : public Planner {
 void bind(TreePlannerDef& d, ParamSet& s) {
   s.add("goal_bias", &d.goal_bias, "probability of sampling a goal pose", 0.0, 1.0);
   s.add("connect_radius_m", &d.connect_radius_m,
-        "rrt: SE(2) distance to the goal that triggers a to-goal try, m", 0.0, 1e6);
+        "rrt: SE(2) distance to the goal that triggers a to-goal try, m; 0: 0.1 m x robot size / "
+        "85 mm",
+        0.0, 1e6);
   s.add("heading_length_m", &d.heading_length_m,
         "length that turns heading into distance in the SE(2) metric, m; 0: footprint radius", 0.0,
         1e6);
   s.add("extend_distance_m", &d.extend_distance_m,
-        "rrt-star, rrt-connect's goal tree: longest step toward a sample (SE(2)), m", 1e-6, 1e6);
+        "rrt-star, rrt-connect's goal tree: longest step toward a sample (SE(2)), m; 0: 0.15 m x "
+        "robot size / 85 mm",
+        0.0, 1e6);
   s.add("rewire_neighbours", &d.rewire_neighbours,
         "rrt-star: neighbours considered for rewiring; 0: ceil(e (1 + 1/3) ln n)", 0, 100000);
   s.add("rewire_radius_m", &d.rewire_radius_m,
@@ -60,7 +64,7 @@ PlannerEntry treeEntry(const char* name, TreeVariant variant, const char* descri
   info.description = description;
   info.uses_steering = true;
   info.anytime = variant == TreeVariant::kRrtStar;
-  info.default_budget = [](const Scenario& s) { return lotScaledBudget(2000, s.lot); };
+  info.default_budget = [](const Scenario& s) { return lotScaledBudget(2000, s); };
   TreePlannerDef def;
   def.variant = variant;
   return plannerEntry<TreePlannerAdapter>(std::move(info), def, &bind);

@@ -90,7 +90,7 @@ Camera makeCamera(const CameraDef& def, const Scene& scene, int width_px, int he
   double radius = 0.0;  // of what must stay between the clip planes, m
   if (def.mode == CameraMode::kFollow && scene.focus) {
     target = *scene.focus;
-    distance = std::max(def.follow_distance_m, 0.01);
+    distance = std::max(def.follow_distance_m * scene.focus_scale, 0.01);
     radius = std::hypot(e.width(), e.height()) + distance;
   } else {
     const double top = std::max(scene.extent_top_m, 0.0);

@@ -22,8 +22,10 @@ struct CameraDef {
   /// Perspective: direction from the target to the camera in the ground plane, degrees
   /// counter-clockwise from +x. -90 puts the camera south of the lot, so +x points right.
   double azimuth_deg = -90.0;
-  double elevation_deg = 50.0;      ///< perspective: angle above the ground plane, degrees
-  double follow_distance_m = 0.55;  ///< kFollow: camera distance from the focus, m
+  double elevation_deg = 50.0;  ///< perspective: angle above the ground plane, degrees
+  /// kFollow: camera distance from the focus for a robot of the study's size, m; the scene's
+  /// focus_scale (the followed robot's size in study robots) scales it.
+  double follow_distance_m = 0.55;
   /// kTopDown and kPerspective: the extent fills this fraction of the image (<= 1).
   double fill = 0.98;
 };

@@ -436,7 +436,7 @@ std::vector<std::string> writeFigures(const Scenario& scenario, const FigureInpu
   const FigureSelection& chosen = def.figures;
   std::vector<std::string> written;
   if (chosen.empty()) return written;
-  const SceneStyle style = def.style.scaled(styleScaleFor(def.height_px));
+  const SceneStyle style = def.style.scaled(styleScaleFor(def.height_px)).forRobot(scenario.robot);
   FigureWriter writer(def, dir);
   auto put = [&](const std::string& name, const Scene& scene) {
     written.push_back(writer.write(name, scene, figureCamera(name)));

@@ -450,7 +450,7 @@ FrameRecorder::FrameRecorder(const Scenario& scenario, const FrameDef& def)
   }
   impl_->scenario = scenario;
   impl_->def = def;
-  impl_->style = def.style.scaled(styleScaleFor(def.height_px));
+  impl_->style = def.style.scaled(styleScaleFor(def.height_px)).forRobot(scenario.robot);
   impl_->frames_dir = def.out_dir + "/frames";
   ensureDirectory(impl_->frames_dir);
 

@@ -20,7 +20,10 @@ void appendScene(Scene& into, const Scene& from) {
   appendAll(into.lines, from.lines);
   appendAll(into.arrows, from.arrows);
   appendAll(into.texts, from.texts);
-  if (from.focus) into.focus = from.focus;
+  if (from.focus) {
+    into.focus = from.focus;
+    into.focus_scale = from.focus_scale;
+  }
 }
 
 std::vector<ScenePolyline> dashed(const ScenePolyline& line, double dash_m, double gap_m) {

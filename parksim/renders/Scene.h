@@ -120,6 +120,9 @@ struct Scene {
   double extent_top_m = 0.0;
   /// What a following camera looks at (the robot's reference point), m.
   std::optional<Eigen::Vector3d> focus;
+  /// The size of what the focus follows in study robots (RobotDef::sizeScale): a following
+  /// camera's distance (CameraDef::follow_distance_m) is in proportion to it.
+  double focus_scale = 1.0;
   std::vector<ScenePolygon> polygons;
   std::vector<SceneBox> boxes;
   std::vector<ScenePrism> prisms;
@@ -133,8 +136,8 @@ struct Scene {
 };
 
 /// Appends `from`'s items after `into`'s, kind by kind: the items of both in one scene, drawn
-/// in its order (kinds first, then list order). `from`'s focus replaces `into`'s when set;
-/// background and extent are kept.
+/// in its order (kinds first, then list order). `from`'s focus (and its scale) replaces `into`'s
+/// when set; background and extent are kept.
 void appendScene(Scene& into, const Scene& from);
 
 /// Splits a polyline into dashes of `dash_m` separated by gaps of `gap_m` (lengths in the

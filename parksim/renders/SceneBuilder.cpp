@@ -32,6 +32,15 @@ SceneStyle SceneStyle::scaled(double factor) const {
   return s;
 }
 
+SceneStyle SceneStyle::forRobot(const RobotDef& ego) const {
+  SceneStyle s = *this;
+  const double scale = ego.sizeScale();
+  s.grid_spacing_m *= scale;
+  s.arrow_length_m *= scale;
+  s.margin_m *= scale;
+  return s;
+}
+
 namespace {
 
 Eigen::Vector2d toWorld(const Pose2& pose, double x, double y) {
@@ -147,7 +156,8 @@ Scene buildLotScene(const Scenario& scenario, const SceneStyle& style,
   // The goal footprint, where the robot must end, dashed so the robot parked on it shows.
   const ScenePolyline goal_outline = boxOutline(footprintAt(scenario.robot, scenario.goal.pose),
                                                 Layers::kOutline, style.goal, style.outline_px);
-  for (ScenePolyline& dash : dashed(goal_outline, 0.008, 0.006)) {
+  const double scale = scenario.robot.sizeScale();  // dashes of 8 mm for the study's robot
+  for (ScenePolyline& dash : dashed(goal_outline, 0.008 * scale, 0.006 * scale)) {
     scene.lines.push_back(std::move(dash));
   }
   const double head = 0.3 * style.arrow_length_m;
@@ -168,10 +178,12 @@ Scene buildLotScene(const Scenario& scenario, const SceneStyle& style,
 }
 
 void addRobot(Scene& scene, const RobotDef& robot, const Pose2& pose, const SceneStyle& style) {
-  const double clearance = std::min(0.004, 0.1 * robot.height_m);
+  // Drawn lengths are the study robot's, in proportion to this one's size.
+  const double scale = robot.sizeScale();
+  const double clearance = std::min(0.004 * scale, 0.1 * robot.height_m);
   scene.boxes.push_back(
       {footprintAt(robot, pose), clearance, robot.height_m - clearance, style.robot});
-  const double wheel_width = std::min(0.008, 0.2 * robot.wheel_base_m);
+  const double wheel_width = std::min(0.008 * scale, 0.2 * robot.wheel_base_m);
   for (double side : {-1.0, 1.0}) {
     OrientedBox wheel;
     wheel.center = toWorld(pose, 0.0, side * 0.5 * robot.wheel_base_m);
@@ -188,9 +200,10 @@ void addRobot(Scene& scene, const RobotDef& robot, const Pose2& pose, const Scen
   const double half_w = 0.25 * robot.width_m;
   scene.polygons.push_back(
       {{toWorld(pose, tip, 0.0), toWorld(pose, base, half_w), toWorld(pose, base, -half_w)},
-       robot.height_m + 0.0005,
+       robot.height_m + 0.0005 * scale,
        style.robot_marker});
   scene.focus = Eigen::Vector3d(pose.x, pose.y, 0.0);
+  scene.focus_scale = scale;
 }
 
 void addPath(Scene& scene, std::span<const Pose2> poses, double z_m, Rgba8 color, float width_px) {
@@ -229,8 +242,8 @@ SceneLayers buildSceneLayers(const Scenario& scenario, const ViewState& view,
     // Above the body, so that in the top view a tracking error shows as the outline's offset
     // from the body rather than being hidden under it.
     front.lines.push_back(boxOutline(footprintAt(scenario.robot, *view.reference),
-                                     scenario.robot.height_m + 0.001, style.reference,
-                                     style.outline_px));
+                                     scenario.robot.height_m + 0.001 * scenario.robot.sizeScale(),
+                                     style.reference, style.outline_px));
   }
   if (view.overlay) {
     const Overlay& o = *view.overlay;

@@ -49,6 +49,7 @@ struct SceneStyle {
   float arrow_px = 3.0f;
   float text_px = 15.0f;
 
+  /// Lengths for the study's 85 mm robot; forRobot() scales them to another robot's size.
   double grid_spacing_m = 0.1;  ///< ground grid period, m; 0 draws no grid
   double arrow_length_m = 0.1;  ///< start and goal arrows, m
   double margin_m = 0.04;       ///< ground shown around the lot bounds, m
@@ -57,6 +58,10 @@ struct SceneStyle {
   Rgba8 colorFor(ObstacleKind kind) const;
   /// Every width and text size multiplied by `factor` (> 0).
   SceneStyle scaled(double factor) const;
+  /// The lengths in metres (grid, arrows, ground margin) multiplied by the robot's size in
+  /// study robots (RobotDef::sizeScale): a car's lot gets a 5 m grid and 5 m arrows. The
+  /// study's robot keeps this style exactly.
+  SceneStyle forRobot(const RobotDef& ego) const;
 };
 
 /// The factor that makes a style drawn for 480-pixel-high images fit `height_px`.

@@ -57,6 +57,7 @@ void validate(const Scenario& scenario, const SimModelDef& model) {
   requirePositive(r.wheel_base_m, "robot.wheel_base_m");
   requirePositive(model.support_radius_m, "support_radius_m");
   requirePositive(model.support_mass_kg, "support_mass_kg");
+  requirePositive(model.support_deflection_m, "support_clearance_m");
   requirePositive(model.wheel_contact_processing_m, "wheel_contact_processing_m");
   if (!(model.solver_residual_threshold >= 0.0)) {
     throw Error("simulation: solver_residual_threshold must not be negative");

@@ -69,11 +69,18 @@ struct TrueRobotDef {
 /// Parts of the model that the world file does not describe. Defaults are the model parksim
 /// was measured with (docs/simulation.md).
 struct SimModelDef {
-  /// Radius of the passive slider sphere at the rear, m.
+  /// The passive sliders the robot rests on besides its wheels (RobotSupports.h): the study
+  /// robot's one at the rear; lengths are the study robot's, scaled with the robot's size.
+  /// Radius of a slider's sphere, m.
   double support_radius_m = 0.008;
-  /// Distance from the footprint's rear edge forward to the slider's contact point, m.
+  /// Distance from the footprint's end (rear or front) to the slider's contact point, m.
   double support_inset_m = 0.010;
-  /// Mass of the slider, kg (a link needs mass; it adds to PhysicsDef::chassis_mass_kg).
+  /// A robot that needs a slider at each end rests on sprung ones: each slider's contact
+  /// yields by this much under the robot's whole weight, m, critically damped. A rigid fourth
+  /// point would take load from the wheels at random (a stand on four rigid points is
+  /// statically indeterminate), and they would slip.
+  double support_deflection_m = 0.0002;
+  /// Mass of each slider, kg (a link needs mass; it adds to PhysicsDef::chassis_mass_kg).
   double support_mass_kg = 0.002;
   /// Parked robots are fixed boxes until the robot's footprint comes closer than this to one,
   /// m; from the next step on it is a body with mass (Obstacle::mass_kg, by default

@@ -1,6 +1,7 @@
 #include "parksim/sim/RobotBody.h"
 
 #include <cmath>
+#include <vector>
 
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
@@ -12,6 +13,7 @@
 #include "parksim/sim/BulletFrames.h"
 #include "parksim/sim/CollisionGroups.h"
 #include "parksim/sim/MultiBodyInverseMass.h"
+#include "parksim/sim/RobotSupports.h"
 #include "parksim/sim/WheelMotor.h"
 
 namespace parksim {
@@ -59,13 +61,19 @@ RobotBody::RobotBody(btMultiBodyDynamicsWorld& world, const RobotDef& robot,
     left_inertia.setY(btScalar(model_.body.wheel_axle_inertia_kgm2));
     right_inertia.setY(btScalar(model_.body.wheel_axle_inertia_kgm2));
   }
+  const RobotSupports supports = robotSupports(robot_, physics_, model_);
   btCollisionShape* support_shape =
-      own(std::make_unique<btSphereShape>(btScalar(model_.support_radius_m)));
+      own(std::make_unique<btSphereShape>(btScalar(supports.radius_m)));
   btVector3 support_inertia;
   support_shape->calculateLocalInertia(btScalar(model_.support_mass_kg), support_inertia);
+  // Slider positions from the reference point: the rear one first (the study robot's only one).
+  std::vector<double> sliders;
+  if (supports.rear) sliders.push_back(supports.rear_x_m);
+  if (supports.front) sliders.push_back(supports.front_x_m);
 
   // The base is the chassis box, its frame at the box centre (its centre of mass).
-  body_ = std::make_unique<btMultiBody>(3, btScalar(physics_.chassis_mass_kg), chassis_inertia,
+  body_ = std::make_unique<btMultiBody>(kSupport + static_cast<int>(sliders.size()),
+                                        btScalar(physics_.chassis_mass_kg), chassis_inertia,
                                         /*fixedBase=*/false, /*canSleep=*/false);
   const btQuaternion no_rotation(0, 0, 0, 1);
   const btVector3 no_offset(0, 0, 0);
@@ -82,11 +90,13 @@ RobotBody::RobotBody(btMultiBodyDynamicsWorld& world, const RobotDef& robot,
   body_->setupRevolute(
       kRightWheel, btScalar(physics_.wheel_mass_kg), right_inertia, -1, no_rotation, axle,
       btVector3(btScalar(axle_dx), btScalar(-half_track), btScalar(right_dz)), no_offset, true);
-  const double rear_edge = robot_.front_overhang_m - robot_.length_m;  // from the reference point
-  const double support_x = rear_edge + model_.support_inset_m - chassis_dx_;
-  const double support_z = model_.support_radius_m - chassis_z_;
-  body_->setupFixed(kSupport, btScalar(model_.support_mass_kg), support_inertia, -1, no_rotation,
-                    btVector3(btScalar(support_x), 0, btScalar(support_z)), no_offset, true);
+  const double support_z = supports.radius_m - chassis_z_;
+  for (std::size_t i = 0; i < sliders.size(); ++i) {
+    const double support_x = sliders[i] - chassis_dx_;
+    body_->setupFixed(kSupport + static_cast<int>(i), btScalar(model_.support_mass_kg),
+                      support_inertia, -1, no_rotation,
+                      btVector3(btScalar(support_x), 0, btScalar(support_z)), no_offset, true);
+  }
   body_->finalizeMultiDof();
   // btMultiBody damps by default (0.04); an undamped model is what the plan assumes.
   body_->setLinearDamping(0);
@@ -99,7 +109,14 @@ RobotBody::RobotBody(btMultiBodyDynamicsWorld& world, const RobotDef& robot,
                                                start.y - origin_.y() + chassis_dx_ * s, chassis_z_,
                                                start.theta));
   world_.addMultiBody(body_.get());
-  addColliders(chassis_shape, left_shape, right_shape, support_shape);
+  addColliders(chassis_shape, left_shape, right_shape, support_shape,
+               static_cast<int>(sliders.size()));
+  if (supports.stiffness_npm > 0.0) {
+    for (std::size_t i = 0; i < sliders.size(); ++i) {
+      colliders_[3 + i]->setContactStiffnessAndDamping(btScalar(supports.stiffness_npm),
+                                                       btScalar(supports.damping_nspm));
+    }
+  }
 
   btAlignedObjectArray<btQuaternion> scratch_q;
   btAlignedObjectArray<btVector3> scratch_v;
@@ -124,7 +141,8 @@ btCollisionShape* RobotBody::own(std::unique_ptr<btCollisionShape> shape) {
 // (CollisionGroups.h). Wheel and slider points above the ground are not solved
 // (SimModelDef::wheel_contact_processing_m).
 void RobotBody::addColliders(btCollisionShape* chassis_shape, btCollisionShape* left_shape,
-                             btCollisionShape* right_shape, btCollisionShape* support_shape) {
+                             btCollisionShape* right_shape, btCollisionShape* support_shape,
+                             int supports) {
   auto add = [&](int link, btCollisionShape* shape, double friction, int group, int mask) {
     auto collider = std::make_unique<btMultiBodyLinkCollider>(body_.get(), link);
     collider->setCollisionShape(shape);
@@ -143,7 +161,9 @@ void RobotBody::addColliders(btCollisionShape* chassis_shape, btCollisionShape* 
   add(-1, chassis_shape, physics_.obstacle_friction, kChassisGroup, kChassisMask);
   add(kLeftWheel, left_shape, physics_.wheel_friction, kWheelGroup, kWheelMask);
   add(kRightWheel, right_shape, physics_.wheel_friction, kWheelGroup, kWheelMask);
-  add(kSupport, support_shape, physics_.support_friction, kWheelGroup, kWheelMask);
+  for (int i = 0; i < supports; ++i) {
+    add(kSupport + i, support_shape, physics_.support_friction, kWheelGroup, kWheelMask);
+  }
 }
 
 // Motor limits are impulses per step: torque x dt. Driven by torque, the "motor" is the drive

@@ -1,8 +1,9 @@
 #pragma once
 // The ego robot in the dynamics world: a btMultiBody whose base is the chassis box (exactly
 // the planner's footprint, from the ground clearance to the robot's height), two revolute
-// sphere wheels driven by velocity motors or joint torques, and a fixed frictionless sphere
-// slider at the rear. Internal to sim/; Bullet's types are only declared here.
+// sphere wheels driven by velocity motors or joint torques, and fixed frictionless sphere
+// sliders where it needs them to stay upright (RobotSupports.h: the study robot's one at the
+// rear). Internal to sim/; Bullet's types are only declared here.
 //
 // Building it is RobotBody.cpp; reading its state back after a step is RobotBodyState.cpp.
 
@@ -32,14 +33,15 @@ class RobotBody {
   /// Link indices of the multibody.
   static constexpr int kLeftWheel = 0;
   static constexpr int kRightWheel = 1;
+  /// The first slider; a second one, when the robot has one at each end, follows it.
   static constexpr int kSupport = 2;
 
   /// Builds the robot as `model.body` says (true radii and track, drive) with its reference
   /// point at `start` (lot frame), and adds it to `world`, whose frame has its origin at
   /// `origin` in the lot frame. Keeps a reference to `world`. With `inverse_mass` (may be
   /// null), the solver rows of its contacts and motors are set up from it: the robot's mass
-  /// matrix is constant in its base frame (sphere wheels turn about their axles, the slider is
-  /// fixed), as MultiBodyInverseMass requires.
+  /// matrix is constant in its base frame (sphere wheels turn about their axles, the sliders
+  /// are fixed), as MultiBodyInverseMass requires.
   RobotBody(btMultiBodyDynamicsWorld& world, const RobotDef& robot, const PhysicsDef& physics,
             const SimModelDef& model, const Pose2& start, const Eigen::Vector2d& origin,
             MultiBodyInverseMass* inverse_mass = nullptr);
@@ -66,7 +68,7 @@ class RobotBody {
 
  private:
   void addColliders(btCollisionShape* chassis_shape, btCollisionShape* left_shape,
-                    btCollisionShape* right_shape, btCollisionShape* support_shape);
+                    btCollisionShape* right_shape, btCollisionShape* support_shape, int supports);
   void addMotors(MultiBodyInverseMass* inverse_mass);
   btCollisionShape* own(std::unique_ptr<btCollisionShape> shape);
 
@@ -84,7 +86,7 @@ class RobotBody {
 
   std::vector<std::unique_ptr<btCollisionShape>> shapes_;
   std::unique_ptr<btMultiBody> body_;
-  std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;  // chassis, wheels, slider
+  std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;  // chassis, wheels, sliders
   std::vector<std::unique_ptr<btMultiBodyConstraint>> motors_;       // left, right
 };
 

@@ -191,6 +191,7 @@ void bindEpisodeDefs(py::module_& m) {
                         "(sim/DynamicsWorld.h).")
       .def_readwrite("support_radius_m", &SimModelDef::support_radius_m)
       .def_readwrite("support_inset_m", &SimModelDef::support_inset_m)
+      .def_readwrite("support_deflection_m", &SimModelDef::support_deflection_m)
       .def_readwrite("support_mass_kg", &SimModelDef::support_mass_kg)
       .def_readwrite("parked_wake_distance_m", &SimModelDef::parked_wake_distance_m)
       .def_readwrite("parked_sleep_speed_mps", &SimModelDef::parked_sleep_speed_mps)

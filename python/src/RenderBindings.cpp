@@ -147,7 +147,8 @@ void bindImages(py::module_& m) {
         RgbImage image;
         {
           py::gil_scoped_release release;
-          const SceneStyle style = SceneStyle{}.scaled(styleScaleFor(height));
+          const SceneStyle style =
+              SceneStyle{}.scaled(styleScaleFor(height)).forRobot(scenario.robot);
           image = renderScene(buildScene(scenario, state, style), camera, width, height, msaa);
         }
         return imageArray(image);
@@ -181,7 +182,7 @@ void bindImages(py::module_& m) {
         def.height_px = height;
         RgbImage image;
         py::gil_scoped_release release;
-        const SceneStyle style = def.style.scaled(styleScaleFor(height));
+        const SceneStyle style = def.style.scaled(styleScaleFor(height)).forRobot(scenario.robot);
         if (name == "lot_map") {
           image = renderScene(buildLotMapFigure(scenario, style), figureCamera(name), width, height,
                               msaa);

@@ -41,7 +41,7 @@ TEST(ReachableBudget, AnEmptyLotIsAllReachableAndTimeAStarGetsEightExpansionsPer
             static_cast<int>(std::ceil(20000.0 * 16.0 / kStudyLotAreaM2)));
   // The tree planners sample the whole lot: the lot's budget.
   EXPECT_EQ(budget("rrt-connect", s),
-            lotScaledBudget(2000, s.lot));
+            lotScaledBudget(2000, s));
 }
 
 TEST(ReachableBudget, AWalledRoomIsAllTheSearchCanReach) {

@@ -418,7 +418,7 @@ TEST(TreePlanner, RejectsBadDefinitions) {
   // The tree planner's definition (PlanSetup's default planner is time-a-star).
   PlanSetup setup;
   setup.planner = "rrt-goal-connect";
-  setup.planner_params["extend_distance_m"] = "0";
+  setup.planner_params["extend_distance_m"] = "-1";
   EXPECT_THROW(planScenario(s, checker, setup), Error);
   setup = {};
   setup.planner = "rrt-goal-connect";

@@ -178,11 +178,12 @@ TEST(ScenarioReader, ParkedRobotFootprintPlacesTheReferencePointTenMillimetresBe
 }
 
 TEST(ScenarioReader, AcceptsWhatIsOnlyUnusual) {
-  // A bumper exactly the 0.5 mm placement margin from a wall face. The footprint at
-  // (0.5, 0.5, 0) spans x 0.125..0.625; the face at 0.6255 computes to 0.5 mm less a few ulps
-  // (the rounding that the rule forgives).
+  // A bumper exactly the placement margin from a wall face: 0.5 mm for the study's robot, and
+  // for this 0.5 m one 0.5 mm x 0.5 / 0.085 = 2.941176470588235 mm. The footprint at
+  // (0.5, 0.5, 0) spans x 0.125..0.625; the face at 0.627941176470588 computes to the margin
+  // less a few ulps (the rounding that the rule forgives).
   EXPECT_EQ(errorOf(valid("robot: {length: 0.5, width: 0.25, front_overhang: 0.125}\n"
-                          "obstacles: [{name: a, kind: box, center: [0.7505, 0.5], "
+                          "obstacles: [{name: a, kind: box, center: [0.752941176470588, 0.5], "
                           "size: [0.25, 0.25]}]\n")),
             "(accepted)");
   // Parked robots overlapping each other and an obstacle are allowed.
@@ -895,7 +896,7 @@ const BadCase kBadCases[] = {
      valid("robot: {length: 0.5, width: 0.25, front_overhang: 0.125}\n"
            "obstacles: [{name: wall, kind: wall, center: [0.75, 0.5], size: [0.25, 0.25]}]\n"),
      "t.yaml:4: start: robot footprint is 0 mm from obstacle \"wall\"; start and goal keep at "
-     "least the 0.5 mm margin of the planner's motion checks"},
+     "least the 2.941 mm margin of the planner's motion checks"},
     {"GoalOnTheLotEdge", head("start: [0.5, 0.5, 0]\ngoal: {pose: [2, 1.5, 90]}\n"),
      "t.yaml:5: goal.pose: reference point (2, 1.5) is closer than the 0.5 mm margin to the lot "
      "edge [0, 2] x [0, 2]"},
