@@ -2,8 +2,10 @@
 // Per world x planner x realism group: the success rate (exact test), the median and p95 of
 // the max tracking error and of the goal error (bootstrap), paired by episode id where both
 // tables hold the same episodes, Holm-corrected over every test (parksim/compare/,
-// docs/ci.md). Prints the Markdown summary; --markdown and --junit write it for a CI page.
-// Exit status: 0 no regression, 4 regression, 2 bad input.
+// docs/ci.md). --across planner (controller, ...): tables of two planners or controllers, rows
+// paired when every other parameter is equal (compare/RowPairing.h). Prints the Markdown summary;
+// --markdown and --junit write it for a CI page. Exit status: 0 no regression, 4 regression, 2 bad
+// input.
 
 #include <cstdio>
 #include <filesystem>
@@ -17,6 +19,7 @@
 #include "parksim/compare/ComparedTable.h"
 #include "parksim/compare/ComparisonJson.h"
 #include "parksim/compare/ComparisonReport.h"
+#include "parksim/compare/RowPairing.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/pages/ComparisonPage.h"
 
@@ -112,6 +115,13 @@ CommandRunner setupCompareCommand(CLI::App& sub) {
                  "a group with fewer episodes on either side has its quantiles not tested")
       ->capture_default_str()
       ->check(integerIn(2, 1000000));
+  sub.add_option("--across", opt->def.across,
+                 "parameter columns the tables differ in by design (planner, controller, "
+                 "planner.NAME, controller.NAME): groups are keyed and rows paired without them")
+      ->delimiter(',')
+      ->type_name("COLUMN[,COLUMN...]")
+      ->check(CLI::Validator([](std::string& column) { return acrossColumnProblem(column); },
+                             "COLUMN"));
   cli::addReportFileOption(sub, "--markdown", opt->markdown,
                            "also write the summary to this Markdown file (a CI job summary)");
   cli::addReportFileOption(sub, "--junit", opt->junit,

@@ -6,7 +6,7 @@
 #include <string>
 #include <tuple>
 
-#include "parksim/sweep/Report.h"
+#include "parksim/compare/RowPairing.h"
 
 namespace parksim {
 namespace {
@@ -25,19 +25,25 @@ nlohmann::json side(const Json& row) {
   return s;
 }
 
-// Episodes of both tables by group name: (id, baseline row, candidate row).
+// Episodes of both tables by group name: (baseline id, baseline row, candidate row).
 using Pair = std::tuple<std::string, const Json*, const Json*>;
 
+// Paired as compareTables pairs them: by group and RowPairing::pairKey (the id by default).
 std::map<std::string, std::vector<Pair>> pairsByGroup(const std::vector<Json>& baseline,
-                                                      const std::vector<Json>& candidate) {
-  std::map<std::string, const Json*> by_id;
-  for (const Json& row : candidate) by_id.emplace(row.value("episode_id", ""), &row);
+                                                      const std::vector<Json>& candidate,
+                                                      const RowPairing& pairing) {
+  std::map<std::pair<std::string, std::string>, const Json*> by_key;
+  const auto keyOf = [&](const Json& row) {
+    return std::make_pair(rowGroupName(pairing.groupKey(row)), pairing.pairKey(row));
+  };
+  for (const Json& row : candidate) by_key.emplace(keyOf(row), &row);
   std::map<std::string, std::vector<Pair>> groups;
   for (const Json& row : baseline) {
     const std::string id = row.value("episode_id", "");
-    const auto it = by_id.find(id);
-    if (id.empty() || it == by_id.end()) continue;
-    groups[rowGroupName(rowGroupKey(row))].emplace_back(id, &row, it->second);
+    const auto key = keyOf(row);
+    const auto it = by_key.find(key);
+    if (id.empty() || it == by_key.end()) continue;
+    groups[key.first].emplace_back(id, &row, it->second);
   }
   return groups;
 }
@@ -83,7 +89,8 @@ nlohmann::json metricJson(const MetricComparison& m, const CompareDef& def) {
 nlohmann::json comparisonJson(const TableComparison& t, const CompareDef& def,
                               const ComparisonSources& sources, const std::vector<Json>& baseline,
                               const std::vector<Json>& candidate) {
-  std::map<std::string, std::vector<Pair>> pairs = pairsByGroup(baseline, candidate);
+  std::map<std::string, std::vector<Pair>> pairs =
+      pairsByGroup(baseline, candidate, RowPairing(def.across));
   nlohmann::json groups = nlohmann::json::array();
   for (const GroupComparison& g : t.groups) {
     nlohmann::json metrics = nlohmann::json::array();
@@ -96,36 +103,52 @@ nlohmann::json comparisonJson(const TableComparison& t, const CompareDef& def,
     std::vector<Pair>& members = pairs[g.name()];
     orderPairs(members);
     for (const auto& [id, b, c] : members) {
-      episodes.push_back({{"id", id}, {"baseline", side(*b)}, {"candidate", side(*c)}});
+      nlohmann::json e = {{"id", id}, {"baseline", side(*b)}, {"candidate", side(*c)}};
+      // Compared across columns, the candidate's episode has an id of its own.
+      const std::string candidate_id = c->value("episode_id", "");
+      if (candidate_id != id) e["candidate_id"] = candidate_id;
+      episodes.push_back(std::move(e));
     }
-    groups.push_back({{"name", g.name()},
-                      {"world", g.world},
-                      {"planner", g.planner},
-                      {"realism", g.realism},
-                      {"paired", g.paired},
-                      {"shared_ids", g.shared_ids},
-                      {"baseline_rows", g.baseline_rows},
-                      {"candidate_rows", g.candidate_rows},
-                      {"regression", regression},
-                      {"metrics", std::move(metrics)},
-                      {"episodes", std::move(episodes)}});
+    nlohmann::json group = {{"name", g.name()},
+                            {"world", g.world},
+                            {"planner", g.planner},
+                            {"realism", g.realism},
+                            {"paired", g.paired},
+                            {"shared_ids", g.shared_ids},
+                            {"baseline_rows", g.baseline_rows},
+                            {"candidate_rows", g.candidate_rows},
+                            {"regression", regression},
+                            {"metrics", std::move(metrics)},
+                            {"episodes", std::move(episodes)}};
+    if (!g.across.empty()) {
+      nlohmann::json across = nlohmann::json::array();
+      for (const AcrossValues& a : g.across) {
+        across.push_back(
+            {{"column", a.column}, {"baseline", a.baseline}, {"candidate", a.candidate}});
+      }
+      group["across"] = std::move(across);
+    }
+    groups.push_back(std::move(group));
   }
-  return {{"baseline", {{"path", sources.baseline}, {"rows", sources.baseline_rows}}},
-          {"candidate", {{"path", sources.candidate}, {"rows", sources.candidate_rows}}},
-          {"settings",
-           {{"confidence", def.confidence},
-            {"max_increase", def.max_increase},
-            {"min_increase_m", def.min_increase_m},
-            {"max_success_drop", def.max_success_drop},
-            {"resamples", t.resamples},
-            {"min_samples", def.min_samples},
-            {"seed", def.seed}}},
-          {"tests", t.tests},
-          {"regressions", t.regressions},
-          {"regression", t.regression()},
-          {"only_baseline", t.only_baseline},
-          {"only_candidate", t.only_candidate},
-          {"groups", std::move(groups)}};
+  nlohmann::json out = {
+      {"baseline", {{"path", sources.baseline}, {"rows", sources.baseline_rows}}},
+      {"candidate", {{"path", sources.candidate}, {"rows", sources.candidate_rows}}},
+      {"settings",
+       {{"confidence", def.confidence},
+        {"max_increase", def.max_increase},
+        {"min_increase_m", def.min_increase_m},
+        {"max_success_drop", def.max_success_drop},
+        {"resamples", t.resamples},
+        {"min_samples", def.min_samples},
+        {"seed", def.seed}}},
+      {"tests", t.tests},
+      {"regressions", t.regressions},
+      {"regression", t.regression()},
+      {"only_baseline", t.only_baseline},
+      {"only_candidate", t.only_candidate},
+      {"groups", std::move(groups)}};
+  if (!t.across.empty()) out["across"] = t.across;
+  return out;
 }
 
 }  // namespace parksim

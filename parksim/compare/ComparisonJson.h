@@ -21,7 +21,10 @@ namespace parksim {
 /// ci_low, ci_high, p, p_adjusted, regression, line}], episodes: [{id, baseline: {status, met,
 /// max_pos_err_m, goal_pos_err_m}, candidate: {...}}]}]}. NaN and infinite numbers are null.
 /// A group's episodes are those in both tables, ordered: met before and not after first, then
-/// failed in both, then by the growth of the max tracking error, largest first.
+/// failed in both, then by the growth of the max tracking error, largest first. Compared
+/// across columns (CompareDef::across), and only then: "across": [column, ...] at the top, each
+/// group's "across": [{column, baseline, candidate}] (AcrossValues), and an episode's
+/// "candidate_id" where the candidate's id is not the baseline's `id`.
 nlohmann::json comparisonJson(const TableComparison& t, const CompareDef& def,
                               const ComparisonSources& sources,
                               const std::vector<nlohmann::ordered_json>& baseline,

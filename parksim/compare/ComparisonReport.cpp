@@ -1,5 +1,6 @@
 #include "parksim/compare/ComparisonReport.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "parksim/core/NumberFormat.h"
@@ -67,6 +68,35 @@ std::string verdict(const MetricComparison& m) {
   return m.regression ? "**regression**" : "ok";
 }
 
+// The group's name, then across columns what each side held: "head_in / * / world (planner:
+// time-a-star vs example)".
+std::string groupTitle(const GroupComparison& g) {
+  std::string s = g.name();
+  for (const AcrossValues& a : g.across) {
+    s += &a == &g.across.front() ? " (" : "; ";
+    s += a.column + ": " + a.baseline + " vs " + a.candidate;
+    if (&a == &g.across.back()) s += ')';
+  }
+  return s;
+}
+
+// Which columns were compared across and what that means for groups and pairs.
+std::string acrossSentence(const TableComparison& t) {
+  if (t.across.empty()) return "";
+  std::string s = "Compared across ";
+  for (const std::string& column : t.across) {
+    s += (&column == &t.across.front() ? "`" : ", `") + cell(column) + "`";
+  }
+  s += ": the tables may differ in ";
+  s += t.across.size() == 1 ? "it" : "them";
+  s += "; rows pair when every other parameter is equal";
+  if (std::find(t.across.begin(), t.across.end(), "planner") != t.across.end()) {
+    s += ", and a group's name shows the planner as `*`";
+  }
+  s += ".\n\n";
+  return s;
+}
+
 }  // namespace
 
 std::string metricLine(const MetricComparison& m, const CompareDef& def) {
@@ -98,6 +128,7 @@ std::string comparisonMarkdown(const TableComparison& t, const CompareDef& def,
             ? " by more than " + formatGeneral(100.0 * def.max_success_drop, 4) + " pp"
             : std::string()) +
        ".\n\n";
+  s += acrossSentence(t);
   s += "| group | episodes | metric | baseline | candidate | change | " + confidenceText(def) +
        " interval | p (Holm) | verdict |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const GroupComparison& g : t.groups) {
@@ -106,7 +137,7 @@ std::string comparisonMarkdown(const TableComparison& t, const CompareDef& def,
                                                std::to_string(g.candidate_rows) + " unpaired";
     bool first = true;
     for (const MetricComparison& m : g.metrics) {
-      s += "| " + (first ? cell(g.name()) : std::string()) + " | " + (first ? pairing : "") +
+      s += "| " + (first ? cell(groupTitle(g)) : std::string()) + " | " + (first ? pairing : "") +
            " | " + m.name + " | " + statistic(m, m.baseline, m.baseline_met, m.baseline_n) + " | " +
            statistic(m, m.candidate, m.candidate_met, m.candidate_n) + " | " +
            (m.tested ? change(m) : "") + " | " + interval(m) + " | " +
@@ -140,6 +171,10 @@ JUnitReport comparisonJUnit(const TableComparison& t, const CompareDef& def) {
                         {"baseline_rows", std::to_string(g.baseline_rows)},
                         {"candidate_rows", std::to_string(g.candidate_rows)},
                         {"shared_ids", std::to_string(g.shared_ids)}};
+    for (const AcrossValues& a : g.across) {
+      suite.properties.push_back({"baseline." + a.column, a.baseline});
+      suite.properties.push_back({"candidate." + a.column, a.candidate});
+    }
     for (const MetricComparison& m : g.metrics) {
       JUnitCase c;
       c.name = m.name;

@@ -12,8 +12,10 @@
 #include "parksim/compare/ExactTest.h"
 #include "parksim/compare/HolmCorrection.h"
 #include "parksim/compare/Quantile.h"
+#include "parksim/compare/RowPairing.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
+#include "parksim/core/Text.h"
 #include "parksim/sweep/EpisodeParams.h"
 #include "parksim/sweep/Report.h"
 
@@ -23,7 +25,7 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 using GroupKey = RowGroupKey;
-/// A group's rows by episode id.
+/// A group's rows by what they pair by (RowPairing::pairKey: the episode id by default).
 using GroupRows = std::map<std::string, const Json*>;
 
 struct MetricSpec {
@@ -58,7 +60,8 @@ bool metIn(const Json& row) {
   return it != row.end() && it->is_boolean() && it->get<bool>();
 }
 
-std::map<GroupKey, GroupRows> groupRows(const std::vector<Json>& rows, const char* which) {
+std::map<GroupKey, GroupRows> groupRows(const std::vector<Json>& rows, const char* which,
+                                        const RowPairing& pairing) {
   if (rows.empty()) throw Error(std::string(which) + ": the table has no rows");
   std::map<GroupKey, GroupRows> groups;
   std::set<std::string> seen;
@@ -69,9 +72,33 @@ std::map<GroupKey, GroupRows> groupRows(const std::vector<Json>& rows, const cha
       throw Error(std::string(which) + ": episode " + id +
                   " appears twice (merge the table first: parksim merge)");
     }
-    groups[rowGroupKey(row)].emplace(id, &row);
+    const auto [it, added] = groups[pairing.groupKey(row)].emplace(pairing.pairKey(row), &row);
+    if (!added) {
+      throw Error(std::string(which) + ": episodes " + textOf(*it->second, "episode_id", "") +
+                  " and " + id + " differ only in columns compared across (" +
+                  joinNames(pairing.across()) + "): compare tables with one value of them");
+    }
   }
   return groups;
+}
+
+// Every across column must be somewhere: a misspelt one would pair nothing differently.
+void checkAcrossColumnsPresent(const RowPairing& pairing, const std::vector<Json>& baseline,
+                               const std::vector<Json>& candidate) {
+  for (const std::string& column : pairing.across()) {
+    const auto has = [&](const Json& row) { return row.contains(column); };
+    if (std::none_of(baseline.begin(), baseline.end(), has) &&
+        std::none_of(candidate.begin(), candidate.end(), has)) {
+      throw Error("across: neither table has a column " + column);
+    }
+  }
+}
+
+// The distinct values of `column` in a group's rows, sorted, ", "-separated.
+std::string valuesIn(const GroupRows& rows, const std::string& column) {
+  std::set<std::string> values;
+  for (const auto& [key, row] : rows) values.insert(RowPairing::valueText(*row, column));
+  return joinNames(std::vector<std::string>(values.begin(), values.end()));
 }
 
 // The generator of one test: its own stream, so groups and metrics do not shift each other's.
@@ -163,13 +190,17 @@ void compareQuantile(const GroupRows& b, const GroupRows& c, bool paired, const 
   out.tested = true;
 }
 
-GroupComparison newGroup(const GroupKey& key, const GroupRows& b, const GroupRows& c) {
+GroupComparison newGroup(const GroupKey& key, const GroupRows& b, const GroupRows& c,
+                         const RowPairing& pairing) {
   GroupComparison g;
   std::tie(g.world, g.planner, g.realism) = key;
   g.baseline_rows = static_cast<int>(b.size());
   g.candidate_rows = static_cast<int>(c.size());
   for (const auto& [id, row] : b) g.shared_ids += c.count(id) > 0 ? 1 : 0;
   g.paired = g.shared_ids == g.baseline_rows && g.shared_ids == g.candidate_rows;
+  for (const std::string& column : pairing.across()) {
+    g.across.push_back({column, valuesIn(b, column), valuesIn(c, column)});
+  }
   for (const MetricSpec& m : kMetrics) {
     MetricComparison mc;
     mc.name = m.name;
@@ -222,14 +253,18 @@ void checkCompareDef(const CompareDef& def) {
   }
   if (def.resamples < 100 || def.resamples > 10000000) bad("resamples: must be in [100, 1e7]");
   if (def.min_samples < 2 || def.min_samples > 1000000) bad("min_samples: must be in [2, 1e6]");
+  (void)RowPairing(def.across);  // throws at a column that cannot be compared across
 }
 
 TableComparison compareTables(const std::vector<Json>& baseline, const std::vector<Json>& candidate,
                               const CompareDef& def) {
   checkCompareDef(def);
-  const std::map<GroupKey, GroupRows> b = groupRows(baseline, "baseline");
-  const std::map<GroupKey, GroupRows> c = groupRows(candidate, "candidate");
+  const RowPairing pairing(def.across);
+  checkAcrossColumnsPresent(pairing, baseline, candidate);
+  const std::map<GroupKey, GroupRows> b = groupRows(baseline, "baseline", pairing);
+  const std::map<GroupKey, GroupRows> c = groupRows(candidate, "candidate", pairing);
   TableComparison t;
+  t.across = pairing.across();
   for (const auto& [key, rows] : b) {
     if (c.count(key) == 0) t.only_baseline.push_back(rowGroupName(key));
   }
@@ -243,7 +278,10 @@ TableComparison compareTables(const std::vector<Json>& baseline, const std::vect
   if (keys.empty()) {
     throw Error("no world / planner / realism group is in both tables (baseline has " +
                 std::to_string(b.size()) + ", candidate " + std::to_string(c.size()) +
-                "): were they run from the same spec?");
+                "): were they run from the same spec?" +
+                (pairing.across().empty()
+                     ? " (tables of two planners or controllers compare with --across)"
+                     : ""));
   }
   // Enough replicates that the smallest p-value, 1 / (B + 1), passes Holm's correction over
   // every test the tables can hold.
@@ -254,7 +292,7 @@ TableComparison compareTables(const std::vector<Json>& baseline, const std::vect
   for (const GroupKey& key : keys) {
     const GroupRows& gb = b.at(key);
     const GroupRows& gc = c.at(key);
-    GroupComparison g = newGroup(key, gb, gc);
+    GroupComparison g = newGroup(key, gb, gc, pairing);
     for (MetricComparison& m : g.metrics) {
       const MetricSpec& spec = kMetrics[&m - g.metrics.data()];
       if (m.q < 0.0) {

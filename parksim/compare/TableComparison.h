@@ -11,7 +11,9 @@
 // Pairing: a group is paired when both tables hold exactly the same episode ids in it (ids
 // spell every parameter, so the same spec gives the same ids); then episodes are matched by
 // id, and the test sees each episode's own change. Otherwise (other noise seeds, other planner
-// seeds: other ids) the two samples are compared as independent samples.
+// seeds: other ids) the two samples are compared as independent samples. Tables that differ by
+// design in the planner or the controller are compared across those columns (CompareDef::
+// across): groups are keyed and rows paired without them (RowPairing.h).
 //
 // A quantile is a regression when it grew by more than the relative margin (max_increase) and
 // the absolute one (min_increase_m): the hypothesis tested is "excess <= 0" with excess =
@@ -53,6 +55,10 @@ struct CompareDef {
   std::uint64_t seed = 1;
   /// A group with fewer values than this on either side has its quantiles not tested.
   int min_samples = 5;
+  /// Parameter columns the two tables differ in by design: planner, controller, planner.NAME,
+  /// controller.NAME. Groups are keyed and rows paired without them (RowPairing.h); empty:
+  /// groups as `parksim report`'s, rows paired by episode id.
+  std::vector<std::string> across;
 };
 
 /// One tested (or untested) quantity of one group.
@@ -78,15 +84,23 @@ struct MetricComparison {
   bool regression = false;
 };
 
+/// The values one group's rows hold in a column compared across, on each side.
+struct AcrossValues {
+  std::string column;
+  std::string baseline;  ///< the distinct values (RowPairing::valueText), sorted, ", "-separated
+  std::string candidate;
+};
+
 struct GroupComparison {
   std::string world;
-  std::string planner;  ///< plannerLabel
+  std::string planner;  ///< plannerLabel; its planner "*" when compared across the planner
   std::string realism;
   bool paired = false;
-  int shared_ids = 0;  ///< episode ids in both tables
+  int shared_ids = 0;  ///< episodes in both tables: by id, or by RowPairing::pairKey across
   int baseline_rows = 0;
   int candidate_rows = 0;
   std::vector<MetricComparison> metrics;
+  std::vector<AcrossValues> across;  ///< one per CompareDef::across column, in its order
 
   /// "<world> / <planner> / <realism>", as `parksim report` and the JUnit suites name groups.
   std::string name() const;
@@ -99,6 +113,7 @@ struct TableComparison {
   int tests = 0;                            ///< tests run (Holm's m)
   int regressions = 0;                      ///< tests that found a regression
   int resamples = 0;                        ///< bootstrap replicates used per quantile test
+  std::vector<std::string> across;          ///< the columns compared across (CompareDef)
 
   bool regression() const { return regressions > 0; }
 };
@@ -107,7 +122,8 @@ struct TableComparison {
 void checkCompareDef(const CompareDef& def);
 
 /// Compares two tables' rows (readResultsJsonl). Throws Error when a table is empty, holds an
-/// episode id twice, or no group is in both.
+/// episode id twice (across columns: two rows that differ only in them), no group is in both,
+/// or neither table has a column compared across.
 TableComparison compareTables(const std::vector<nlohmann::ordered_json>& baseline,
                               const std::vector<nlohmann::ordered_json>& candidate,
                               const CompareDef& def);

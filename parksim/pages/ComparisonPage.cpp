@@ -27,7 +27,7 @@ nlohmann::json comparisonPageData(const ComparisonPage& page, const std::string&
       if (static_cast<int>(linked.size()) >= page.max_links_per_group) break;
       const std::string id = e.value("id", "");
       const fs::path b = episodePage(page.baseline_dir, id);
-      const fs::path c = episodePage(page.candidate_dir, id);
+      const fs::path c = episodePage(page.candidate_dir, e.value("candidate_id", id));
       if (b.empty() || c.empty()) continue;
       nlohmann::json item = e;
       item["baseline_href"] = relativeHref(page_dir, b.string());

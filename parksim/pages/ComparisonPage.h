@@ -13,8 +13,9 @@ namespace parksim {
 struct ComparisonPage {
   /// The comparison as data (compare/ComparisonJson.h's comparisonJson).
   nlohmann::json comparison;
-  /// The sweep directories whose episodes/<id>/report.html the page links to; empty for a
-  /// table given as a results.jsonl file outside a sweep directory.
+  /// The sweep directories whose episodes/<id>/report.html the page links to (the candidate's
+  /// by an episode's candidate_id where it has one); empty for a table given as a
+  /// results.jsonl file outside a sweep directory.
   std::string baseline_dir;
   std::string candidate_dir;
   /// Episodes linked per group at most (the worst changes first).

@@ -65,5 +65,39 @@ TEST(ComparisonJsonTest, MetricsKeepTheirNumbersAndLine) {
   EXPECT_FALSE(p95["note"].get<std::string>().empty());
 }
 
+// Compared across the controller, each pair holds both ids (the candidate's page is under its
+// own), the group and the document say what was compared across; without it neither appears.
+TEST(ComparisonJsonTest, AcrossColumnsGiveTheCandidatesOwnIds) {
+  std::vector<Json> baseline;
+  std::vector<Json> candidate;
+  for (int k = 0; k < 3; ++k) {
+    Json b = row("b" + std::to_string(k), true, 1e-3);
+    b["controller"] = "tracking";
+    b["noise_seed"] = k;
+    Json c = b;
+    c["episode_id"] = "c" + std::to_string(k);
+    c["controller"] = "pure-pursuit";
+    baseline.push_back(b);
+    candidate.push_back(c);
+  }
+  CompareDef def;
+  const nlohmann::json plain =
+      comparisonJson(compareTables(baseline, candidate, def), def, {}, baseline, candidate);
+  EXPECT_FALSE(plain.contains("across"));
+  EXPECT_TRUE(plain["groups"][0]["episodes"].empty());
+  def.across = {"controller"};
+  const nlohmann::json j =
+      comparisonJson(compareTables(baseline, candidate, def), def, {}, baseline, candidate);
+  EXPECT_EQ(j["across"], nlohmann::json::array({"controller"}));
+  EXPECT_EQ(j["groups"][0]["across"][0], nlohmann::json({{"column", "controller"},
+                                                         {"baseline", "tracking"},
+                                                         {"candidate", "pure-pursuit"}}));
+  const nlohmann::json& episodes = j["groups"][0]["episodes"];
+  ASSERT_EQ(episodes.size(), 3u);
+  for (const nlohmann::json& e : episodes) {
+    EXPECT_EQ("c" + e["id"].get<std::string>().substr(1), e["candidate_id"]);
+  }
+}
+
 }  // namespace
 }  // namespace parksim

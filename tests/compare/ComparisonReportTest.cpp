@@ -50,7 +50,7 @@ TableComparison oneRegression() {
                        1.0,
                        1.0,
                        false};
-  GroupComparison g{"lot|a\x1b[1m", "hybrid-a-star", "lab", true, 20, 20, 20, {rate, p95, few}};
+  GroupComparison g{"lot|a\x1b[1m", "hybrid-a-star", "lab", true, 20, 20, 20, {rate, p95, few}, {}};
   TableComparison t;
   t.groups = {g};
   t.only_candidate = {"corridor / rrt / lab"};
@@ -95,6 +95,33 @@ TEST(ComparisonReport, JUnitFailsTheRegressionAndSkipsTheUntested) {
   ASSERT_TRUE(r.suites[0].cases[1].failure);
   EXPECT_THAT(r.suites[0].cases[1].failure->message, HasSubstr("regression"));
   EXPECT_EQ(r.suites[0].cases[2].skipped, std::optional<std::string>("3 values, fewer than 5"));
+}
+
+// Compared across the planner: the summary says so, each group shows what each side ran, and
+// the JUnit suite holds both sides' values; without --across none of it appears.
+TEST(ComparisonReport, AcrossColumnsAreNamedWithEachSidesValues) {
+  TableComparison t = oneRegression();
+  EXPECT_THAT(comparisonMarkdown(t, CompareDef{}, {"b", "c", 20, 20}),
+              Not(HasSubstr("Compared across")));
+  t.across = {"planner"};
+  t.groups[0].planner = "*";
+  t.groups[0].across = {{"planner", "time-a-star", "example"}};
+  const std::string md = comparisonMarkdown(t, CompareDef{}, {"b", "c", 20, 20});
+  EXPECT_THAT(md, HasSubstr("\n\nCompared across `planner`: the tables may differ in it; rows "
+                            "pair when every other parameter is equal, and a group's name shows "
+                            "the planner as `*`.\n\n| group |"));
+  EXPECT_THAT(md, HasSubstr("| lot\\|a\\x1b[1m / * / lab (planner: time-a-star vs example) | "
+                            "20 paired | success rate |"));
+  const JUnitReport r = comparisonJUnit(t, CompareDef{});
+  EXPECT_EQ(r.suites[0].name, "lot|a\x1b[1m / * / lab");
+  const auto property = [&](const std::string& name) {
+    for (const JUnitProperty& p : r.suites[0].properties) {
+      if (p.name == name) return p.value;
+    }
+    return std::string("(missing)");
+  };
+  EXPECT_EQ(property("baseline.planner"), "time-a-star");
+  EXPECT_EQ(property("candidate.planner"), "example");
 }
 
 }  // namespace

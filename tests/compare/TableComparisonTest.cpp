@@ -357,5 +357,113 @@ TEST(TableComparison, SetEpisodesPairByTheirIds) {
   EXPECT_TRUE(trackingFlagged(t, "head_in"));
 }
 
+// The same episodes run with another planner or controller: every other parameter as the row
+// has it, the id the sweep would give them.
+Json rerunWith(Json row, const std::string& planner, const std::string& controller) {
+  EpisodeParams p;
+  p.world = row["world"].get<std::string>();
+  p.world_file = row["world_file"].get<std::string>();
+  p.realism = row["realism"].get<std::string>();
+  p.noise_seed = row["noise_seed"].get<std::uint64_t>();
+  p.planner = planner;
+  p.controller = controller;
+  row["episode_id"] = episodeId(p);
+  row["planner"] = planner;
+  row["controller"] = controller;
+  return row;
+}
+
+std::vector<Json> rerunAll(const std::vector<Json>& rows, const std::string& planner,
+                           const std::string& controller, double error_factor) {
+  std::vector<Json> out;
+  for (const Json& row : rows) {
+    out.push_back(rerunWith(row, planner, controller));
+    out.back()["max_pos_err_m"] = error_factor * row["max_pos_err_m"].get<double>();
+  }
+  return out;
+}
+
+std::string compareError(const std::vector<Json>& b, const std::vector<Json>& c,
+                         const CompareDef& def) {
+  try {
+    compareTables(b, c, def);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// The user's planner against time-a-star on the same episodes: refused as two specs without
+// --across; across the planner every episode pairs with its own, and a planner whose tracking
+// errors are 1.5 times larger is found out where an equal one is not.
+TEST(TableComparison, AcrossThePlannerEveryEpisodePairsWithItsOwn) {
+  std::mt19937_64 rng(9);
+  const std::vector<Json> baseline = syntheticTable(1, kLab, rng);
+  const std::vector<Json> same = rerunAll(baseline, "example", "tracking", 1.0);
+  const std::vector<Json> worse = rerunAll(baseline, "example", "tracking", 1.5);
+  EXPECT_THAT(compareError(baseline, same, CompareDef{}),
+              HasSubstr("no world / planner / realism group is in both tables"));
+  CompareDef def;
+  def.across = {"planner"};
+  const TableComparison t = compareTables(baseline, same, def);
+  EXPECT_EQ(t.across, std::vector<std::string>{"planner"});
+  ASSERT_EQ(t.groups.size(), 3u);
+  EXPECT_EQ(t.groups[0].name(), "head_in / *+smooth / lab");
+  for (const GroupComparison& g : t.groups) {
+    EXPECT_TRUE(g.paired) << g.name();
+    EXPECT_EQ(g.shared_ids, 20);
+    ASSERT_EQ(g.across.size(), 1u);
+    EXPECT_EQ(g.across[0].column, "planner");
+    EXPECT_EQ(g.across[0].baseline, "time-a-star");
+    EXPECT_EQ(g.across[0].candidate, "example");
+  }
+  EXPECT_FALSE(t.regression());
+  const TableComparison w = compareTables(baseline, worse, def);
+  for (const World& world : kWorlds) EXPECT_TRUE(trackingFlagged(w, world.name)) << world.name;
+}
+
+// The user's controller against parksim's tracking: the groups match already (the controller
+// is not in a group's name) but the ids do not, so only --across controller pairs them.
+TEST(TableComparison, AcrossTheControllerTheEpisodesArePaired) {
+  std::mt19937_64 rng(10);
+  const std::vector<Json> baseline = syntheticTable(1, kLab, rng);
+  const std::vector<Json> candidate = rerunAll(baseline, "time-a-star", "pure-pursuit", 1.0);
+  const TableComparison unpaired = compareTables(baseline, candidate, CompareDef{});
+  ASSERT_EQ(unpaired.groups.size(), 3u);
+  EXPECT_FALSE(unpaired.groups[0].paired);
+  EXPECT_EQ(unpaired.groups[0].shared_ids, 0);
+  CompareDef def;
+  def.across = {"controller"};
+  const TableComparison t = compareTables(baseline, candidate, def);
+  ASSERT_EQ(t.groups.size(), 3u);
+  EXPECT_EQ(t.groups[0].name(), "head_in / time-a-star+smooth / lab");
+  EXPECT_TRUE(t.groups[0].paired);
+  EXPECT_EQ(t.groups[0].shared_ids, 20);
+  EXPECT_EQ(t.groups[0].across[0].baseline, "tracking");
+  EXPECT_EQ(t.groups[0].across[0].candidate, "pure-pursuit");
+  // Paired, the test sees each episode's own change: equal errors give p = 1 exactly.
+  EXPECT_DOUBLE_EQ(t.groups[0].metrics[1].p, 1.0);
+}
+
+TEST(TableComparison, AcrossColumnsAreCheckedAgainstTheTables) {
+  std::mt19937_64 rng(11);
+  const std::vector<Json> baseline = syntheticTable(1, kLab, rng);
+  const std::vector<Json> candidate = rerunAll(baseline, "example", "tracking", 1.0);
+  CompareDef def;
+  def.across = {"planner", "planner.step_m"};
+  EXPECT_THAT(compareError(baseline, candidate, def),
+              HasSubstr("across: neither table has a column planner.step_m"));
+  // Two planners in one table: their episodes would pair with the same candidate episode.
+  std::vector<Json> both = baseline;
+  both.push_back(candidate[4]);
+  def.across = {"planner"};
+  EXPECT_THAT(compareError(both, candidate, def),
+              HasSubstr("baseline: episodes " + baseline[4]["episode_id"].get<std::string>() +
+                        " and " + candidate[4]["episode_id"].get<std::string>() +
+                        " differ only in columns compared across (planner)"));
+  def.across = {"world"};
+  EXPECT_THROW(checkCompareDef(def), Error);
+}
+
 }  // namespace
 }  // namespace parksim

@@ -66,6 +66,24 @@ TEST_F(ComparisonPageTest, OnlyEpisodesBothSweepsKeptAreLinked) {
   EXPECT_EQ(data["page"], "comparison");
 }
 
+// Compared across the planner or the controller (compare --across), the candidate's episode
+// has an id of its own: its page is linked under that id, and kept pages are needed under both.
+TEST_F(ComparisonPageTest, TheCandidateIsLinkedByItsOwnIdAcrossColumns) {
+  ComparisonPage page;
+  page.comparison = comparison();
+  nlohmann::json& episodes = page.comparison["groups"][0]["episodes"];
+  episodes[0]["candidate_id"] = "e4";  // baseline e3 paired with candidate e4
+  episodes[2]["candidate_id"] = "e2";  // baseline e4 (not kept) with candidate e2 (not kept)
+  page.baseline_dir = (dir_ / "base").string();
+  page.candidate_dir = (dir_ / "cand").string();
+  const nlohmann::json data = comparisonPageData(page, (dir_ / "ci").string());
+  const nlohmann::json& group = data["groups"][0];
+  ASSERT_EQ(group["linked_episodes"], 2);
+  EXPECT_EQ(group["episodes"][0]["baseline_href"], "../base/episodes/e3/report.html");
+  EXPECT_EQ(group["episodes"][0]["candidate_href"], "../cand/episodes/e4/report.html");
+  EXPECT_EQ(group["episodes"][1]["id"], "e1");
+}
+
 TEST_F(ComparisonPageTest, LinksAreCappedAndNeedBothSweeps) {
   ComparisonPage page;
   page.comparison = comparison();

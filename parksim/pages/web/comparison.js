@@ -43,9 +43,16 @@
     return p < 1e-4 ? '<0.0001' : String(Number(p.toPrecision(2)));
   }
 
+  // A group's name, then, compared across columns, what each side held in them:
+  // "head_in / * / world (planner: time-a-star vs example)".
+  function groupTitle(group) {
+    if (!group.across) return group.name;
+    return group.name + ' (' + group.across.map((a) => a.column + ': ' + a.baseline + ' vs ' + a.candidate).join('; ') + ')';
+  }
+
   function episodesOf(group) {
     const box = el('div', { class: 'pairs', 'data-group': group.name },
-      el('h3', {}, group.regression ? P.badge('regression') : null, ' ', group.name));
+      el('h3', {}, group.regression ? P.badge('regression') : null, ' ', groupTitle(group)));
     if (group.linked_episodes === 0) {
       box.append(el('p', { class: 'note', text: group.paired_episodes + ' episodes in both tables; ' +
         'neither sweep kept pages for the same ones (record: executed_csv: all or failures keeps them).' }));
@@ -57,7 +64,7 @@
       s.max_pos_err_m === null ? '' : 'max ' + P.mm(s.max_pos_err_m) + ' ', el('a', { href, text: label }));
     box.append(el('table', { class: 'summary pairs-table' },
       el('thead', {}, el('tr', {}, el('th', { text: 'episode' }), el('th', { text: 'baseline' }), el('th', { text: 'candidate' }))),
-      el('tbody', {}, group.episodes.map((e) => el('tr', {}, el('td', { text: e.id }),
+      el('tbody', {}, group.episodes.map((e) => el('tr', {}, el('td', { text: e.candidate_id ? e.id + ' / ' + e.candidate_id : e.id }),
         side(e.baseline, e.baseline_href, 'baseline page'),
         side(e.candidate, e.candidate_href, 'candidate page'))))));
     return box;
@@ -79,14 +86,16 @@
           'error quantiles: bootstrap (' + s.resamples + ' resamples), a regression when grown by more than ' +
           pct(s.max_increase) + ' and ' + P.mm(s.min_increase_m) + '; Holm-adjusted over every test at ' +
           pct(s.confidence) + ' family-wise confidence. Intervals: a rate\'s 95 % Wilson interval, a ' +
-          'quantile\'s change at the same confidence (not adjusted).' })),
+          'quantile\'s change at the same confidence (not adjusted).' }),
+        data.across ? [el('dt', { text: 'compared across' }), el('dd', { text: data.across.join(', ') +
+          ': rows pair when every other parameter is equal' })] : []),
       [...data.only_baseline.map((g) => el('p', { class: 'warning', text: 'only in the baseline: ' + g })),
         ...data.only_candidate.map((g) => el('p', { class: 'warning', text: 'only in the candidate: ' + g }))]));
     const rows = [];
     for (const g of groups) {
       for (const m of g.metrics) {
         rows.push({
-          group: g.name, regressed_group: g.regression, metric: m.name,
+          group: groupTitle(g), regressed_group: g.regression, metric: m.name,
           baseline: sideText(m, 'baseline'), candidate: sideText(m, 'candidate'),
           change: changeText(m), p: m.tested ? m.p : null, p_adjusted: m.tested ? m.p_adjusted : null,
           verdict: !m.tested ? 'not tested: ' + m.note : (m.regression ? 'regression' : 'ok'),
