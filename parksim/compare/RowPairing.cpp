@@ -57,6 +57,12 @@ RowGroupKey RowPairing::groupKey(const Json& row) const {
     const std::string planner = valueText(row, "planner");
     if (label.compare(0, planner.size(), planner) == 0) label.replace(0, planner.size(), "*");
   }
+  if (isAcross("controller")) {
+    // plannerLabel ends with " controller=NAME" for a controller other than the default.
+    std::string& label = std::get<1>(key);
+    const std::size_t at = label.find(" controller=");
+    if (at != std::string::npos) label.erase(at);
+  }
   return key;
 }
 

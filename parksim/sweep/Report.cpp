@@ -119,6 +119,13 @@ std::string plannerLabel(const Json& row) {
     s += " timing=";
     s += timing;
   }
+  // Two controllers of one sweep are two groups (the planner's label, as their rows'
+  // steering and tracking are).
+  const std::string controller = str(row, "controller", defaults.controller.c_str());
+  if (!controller.empty() && controller != defaults.controller) {
+    s += " controller=";
+    s += controller;
+  }
   return s;
 }
 

@@ -81,10 +81,11 @@ TEST(ComparisonJsonTest, AcrossColumnsGiveTheCandidatesOwnIds) {
     candidate.push_back(c);
   }
   CompareDef def;
+  // Without --across two controllers are two groups: compareTables refuses
+  // (TableComparisonTest.cpp); the JSON of a plain comparison has no "across".
   const nlohmann::json plain =
-      comparisonJson(compareTables(baseline, candidate, def), def, {}, baseline, candidate);
+      comparisonJson(compareTables(baseline, baseline, def), def, {}, baseline, baseline);
   EXPECT_FALSE(plain.contains("across"));
-  EXPECT_TRUE(plain["groups"][0]["episodes"].empty());
   def.across = {"controller"};
   const nlohmann::json j =
       comparisonJson(compareTables(baseline, candidate, def), def, {}, baseline, candidate);

@@ -69,14 +69,19 @@ TEST(RowPairing, AcrossThePlannerTheGroupNamesItStarAndRowsPairWithoutIt) {
   EXPECT_EQ(pairing.pairKey(a), pairing.pairKey(rowOf(moved)));
 }
 
-TEST(RowPairing, AcrossTheControllerGroupsStayAndRowsPair) {
+TEST(RowPairing, AcrossTheControllerGroupsMergeAndRowsPair) {
   const RowPairing pairing({"controller"});
   EpisodeParams mine = headIn(5);
   mine.controller = "pure-pursuit";
   const Json a = rowOf(mine);
   const Json b = rowOf(headIn(5));
   ASSERT_NE(a["episode_id"], b["episode_id"]);  // ";controller=pure-pursuit" in a's id
-  EXPECT_EQ(pairing.groupKey(a), rowGroupKey(a));
+  // Apart, two controllers are two groups (the label names one that is not the default); across
+  // the controller, one.
+  EXPECT_NE(rowGroupKey(a), rowGroupKey(b));
+  EXPECT_EQ(std::get<1>(rowGroupKey(a)), "time-a-star+smooth controller=pure-pursuit");
+  EXPECT_EQ(pairing.groupKey(a), pairing.groupKey(b));
+  EXPECT_EQ(pairing.groupKey(a), rowGroupKey(b));
   EXPECT_EQ(pairing.pairKey(a), pairing.pairKey(b));
   EXPECT_NE(RowPairing({"planner"}).pairKey(a), RowPairing({"planner"}).pairKey(b));
   EXPECT_EQ(RowPairing::valueText(a, "controller"), "pure-pursuit");
