@@ -327,9 +327,7 @@ int runSweepCommand(const SweepOptions& o) {
     }
     return o.missing ? resubmitMissing(o, spec, all) : writeSlurm(o, spec, all);
   }
-  const int workers = o.workers > 0
-                          ? o.workers
-                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int workers = o.workers > 0 ? o.workers : defaultSweepWorkers();
   SweepRunnerDef def;
   def.workers = workers;
   def.limits = o.user_code.limits;
@@ -393,7 +391,7 @@ CommandRunner setupSweepCommand(CLI::App& sub) {
   sub.add_option("--workers", opt->workers,
                  "workers: threads, or processes when a planner or controller is user code "
                  "(default: one per CPU)")
-      ->check(CLI::Range(1, 1024));
+      ->check(CLI::Range(1, kMaxSweepWorkers));
   sub.add_option("--shard", opt->shard,
                  "run only shard I of N (I from 0): the episodes at positions I, I+N, ... of the "
                  "sweep's canonical order")

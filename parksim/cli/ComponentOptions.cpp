@@ -39,11 +39,11 @@ void UserCodeOptions::addTo(CLI::App& sub) {
   sub.add_option("--planner-timeout", limits.planner_s,
                  "a user's planner (plugin, command) is stopped after this long, s")
       ->capture_default_str()
-      ->check(realIn(0.001, 1e6));
+      ->check(realIn(UserCodeLimits::kMin, UserCodeLimits::kMax));
   sub.add_option("--controller-timeout", limits.controller_tick_s,
                  "a user's controller is stopped when one command takes longer, s")
       ->capture_default_str()
-      ->check(realIn(0.001, 1e6));
+      ->check(realIn(UserCodeLimits::kMin, UserCodeLimits::kMax));
 }
 
 ParamMap ControllerOptions::paramMap() const {

@@ -201,6 +201,7 @@ ControllerEntry commandControllerEntry() {
       "a process in any language: one line per control tick on its stdin, 'LEFT RIGHT' back "
       "(docs/your-code.md)";
   info.runs_user_code = true;
+  info.own_process = true;
   CommandControllerDef defaults;
   ParamSet known(std::string("controller ") + kCommandController);
   bindCommandController(defaults, known);

@@ -172,6 +172,7 @@ PlannerEntry commandPlannerEntry() {
       "a program in any language: reads the problem file {problem}, writes "
       "{out}/trajectory.csv (docs/your-code.md)";
   info.runs_user_code = true;
+  info.own_process = true;
   CommandPlannerDef defaults;
   ParamSet known(std::string("planner ") + kCommandPlanner);
   bindCommandPlanner(defaults, known);

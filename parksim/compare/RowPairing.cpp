@@ -46,24 +46,27 @@ RowPairing::RowPairing(std::vector<std::string> across) {
 }
 
 bool RowPairing::isAcross(std::string_view column) const {
-  return std::find(across_.begin(), across_.end(), column) != across_.end();
+  if (std::find(across_.begin(), across_.end(), column) != across_.end()) return true;
+  // Across a planner (controller), its own parameters differ with it.
+  for (const char* component : {"planner", "controller"}) {
+    if (startsWith(column, std::string(component) + ".") &&
+        std::find(across_.begin(), across_.end(), component) != across_.end()) {
+      return true;
+    }
+  }
+  return false;
 }
 
 RowGroupKey RowPairing::groupKey(const Json& row) const {
-  RowGroupKey key = rowGroupKey(row);
-  if (isAcross("planner")) {
-    // plannerLabel is the planner's name, then what differs from the defaults.
-    std::string& label = std::get<1>(key);
-    const std::string planner = valueText(row, "planner");
-    if (label.compare(0, planner.size(), planner) == 0) label.replace(0, planner.size(), "*");
+  if (across_.empty()) return rowGroupKey(row);
+  // The group of the row without the columns compared across: its label names neither them
+  // nor (for the planner) the planner, which reads "*".
+  Json rest = row;
+  for (auto it = rest.begin(); it != rest.end();) {
+    it = isAcross(it.key()) && it.key() != "planner" ? rest.erase(it) : std::next(it);
   }
-  if (isAcross("controller")) {
-    // plannerLabel ends with " controller=NAME" for a controller other than the default.
-    std::string& label = std::get<1>(key);
-    const std::size_t at = label.find(" controller=");
-    if (at != std::string::npos) label.erase(at);
-  }
-  return key;
+  if (isAcross("planner")) rest["planner"] = "*";
+  return rowGroupKey(rest);
 }
 
 std::string RowPairing::pairKey(const Json& row) const {

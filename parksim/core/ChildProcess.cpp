@@ -18,6 +18,7 @@
 #include <cstring>
 
 #include "parksim/core/Error.h"
+#include "parksim/core/SigpipeBlocked.h"
 #include "parksim/core/Text.h"
 
 extern char** environ;
@@ -74,38 +75,6 @@ bool moveFd(int fd, int target) {
   if (fd == target) return ::fcntl(fd, F_SETFD, 0) == 0;
   return ::dup2(fd, target) == target;
 }
-
-// SIGPIPE blocked in this thread while it writes to a program's standard input: a program that
-// has exited makes the write fail with EPIPE instead of killing parksim. The signal the failed
-// write raised is taken back before the mask is restored (unless one was pending already).
-class SigpipeBlocked {
- public:
-  SigpipeBlocked() {
-    sigemptyset(&set_);
-    sigaddset(&set_, SIGPIPE);
-    ::pthread_sigmask(SIG_BLOCK, &set_, &old_);
-    sigset_t pending;
-    sigemptyset(&pending);
-    ::sigpending(&pending);
-    was_pending_ = sigismember(&pending, SIGPIPE) == 1;
-  }
-  ~SigpipeBlocked() {
-    if (broke_ && !was_pending_) {
-      const timespec zero{0, 0};
-      ::sigtimedwait(&set_, nullptr, &zero);
-    }
-    ::pthread_sigmask(SIG_SETMASK, &old_, nullptr);
-  }
-  SigpipeBlocked(const SigpipeBlocked&) = delete;
-  SigpipeBlocked& operator=(const SigpipeBlocked&) = delete;
-  void broke() { broke_ = true; }
-
- private:
-  sigset_t set_{};
-  sigset_t old_{};
-  bool was_pending_ = false;
-  bool broke_ = false;
-};
 
 // Milliseconds until `deadline`, rounded up, at most `cap`, at least 0.
 int msUntil(ChildProcess::Clock::time_point deadline, int cap) {

@@ -9,6 +9,10 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <utility>
+
+#include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 
 namespace parksim {
 
@@ -18,7 +22,23 @@ struct UserCodeLimits {
   double planner_s = 600.0;
   /// Longest a user's controller may take for one command (its reset included).
   double controller_tick_s = 10.0;
+
+  /// The range of either limit, s.
+  static constexpr double kMin = 0.001;
+  static constexpr double kMax = 1e6;
 };
+
+/// Throws Error unless both limits are in [kMin, kMax].
+inline void checkUserCodeLimits(const UserCodeLimits& limits) {
+  for (const auto& [name, value] : {std::pair<const char*, double>{"planner", limits.planner_s},
+                                    {"controller", limits.controller_tick_s}}) {
+    if (!(value >= UserCodeLimits::kMin && value <= UserCodeLimits::kMax)) {
+      throw Error(std::string(name) + " time limit: must be in [" +
+                  formatGeneral(UserCodeLimits::kMin) + ", " + formatGeneral(UserCodeLimits::kMax) +
+                  "] s, got " + formatGeneral(value));
+    }
+  }
+}
 
 class UserCodeWatch {
  public:

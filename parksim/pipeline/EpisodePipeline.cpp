@@ -49,8 +49,9 @@ void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
   }
   const Components& components = componentsOf(request);
   const PlannerInfo& info = components.planners.find(out.plan_setup.planner).info;
-  // Where the planner's own code runs, for a watching process (UserCodeIsolation.h).
-  UserCodeWatch* watch = info.trusted ? nullptr : request.watch;
+  // Where the planner's own code runs, for a watching process (UserCodeIsolation.h); a command
+  // keeps its own time limits.
+  UserCodeWatch* watch = info.trusted || info.own_process ? nullptr : request.watch;
   if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kPlanner, info.name);
   try {
     out.plan = planScenario(scenario, collision, out.plan_setup, request.progress.plan,
@@ -74,8 +75,13 @@ void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
 // The controller of one realisation: a fresh one from the registry (closed loop).
 EpisodeController controllerFor(const EpisodeRequest& request) {
   const ControllerEntry& entry = componentsOf(request).controllers.find(request.controller);
-  return {entry.make(request.controller_params), entry.info.name, entry.info.trusted,
-          request.watch};
+  const ControllerInfo& info = entry.info;
+  UserCodeWatch* watch = info.trusted || info.own_process ? nullptr : request.watch;
+  // Its constructor is its code too: watched like its commands.
+  if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kController, info.name);
+  std::unique_ptr<Controller> controller = entry.make(request.controller_params);
+  if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kParksim, "");
+  return {std::move(controller), info.name, info.trusted, watch};
 }
 
 // A recorder filming into the request's directory, with the plan drawn.

@@ -111,9 +111,11 @@ void checkEpisodeRequest(const EpisodeRequest& request) {
 
 bool runsUserCode(const EpisodeRequest& request) {
   const Components& c = componentsOf(request);
-  if (!request.given_plan && !c.planners.find(request.plan.planner).info.trusted) return true;
+  const PlannerInfo& planner = c.planners.find(request.plan.planner).info;
+  if (!request.given_plan && !planner.trusted && !planner.own_process) return true;
+  const ControllerInfo& controller = c.controllers.find(request.controller).info;
   return request.drive && request.execution.tracking == TrackingMode::kClosed &&
-         !c.controllers.find(request.controller).info.trusted;
+         !controller.trusted && !controller.own_process;
 }
 
 const Components& componentsOf(const EpisodeRequest& request) {

@@ -35,8 +35,9 @@ EpisodeSettings resolveSettings(const EpisodeRequest& request);
 /// The planners and controllers `request` selects from (request.components, or parksim's own).
 const Components& componentsOf(const EpisodeRequest& request);
 
-/// Whether `request` runs code parksim does not own (an untrusted planner when it plans, an
-/// untrusted controller when it drives closed loop): front-ends then run it in a watched child
+/// Whether `request` runs code parksim does not own in parksim's own process (an untrusted
+/// planner when it plans, an untrusted controller when it drives closed loop; not a command,
+/// which runs in a process of its own): front-ends then run it in a watched child
 /// (UserCodeIsolation.h).
 bool runsUserCode(const EpisodeRequest& request);
 

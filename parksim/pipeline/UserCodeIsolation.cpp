@@ -14,6 +14,7 @@
 #include <new>
 
 #include "parksim/core/NumberFormat.h"
+#include "parksim/core/SigpipeBlocked.h"
 
 namespace parksim {
 
@@ -108,9 +109,7 @@ std::string componentName(const UserCodeWatch& watch) {
 
 WatchedWorker::WatchedWorker(Work work, const UserCodeLimits& limits, const ForkHooks& hooks)
     : limits_(limits) {
-  if (!(limits.planner_s > 0.0) || !(limits.controller_tick_s > 0.0)) {
-    throw Error("user code limits must be positive");
-  }
+  checkUserCodeLimits(limits);
   void* shared = mmap(nullptr, sizeof(UserCodeWatch), PROT_READ | PROT_WRITE,
                       MAP_SHARED | MAP_ANONYMOUS, -1, 0);
   if (shared == MAP_FAILED) throw EnvironmentError("cannot map memory to watch user code");
@@ -163,8 +162,13 @@ WatchedWorker::WatchedWorker(Work work, const UserCodeLimits& limits, const Fork
   fcntl(from_child_, F_SETFL, fcntl(from_child_, F_GETFL) | O_NONBLOCK);
 }
 
+void WatchedWorker::closeInput() {
+  if (to_child_ >= 0) ::close(to_child_);
+  to_child_ = -1;
+}
+
 WatchedWorker::~WatchedWorker() {
-  if (to_child_ >= 0) ::close(to_child_);  // an idle worker ends at end of input
+  closeInput();  // an idle worker ends at end of input
   if (!dead_ && pid_ > 0) {
     // A busy worker's task is abandoned: kill it. An idle one is ending: give it a moment.
     if (busy_) ::kill(-pid_, SIGKILL);
@@ -192,9 +196,10 @@ void WatchedWorker::start(std::uint64_t task) {
   killed_for_.clear();
   task_ = task;
   busy_ = true;
-  if (!writeAll(to_child_, &task, sizeof task)) {
-    // The worker is gone already: the next poll() finds out how.
-  }
+  // A worker that died while idle (killed from outside) has closed its input: the write fails
+  // with EPIPE instead of killing parksim, and the next poll() reads its end and reports it.
+  SigpipeBlocked blocked;
+  if (!writeAll(to_child_, &task, sizeof task)) blocked.broke();
 }
 
 std::optional<WorkerResult> WatchedWorker::poll() {
@@ -311,8 +316,8 @@ std::string runIsolated(const std::function<std::string(UserCodeWatch&)>& work,
       if (r->user_failure) throw *r->user_failure;
       throw Error(r->failure);
     }
-    pollfd p{worker.fd(), POLLIN, 0};
-    ::poll(&p, 1, 50);  // wakes for the answer, or to check the limits
+    pollfd p{worker.fd(), POLLIN, 0};  // busy until it answers
+    ::poll(&p, 1, 50);                 // wakes for the answer, or to check the limits
   }
 }
 

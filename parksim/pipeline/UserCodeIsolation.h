@@ -57,10 +57,17 @@ class WatchedWorker {
   /// Hands the idle worker a task.
   void start(std::uint64_t task);
   bool idle() const { return !busy_ && !dead_; }
+  /// Running a task: poll() will report how it ended.
+  bool busy() const { return busy_; }
   /// The worker died or was killed: make another to go on.
   bool dead() const { return dead_; }
-  /// The pipe to wait on (poll) for the worker's answers.
-  int fd() const { return from_child_; }
+  /// The pipe to wait on (poll) for the answer of a busy worker; -1 otherwise (poll(2) skips
+  /// it: a dead worker's pipe would wake every wait).
+  int fd() const { return busy_ ? from_child_ : -1; }
+
+  /// Closes the worker's input: an idle worker ends. A pool closes every worker's input before
+  /// it destroys any (each worker forked later holds the earlier ones' inputs open).
+  void closeInput();
 
   /// Reads what the worker sent and enforces the limits: the result of the task it was given,
   /// once that has ended (answered, failed, or the worker died or was killed).

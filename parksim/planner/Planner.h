@@ -103,6 +103,9 @@ struct PlannerInfo {
   /// Set by the entry: the planner runs code parksim does not own (a command, a Python
   /// object), so it is not trusted even when registered without a plugin.
   bool runs_user_code = false;
+  /// Set by the entry: that user code runs in a process of its own, with time limits of its
+  /// own (a command): parksim's process needs no watch for it (UserCodeIsolation.h).
+  bool own_process = false;
   /// Set by the registry: parksim's own code (no plugin, no user code), which validates every
   /// plan as it builds it. A plan from any other planner is checked before it is driven
   /// (PlanCheck.h), and what it throws is a planner_error, not an input error.

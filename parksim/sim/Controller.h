@@ -100,6 +100,9 @@ struct ControllerInfo {
   /// Set by the entry: the controller runs code parksim does not own (a process, a Python
   /// object), so it is not trusted even when registered without a plugin.
   bool runs_user_code = false;
+  /// Set by the entry: that user code runs in a process of its own, with time limits of its
+  /// own (a command): parksim's process needs no watch for it (UserCodeIsolation.h).
+  bool own_process = false;
   /// Set by the registry: parksim's own code. Any other controller's commands are checked
   /// (finite, within the wheel-speed limit) and its failures are controller_error.
   bool trusted = false;

@@ -120,11 +120,28 @@ std::string plannerLabel(const Json& row) {
     s += timing;
   }
   // Two controllers of one sweep are two groups (the planner's label, as their rows'
-  // steering and tracking are).
+  // steering and tracking are), and so are two entries of one planner or controller with other
+  // parameters (planner.NAME, controller.NAME columns).
+  for (const auto& [key, value] : row.items()) {
+    if (key.rfind("planner.", 0) == 0) {
+      s += ' ';
+      s += key.substr(8);
+      s += '=';
+      s += value.is_string() ? value.get<std::string>() : value.dump();
+    }
+  }
   const std::string controller = str(row, "controller", defaults.controller.c_str());
   if (!controller.empty() && controller != defaults.controller) {
     s += " controller=";
     s += controller;
+  }
+  for (const auto& [key, value] : row.items()) {
+    if (key.rfind("controller.", 0) == 0) {
+      s += " controller.";
+      s += key.substr(11);
+      s += '=';
+      s += value.is_string() ? value.get<std::string>() : value.dump();
+    }
   }
   return s;
 }

@@ -31,7 +31,7 @@ struct ReportGroup {
 
 /// The planner configuration of a row as one label: the planner, then what differs from the
 /// defaults ("rrt-star+smooth", "rrt/rotate-translate-rotate", "rrt open-loop", "rrt it=5000",
-/// "rrt timing=...", "rrt controller=pure-pursuit").
+/// "rrt timing=...", "rrt goal_bias=0.1 controller=pure-pursuit controller.lookahead_s=0.2").
 std::string plannerLabel(const nlohmann::ordered_json& row);
 
 /// The group of a row in report, compare and JUnit: (world, plannerLabel, realism); a row

@@ -48,6 +48,7 @@ TableExpectations sweepExpectations(const SweepPlan& plan,
 SweepJobResult runSweepJob(const SweepPlan& plan, const Shard& shard, const std::string& out,
                            SweepRunnerDef def, const std::function<void(const SweepStart&)>& start,
                            const SweepProgressFn& progress) {
+  checkSweepRunnerDef(def);  // before anything is written
   SweepJobResult result;
   result.episodes = selectShard(plan.episodes, shard);
   def.provenance["plugins"] = pluginsProvenance(*plan.components);

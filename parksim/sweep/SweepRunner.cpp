@@ -3,6 +3,7 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -31,6 +32,18 @@ nlohmann::ordered_json provenanceColumns() {
   char host[256] = {};
   j["host"] = gethostname(host, sizeof host - 1) == 0 ? host : "unknown";
   return j;
+}
+
+void checkSweepRunnerDef(const SweepRunnerDef& def) {
+  if (def.workers < 1 || def.workers > kMaxSweepWorkers) {
+    throw Error("workers: must be in [1, " + std::to_string(kMaxSweepWorkers) + "], got " +
+                std::to_string(def.workers));
+  }
+  checkUserCodeLimits(def.limits);
+}
+
+int defaultSweepWorkers() {
+  return std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kMaxSweepWorkers);
 }
 
 bool sweepRunsUserCode(const std::vector<SweepEpisode>& episodes) {
@@ -143,7 +156,13 @@ std::exception_ptr runInProcesses(const std::vector<const SweepEpisode*>& todo,
     return runSweepEpisode(*todo.at(task), episode_def, &watch).dump();
   };
   const std::size_t n = std::min<std::size_t>(def.workers, todo.size());
-  std::vector<std::unique_ptr<WatchedWorker>> pool;
+  // Every worker's input is closed before any worker is destroyed (WatchedWorker::closeInput):
+  // a worker forked later holds the earlier ones' inputs open.
+  struct Pool : std::vector<std::unique_ptr<WatchedWorker>> {
+    ~Pool() {
+      for (std::unique_ptr<WatchedWorker>& w : *this) w->closeInput();
+    }
+  } pool;
   for (std::size_t k = 0; k < n; ++k) {
     pool.push_back(std::make_unique<WatchedWorker>(work, def.limits, def.fork_hooks));
   }
@@ -184,7 +203,7 @@ std::exception_ptr runInProcesses(const std::vector<const SweepEpisode*>& todo,
 
 SweepProgress runSweep(const std::vector<SweepEpisode>& episodes, const SweepRunnerDef& def,
                        ResultsTable& table, const SweepProgressFn& progress) {
-  if (def.workers < 1) throw Error("workers must be at least 1");
+  checkSweepRunnerDef(def);
   std::vector<const SweepEpisode*> todo;
   SweepProgress p;
   p.total = episodes.size();

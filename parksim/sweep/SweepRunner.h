@@ -36,8 +36,15 @@ using SweepProgressFn = std::function<void(const SweepProgress&)>;
 /// git_commit, git_dirty, build_type, compiler, bullet_precision) and this machine's `host`.
 nlohmann::ordered_json provenanceColumns();
 
+/// At most this many workers (threads or processes) per sweep.
+inline constexpr int kMaxSweepWorkers = 1024;
+
+/// One per CPU (at least 1, at most kMaxSweepWorkers): `--workers`' and parksim.sweep()'s
+/// default.
+int defaultSweepWorkers();
+
 struct SweepRunnerDef {
-  int workers = 1;  ///< threads or processes, >= 1
+  int workers = 1;  ///< threads or processes, in [1, kMaxSweepWorkers]
   EpisodeRunDef episode;
   nlohmann::ordered_json provenance = provenanceColumns();  ///< added to every row
   /// Limits on user code, in worker processes (core/UserCodeWatch.h).
@@ -47,6 +54,9 @@ struct SweepRunnerDef {
   /// Processes even when no episode runs user code.
   bool processes = false;
 };
+
+/// Throws Error when `def`'s workers or limits are out of range.
+void checkSweepRunnerDef(const SweepRunnerDef& def);
 
 /// Whether `episodes` run user code, so that runSweep runs them in worker processes.
 bool sweepRunsUserCode(const std::vector<SweepEpisode>& episodes);

@@ -5,8 +5,6 @@
 
 #include <Python.h>
 
-#include <thread>
-
 #include "parksim/plugin/PluginLoader.h"
 #include "parksim/sweep/SweepJob.h"
 #include "python/src/Bindings.h"
@@ -27,15 +25,20 @@ py::dict sweep(const std::string& spec, const std::string& out, const py::dict& 
   }
   const SweepPlan plan = prepareSweep(spec, extra.get());
   SweepRunnerDef def;
-  def.workers =
-      workers > 0 ? workers : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  def.workers = workers > 0 ? workers : defaultSweepWorkers();
   def.limits.planner_s = planner_timeout_s;
   def.limits.controller_tick_s = controller_timeout_s;
+  checkSweepRunnerDef(def);
   // The interpreter's own fork handling (its locks, os.register_at_fork callbacks).
   def.fork_hooks.before = [] { PyOS_BeforeFork(); };
   def.fork_hooks.after_in_parent = [] { PyOS_AfterFork_Parent(); };
   def.fork_hooks.after_in_child = [] { PyOS_AfterFork_Child(); };
-  const SweepJobResult r = runSweepJob(plan, parseShard(shard), out, def, {}, {});
+  // Ctrl-C ends the sweep at the next row, as it ends `parksim sweep` (the rows written stay;
+  // the running episodes' workers are killed).
+  const auto interruptible = [](const SweepProgress&) {
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  };
+  const SweepJobResult r = runSweepJob(plan, parseShard(shard), out, def, {}, interruptible);
   py::dict result;
   result["episodes"] = r.episodes.size();
   result["ran"] = r.progress.ran;

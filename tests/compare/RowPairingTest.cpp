@@ -56,13 +56,18 @@ TEST(RowPairing, AcrossThePlannerTheGroupNamesItStarAndRowsPairWithoutIt) {
   EXPECT_EQ(rowGroupName(pairing.groupKey(a)), "head_in / *+smooth / lab");
   EXPECT_EQ(pairing.groupKey(a), pairing.groupKey(b));
   EXPECT_EQ(pairing.pairKey(a), pairing.pairKey(b));
-  // Every other parameter still tells episodes apart: the noise seed, a planner parameter.
+  // Every other parameter still tells episodes apart: the noise seed, a controller parameter.
   EXPECT_NE(pairing.pairKey(a), pairing.pairKey(rowOf(headIn(4))));
+  EpisodeParams tuned_controller = mine;
+  tuned_controller.controller_params["k"] = "1";
+  EXPECT_NE(pairing.pairKey(a), pairing.pairKey(rowOf(tuned_controller)));
+  // A planner's own parameters differ with the planner: across it, they do not count, and its
+  // label leaves them out.
   EpisodeParams tuned = mine;
   tuned.planner_params["step_m"] = "0.1";
-  EXPECT_NE(pairing.pairKey(a), pairing.pairKey(rowOf(tuned)));
-  EXPECT_EQ(RowPairing({"planner", "planner.step_m"}).pairKey(a),
-            RowPairing({"planner", "planner.step_m"}).pairKey(rowOf(tuned)));
+  EXPECT_EQ(pairing.pairKey(a), pairing.pairKey(rowOf(tuned)));
+  EXPECT_EQ(pairing.groupKey(a), pairing.groupKey(rowOf(tuned)));
+  EXPECT_NE(rowGroupKey(a), rowGroupKey(rowOf(tuned)));  // apart, two configurations
   // The world's file is provenance, as in ids: a baseline kept elsewhere still pairs.
   EpisodeParams moved = theirs;
   moved.world_file = "head_in.yaml";

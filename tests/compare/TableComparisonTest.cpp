@@ -448,9 +448,9 @@ TEST(TableComparison, AcrossColumnsAreCheckedAgainstTheTables) {
   const std::vector<Json> baseline = syntheticTable(1, kLab, rng);
   const std::vector<Json> candidate = rerunAll(baseline, "example", "tracking", 1.0);
   CompareDef def;
-  def.across = {"planner", "planner.step_m"};
+  def.across = {"planner", "controller.k_x"};
   EXPECT_THAT(compareError(baseline, candidate, def),
-              HasSubstr("across: neither table has a column planner.step_m"));
+              HasSubstr("across: neither table has a column controller.k_x"));
   // Two planners in one table: their episodes would pair with the same candidate episode.
   std::vector<Json> both = baseline;
   both.push_back(candidate[4]);

@@ -46,10 +46,11 @@ struct SmallSweep {
 const char* kAxes = "planners: rrt-goal-connect\nseeds: [1, 2, 3]\ntracking: closed\n";
 
 SweepProgress run(const std::vector<SweepEpisode>& episodes, const std::string& dir, int workers,
-                  const SweepRecordDef& record = {}) {
+                  const SweepRecordDef& record = {}, bool processes = false) {
   ResultsTable table(dir);
   SweepRunnerDef def;
   def.workers = workers;
+  def.processes = processes;
   def.episode.record = record;
   def.episode.episodes_dir = dir + "/episodes";
   return runSweep(episodes, def, table);
@@ -128,6 +129,15 @@ TEST_F(SweepRunnerTest, WritesOneWholeRowPerEpisodeToBothFiles) {
 TEST_F(SweepRunnerTest, TwoWorkersWriteTheSameTableAsOne) {
   const std::string dir = scratchDir();
   const SweepProgress p = run(sweep_->episodes, dir, 2);
+  EXPECT_EQ(p.ran, sweep_->episodes.size());
+  EXPECT_EQ(tableContent(dir), tableContent(*reference_dir_));
+}
+
+// Workers that are processes (as for user code) send rows back as JSON text: the same rows,
+// to the bit, as threads make.
+TEST_F(SweepRunnerTest, WorkerProcessesWriteTheSameTableAsThreads) {
+  const std::string dir = scratchDir();
+  const SweepProgress p = run(sweep_->episodes, dir, 2, {}, true);
   EXPECT_EQ(p.ran, sweep_->episodes.size());
   EXPECT_EQ(tableContent(dir), tableContent(*reference_dir_));
 }
