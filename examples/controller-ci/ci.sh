@@ -31,6 +31,8 @@ if [ "$mode" = refresh ]; then
   echo "stored baseline/results.jsonl: commit it"
   exit 0
 fi
-# Exit 4 when a group's success rate or tracking error got significantly worse.
-"$PARKSIM" compare baseline/results.jsonl "$OUT/sweep" --junit "$OUT/compare.xml" \
-  --markdown "$OUT/compare.md" --html "$OUT/compare.html"
+# Exit 4 when a group's success rate or tracking error got significantly worse. Across the
+# controller: each episode pairs with the baseline's of the same lot and noise seed whatever the
+# controller's name or parameters (a retuned or renamed controller is still compared).
+"$PARKSIM" compare baseline/results.jsonl "$OUT/sweep" --across controller \
+  --junit "$OUT/compare.xml" --markdown "$OUT/compare.md" --html "$OUT/compare.html"
