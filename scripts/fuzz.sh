@@ -29,7 +29,8 @@ cxx=${FUZZ_CXX:-clang++}
 # -g1: line tables, enough for the reports' stack traces, and faster to compile than -g.
 flags=(-std=c++20 -O1 -g1 -fno-omit-frame-pointer -fsanitize=fuzzer,address,undefined
        -fno-sanitize-recover=undefined -ffunction-sections -fdata-sections -I.
-       -isystem /usr/include/eigen3 -isystem /usr/include/ompl-1.5 -isystem /usr/include/bullet)
+       -isystem /usr/include/eigen3 -isystem /usr/include/ompl-1.5 -isystem /usr/include/bullet
+       -isystem /usr/include/libxml2)
 # The readers need the core library but not its build-provenance file (a configured header).
 core=()
 for f in parksim/core/*.cpp; do
@@ -87,7 +88,7 @@ sources[world]="tests/fuzz/WorldReaderFuzz.cpp ${scenario[*]} ${realism[*]} ${co
 sources[plan]="tests/fuzz/PlanReaderFuzz.cpp parksim/results/TrajectoryFile.cpp ${core[*]}"
 sources[spec]="tests/fuzz/SweepSpecFuzz.cpp parksim/sweep/SweepSpecReader.cpp
   parksim/command/CommandLine.cpp parksim/sweep/EpisodeSetup.cpp parksim/sweep/SetValues.cpp parksim/results/EpisodeRecord.cpp
-  parksim/planner/PlannerKind.cpp parksim/planner/PlanScenario.cpp
+  parksim/planner/PlanScenario.cpp
   parksim/results/ExecutedFile.cpp parksim/pipeline/EpisodeRequest.cpp
   parksim/sim/ExecutionDef.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
 sources[jsonl]="tests/fuzz/ResultsJsonlFuzz.cpp ${tables[*]} ${core[*]}"
@@ -95,9 +96,9 @@ sources[csv]="tests/fuzz/ResultsCsvFuzz.cpp ${tables[*]} ${core[*]}"
 sources[manifest]="tests/fuzz/SweepManifestFuzz.cpp ${tables[*]} ${core[*]}"
 sources[dict]="tests/fuzz/WorldDictFuzz.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
 readers=(world plan spec jsonl csv manifest dict)
-libs_world=(-lyaml-cpp)
-libs_spec=(-lyaml-cpp -lz)
-libs_dict=(-lyaml-cpp)
+libs_world=(-lyaml-cpp -lxml2 -lstb -lz)
+libs_spec=(-lyaml-cpp -lxml2 -lstb -lz)
+libs_dict=(-lyaml-cpp -lxml2 -lstb -lz)
 
 echo "== compiling the readers for fuzzing (build-fuzz/obj/)"
 for reader in "${readers[@]}"; do printf '%s\n' ${sources[$reader]}; done | sort -u |
