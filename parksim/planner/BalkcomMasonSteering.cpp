@@ -28,15 +28,10 @@ std::vector<PathPiece> BalkcomMasonSteering::pieces(const Pose2& from, const Pos
 
 SteerResult BalkcomMasonSteering::steer(const Pose2& from, const WheelSpeeds& from_wheels,
                                         const Pose2& to, SteerMode mode) const {
-  const double dt = def_.period_s;
   const TimingLimits limits{def_.speed_fraction * robot_.max_wheel_speed_radps,
-                            robot_.max_wheel_accel_radps2, dt};
-  SteerResult result;
-  // The path starts from rest.
-  result.trajectory = brakeThenTimePieces(
-      from, from_wheels, robot_, limits, [&](const Pose2& at_rest) { return pieces(at_rest, to); });
-  finishAtTarget(result, to, mode, def_.horizon_s, dt);
-  return result;
+                            robot_.max_wheel_accel_radps2, def_.period_s};
+  return steerThroughPieces(from, from_wheels, to, mode, robot_, limits, def_.horizon_s,
+                            [&](const Pose2& at_rest) { return pieces(at_rest, to); });
 }
 
 }  // namespace parksim

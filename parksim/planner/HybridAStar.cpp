@@ -15,6 +15,7 @@
 #include "parksim/planner/MotionPrimitives.h"
 #include "parksim/planner/ObstacleHeuristic.h"
 #include "parksim/planner/PathCost.h"
+#include "parksim/planner/SearchCells.h"
 
 namespace parksim {
 
@@ -90,8 +91,6 @@ class Search {
 
   PlanResult finish(PlanStatus status, std::string message);
   void prepare(const std::vector<Pose2>& sources, const std::vector<Pose2>& targets);
-  bool inFineZone(const Pose2& p) const;
-  std::int64_t key(const Pose2& p) const;
   double heuristic(const Pose2& p) const;
   void search();
   bool tryAnalytic(int id, double h);
@@ -109,18 +108,13 @@ class Search {
   const long queries_before_;
   PlanResult result_;
 
-  // The search grows from `sources_` and its analytic expansions aim at `targets_`.
+  // The search grows from `cell_keys_.sources()` and its analytic expansions aim at `targets_`.
   bool backward_ = true;
-  std::vector<Pose2> sources_;
   std::vector<Pose2> targets_;
-  double width_ = 0.0;
-  double height_ = 0.0;
+  SearchCells cell_keys_;  // the first attempt is coarse everywhere
   double cell_ = 0.0;
   double step_ = 0.0;
-  double fine_zone_ = 0.0;
-  bool fine_on_ = false;  // the first attempt is coarse everywhere
   double turn_cost_per_rad_ = 0.0;
-  std::int64_t coarse_cells_ = 0;
   std::vector<MotionPrimitive> coarse_;
   std::vector<MotionPrimitive> fine_;
   std::unique_ptr<ObstacleHeuristic> grid_;
@@ -145,47 +139,23 @@ PlanResult Search::finish(PlanStatus status, std::string message) {
 
 // Cells, moves and the obstacle heuristic's grid for this lot.
 void Search::prepare(const std::vector<Pose2>& sources, const std::vector<Pose2>& targets) {
-  sources_ = sources;
   targets_ = targets;
-  width_ = lot_.x_max_m - lot_.x_min_m;
-  height_ = lot_.y_max_m - lot_.y_min_m;
+  const double width = lot_.x_max_m - lot_.x_min_m;
+  const double height = lot_.y_max_m - lot_.y_min_m;
   cell_ = hybrid_.cell_m > 0.0 ? hybrid_.cell_m : 0.25 * footprintRadius(robot_);
-  if (hybrid_.cell_m <= 0.0) cell_ = std::max(cell_, std::max(width_, height_) / kMaxCellsPerSide);
+  if (hybrid_.cell_m <= 0.0) cell_ = std::max(cell_, std::max(width, height) / kMaxCellsPerSide);
   step_ = hybrid_.step_m > 0.0 ? hybrid_.step_m : 1.5 * cell_;
   std::vector<double> radii{reeds_shepp_.def().turning_radius_m};
   if (hybrid_.tight_turning_radius_m > 0.0) radii.push_back(hybrid_.tight_turning_radius_m);
   coarse_ = makePrimitives(step_, radii, hybrid_.turn_in_place_rad);
   fine_ = makePrimitives(hybrid_.fine_step_m, radii, hybrid_.fine_turn_in_place_rad);
-  fine_zone_ = hybrid_.fine_zone_m < 0.0 ? 2.0 * footprintRadius(robot_) : hybrid_.fine_zone_m;
+  cell_keys_ = SearchCells(
+      lot_, {cell_, hybrid_.heading_bins}, {hybrid_.fine_cell_m, hybrid_.fine_heading_bins},
+      hybrid_.fine_zone_m < 0.0 ? 2.0 * footprintRadius(robot_) : hybrid_.fine_zone_m, sources);
   turn_cost_per_rad_ = footprintRadius(robot_);
-  coarse_cells_ = (static_cast<std::int64_t>(std::ceil(width_ / cell_)) + 1) *
-                  (static_cast<std::int64_t>(std::ceil(height_ / cell_)) + 1) *
-                  hybrid_.heading_bins;
   const Clock::time_point t0 = Clock::now();
   grid_ = std::make_unique<ObstacleHeuristic>(validator_, lot_, cell_, targets_.front());
   result_.stats.times.heuristic_s = seconds(t0);
-}
-
-bool Search::inFineZone(const Pose2& p) const {
-  if (!fine_on_) return false;
-  for (const Pose2& q : sources_) {
-    if (positionDistance(p, q) < fine_zone_) return true;
-  }
-  return false;
-}
-
-// Coarse and fine cells are numbered apart: the fine ones after every coarse one.
-std::int64_t Search::key(const Pose2& p) const {
-  const bool fine = inFineZone(p);
-  const double c = fine ? hybrid_.fine_cell_m : cell_;
-  const int nh = fine ? hybrid_.fine_heading_bins : hybrid_.heading_bins;
-  const auto nx = static_cast<std::int64_t>(std::ceil(width_ / c)) + 1;
-  const auto ny = static_cast<std::int64_t>(std::ceil(height_ / c)) + 1;
-  const auto i = static_cast<std::int64_t>(std::floor((p.x - lot_.x_min_m) / c));
-  const auto j = static_cast<std::int64_t>(std::floor((p.y - lot_.y_min_m) / c));
-  const double turns = wrapAngle(p.theta) / (2.0 * kPi) + 0.5;  // [0, 1]
-  const auto k = static_cast<std::int64_t>(std::floor(turns * nh + 0.5)) % nh;
-  return (fine ? coarse_cells_ : 0) + (k * ny + j) * nx + i;
 }
 
 double Search::heuristic(const Pose2& p) const {
@@ -218,7 +188,7 @@ bool Search::tryAnalytic(int id, double h) {
 void Search::expand(int id) {
   PhaseTimes& times = result_.stats.times;
   const Node n = nodes_[id];
-  const bool in_fine = inFineZone(n.pose);
+  const bool in_fine = cell_keys_.inFineZone(n.pose);
   const std::vector<MotionPrimitive>& primitives = in_fine ? fine_ : coarse_;
   for (int m = 0; m < static_cast<int>(primitives.size()); ++m) {
     const MotionPrimitive& prim = primitives[m];
@@ -229,7 +199,7 @@ void Search::expand(int id) {
       times.steering_s += seconds(t0);
     }
     if (!lot_.contains(next.x, next.y)) continue;
-    const std::int64_t nk = key(next);
+    const std::int64_t nk = cell_keys_.key(next);
     if (closed_.count(nk)) continue;
     // Searching backwards, a move forward here is driven in reverse.
     const bool driven_reverse = backward_ ? prim.direction > 0 : prim.direction < 0;
@@ -259,15 +229,15 @@ void Search::expand(int id) {
 void Search::search() {
   for (int attempt = 0; attempt < 2 && reached_from_ < 0 && !timed_out_; ++attempt) {
     if (attempt == 1) {
-      if (!open_.empty() || fine_zone_ <= 0.0) break;
-      fine_on_ = true;
+      if (!open_.empty() || cell_keys_.fineZone_m() <= 0.0) break;
+      cell_keys_.enableFineZone();
       nodes_.clear();
       best_.clear();
       closed_.clear();
     }
-    for (const Pose2& p : sources_) {
-      if (best_.count(key(p))) continue;
-      best_[key(p)] = static_cast<int>(nodes_.size());
+    for (const Pose2& p : cell_keys_.sources()) {
+      if (best_.count(cell_keys_.key(p))) continue;
+      best_[cell_keys_.key(p)] = static_cast<int>(nodes_.size());
       open_.push({hybrid_.heuristic_weight * heuristic(p), static_cast<int>(nodes_.size())});
       nodes_.push_back({p, 0.0, -1, -1, 0, false});
     }
@@ -278,7 +248,7 @@ void Search::search() {
       }
       const auto [f, id] = open_.top();
       open_.pop();
-      const std::int64_t k = key(nodes_[id].pose);
+      const std::int64_t k = cell_keys_.key(nodes_[id].pose);
       if (closed_.count(k) || best_[k] != id) continue;
       closed_[k] = 1;
       ++expansions_;

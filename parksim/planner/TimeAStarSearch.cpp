@@ -14,6 +14,7 @@
 #include "parksim/planner/FootprintFit.h"
 #include "parksim/planner/MotionPrimitives.h"
 #include "parksim/planner/ObstacleHeuristic.h"
+#include "parksim/planner/SearchCells.h"
 #include "parksim/planner/TimeAStar.h"
 #include "parksim/planner/TimeCost.h"
 
@@ -52,7 +53,6 @@ class Search {
         def_(*c.def),
         validator_(*c.validator),
         cost_(c.limits),
-        sources_(sources),
         targets_(targets),
         half_base_(0.5 * c.robot.wheel_base_m),
         speed_mps_(c.limits.max_wheel_speed_radps * c.robot.wheel_radius_m) {
@@ -60,12 +60,9 @@ class Search {
     cell_ = def_.cell_m > 0.0 ? def_.cell_m : 0.25 * radius;
     const double step = def_.step_m > 0.0 ? def_.step_m : 1.5 * cell_;
     coarse_ = movesOf(makePrimitives(step, def_.arc_radii_m, def_.spin_angles_rad), c.robot, cost_);
+    cell_keys_ = SearchCells(c.window, {cell_, def_.heading_bins}, {},
+                             def_.fine_zone_m < 0.0 ? 2.0 * radius : def_.fine_zone_m, sources);
     setFineLevel(1);
-    fine_zone_ = def_.fine_zone_m < 0.0 ? 2.0 * radius : def_.fine_zone_m;
-    width_ = c.window.x_max_m - c.window.x_min_m;
-    height_ = c.window.y_max_m - c.window.y_min_m;
-    coarse_cells_ = (cellsAlong(width_, cell_) + 1) * (cellsAlong(height_, cell_) + 1) *
-                    static_cast<std::int64_t>(def_.heading_bins);
   }
 
   TimeSearchOutcome run(bool backward);
@@ -85,12 +82,7 @@ class Search {
   };
   using Item = std::pair<double, int>;  // f, node; ties by node id (deterministic)
 
-  static std::int64_t cellsAlong(double length, double cell) {
-    return static_cast<std::int64_t>(std::ceil(length / cell));
-  }
   void setFineLevel(int level);
-  bool inFineZone(const Pose2& p) const;
-  std::int64_t key(const Pose2& p) const;
   double heuristic(const Pose2& p) const;
   void buildHeuristic();
   void reset();
@@ -104,20 +96,13 @@ class Search {
   const TimeAStarDef& def_;
   const MotionValidator& validator_;
   TimeCostModel cost_;
-  std::vector<Pose2> sources_;
   std::vector<Pose2> targets_;
   double half_base_;
   double speed_mps_;
   double cell_ = 0.0;
-  double fine_zone_ = 0.0;
-  double width_ = 0.0;
-  double height_ = 0.0;
-  std::int64_t coarse_cells_ = 0;
+  SearchCells cell_keys_;
   std::vector<Move> coarse_;
   std::vector<Move> fine_;
-  double fine_cell_ = 0.0;  // the fine zone's cell side and heading bins at the current level
-  int fine_bins_ = 0;
-  bool fine_on_ = false;
   std::unique_ptr<ObstacleHeuristic> grid_;
   double grid_slack_m_ = 0.0;
 
@@ -133,33 +118,12 @@ class Search {
 // each level halving cells, moves and turns and doubling the heading bins.
 void Search::setFineLevel(int level) {
   const double scale = std::ldexp(1.0, 1 - level);
-  fine_cell_ = scale * def_.fine_cell_m;
-  fine_bins_ = static_cast<int>(std::lround(def_.fine_heading_bins / scale));
+  cell_keys_.setFine(
+      {scale * def_.fine_cell_m, static_cast<int>(std::lround(def_.fine_heading_bins / scale))});
   std::vector<double> spins;
   for (double a : def_.fine_spin_angles_rad) spins.push_back(scale * a);
   fine_ =
       movesOf(makePrimitives(scale * def_.fine_step_m, def_.arc_radii_m, spins), c_.robot, cost_);
-}
-
-bool Search::inFineZone(const Pose2& p) const {
-  if (!fine_on_) return false;
-  for (const Pose2& q : sources_) {
-    if (positionDistance(p, q) < fine_zone_) return true;
-  }
-  return false;
-}
-
-std::int64_t Search::key(const Pose2& p) const {
-  const bool fine = inFineZone(p);
-  const double c = fine ? fine_cell_ : cell_;
-  const int bins = fine ? fine_bins_ : def_.heading_bins;
-  const std::int64_t nx = cellsAlong(width_, c) + 1;
-  const std::int64_t ny = cellsAlong(height_, c) + 1;
-  const auto i = static_cast<std::int64_t>(std::floor((p.x - c_.window.x_min_m) / c));
-  const auto j = static_cast<std::int64_t>(std::floor((p.y - c_.window.y_min_m) / c));
-  const double turns = wrapAngle(p.theta) / (2.0 * kPi) + 0.5;  // [0, 1]
-  const auto k = static_cast<std::int64_t>(std::floor(turns * bins + 0.5)) % bins;
-  return (fine ? coarse_cells_ : 0) + (k * ny + j) * nx + i;
 }
 
 // Seconds to the nearest target at full speed: the larger of the free-space optimum and the
@@ -184,7 +148,7 @@ double Search::heuristic(const Pose2& p) const {
 
 void Search::buildHeuristic() {
   const Clock::time_point t0 = Clock::now();
-  const double longer = std::max(width_, height_);
+  const double longer = std::max(cell_keys_.width_m(), cell_keys_.height_m());
   const double cell = std::max(cell_, longer / def_.max_heuristic_cells_per_side);
   grid_ = c_.fit
               ? std::make_unique<ObstacleHeuristic>(
@@ -199,8 +163,8 @@ void Search::reset() {
   nodes_.clear();
   cells_.clear();
   open_ = {};
-  for (const Pose2& p : sources_) {
-    const std::int64_t k = key(p);
+  for (const Pose2& p : cell_keys_.sources()) {
+    const std::int64_t k = cell_keys_.key(p);
     if (cells_.count(k)) continue;
     const double h = heuristic(p);
     if (!std::isfinite(h)) continue;
@@ -243,13 +207,13 @@ bool Search::tryAnalytic(int id, double h) {
 
 void Search::pushChildren(int id) {
   const Node n = nodes_[id];
-  const bool fine = inFineZone(n.pose);
+  const bool fine = cell_keys_.inFineZone(n.pose);
   const std::vector<Move>& moves = fine ? fine_ : coarse_;
   for (int m = 0; m < static_cast<int>(moves.size()); ++m) {
     const Move& move = moves[m];
     const Pose2 next = applyPrimitive(n.pose, move.primitive);
     if (!c_.window.contains(next.x, next.y)) continue;
-    const std::int64_t k = key(next);
+    const std::int64_t k = cell_keys_.key(next);
     auto it = cells_.find(k);
     if (it != cells_.end() && it->second.closed) continue;
     const double g = n.g + move.time_s + cost_.junctionTime(n.direction, move.piece.direction);
@@ -269,7 +233,7 @@ bool Search::expandNext() {
     const auto [f, id] = open_.top();
     open_.pop();
     const Node& n = nodes_[id];
-    Cell& cell = cells_[key(n.pose)];
+    Cell& cell = cells_[cell_keys_.key(n.pose)];
     if (cell.closed || n.g > cell.g) continue;
     if (!edgeValid(n)) {
       cell.g = std::numeric_limits<double>::infinity();  // others may reach the cell after all
@@ -307,8 +271,8 @@ TimeSearchOutcome Search::run(bool backward) {
   // than the fine zone's resolution is searched finer before the search gives up.
   for (int attempt = 0; attempt < 3; ++attempt) {
     if (attempt >= 1) {
-      if (fine_zone_ <= 0.0) break;
-      fine_on_ = true;
+      if (cell_keys_.fineZone_m() <= 0.0) break;
+      cell_keys_.enableFineZone();
       setFineLevel(attempt);
     }
     reset();

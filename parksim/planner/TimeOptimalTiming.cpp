@@ -338,4 +338,14 @@ Trajectory brakeThenTimePieces(
   return traj;
 }
 
+SteerResult steerThroughPieces(
+    const Pose2& from, const WheelSpeeds& from_wheels, const Pose2& to, SteerMode mode,
+    const RobotDef& robot, const TimingLimits& limits, double horizon_s,
+    const std::function<std::vector<PathPiece>(const Pose2& at_rest)>& pieces_from) {
+  SteerResult result;
+  result.trajectory = brakeThenTimePieces(from, from_wheels, robot, limits, pieces_from);
+  finishAtTarget(result, to, mode, horizon_s, limits.period_s);
+  return result;
+}
+
 }  // namespace parksim

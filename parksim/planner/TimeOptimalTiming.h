@@ -20,6 +20,7 @@
 #include "parksim/core/Pose2.h"
 #include "parksim/core/RobotDef.h"
 #include "parksim/core/Trajectory.h"
+#include "parksim/planner/SteeringFunction.h"
 
 namespace parksim {
 
@@ -70,6 +71,13 @@ Trajectory timePieces(const Pose2& start, const std::vector<PathPiece>& pieces,
 Trajectory brakeThenTimePieces(
     const Pose2& from, const WheelSpeeds& from_wheels, const RobotDef& robot,
     const TimingLimits& limits,
+    const std::function<std::vector<PathPiece>(const Pose2& at_rest)>& pieces_from);
+
+/// steer() of a steering function that plans whole paths from rest (Balkcom-Mason, Reeds-Shepp):
+/// brakeThenTimePieces to `to`, then finishAtTarget with `horizon_s` (SteeringFunction.h).
+SteerResult steerThroughPieces(
+    const Pose2& from, const WheelSpeeds& from_wheels, const Pose2& to, SteerMode mode,
+    const RobotDef& robot, const TimingLimits& limits, double horizon_s,
     const std::function<std::vector<PathPiece>(const Pose2& at_rest)>& pieces_from);
 
 /// The duration of timePieces(start, pieces, ...), s, without building its rows: the number of
