@@ -90,6 +90,20 @@ void renderTo(const Scene& scene, int w, int h, const std::string& path) {
   writePng(path, image, PngCompression::kSmall);
 }
 
+// " NAME=value" for each of the row's `prefix`NAME columns (a component's own parameters), the
+// name shown after `shown`: " controller.gain=2".
+void appendParams(std::string& s, const Json& row, const std::string& prefix,
+                  const std::string& shown) {
+  for (const auto& [key, value] : row.items()) {
+    if (key.rfind(prefix, 0) != 0) continue;
+    s += ' ';
+    s += shown;
+    s += key.substr(prefix.size());
+    s += '=';
+    s += value.is_string() ? value.get<std::string>() : value.dump();
+  }
+}
+
 }  // namespace
 
 std::string plannerLabel(const Json& row) {
@@ -122,27 +136,13 @@ std::string plannerLabel(const Json& row) {
   // Two controllers of one sweep are two groups (the planner's label, as their rows'
   // steering and tracking are), and so are two entries of one planner or controller with other
   // parameters (planner.NAME, controller.NAME columns).
-  for (const auto& [key, value] : row.items()) {
-    if (key.rfind("planner.", 0) == 0) {
-      s += ' ';
-      s += key.substr(8);
-      s += '=';
-      s += value.is_string() ? value.get<std::string>() : value.dump();
-    }
-  }
+  appendParams(s, row, "planner.", "");
   const std::string controller = str(row, "controller", defaults.controller.c_str());
   if (!controller.empty() && controller != defaults.controller) {
     s += " controller=";
     s += controller;
   }
-  for (const auto& [key, value] : row.items()) {
-    if (key.rfind("controller.", 0) == 0) {
-      s += " controller.";
-      s += key.substr(11);
-      s += '=';
-      s += value.is_string() ? value.get<std::string>() : value.dump();
-    }
-  }
+  appendParams(s, row, "controller.", "controller.");
   return s;
 }
 
