@@ -44,7 +44,8 @@ class UserCodeWatch {
  public:
   enum class Phase : int { kParksim = 0, kPlanner = 1, kController = 2 };
 
-  /// The process enters `phase`, running the component `name` (kept to 64 bytes).
+  /// The process enters `phase`, running the component `name` (kept to 64 bytes). Every entry
+  /// counts as progress: the watcher starts the phase's time limit again.
   void enter(Phase phase, const std::string& name) {
     const std::size_t n = std::min(name.size(), sizeof name_ - 1);
     std::memcpy(name_, name.data(), n);
@@ -52,8 +53,6 @@ class UserCodeWatch {
     beats_.fetch_add(1, std::memory_order_relaxed);
     phase_.store(static_cast<int>(phase), std::memory_order_release);
   }
-  /// The component made progress (a command returned): its time limit starts again.
-  void beat() { beats_.fetch_add(1, std::memory_order_relaxed); }
 
   Phase phase() const { return static_cast<Phase>(phase_.load(std::memory_order_acquire)); }
   std::uint64_t beats() const { return beats_.load(std::memory_order_relaxed); }
