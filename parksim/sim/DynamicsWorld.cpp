@@ -20,6 +20,7 @@
 #include "parksim/sim/BulletFrames.h"
 #include "parksim/sim/ChassisContacts.h"
 #include "parksim/sim/CollisionGroups.h"
+#include "parksim/sim/DiscreteMultiBodyWorld.h"
 #include "parksim/sim/FastMultiBodySolver.h"
 #include "parksim/sim/GroundSlab.h"
 #include "parksim/sim/MultiBodyInverseMass.h"
@@ -163,8 +164,8 @@ struct DynamicsWorld::Impl {
     if (model.solver == SolverKernel::kFast) fast.inverse_mass = &inverse_mass;
     solver = model.solver == SolverKernel::kBullet ? std::make_unique<btMultiBodyConstraintSolver>()
                                                    : makeFastMultiBodySolver(fast);
-    world = std::make_unique<btMultiBodyDynamicsWorld>(dispatcher.get(), broadphase.get(),
-                                                       solver.get(), config.get());
+    world =
+        makeDiscreteMultiBodyWorld(dispatcher.get(), broadphase.get(), solver.get(), config.get());
     world->setGravity(btVector3(0, 0, btScalar(-physics.gravity_mps2)));
     world->getSolverInfo().m_numIterations = physics.solver_iterations;
     world->getSolverInfo().m_leastSquaresResidualThreshold =

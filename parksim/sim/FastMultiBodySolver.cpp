@@ -23,15 +23,18 @@ namespace {
 // for DIRECTLY_UPDATE_VELOCITY_DURING_SOLVER_ITERATIONS (set in Bullet's header). Every float
 // operation is Bullet's, in Bullet's order: the dot products accumulate sequentially from
 // zero, and nothing here may be reassociated (no -ffast-math). What differs is only how the
-// work is dispatched: the rows are solved inline, and a frictionless contact's friction pair is
+// work is dispatched: the rows are solved inline, a row of the robot against a fixed body
+// reads its arrays from pointers resolved once per step and leaves out the fixed side's terms,
+// which provably change nothing (see Row), and a frictionless contact's friction pair is
 // skipped (see solveConePair).
 class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
  public:
   explicit FastMultiBodySolver(const FastSolverDef& def) : def_(def) {}
 
  protected:
-  // Bullet's setup, then the one non-zero Jacobian entry of each non-contact row (a joint
-  // motor acts on its own joint's velocity only).
+  // Bullet's setup, then the rows as the iterations take them (resolveRows), with the one
+  // non-zero Jacobian entry of each non-contact row (a joint motor acts on its own joint's
+  // velocity only).
   btScalar solveGroupCacheFriendlySetup(btCollisionObject** bodies, int numBodies,
                                         btPersistentManifold** manifoldPtr, int numManifolds,
                                         btTypedConstraint** constraints, int numConstraints,
@@ -44,11 +47,9 @@ class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
       warm_start_.apply(m_multiBodyNormalContactConstraints, m_multiBodyFrictionContactConstraints,
                         m_multiBodyNonContactConstraints, m_data, m_tmpSolverBodyPool);
     }
-    single_entry_.resize(static_cast<std::size_t>(m_multiBodyNonContactConstraints.size()));
-    for (int j = 0; j < m_multiBodyNonContactConstraints.size(); ++j) {
-      single_entry_[static_cast<std::size_t>(j)] =
-          singleNonZero(m_multiBodyNonContactConstraints[j]);
-    }
+    resolveRows(m_multiBodyNonContactConstraints, non_contact_rows_, true);
+    resolveRows(m_multiBodyNormalContactConstraints, normal_rows_, false);
+    resolveRows(m_multiBodyFrictionContactConstraints, friction_rows_, false);
     return result;
   }
 
@@ -57,113 +58,115 @@ class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
                                 btTypedConstraint** constraints, int numConstraints,
                                 const btContactSolverInfo& infoGlobal,
                                 btIDebugDraw* debugDrawer) override {
-    btScalar leastSquaredResidual = btSequentialImpulseConstraintSolver::solveSingleIteration(
-        iteration, bodies, numBodies, manifoldPtr, numManifolds, constraints, numConstraints,
-        infoGlobal, debugDrawer);
+    // Bullet's rigid-body part: with no rigid-body rows and no typed constraints it loops over
+    // empty pools and returns 0 (and draws no random numbers: there is nothing to shuffle).
+    btScalar leastSquaredResidual = 0.f;
+    if (numConstraints != 0 || m_tmpSolverNonContactConstraintPool.size() != 0 ||
+        m_tmpSolverContactConstraintPool.size() != 0 ||
+        m_tmpSolverContactFrictionConstraintPool.size() != 0 ||
+        m_tmpSolverContactRollingFrictionConstraintPool.size() != 0) {
+      leastSquaredResidual = btSequentialImpulseConstraintSolver::solveSingleIteration(
+          iteration, bodies, numBodies, manifoldPtr, numManifolds, constraints, numConstraints,
+          infoGlobal, debugDrawer);
+    }
+    return def_.pairwise_dots ? iterate<true>(iteration, infoGlobal, leastSquaredResidual)
+                              : iterate<false>(iteration, infoGlobal, leastSquaredResidual);
+  }
 
+  template <bool kPairwise>
+  btScalar iterate(int iteration, const btContactSolverInfo& infoGlobal,
+                   btScalar leastSquaredResidual) {
     btScalar nonContactResidual = 0;
+    const int n = static_cast<int>(non_contact_rows_.size());
     for (int i = 0; i < infoGlobal.m_numNonContactInnerIterations; ++i) {
       nonContactResidual = 0;
-      const int n = m_multiBodyNonContactConstraints.size();
       for (int j = 0; j < n; j++) {
         const int index = iteration & 1 ? j : n - 1 - j;
-        const btMultiBodySolverConstraint& constraint = m_multiBodyNonContactConstraints[index];
-        const btScalar residual =
-            solveRow(constraint, single_entry_[static_cast<std::size_t>(index)]);
+        const Row& row = non_contact_rows_[std::size_t(index)];
+        const btScalar residual = solve<kPairwise>(row);
         nonContactResidual = btMax(nonContactResidual, residual * residual);
-        markMoved(constraint);
+        markMoved(row);
       }
     }
     leastSquaredResidual = btMax(leastSquaredResidual, nonContactResidual);
 
-    for (int j0 = 0; j0 < m_multiBodyNormalContactConstraints.size(); j0++) {
-      const btMultiBodySolverConstraint& constraint = m_multiBodyNormalContactConstraints[j0];
+    for (const Row& row : normal_rows_) {
       btScalar residual = 0.f;
-      if (iteration < infoGlobal.m_numIterations) residual = solveRow(constraint);
+      if (iteration < infoGlobal.m_numIterations) residual = solve<kPairwise>(row);
       leastSquaredResidual = btMax(leastSquaredResidual, residual * residual);
-      markMoved(constraint);
+      markMoved(row);
     }
 
     const bool cone = (infoGlobal.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) &&
                       (infoGlobal.m_solverMode & SOLVER_DISABLE_IMPLICIT_CONE_FRICTION) == 0;
     if (!cone) {
-      for (int j1 = 0; j1 < m_multiBodyFrictionContactConstraints.size(); j1++) {
-        if (iteration < infoGlobal.m_numIterations) {
-          btMultiBodySolverConstraint& frictionConstraint =
-              m_multiBodyFrictionContactConstraints[j1];
-          const btScalar totalImpulse =
-              m_multiBodyNormalContactConstraints[frictionConstraint.m_frictionIndex]
-                  .m_appliedImpulse;
-          if (totalImpulse > btScalar(0)) {
-            frictionConstraint.m_lowerLimit = -(frictionConstraint.m_friction * totalImpulse);
-            frictionConstraint.m_upperLimit = frictionConstraint.m_friction * totalImpulse;
-            const btScalar residual = solveRow(frictionConstraint);
-            leastSquaredResidual = btMax(leastSquaredResidual, residual * residual);
-            markMoved(frictionConstraint);
-          }
-        }
-      }
-      return leastSquaredResidual;
-    }
-
-    // Spinning and torsional friction exist only with rolling or spinning friction, which
-    // parksim does not use; they keep Bullet's own row solvers.
-    for (int j1 = 0; j1 < m_multiBodySpinningFrictionContactConstraints.size(); j1++) {
-      if (iteration < infoGlobal.m_numIterations) {
-        btMultiBodySolverConstraint& frictionConstraint =
-            m_multiBodySpinningFrictionContactConstraints[j1];
+      if (iteration >= infoGlobal.m_numIterations) return leastSquaredResidual;
+      for (const Row& row : friction_rows_) {
+        btMultiBodySolverConstraint& frictionConstraint = *row.c;
         const btScalar totalImpulse =
             m_multiBodyNormalContactConstraints[frictionConstraint.m_frictionIndex]
                 .m_appliedImpulse;
         if (totalImpulse > btScalar(0)) {
-          frictionConstraint.m_lowerLimit = -(frictionConstraint.m_friction * totalImpulse);
-          frictionConstraint.m_upperLimit = frictionConstraint.m_friction * totalImpulse;
-          const btScalar residual = resolveSingleConstraintRowGeneric(frictionConstraint);
+          setLimits(frictionConstraint, totalImpulse);
+          const btScalar residual = solve<kPairwise>(row);
           leastSquaredResidual = btMax(leastSquaredResidual, residual * residual);
-          markMoved(frictionConstraint);
+          markMoved(row);
         }
+      }
+      return leastSquaredResidual;
+    }
+    if (iteration >= infoGlobal.m_numIterations) return leastSquaredResidual;
+
+    // Spinning and torsional friction exist only with rolling or spinning friction, which
+    // parksim does not use; they keep Bullet's own row solvers.
+    for (int j1 = 0; j1 < m_multiBodySpinningFrictionContactConstraints.size(); j1++) {
+      btMultiBodySolverConstraint& frictionConstraint =
+          m_multiBodySpinningFrictionContactConstraints[j1];
+      const btScalar totalImpulse =
+          m_multiBodyNormalContactConstraints[frictionConstraint.m_frictionIndex].m_appliedImpulse;
+      if (totalImpulse > btScalar(0)) {
+        frictionConstraint.m_lowerLimit = -(frictionConstraint.m_friction * totalImpulse);
+        frictionConstraint.m_upperLimit = frictionConstraint.m_friction * totalImpulse;
+        const btScalar residual = resolveSingleConstraintRowGeneric(frictionConstraint);
+        leastSquaredResidual = btMax(leastSquaredResidual, residual * residual);
+        markMoved(frictionConstraint);
       }
     }
     for (int j1 = 0; j1 < m_multiBodyTorsionalFrictionContactConstraints.size(); j1++) {
-      if (iteration < infoGlobal.m_numIterations) {
-        btMultiBodySolverConstraint& frictionConstraint =
-            m_multiBodyTorsionalFrictionContactConstraints[j1];
-        const btScalar totalImpulse =
-            m_multiBodyNormalContactConstraints[frictionConstraint.m_frictionIndex]
-                .m_appliedImpulse;
-        j1++;
-        btMultiBodySolverConstraint& frictionConstraintB =
-            m_multiBodyTorsionalFrictionContactConstraints[j1];
-        if (totalImpulse > btScalar(0) &&
-            frictionConstraint.m_frictionIndex == frictionConstraintB.m_frictionIndex) {
-          setLimits(frictionConstraint, totalImpulse);
-          setLimits(frictionConstraintB, totalImpulse);
-          const btScalar residual =
-              resolveConeFrictionConstraintRows(frictionConstraint, frictionConstraintB);
-          leastSquaredResidual = btMax(leastSquaredResidual, residual * residual);
-          markMoved(frictionConstraint);
-          markMoved(frictionConstraintB);
-        }
+      btMultiBodySolverConstraint& frictionConstraint =
+          m_multiBodyTorsionalFrictionContactConstraints[j1];
+      const btScalar totalImpulse =
+          m_multiBodyNormalContactConstraints[frictionConstraint.m_frictionIndex].m_appliedImpulse;
+      j1++;
+      btMultiBodySolverConstraint& frictionConstraintB =
+          m_multiBodyTorsionalFrictionContactConstraints[j1];
+      if (totalImpulse > btScalar(0) &&
+          frictionConstraint.m_frictionIndex == frictionConstraintB.m_frictionIndex) {
+        setLimits(frictionConstraint, totalImpulse);
+        setLimits(frictionConstraintB, totalImpulse);
+        const btScalar residual =
+            resolveConeFrictionConstraintRows(frictionConstraint, frictionConstraintB);
+        leastSquaredResidual = btMax(leastSquaredResidual, residual * residual);
+        markMoved(frictionConstraint);
+        markMoved(frictionConstraintB);
       }
     }
 
-    for (int j1 = 0; j1 < m_multiBodyFrictionContactConstraints.size(); j1++) {
-      if (iteration < infoGlobal.m_numIterations) {
-        btMultiBodySolverConstraint& frictionConstraint = m_multiBodyFrictionContactConstraints[j1];
-        const btScalar totalImpulse =
-            m_multiBodyNormalContactConstraints[frictionConstraint.m_frictionIndex]
-                .m_appliedImpulse;
-        j1++;
-        btMultiBodySolverConstraint& frictionConstraintB =
-            m_multiBodyFrictionContactConstraints[j1];
-        if (frictionConstraint.m_frictionIndex == frictionConstraintB.m_frictionIndex) {
-          setLimits(frictionConstraint, totalImpulse);
-          setLimits(frictionConstraintB, totalImpulse);
-          const btScalar residual = solveConePair(frictionConstraint, frictionConstraintB);
-          leastSquaredResidual = btMax(leastSquaredResidual, residual * residual);
-          markMoved(frictionConstraintB);
-          markMoved(frictionConstraint);
-        }
+    const std::size_t pairs = friction_rows_.size();
+    for (std::size_t j1 = 0; j1 < pairs; j1 += 2) {
+      const Row& rowA = friction_rows_[j1];
+      btMultiBodySolverConstraint& frictionConstraint = *rowA.c;
+      const btScalar totalImpulse =
+          m_multiBodyNormalContactConstraints[frictionConstraint.m_frictionIndex].m_appliedImpulse;
+      const Row& rowB = friction_rows_[j1 + 1];
+      btMultiBodySolverConstraint& frictionConstraintB = *rowB.c;
+      if (frictionConstraint.m_frictionIndex == frictionConstraintB.m_frictionIndex) {
+        setLimits(frictionConstraint, totalImpulse);
+        setLimits(frictionConstraintB, totalImpulse);
+        const btScalar residual = solveConePair<kPairwise>(rowA, rowB);
+        leastSquaredResidual = btMax(leastSquaredResidual, residual * residual);
+        markMoved(rowB);
+        markMoved(rowA);
       }
     }
     return leastSquaredResidual;
@@ -234,9 +237,55 @@ class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
   // slider's link is fixed). Other sizes take the general loops.
   static constexpr int kRobotDofs = 8;
 
+  // A row as the iterations take it. `jac` not null: a row of one multibody of kRobotDofs
+  // velocities against a fixed body or nothing, its arrays resolved once per step. The fixed
+  // side adds nothing to such a row: a fixed body's velocity change stays +0 (Bullet applies
+  // impulses only to bodies with an original body), so its dot product is +0 and subtracting
+  // +0 x m_jacDiagABInv (finite, >= 0, checked) leaves every value as it was, -0 included.
+  struct Row {
+    btMultiBodySolverConstraint* c = nullptr;
+    const btScalar* jac = nullptr;   // the multibody's Jacobian
+    const btScalar* unit = nullptr;  // its response to a unit impulse
+    btScalar* vel = nullptr;         // the solver's accumulated velocity change
+    btScalar* body_vel = nullptr;    // the multibody's own (see applyToMultiBody)
+    btMultiBody* body = nullptr;
+    int single = -1;  // the only non-zero Jacobian entry on side A (non-contact rows), or -1
+  };
+
   FastSolverDef def_;
   SolverWarmStart warm_start_;
-  std::vector<int> single_entry_;  // per non-contact row: singleNonZero
+  std::vector<Row> non_contact_rows_;
+  std::vector<Row> normal_rows_;
+  std::vector<Row> friction_rows_;
+
+  // The rows of this step, after the setup has sized every array they point into.
+  void resolveRows(btAlignedObjectArray<btMultiBodySolverConstraint>& constraints,
+                   std::vector<Row>& rows, bool non_contact) {
+    rows.resize(static_cast<std::size_t>(constraints.size()));
+    for (int j = 0; j < constraints.size(); ++j) {
+      btMultiBodySolverConstraint& c = constraints[j];
+      Row& row = rows[static_cast<std::size_t>(j)];
+      row = Row{};
+      row.c = &c;
+      if (non_contact) row.single = singleNonZero(c);
+      const bool on_a = c.m_multiBodyA != nullptr && c.m_multiBodyB == nullptr;
+      const bool on_b = c.m_multiBodyB != nullptr && c.m_multiBodyA == nullptr;
+      if (!on_a && !on_b) continue;
+      btMultiBody* body = on_a ? c.m_multiBodyA : c.m_multiBodyB;
+      const int other = on_a ? c.m_solverBodyIdB : c.m_solverBodyIdA;
+      const bool fixed_other = other < 0 || m_tmpSolverBodyPool[other].m_originalBody == nullptr;
+      if (body->getNumDofs() + 6 != kRobotDofs || !fixed_other ||
+          !(c.m_jacDiagABInv >= btScalar(0) && std::isfinite(c.m_jacDiagABInv))) {
+        continue;
+      }
+      const int jac_index = on_a ? c.m_jacAindex : c.m_jacBindex;
+      row.jac = &m_data.m_jacobians[jac_index];
+      row.unit = &m_data.m_deltaVelocitiesUnitImpulse[jac_index];
+      row.vel = &m_data.m_deltaVelocities[on_a ? c.m_deltaVelAindex : c.m_deltaVelBindex];
+      row.body_vel = const_cast<btScalar*>(body->getDeltaVelocityVector());
+      row.body = body;
+    }
+  }
 
   // Index of the only non-zero Jacobian entry of a row on one multibody (side A), or -1.
   int singleNonZero(const btMultiBodySolverConstraint& c) const {
@@ -254,6 +303,14 @@ class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
   static void setLimits(btMultiBodySolverConstraint& c, btScalar totalImpulse) {
     c.m_lowerLimit = -(c.m_friction * totalImpulse);
     c.m_upperLimit = c.m_friction * totalImpulse;
+  }
+
+  static void markMoved(const Row& row) {
+    if (row.body != nullptr) {
+      row.body->setPosUpdated(false);
+    } else {
+      markMoved(*row.c);
+    }
   }
 
   static void markMoved(const btMultiBodySolverConstraint& c) {
@@ -373,7 +430,13 @@ class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
     int ndofB = 0;
     btSolverBody* bodyA = nullptr;
     btSolverBody* bodyB = nullptr;
-    btScalar deltaImpulse = unclampedDelta(c, ndofA, ndofB, bodyA, bodyB, single);
+    const btScalar deltaImpulse = clamp(c, unclampedDelta(c, ndofA, ndofB, bodyA, bodyB, single));
+    apply(c, deltaImpulse, ndofA, ndofB, bodyA, bodyB);
+    return deltaImpulse / c.m_jacDiagABInv;
+  }
+
+  // The row's impulse change kept within its limits, the impulse updated: Bullet's clamp.
+  static btScalar clamp(const btMultiBodySolverConstraint& c, btScalar deltaImpulse) {
     const btScalar sum = btScalar(c.m_appliedImpulse) + deltaImpulse;
     if (sum < c.m_lowerLimit) {
       deltaImpulse = c.m_lowerLimit - c.m_appliedImpulse;
@@ -384,8 +447,33 @@ class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
     } else {
       c.m_appliedImpulse = sum;
     }
-    apply(c, deltaImpulse, ndofA, ndofB, bodyA, bodyB);
-    return deltaImpulse / c.m_jacDiagABInv;
+    return deltaImpulse;
+  }
+
+  // unclampedDelta for a resolved row: the multibody's dot product, the fixed side's +0 left
+  // out (see Row).
+  template <bool kPairwise>
+  static btScalar robotDelta(const Row& row) {
+    const btMultiBodySolverConstraint& c = *row.c;
+    btScalar deltaImpulse = c.m_rhs - btScalar(c.m_appliedImpulse) * c.m_cfm;
+    btScalar deltaVelDotn = 0;
+    if (row.single >= 0) {
+      deltaVelDotn += row.jac[row.single] * row.vel[row.single];
+    } else {
+      deltaVelDotn +=
+          kPairwise ? dotPairwise8(row.jac, row.vel) : dotFixed<kRobotDofs>(row.jac, row.vel);
+    }
+    deltaImpulse -= deltaVelDotn * c.m_jacDiagABInv;
+    return deltaImpulse;
+  }
+
+  // solveRow for a row of either kind.
+  template <bool kPairwise>
+  btScalar solve(const Row& row) {
+    if (row.jac == nullptr) return solveRow(*row.c, row.single);
+    const btScalar deltaImpulse = clamp(*row.c, robotDelta<kPairwise>(row));
+    axpyFixed<kRobotDofs>(row.unit, deltaImpulse, row.vel, row.body_vel);
+    return deltaImpulse / row.c->m_jacDiagABInv;
   }
 
   // resolveConeFrictionConstraintRows, except for a pair whose friction cone has radius zero
@@ -393,21 +481,46 @@ class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
   // and that carries no impulse yet: Bullet clamps both sums into the zero cone, leaving both
   // impulses at zero, applies changes of zero (an atan2, a sin and a cos later) and reports a
   // zero residual. Skipping the pair leaves the same state (up to the sign of an exact zero).
-  btScalar solveConePair(const btMultiBodySolverConstraint& cA,
-                         const btMultiBodySolverConstraint& cB) {
+  // Rows of one resolved multibody take the resolved path; others Bullet's.
+  template <bool kPairwise>
+  btScalar solveConePair(const Row& rowA, const Row& rowB) {
+    const btMultiBodySolverConstraint& cA = *rowA.c;
+    const btMultiBodySolverConstraint& cB = *rowB.c;
     if (cA.m_lowerLimit == btScalar(0) && cB.m_lowerLimit == btScalar(0) &&
         btScalar(cA.m_appliedImpulse) == btScalar(0) &&
         btScalar(cB.m_appliedImpulse) == btScalar(0)) {
       return 0;
     }
+    if (rowA.jac == nullptr || rowB.jac == nullptr) return solveConePair(cA, cB);
+    // Bullet computes B's row first, then A's, both before applying either.
+    btScalar deltaImpulseB = robotDelta<kPairwise>(rowB);
+    btScalar deltaImpulseA = robotDelta<kPairwise>(rowA);
+    clampCone(cA, cB, deltaImpulseA, deltaImpulseB);
+    axpyFixed<kRobotDofs>(rowA.unit, deltaImpulseA, rowA.vel, rowA.body_vel);
+    axpyFixed<kRobotDofs>(rowB.unit, deltaImpulseB, rowB.vel, rowB.body_vel);
+    return deltaImpulseA / cA.m_jacDiagABInv + deltaImpulseB / cB.m_jacDiagABInv;
+  }
+
+  btScalar solveConePair(const btMultiBodySolverConstraint& cA,
+                         const btMultiBodySolverConstraint& cB) {
     int ndofA = 0;
     int ndofB = 0;
     btSolverBody* bodyA = nullptr;
     btSolverBody* bodyB = nullptr;
     // Bullet computes B's row first, then A's, both before applying either.
     btScalar deltaImpulseB = unclampedDelta(cB, ndofA, ndofB, bodyA, bodyB);
-    const btScalar sumB = btScalar(cB.m_appliedImpulse) + deltaImpulseB;
     btScalar deltaImpulseA = unclampedDelta(cA, ndofA, ndofB, bodyA, bodyB);
+    clampCone(cA, cB, deltaImpulseA, deltaImpulseB);
+    apply(cA, deltaImpulseA, ndofA, ndofB, bodyA, bodyB);
+    apply(cB, deltaImpulseB, ndofA, ndofB, bodyA, bodyB);
+    return deltaImpulseA / cA.m_jacDiagABInv + deltaImpulseB / cB.m_jacDiagABInv;
+  }
+
+  // Both impulses kept within the friction cone, as Bullet clamps them.
+  static void clampCone(const btMultiBodySolverConstraint& cA,
+                        const btMultiBodySolverConstraint& cB, btScalar& deltaImpulseA,
+                        btScalar& deltaImpulseB) {
+    const btScalar sumB = btScalar(cB.m_appliedImpulse) + deltaImpulseB;
     const btScalar sumA = btScalar(cA.m_appliedImpulse) + deltaImpulseA;
 
     if (sumA * sumA + sumB * sumB >= cA.m_lowerLimit * cB.m_lowerLimit) {
@@ -436,9 +549,6 @@ class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
       cA.m_appliedImpulse = sumA;
       cB.m_appliedImpulse = sumB;
     }
-    apply(cA, deltaImpulseA, ndofA, ndofB, bodyA, bodyB);
-    apply(cB, deltaImpulseB, ndofA, ndofB, bodyA, bodyB);
-    return deltaImpulseA / cA.m_jacDiagABInv + deltaImpulseB / cB.m_jacDiagABInv;
   }
 };
 

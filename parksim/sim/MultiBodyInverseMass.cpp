@@ -1,5 +1,8 @@
 #include "parksim/sim/MultiBodyInverseMass.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
 
@@ -27,6 +30,44 @@ void turn(const double r[3][3], const double* v, double* out, int n) {
   for (int i = 6; i < n; ++i) out[i] = v[i];
 }
 
+// response = T^T L T jac, L column-major (`finite`: every entry is finite). kN: the size known
+// at compile time (unrolled loops, arrays on the stack), or 0 for `size` with 2 `size` doubles
+// of `scratch`.
+template <int kN>
+void product(int size, const double* local, bool finite, const double (&r)[3][3], double* scratch,
+             const btScalar* jac, btScalar* response) {
+  const int n = kN > 0 ? kN : size;
+  // T J: the base's angular and linear parts turned into the base frame.
+  double fixed[2 * (kN > 0 ? kN : 1)];
+  double* in = kN > 0 ? fixed : scratch;
+  double* out = in + n;
+  for (int b = 0; b < 6; b += 3) {
+    const double x = double(jac[b]), y = double(jac[b + 1]), z = double(jac[b + 2]);
+    for (int i = 0; i < 3; ++i) in[b + i] = r[i][0] * x + r[i][1] * y + r[i][2] * z;
+  }
+  for (int i = 6; i < n; ++i) in[i] = double(jac[i]);
+  // L is kept column by column: out += L[:, j] in[j] for each j runs over contiguous entries,
+  // so the compiler can do it two at a time without reordering any sum. A column whose in[j]
+  // is zero is skipped when L is finite: its products are zeros, and adding a zero leaves every
+  // sum as it was (a sum that starts at +0 never becomes -0 under round-to-nearest, and
+  // +0 + -0 is +0). Contact rows have one or two such entries (the other joints), motor rows
+  // all but one.
+  const double* column = local;
+  for (int i = 0; i < n; ++i) out[i] = 0.0;
+  for (int j = 0; j < n; ++j, column += n) {
+    const double x = in[j];
+    if (x == 0.0 && finite) continue;
+    for (int i = 0; i < n; ++i) out[i] += column[i] * x;
+  }
+  // T^T: back to the world frame.
+  for (int b = 0; b < 6; b += 3) {
+    for (int i = 0; i < 3; ++i) {
+      response[b + i] = btScalar(r[0][i] * out[b] + r[1][i] * out[b + 1] + r[2][i] * out[b + 2]);
+    }
+  }
+  for (int i = 6; i < n; ++i) response[i] = btScalar(out[i]);
+}
+
 }  // namespace
 
 void MultiBodyInverseMass::add(const btMultiBody* body) {
@@ -35,6 +76,7 @@ void MultiBodyInverseMass::add(const btMultiBody* body) {
   entry.body = body;
   entry.n = body->getNumDofs() + 6;
   bodies_.push_back(std::move(entry));
+  last_ = nullptr;  // the vector may have moved
 }
 
 bool MultiBodyInverseMass::covers(const btMultiBody* body) const {
@@ -87,10 +129,13 @@ void MultiBodyInverseMass::measure(btMultiBody& body, Body& entry, btMultiBodyJa
     for (int i = 0; i < n; ++i)
       entry.local[static_cast<std::size_t>(j * n + i)] = turned[static_cast<std::size_t>(i)];
   }
+  entry.finite = std::all_of(entry.local.begin(), entry.local.end(),
+                             [](double v) { return std::isfinite(v); });
 }
 
 void MultiBodyInverseMass::respond(btMultiBody& body, int index, btMultiBodyJacobianData& data) {
-  Body* entry = find(&body);
+  Body* entry = last_ != nullptr && last_->body == &body ? last_ : find(&body);
+  last_ = entry;
   if (entry->local.empty()) measure(body, *entry, data);
   const btQuaternion& q = body.getWorldToBaseRot();
   const double quaternion[4] = {double(q.x()), double(q.y()), double(q.z()), double(q.w())};
@@ -99,34 +144,16 @@ void MultiBodyInverseMass::respond(btMultiBody& body, int index, btMultiBodyJaco
     for (int k = 0; k < 4; ++k) entry->quaternion[k] = quaternion[k];
     worldToBase(body, entry->rotation);
   }
-  const int n = entry->n;
-  const double(&r)[3][3] = entry->rotation;
   const btScalar* jac = &data.m_jacobians[index];
-  // T J: the base's angular and linear parts turned into the base frame.
-  scratch_.resize(static_cast<std::size_t>(2 * n));
-  double* in = scratch_.data();
-  double* out = in + n;
-  for (int b = 0; b < 6; b += 3) {
-    const double x = double(jac[b]), y = double(jac[b + 1]), z = double(jac[b + 2]);
-    for (int i = 0; i < 3; ++i) in[b + i] = r[i][0] * x + r[i][1] * y + r[i][2] * z;
-  }
-  for (int i = 6; i < n; ++i) in[i] = double(jac[i]);
-  // L is kept column by column: out += L[:, j] in[j] for each j runs over contiguous entries,
-  // so the compiler can do it two at a time without reordering any sum.
-  const double* column = entry->local.data();
-  for (int i = 0; i < n; ++i) out[i] = 0.0;
-  for (int j = 0; j < n; ++j, column += n) {
-    const double x = in[j];
-    for (int i = 0; i < n; ++i) out[i] += column[i] * x;
-  }
-  // T^T: back to the world frame.
   btScalar* response = &data.m_deltaVelocitiesUnitImpulse[index];
-  for (int b = 0; b < 6; b += 3) {
-    for (int i = 0; i < 3; ++i) {
-      response[b + i] = btScalar(r[0][i] * out[b] + r[1][i] * out[b + 1] + r[2][i] * out[b + 2]);
-    }
+  if (entry->n == kFixedSize) {
+    product<kFixedSize>(entry->n, entry->local.data(), entry->finite, entry->rotation, nullptr, jac,
+                        response);
+  } else {
+    scratch_.resize(static_cast<std::size_t>(2 * entry->n));
+    product<0>(entry->n, entry->local.data(), entry->finite, entry->rotation, scratch_.data(), jac,
+               response);
   }
-  for (int i = 6; i < n; ++i) response[i] = btScalar(out[i]);
 }
 
 }  // namespace parksim

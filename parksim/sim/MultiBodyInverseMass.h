@@ -45,11 +45,16 @@ class MultiBodyInverseMass {
     // of one step share it.
     double quaternion[4] = {0.0, 0.0, 0.0, 0.0};
     double rotation[3][3] = {};
+    bool finite = false;  // every entry of L is finite
   };
+  // The size of parksim's robot (6 + two wheels): its products are unrolled.
+  static constexpr int kFixedSize = 8;
+
   Body* find(const btMultiBody* body);
   static void measure(btMultiBody& body, Body& entry, btMultiBodyJacobianData& data);
 
   std::vector<Body> bodies_;
+  Body* last_ = nullptr;  // the body of the last call: rows come body by body
   std::vector<double> scratch_;
 };
 
