@@ -132,36 +132,42 @@ class CtorFaultyController : public TrackingController {
   }
 };
 
-template <Fault F>
-PlannerEntry planner(const char* name) {
+// An entry for P, made from a default D with the parameters `bind` declares.
+template <class P, class D>
+PlannerEntry plannerOf(const char* name, const char* description, void (*bind)(D&, ParamSet&)) {
   PlannerInfo info;
   info.name = name;
-  info.description = "fails on purpose";
-  return plannerEntry<FaultyPlanner<F>>(std::move(info), NoDef{}, &noParams);
+  info.description = description;
+  return plannerEntry<P>(std::move(info), D{}, bind);
+}
+
+template <class C, class D>
+ControllerEntry controllerOf(const char* name, const char* description,
+                             void (*bind)(D&, ParamSet&)) {
+  ControllerInfo info;
+  info.name = name;
+  info.description = description;
+  return controllerEntry<C>(std::move(info), D{}, bind);
+}
+
+template <Fault F>
+PlannerEntry planner(const char* name) {
+  return plannerOf<FaultyPlanner<F>>(name, "fails on purpose", &noParams);
 }
 
 template <Fault F>
 ControllerEntry controller(const char* name) {
-  ControllerInfo info;
-  info.name = name;
-  info.description = "fails on purpose";
-  return controllerEntry<FaultyController<F>>(std::move(info), FaultDef{}, &faultParams);
+  return controllerOf<FaultyController<F>>(name, "fails on purpose", &faultParams);
 }
 
 template <Fault F>
 PlannerEntry ctorPlanner(const char* name) {
-  PlannerInfo info;
-  info.name = name;
-  info.description = "fails on purpose as it is made";
-  return plannerEntry<CtorFaultyPlanner<F>>(std::move(info), CtorDef{}, &ctorParams);
+  return plannerOf<CtorFaultyPlanner<F>>(name, "fails on purpose as it is made", &ctorParams);
 }
 
 template <Fault F>
 ControllerEntry ctorController(const char* name) {
-  ControllerInfo info;
-  info.name = name;
-  info.description = "fails on purpose as it is made";
-  return controllerEntry<CtorFaultyController<F>>(std::move(info), CtorDef{}, &ctorParams);
+  return controllerOf<CtorFaultyController<F>>(name, "fails on purpose as it is made", &ctorParams);
 }
 
 // parksim's tracking controller registered through the plugin API: the same commands as the
