@@ -74,7 +74,13 @@ EpisodeSettings resolveSettings(const EpisodeRequest& request) {
   return s;
 }
 
-void checkEpisodeRequest(const EpisodeRequest& request) {
+void checkEpisodeRequest(const EpisodeRequest& request, const UserCodeLimits& limits) {
+  const std::vector<ComponentParams> made = checkEpisodeValues(request);
+  checkComponents(componentsOf(request), made, {limits, {}, request.watch});
+}
+
+std::vector<ComponentParams> checkEpisodeValues(const EpisodeRequest& request) {
+  std::vector<ComponentParams> made;
   const EpisodeSettings settings = resolveSettings(request);
   const Scenario& scenario = request.world->scenario;
   if (request.realisations < 1 || request.realisations > kMaxRealisations) {
@@ -101,12 +107,14 @@ void checkEpisodeRequest(const EpisodeRequest& request) {
     }
   } else {
     checkPlanningLimits(scenario, settings.plan, componentsOf(request).planners);
-    // Unknown parameters and bad values are the input's fault: refused before any work.
-    (void)componentsOf(request).planners.make(settings.plan.planner, settings.plan.planner_params);
+    made.push_back(
+        {ComponentParams::Kind::kPlanner, settings.plan.planner, settings.plan.planner_params});
   }
   if (request.drive && settings.execution.tracking == TrackingMode::kClosed) {
-    (void)componentsOf(request).controllers.make(request.controller, request.controller_params);
+    made.push_back(
+        {ComponentParams::Kind::kController, request.controller, request.controller_params});
   }
+  return made;
 }
 
 bool runsUserCode(const EpisodeRequest& request) {

@@ -4,7 +4,11 @@
 // runEpisodePipeline uses them; a front-end that steps an episode itself (Python's Episode)
 // takes them from here, so it drives and judges exactly as the pipeline would.
 
+#include <vector>
+
 #include "parksim/core/TrackingTolerance.h"
+#include "parksim/core/UserCodeWatch.h"
+#include "parksim/pipeline/ComponentCheck.h"
 #include "parksim/pipeline/EpisodeRequest.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/sim/ExecutionDef.h"
@@ -26,8 +30,14 @@ inline constexpr int kMaxRealisations = 10'000;
 /// step and frame limits, a planning setup within the planning limits, a registered planner and
 /// controller that accept their parameters. Throws Error with one line naming the value (and the
 /// plan file). runEpisodePipeline calls it first; front-ends call it before they create an output
-/// directory, so bad input writes nothing.
-void checkEpisodeRequest(const EpisodeRequest& request);
+/// directory, so bad input writes nothing. The planner and controller are made to check their
+/// parameters (ComponentCheck.h): a plugin's in a watched process with `limits` (the run's), or
+/// under request.watch when one is set.
+void checkEpisodeRequest(const EpisodeRequest& request, const UserCodeLimits& limits = {});
+
+/// checkEpisodeRequest without making the planner and controller: what it would make, for
+/// checkComponents (a sweep makes each distinct one once, not once per episode).
+std::vector<ComponentParams> checkEpisodeValues(const EpisodeRequest& request);
 
 /// The settings `request` runs with. Throws Error on an unknown realism.
 EpisodeSettings resolveSettings(const EpisodeRequest& request);

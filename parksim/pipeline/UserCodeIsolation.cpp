@@ -272,6 +272,15 @@ std::optional<WorkerResult> WatchedWorker::poll() {
   return died(status);
 }
 
+WorkerResult WatchedWorker::wait() {
+  if (!busy_) throw Error("WatchedWorker::wait: the worker runs no task");
+  for (;;) {
+    if (std::optional<WorkerResult> r = poll()) return *r;
+    pollfd p{fd(), POLLIN, 0};  // busy until it answers
+    ::poll(&p, 1, 50);          // wakes for the answer, or to check the limits
+  }
+}
+
 void WatchedWorker::kill(const std::string& why) {
   killed_for_ = why;
   ::kill(-pid_, SIGKILL);
@@ -310,15 +319,10 @@ std::string runIsolated(const std::function<std::string(UserCodeWatch&)>& work,
   WatchedWorker worker([&](std::uint64_t, UserCodeWatch& watch) { return work(watch); }, limits,
                        hooks);
   worker.start(0);
-  for (;;) {
-    if (std::optional<WorkerResult> r = worker.poll()) {
-      if (r->answer) return *r->answer;
-      if (r->user_failure) throw *r->user_failure;
-      throw Error(r->failure);
-    }
-    pollfd p{worker.fd(), POLLIN, 0};  // busy until it answers
-    ::poll(&p, 1, 50);                 // wakes for the answer, or to check the limits
-  }
+  const WorkerResult r = worker.wait();
+  if (r.answer) return *r.answer;
+  if (r.user_failure) throw *r.user_failure;
+  throw Error(r.failure);
 }
 
 }  // namespace parksim

@@ -72,6 +72,8 @@ class WatchedWorker {
   /// Reads what the worker sent and enforces the limits: the result of the task it was given,
   /// once that has ended (answered, failed, or the worker died or was killed).
   std::optional<WorkerResult> poll();
+  /// poll() until the task ends: its result.
+  WorkerResult wait();
 
  private:
   using Phase = UserCodeWatch::Phase;

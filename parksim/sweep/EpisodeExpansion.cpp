@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <set>
 #include <thread>
 
 #include "parksim/core/Error.h"
@@ -60,7 +61,7 @@ void checkOffsets(const SweepSpec& spec, const std::vector<SweepWorld>& worlds) 
 }
 
 // A message about a world read with set: values, at the spec's line of the value it names
-// ("set: PATH=VALUE: ..."), else at the spec with the episode's values.
+// ("set: PATH=VALUE: ..."), else at the spec with the episode's set: values (and sample).
 Error setError(const SweepSpec& spec, const EpisodeParams& p, const SweepWorld& world,
                const std::string& what) {
   for (const SetAxis& axis : spec.set) {
@@ -70,11 +71,23 @@ Error setError(const SweepSpec& spec, const EpisodeParams& p, const SweepWorld& 
     }
   }
   std::string values;
-  for (const auto& [path, value] : p.world_set) {
-    values += (values.empty() ? "" : ", ") + path + "=" + value;
+  for (const SetAxis& axis : spec.set) {
+    const ParamMap& of = axis.target() == SetAxis::Target::kWorld     ? p.world_set
+                         : axis.target() == SetAxis::Target::kPlanner ? p.planner_params
+                                                                      : p.controller_params;
+    const auto it =
+        of.find(axis.target() == SetAxis::Target::kWorld ? axis.path : axis.parameterName());
+    if (it != of.end()) values += (values.empty() ? "" : ", ") + axis.path + "=" + it->second;
   }
   return Error(spec.source_path + ": set: " + values +
                (p.sample ? " (sample " + std::to_string(*p.sample) + ")" : "") + ": " + what);
+}
+
+// A message about an episode that is not a valid request: at the spec, with its set: values.
+Error episodeError(const SweepSpec& spec, const EpisodeParams& p, const SweepWorld& world,
+                   const std::string& what) {
+  if (spec.set.empty()) return Error(spec.source_path + ": " + what);
+  return setError(spec, p, world, what);
 }
 
 // Each grid value of each world-value axis on each world, alone, as `--set PATH=VALUE` checks
@@ -98,41 +111,45 @@ void checkSetValues(const SweepSpec& spec, const std::vector<SweepWorld>& worlds
 
 // Every planner and controller of the axes is registered and takes its own parameters and each
 // value of the set: axes' planner.NAME and controller.NAME, each refused at its line in the
-// spec (the combinations are checked again as whole requests when they expand).
-template <class Registry>
-void checkChoices(const SweepSpec& spec, const Registry& registry,
-                  const std::vector<ComponentChoice>& choices, SetAxis::Target target) {
+// spec; each made once, a plugin's in one watched process (ComponentCheck.h). What is made is
+// added to `made`: the combinations of several axes are made when the episodes have expanded.
+void checkComponents(const SweepSpec& spec, const Components& components,
+                     const ComponentCheckDef& def, std::set<ComponentParams>& made) {
   const auto at = [&](int line, const std::string& what) {
     return Error(spec.source_path + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " +
                  what);
   };
-  for (const ComponentChoice& c : choices) {
-    try {
-      (void)registry.make(c.name, c.params);
-    } catch (const Error& e) {
-      throw at(c.line, (c.path.empty() ? std::string() : c.path + ": ") + e.what());
-    }
-    for (const SetAxis& axis : spec.set) {
-      if (axis.target() != target) continue;
-      if (c.params.count(axis.parameterName()) > 0) {
-        throw at(axis.line, axis.path + ": " + c.name + "'s entry gives it already");
-      }
-      for (const std::string& value : axis.values) {
-        ParamMap params = c.params;
-        params[axis.parameterName()] = value;
-        try {
-          (void)registry.make(c.name, params);
-        } catch (const Error& e) {
-          throw at(axis.line, axis.path + "=" + value + ": " + e.what());
+  std::vector<ComponentParams> list;
+  std::vector<std::pair<int, std::string>> where;  // the spec's line and what it names
+  const auto add = [&](ComponentParams c, int line, std::string prefix) {
+    if (!made.insert(c).second) return;
+    list.push_back(std::move(c));
+    where.emplace_back(line, std::move(prefix));
+  };
+  const auto choices = [&](const std::vector<ComponentChoice>& entries, ComponentParams::Kind kind,
+                           SetAxis::Target target) {
+    for (const ComponentChoice& c : entries) {
+      add({kind, c.name, c.params}, c.line, c.path.empty() ? std::string() : c.path + ": ");
+      for (const SetAxis& axis : spec.set) {
+        if (axis.target() != target) continue;
+        if (c.params.count(axis.parameterName()) > 0) {
+          throw at(axis.line, axis.path + ": " + c.name + "'s entry gives it already");
+        }
+        for (const std::string& value : axis.values) {
+          ParamMap params = c.params;
+          params[axis.parameterName()] = value;
+          add({kind, c.name, std::move(params)}, axis.line, axis.path + "=" + value + ": ");
         }
       }
     }
+  };
+  choices(spec.planners, ComponentParams::Kind::kPlanner, SetAxis::Target::kPlanner);
+  choices(spec.controllers, ComponentParams::Kind::kController, SetAxis::Target::kController);
+  if (const std::optional<ComponentRefusal> refused =
+          firstRefusedComponent(components, list, def)) {
+    const auto& [line, prefix] = where[refused->index];
+    throw at(line, prefix + refused->message);
   }
-}
-
-void checkComponents(const SweepSpec& spec, const Components& components) {
-  checkChoices(spec, components.planners, spec.planners, SetAxis::Target::kPlanner);
-  checkChoices(spec, components.controllers, spec.controllers, SetAxis::Target::kController);
 }
 
 // The set: part of an episode: world values, planner and controller parameters, the sample.
@@ -187,13 +204,21 @@ std::vector<SetCombination> setCombinations(const SweepSpec& spec) {
 
 namespace {
 
-// The episodes of one world and one set: combination, each checked as a request. The
-// combination's world is read once for all of them (from `own`, this thread's copy of the
-// file) and then let go: a sampled spec has one per sample.
+// What the episodes of one task make (a planner, a controller, with parameters), each with the
+// first episode that makes it: checked once for all, on the calling thread, when every task
+// has expanded.
+using FirstUses = std::vector<std::pair<ComponentParams, EpisodeParams>>;
+
+// The episodes of one world and one set: combination, each checked as a request (but for the
+// making of its components, added to `uses`). The combination's world is read once for all of
+// them (from `own`, this thread's copy of the file) and then let go: a sampled spec has one per
+// sample.
 std::vector<SweepEpisode> expandCombination(const SweepSpec& spec, const SweepWorld& file,
                                             const std::string& world_file,
                                             const SetCombination& set, const WorldFile& own,
-                                            const std::shared_ptr<const Components>& components) {
+                                            const std::shared_ptr<const Components>& components,
+                                            FirstUses& uses) {
+  std::set<ComponentParams> used;
   EpisodeParams base;
   base.world = file->world.scenario.name;
   base.world_file = world_file;
@@ -239,19 +264,41 @@ std::vector<SweepEpisode> expandCombination(const SweepSpec& spec, const SweepWo
                           // Every combination is checked before anything runs: a bad offset
                           // stops the sweep before it writes anything.
                           try {
-                            checkEpisodeRequest(
-                                episodeRequest(p, world, spec.tolerance, components));
-                          } catch (const Error& err) {
-                            if (p.world_set.empty()) {
-                              throw Error(spec.source_path + ": " + err.what());
+                            for (ComponentParams& c : checkEpisodeValues(
+                                     episodeRequest(p, world, spec.tolerance, components))) {
+                              if (used.insert(c).second) uses.emplace_back(std::move(c), p);
                             }
-                            throw setError(spec, p, file, err.what());
+                          } catch (const Error& err) {
+                            throw episodeError(spec, p, file, err.what());
                           }
                           std::string id = episodeId(p);
                           out.push_back(
                               {std::move(p), std::move(id), file, components, &spec.tolerance});
                         }
   return out;
+}
+
+// The planners and controllers the episodes make that checkComponents did not (several axes'
+// values together, sampled values), each once, in the order of the episodes' tasks: a refusal
+// is reported as the first episode that makes it would report it.
+void checkUses(const SweepSpec& spec, const std::vector<SweepWorld>& worlds,
+               const Components& components, const ComponentCheckDef& check,
+               const std::vector<FirstUses>& uses, std::size_t combinations,
+               std::set<ComponentParams>& made) {
+  std::vector<ComponentParams> list;
+  std::vector<std::pair<const EpisodeParams*, std::size_t>> first;  // episode, world index
+  for (std::size_t t = 0; t < uses.size(); ++t) {
+    for (const auto& [c, p] : uses[t]) {
+      if (!made.insert(c).second) continue;
+      list.push_back(c);
+      first.emplace_back(&p, t / combinations);
+    }
+  }
+  if (const std::optional<ComponentRefusal> refused =
+          firstRefusedComponent(components, list, check)) {
+    const auto& [p, w] = first[refused->index];
+    throw episodeError(spec, *p, worlds[w], refused->message);
+  }
 }
 
 }  // namespace
@@ -283,15 +330,18 @@ std::shared_ptr<const Components> loadSweepComponents(const SweepSpec& spec,
 
 std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
                                          const std::vector<SweepWorld>& worlds,
-                                         const std::shared_ptr<const Components>& components) {
+                                         const std::shared_ptr<const Components>& components,
+                                         const ComponentCheckDef& check) {
   checkOffsets(spec, worlds);
   checkSetValues(spec, worlds);
-  checkComponents(spec, *components);
+  std::set<ComponentParams> made;
+  checkComponents(spec, *components, check, made);
   const std::vector<SetCombination> combinations = setCombinations(spec);
   // World x combination, expanded on every core: each combination with world values reads its
   // world again (10,000 samples of the study's lot: 10,000 reads).
   const std::size_t tasks = worlds.size() * combinations.size();
   std::vector<std::vector<SweepEpisode>> parts(tasks);
+  std::vector<FirstUses> uses(tasks);
   std::atomic<std::size_t> next{0};
   std::atomic<std::size_t> first_error{tasks};
   std::vector<std::exception_ptr> errors(tasks);
@@ -306,8 +356,9 @@ std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
         own[w] = std::make_unique<WorldFile>(worlds[w]->file);
       }
       try {
-        parts[t] = expandCombination(spec, worlds[w], spec.world_files.at(w),
-                                     combinations[t % combinations.size()], *own[w], components);
+        parts[t] =
+            expandCombination(spec, worlds[w], spec.world_files.at(w),
+                              combinations[t % combinations.size()], *own[w], components, uses[t]);
       } catch (...) {
         errors[t] = std::current_exception();
         std::size_t seen = first_error.load();
@@ -324,6 +375,7 @@ std::vector<SweepEpisode> expandEpisodes(const SweepSpec& spec,
   for (std::thread& t : pool) t.join();
   // The first error in the serial order, whichever thread met it first.
   if (first_error.load() < tasks) std::rethrow_exception(errors[first_error.load()]);
+  checkUses(spec, worlds, *components, check, uses, combinations.size(), made);
   std::vector<SweepEpisode> out;
   std::size_t total = 0;
   for (const auto& part : parts) total += part.size();

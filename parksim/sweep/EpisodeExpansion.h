@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "parksim/pipeline/ComponentCheck.h"
 #include "parksim/plugin/Components.h"
 #include "parksim/scenario/World.h"
 #include "parksim/sweep/EpisodeParams.h"
@@ -51,9 +52,12 @@ struct SweepEpisode {
 /// Every combination, sorted by id. `worlds` must be loadSweepWorlds(spec); the spec must
 /// outlive the result. Throws Error (prefixed with the spec's file, and its line where one
 /// entry is to blame) when a planner or controller is unknown or refuses its parameters, a
-/// combination is not a valid request, or two combinations share an id.
+/// combination is not a valid request, or two combinations share an id. Each distinct planner
+/// and controller with parameters is made once to check them, a plugin's in a watched process
+/// with `check`'s limits (ComponentCheck.h), forked from the calling thread.
 std::vector<SweepEpisode> expandEpisodes(
     const SweepSpec& spec, const std::vector<SweepWorld>& worlds,
-    const std::shared_ptr<const Components>& components = builtInComponents());
+    const std::shared_ptr<const Components>& components = builtInComponents(),
+    const ComponentCheckDef& check = {});
 
 }  // namespace parksim

@@ -10,12 +10,13 @@
 
 namespace parksim {
 
-SweepPlan prepareSweep(const std::string& spec_path, const Components* extra) {
+SweepPlan prepareSweep(const std::string& spec_path, const Components* extra,
+                       const ComponentCheckDef& check) {
   SweepPlan plan;
   plan.spec = loadSweepSpec(spec_path);
   plan.worlds = loadSweepWorlds(plan.spec);
   plan.components = loadSweepComponents(plan.spec, extra);
-  plan.episodes = expandEpisodes(plan.spec, plan.worlds, plan.components);
+  plan.episodes = expandEpisodes(plan.spec, plan.worlds, plan.components, check);
   return plan;
 }
 

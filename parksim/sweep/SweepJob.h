@@ -28,8 +28,11 @@ struct SweepPlan {
 
 /// Reads and checks everything (nothing is written). `extra`: planners and controllers a
 /// front-end adds to the spec's plugins' (it must outlive the plan's episodes); their names
-/// must not clash. Throws Error naming the spec's file and line.
-SweepPlan prepareSweep(const std::string& spec_path, const Components* extra = nullptr);
+/// must not clash. `check`: where a plugin's planners and controllers are made to check their
+/// parameters (the run's user code limits; expandEpisodes). Throws Error naming the spec's file
+/// and line.
+SweepPlan prepareSweep(const std::string& spec_path, const Components* extra = nullptr,
+                       const ComponentCheckDef& check = {});
 
 /// The expectations a resumed table must meet: the worlds' contents now, this build and the
 /// same plugins (`provenance`, SweepRunnerDef's), the spec's set: columns.

@@ -23,7 +23,6 @@ py::dict sweep(const std::string& spec, const std::string& out, const py::dict& 
   for (const auto& [name, obj] : controllers) {
     addPythonController(*extra, py::reinterpret_borrow<py::object>(obj), py::str(name));
   }
-  const SweepPlan plan = prepareSweep(spec, extra.get());
   SweepRunnerDef def;
   def.workers = workers > 0 ? workers : defaultSweepWorkers();
   def.limits.planner_s = planner_timeout_s;
@@ -33,6 +32,8 @@ py::dict sweep(const std::string& spec, const std::string& out, const py::dict& 
   def.fork_hooks.before = [] { PyOS_BeforeFork(); };
   def.fork_hooks.after_in_parent = [] { PyOS_AfterFork_Parent(); };
   def.fork_hooks.after_in_child = [] { PyOS_AfterFork_Child(); };
+  // A plugin's constructors are made to check their parameters in a process forked the same way.
+  const SweepPlan plan = prepareSweep(spec, extra.get(), {def.limits, def.fork_hooks, nullptr});
   // Ctrl-C ends the sweep at the next row, as it ends `parksim sweep` (the rows written stay;
   // the running episodes' workers are killed).
   const auto interruptible = [](const SweepProgress&) {

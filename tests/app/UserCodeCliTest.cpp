@@ -1,6 +1,7 @@
 // A user's plan, planner and controller through the command line (docs/your-code.md): a plan
 // that collides or breaks a limit is never driven (exit 5), a plugin's component that crashes or
-// hangs is a verdict (exit 6) with nothing written, and bad plugins are one-line input errors.
+// hangs is a verdict (exit 6) with nothing written, and bad plugins, and a plugin's constructor
+// that crashes or hangs as its parameters are checked, are one-line input errors.
 
 #include <filesystem>
 #include <fstream>
@@ -16,9 +17,9 @@ namespace parksim {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::CliRun;
 using ::testing::HasSubstr;
 using ::testing::MatchesRegex;
-using testing::CliRun;
 
 class UserCodeCli : public ::testing::Test {
  protected:
@@ -80,9 +81,9 @@ TEST_F(UserCodeCli, CrashesAndHangsOfPluginCodeAreVerdictsWithNothingWritten) {
         " --planner-timeout 0.5 --controller-timeout 0.5 --out " + out("crash"));
     EXPECT_EQ(r.exit_code, 6) << r.out;
     const bool planner = args.find("planner") != std::string::npos;
-    EXPECT_THAT(r.out, HasSubstr(std::string("parksim run: ") +
-                                 (planner ? "planner_error: planner " : "controller_error: "
-                                                                        "controller ")));
+    EXPECT_THAT(r.out, HasSubstr(std::string("parksim run: ") + (planner ? "planner_error: planner "
+                                                                         : "controller_error: "
+                                                                           "controller ")));
     EXPECT_FALSE(fs::exists(dir_ / "crash"));
   }
   // One that throws is caught in the process: its record up to the failure is kept.
@@ -92,6 +93,42 @@ TEST_F(UserCodeCli, CrashesAndHangsOfPluginCodeAreVerdictsWithNothingWritten) {
   EXPECT_THAT(r.out, HasSubstr("controller_error: controller throwing-controller threw in command "
                                "at t = 1.000 s: lost track"));
   EXPECT_TRUE(fs::exists(dir_ / "throw" / "executed.csv"));
+}
+
+// Checking the parameters makes the component: a plugin's constructor that crashes or hangs is
+// bad input named in one line (exit 2), not the end of parksim, and nothing is written.
+TEST_F(UserCodeCli, ConstructorsThatCrashOrHangAreOneLineErrorsWithNothingWritten) {
+  struct Case {
+    const char* args;
+    const char* message;
+  };
+  for (const Case& c :
+       {Case{" --planner segfault-ctor-planner",
+             "planner segfault-ctor-planner crashed (SIGSEGV, Segmentation fault)"},
+        Case{" --controller segfault-ctor-controller",
+             "controller segfault-ctor-controller crashed (SIGSEGV, Segmentation fault)"},
+        Case{" --planner hanging-ctor-planner",
+             "planner hanging-ctor-planner ran past its time limit of 0.5 s (its process was "
+             "killed)"},
+        Case{" --controller hanging-ctor-controller",
+             "controller hanging-ctor-controller gave no command within its time limit of 0.5 s "
+             "(its process was killed)"}}) {
+    SCOPED_TRACE(c.args);
+    const CliRun r =
+        testing::runParksim("run " + world("head_in") + " --plugin " + faulty() + c.args +
+                            " --planner-timeout 0.5 --controller-timeout 0.5 --out " + out("ctor"));
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    EXPECT_EQ(r.out, std::string("parksim: error: ") + c.message +
+                         " while being made to check its parameters\n");
+    EXPECT_FALSE(fs::exists(dir_ / "ctor"));
+  }
+  // Made without its fault, the same component runs (its plan goes through the walls).
+  const CliRun r = testing::runParksim("run " + world("head_in") + " --plugin " + faulty() +
+                                       " --controller segfault-ctor-controller --controller-param "
+                                       "fault_above=1 --out " +
+                                       out("sound"));
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_TRUE(fs::exists(dir_ / "sound" / "executed.csv"));
 }
 
 TEST_F(UserCodeCli, PluginsAreListedAndSelectedByName) {

@@ -139,7 +139,7 @@ TEST(UserCodeIsolation, ParksimsOwnFailuresStayErrors) {
 }
 
 // A whole episode of the faulty plugin's components, in a child: the crash and the hang are the
-// controller's and the planner's.
+// controller's and the planner's, in their code or in their constructors.
 TEST(UserCodeIsolation, EpisodesWithCrashingOrHangingComponentsGiveVerdicts) {
   const auto components =
       loadComponents({testing::binaryDir() + "/tests/plugin/libparksim_faulty_plugin.so"});
@@ -158,7 +158,13 @@ TEST(UserCodeIsolation, EpisodesWithCrashingOrHangingComponentsGiveVerdicts) {
         Case{"segfault-planner", "tracking",
              "planner segfault-planner crashed (SIGSEGV, Segmentation fault)"},
         Case{"hanging-planner", "tracking",
-             "planner hanging-planner ran past its time limit of 0.3 s"}}) {
+             "planner hanging-planner ran past its time limit of 0.3 s"},
+        // Constructors too: in a watched process the check makes them there, under the watch.
+        Case{"segfault-ctor-planner", "tracking",
+             "planner segfault-ctor-planner crashed (SIGSEGV, Segmentation fault)"},
+        Case{
+            "time-a-star", "hanging-ctor-controller",
+            "controller hanging-ctor-controller gave no command within its time limit of 0.3 s"}}) {
     SCOPED_TRACE(std::string(c.planner) + " " + c.controller);
     EpisodeRequest r;
     r.world = world;

@@ -1,6 +1,7 @@
 // A plugin whose planners and controllers fail in every way user code does, for the tests of
-// loading (PluginLoaderTest.cpp) and of user code as a verdict (tests/pipeline/UserCodeTest.cpp,
-// tests/sweep): each component is named for its fault.
+// loading (PluginLoaderTest.cpp), of user code as a verdict (tests/pipeline/UserCodeTest.cpp,
+// tests/sweep) and of the check that makes a component to check its parameters
+// (tests/pipeline/ComponentCheckTest.cpp): each component is named for its fault.
 
 #include <cmath>
 #include <csignal>
@@ -91,20 +92,82 @@ class FaultyController : public Controller {
   bool faulty_ = true;
 };
 
+// A constructor that crashes or hangs when `value` exceeds `fault_above` (always, by default): a
+// sweep may give values on both sides, in entries, set: lists or samples.
+struct CtorDef {
+  double value = 0.0;         ///< of no other use
+  double fault_above = -1.0;  ///< the constructor crashes or hangs when value exceeds this
+};
+void ctorParams(CtorDef& d, ParamSet& s) {
+  s.add("value", &d.value, "of no other use", -1e9, 1e9);
+  s.add("fault_above", &d.fault_above, "the constructor crashes or hangs when value exceeds this",
+        -1e9, 1e9);
+}
+
 template <Fault F>
-PlannerEntry planner(const char* name) {
+void constructorFault(const CtorDef& def) {
+  if (!(def.value > def.fault_above)) return;
+  if constexpr (F == Fault::kSegfault) std::raise(SIGSEGV);
+  if constexpr (F == Fault::kHangs) {
+    for (volatile bool forever = true; forever;) {
+    }
+  }
+}
+
+// Made, it plans as through-walls does: its fault is in its constructor alone.
+template <Fault F>
+class CtorFaultyPlanner : public FaultyPlanner<Fault::kThroughWalls> {
+ public:
+  explicit CtorFaultyPlanner(const CtorDef& def) : FaultyPlanner(NoDef{}) {
+    constructorFault<F>(def);
+  }
+};
+
+// Made, it drives as parksim's tracking controller does.
+template <Fault F>
+class CtorFaultyController : public TrackingController {
+ public:
+  explicit CtorFaultyController(const CtorDef& def) : TrackingController(TrackingDef{}) {
+    constructorFault<F>(def);
+  }
+};
+
+// An entry for P, made from a default D with the parameters `bind` declares.
+template <class P, class D>
+PlannerEntry plannerOf(const char* name, const char* description, void (*bind)(D&, ParamSet&)) {
   PlannerInfo info;
   info.name = name;
-  info.description = "fails on purpose";
-  return plannerEntry<FaultyPlanner<F>>(std::move(info), NoDef{}, &noParams);
+  info.description = description;
+  return plannerEntry<P>(std::move(info), D{}, bind);
+}
+
+template <class C, class D>
+ControllerEntry controllerOf(const char* name, const char* description,
+                             void (*bind)(D&, ParamSet&)) {
+  ControllerInfo info;
+  info.name = name;
+  info.description = description;
+  return controllerEntry<C>(std::move(info), D{}, bind);
+}
+
+template <Fault F>
+PlannerEntry planner(const char* name) {
+  return plannerOf<FaultyPlanner<F>>(name, "fails on purpose", &noParams);
 }
 
 template <Fault F>
 ControllerEntry controller(const char* name) {
-  ControllerInfo info;
-  info.name = name;
-  info.description = "fails on purpose";
-  return controllerEntry<FaultyController<F>>(std::move(info), FaultDef{}, &faultParams);
+  return controllerOf<FaultyController<F>>(name, "fails on purpose", &faultParams);
+}
+
+template <Fault F>
+PlannerEntry ctorPlanner(const char* name) {
+  return plannerOf<CtorFaultyPlanner<F>>(name, "fails on purpose as it is made", &ctorParams);
+}
+
+template <Fault F>
+ControllerEntry ctorController(const char* name) {
+  return controllerOf<CtorFaultyController<F>>(name, "fails on purpose as it is made", &ctorParams);
 }
 
 // parksim's tracking controller registered through the plugin API: the same commands as the
@@ -129,6 +192,10 @@ void registerFaults(PluginRegistrar& r) {
   r.addController(controller<Fault::kTooFast>("too-fast-controller"));
   r.addController(controller<Fault::kSegfault>("segfault-controller"));
   r.addController(controller<Fault::kHangs>("hanging-controller"));
+  r.addPlanner(ctorPlanner<Fault::kSegfault>("segfault-ctor-planner"));
+  r.addPlanner(ctorPlanner<Fault::kHangs>("hanging-ctor-planner"));
+  r.addController(ctorController<Fault::kSegfault>("segfault-ctor-controller"));
+  r.addController(ctorController<Fault::kHangs>("hanging-ctor-controller"));
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <thread>
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -198,6 +199,59 @@ TEST(SweepUserCode, APlannerInAnotherLanguageSweepsAsACommand) {
   EXPECT_EQ(bad.exit_code, 2) << bad.out;
   EXPECT_NE(bad.out.find("bad.yaml:5: planners[0]: "), std::string::npos) << bad.out;
   EXPECT_FALSE(fs::exists(dir + "/bad"));
+}
+
+// The spec's components are made to check their parameters: a plugin's constructor that crashes
+// for some values, or hangs, is refused at the spec's line (or with the sampled values that
+// crash it), before anything is written.
+TEST(SweepUserCode, ConstructorsThatCrashOrHangAreRefusedAtTheirLine) {
+  const std::string dir = scratchDir();
+  const std::string head = "format: parksim-sweep/1\nname: ctor\nworlds: [" + world("head_in") +
+                           "]\nplugins: [" + faulty() + "]\n";
+  struct Case {
+    std::string body;
+    std::string message;  // what follows the spec's path; "..." stands for a sampled value
+  };
+  // segfault-ctor-planner crashes when its `value` exceeds `fault_above`.
+  const std::string crash = "planner segfault-ctor-planner crashed (SIGSEGV, Segmentation fault)";
+  for (const Case& c :
+       {Case{"planners:\n  - {name: segfault-ctor-planner, params: {value: 0.2, fault_above: 0.5}}"
+             "\n  - {name: segfault-ctor-planner, params: {value: 0.8, fault_above: 0.5}}\n",
+             "spec.yaml:7: planners[1]: " + crash},
+        Case{"planners: [{name: segfault-ctor-planner, params: {fault_above: 0.5}}]\nset:\n"
+             "  planner.value: [0.2, 0.8]\n",
+             "spec.yaml:7: planner.value=0.8: " + crash},
+        // Drawn values are made as the episodes expand: the first episode's that crashes.
+        Case{"planners: [{name: segfault-ctor-planner, params: {fault_above: 0.5}}]\nset:\n"
+             "  planner.value: {uniform: [0, 1]}\nsamples: {count: 20, seed: 1}\n",
+             "spec.yaml: set: planner.value=...: " + crash},
+        Case{"controllers: [hanging-ctor-controller]\n",
+             "spec.yaml:5: controllers[0]: controller hanging-ctor-controller gave no command "
+             "within its time limit of 0.5 s (its process was killed)"}}) {
+    SCOPED_TRACE(c.body);
+    writeText(dir + "/spec.yaml", head + c.body);
+    const auto r =
+        runParksim("sweep " + dir + "/spec.yaml --controller-timeout 0.5 --out " + dir + "/out");
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    const std::string expected =
+        "parksim: error: " + dir + "/" + c.message + " while being made to check its parameters\n";
+    const std::size_t dots = expected.find("...");
+    if (dots == std::string::npos) {
+      EXPECT_EQ(r.out, expected);
+    } else {
+      // The value drawn (above 0.5) and its sample, e.g. "0.7736 (sample 3)".
+      const std::string before = expected.substr(0, dots);
+      const std::string after = expected.substr(dots + 3);
+      ASSERT_EQ(r.out.rfind(before, 0), 0u) << r.out;
+      ASSERT_GE(r.out.size(), before.size() + after.size()) << r.out;
+      EXPECT_EQ(r.out.substr(r.out.size() - after.size()), after) << r.out;
+      const std::string drawn =
+          r.out.substr(before.size(), r.out.size() - before.size() - after.size());
+      EXPECT_THAT(drawn, ::testing::MatchesRegex("0\\.[0-9]+ \\(sample [0-9]+\\)"));
+      EXPECT_GT(std::stod(drawn), 0.5);
+    }
+    EXPECT_FALSE(fs::exists(dir + "/out"));
+  }
 }
 
 }  // namespace

@@ -1,0 +1,108 @@
+#include "parksim/pipeline/ComponentCheck.h"
+
+#include <memory>
+
+#include "parksim/core/Error.h"
+
+namespace parksim {
+
+namespace {
+
+using Kind = ComponentParams::Kind;
+
+const char* kindName(Kind kind) { return kind == Kind::kPlanner ? "planner" : "controller"; }
+
+UserCodeWatch::Phase phaseOf(Kind kind) {
+  return kind == Kind::kPlanner ? UserCodeWatch::Phase::kPlanner
+                                : UserCodeWatch::Phase::kController;
+}
+
+// Whose code its constructor is: a plugin's, run where a crash cannot end parksim; parksim's
+// own or a command's; or a Python object's (user code, but made here).
+struct Origin {
+  bool plugin = false;
+  bool trusted = false;
+};
+
+template <class Info>
+Origin originOf(const Info& info) {
+  return {!info.plugin.empty() && !info.own_process, info.trusted || info.own_process};
+}
+
+// Throws the registry's Error on an unknown name (before anything is made).
+Origin originOf(const Components& components, const ComponentParams& c) {
+  return c.kind == Kind::kPlanner ? originOf(components.planners.find(c.name).info)
+                                  : originOf(components.controllers.find(c.name).info);
+}
+
+void make(const Components& components, const ComponentParams& c) {
+  if (c.kind == Kind::kPlanner) {
+    (void)components.planners.make(c.name, c.params);
+  } else {
+    (void)components.controllers.make(c.name, c.params);
+  }
+}
+
+// A worker's answer: '+' made, or '-' and the one-line error.
+constexpr char kMade = '+';
+constexpr char kRefused = '-';
+
+}  // namespace
+
+std::optional<ComponentRefusal> firstRefusedComponent(const Components& components,
+                                                      const std::vector<ComponentParams>& list,
+                                                      const ComponentCheckDef& def) {
+  // A plugin's constructors, task i making list[i]: one process for the list, not one each.
+  const WatchedWorker::Work work = [&](std::uint64_t task, UserCodeWatch& watch) -> std::string {
+    const ComponentParams& c = list.at(task);
+    watch.enter(phaseOf(c.kind), c.name);
+    try {
+      make(components, c);
+    } catch (const Error& e) {
+      return kRefused + std::string(e.what());
+    } catch (const std::exception& e) {
+      return kRefused + std::string(kindName(c.kind)) + " " + c.name +
+             " threw while being made: " + e.what();
+    }
+    watch.enter(UserCodeWatch::Phase::kParksim, "");
+    return std::string(1, kMade);
+  };
+  std::unique_ptr<WatchedWorker> worker;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const ComponentParams& c = list[i];
+    try {
+      const Origin origin = originOf(components, c);
+      if (!origin.plugin || def.watch != nullptr) {
+        UserCodeWatch* watch = origin.trusted ? nullptr : def.watch;
+        if (watch != nullptr) watch->enter(phaseOf(c.kind), c.name);
+        make(components, c);
+        if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kParksim, "");
+        continue;
+      }
+    } catch (const Error& e) {
+      return ComponentRefusal{i, e.what()};
+    }
+    if (!worker) worker = std::make_unique<WatchedWorker>(work, def.limits, def.hooks);
+    worker->start(i);
+    const WorkerResult r = worker->wait();
+    if (r.answer && r.answer->size() >= 1 && r.answer->front() == kMade) continue;
+    if (r.answer) return ComponentRefusal{i, r.answer->substr(1)};
+    if (r.user_failure) {
+      return ComponentRefusal{
+          i, std::string(r.user_failure->what()) + " while being made to check its parameters"};
+    }
+    return ComponentRefusal{i, std::string(kindName(c.kind)) + " " + c.name +
+                                   ", made to check its parameters: " + r.failure};
+  }
+  return std::nullopt;
+}
+
+void checkComponents(const Components& components, const std::vector<ComponentParams>& list,
+                     const ComponentCheckDef& def) {
+  if (const std::optional<ComponentRefusal> refused =
+          firstRefusedComponent(components, list, def)) {
+    throw Error(refused->message);
+  }
+}
+
+}  // namespace parksim

@@ -1,0 +1,71 @@
+#pragma once
+// Checking a planner's or a controller's parameters means making one with them and dropping
+// it: its factory applies them (an unknown name or a bad value throws) and its constructor may
+// refuse them. A plugin's constructor is user code: it is made in a watched process
+// (UserCodeIsolation.h), so a crash or a hang there is a one-line error naming it, not the end
+// of parksim. parksim's own components, commands (separate programs already) and Python objects
+// (their constructors run the interpreter, which is not forked without its hooks) are made in
+// the calling process; so is every component when the caller already runs under a watch (an
+// episode's worker process), which then names the component a constructor crashes or hangs in.
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "parksim/core/ParamMap.h"
+#include "parksim/core/UserCodeWatch.h"
+#include "parksim/pipeline/UserCodeIsolation.h"
+#include "parksim/plugin/Components.h"
+
+namespace parksim {
+
+/// A planner or a controller, with the parameters it is to be made with.
+struct ComponentParams {
+  enum class Kind { kPlanner, kController };
+  Kind kind = Kind::kPlanner;
+  std::string name;
+  ParamMap params;
+
+  bool operator<(const ComponentParams& o) const {
+    return std::tie(kind, name, params) < std::tie(o.kind, o.name, o.params);
+  }
+  bool operator==(const ComponentParams& o) const {
+    return std::tie(kind, name, params) == std::tie(o.kind, o.name, o.params);
+  }
+};
+
+/// Where a plugin's components are made.
+struct ComponentCheckDef {
+  /// The time a constructor may take: limits.planner_s for a planner's, limits.controller_tick_s
+  /// for a controller's (the user code limits of the run the check is for).
+  UserCodeLimits limits;
+  /// Called around the fork (an embedding interpreter's).
+  ForkHooks hooks;
+  /// Set when the caller already runs under a watch: every component is made here, the watch
+  /// told when a user's constructor runs. Not owned.
+  UserCodeWatch* watch = nullptr;
+};
+
+/// The first component that cannot be made: its index in the list and the one-line error.
+struct ComponentRefusal {
+  std::size_t index = 0;
+  std::string message;
+};
+
+/// Makes each of `list`, in order, and drops it, until one fails: an unknown name, an unknown
+/// parameter or a bad value (the registry's message), or a plugin's constructor that crashed or
+/// hung ("planner NAME crashed (SIGSEGV, Segmentation fault) while being made to check its
+/// parameters"). A plugin's components are made in one watched process for the whole list,
+/// forked at the first of them, from the calling thread (UserCodeIsolation.h: no other thread
+/// may hold a lock then); the rest in the calling process. Nothing when all can be made.
+std::optional<ComponentRefusal> firstRefusedComponent(const Components& components,
+                                                      const std::vector<ComponentParams>& list,
+                                                      const ComponentCheckDef& def = {});
+
+/// Throws Error with the message of firstRefusedComponent, if any.
+void checkComponents(const Components& components, const std::vector<ComponentParams>& list,
+                     const ComponentCheckDef& def = {});
+
+}  // namespace parksim
