@@ -76,7 +76,7 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
     request.plan = opt->plan.toSetup();
     request.components = opt->plugins.load();
     request.drive = false;
-    checkEpisodeRequest(request, opt->user_code.limits);
+    checkEpisodeRequest(request, {.limits = opt->user_code.limits, .isolate = true});
     cli::OutputDir out(opt->out);
     request.out_dir = out.path();
     // A user's planner runs in a watched child: its crash or hang is a verdict.

@@ -110,7 +110,7 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
       r.plan = options.toSetup();
       r.components = components;
       r.drive = false;
-      checkEpisodeRequest(r, opt->user_code.limits);
+      checkEpisodeRequest(r, {.limits = opt->user_code.limits, .isolate = true});
       user_code = user_code || runsUserCode(r);
     }
     if (!opt->executed.empty()) inputs.tracking = readTrackingRecord(opt->executed);

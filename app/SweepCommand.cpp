@@ -300,7 +300,8 @@ int runSweepCommand(const SweepOptions& o) {
   // --plugin adds to the spec's plugins: (loaded first, so the spec's may not reuse a name).
   std::shared_ptr<const Components> extra;
   if (!o.plugins.paths.empty()) extra = o.plugins.load();
-  const SweepPlan plan = prepareSweep(o.spec, extra.get(), {o.user_code.limits, {}, nullptr});
+  const SweepPlan plan =
+      prepareSweep(o.spec, extra.get(), {.limits = o.user_code.limits, .isolate = true});
   const SweepSpec& spec = plan.spec;
   const std::vector<SweepEpisode>& all = plan.episodes;
   const Shard shard = parseShard(o.shard);

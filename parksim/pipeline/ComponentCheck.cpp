@@ -43,6 +43,22 @@ void make(const Components& components, const ComponentParams& c) {
   }
 }
 
+// The watch (if any) in c's phase while it lives, back in parksim's after, thrown or not.
+class InComponent {
+ public:
+  InComponent(UserCodeWatch* watch, const ComponentParams& c) : watch_(watch) {
+    if (watch_ != nullptr) watch_->enter(phaseOf(c.kind), c.name);
+  }
+  ~InComponent() {
+    if (watch_ != nullptr) watch_->enter(UserCodeWatch::Phase::kParksim, "");
+  }
+  InComponent(const InComponent&) = delete;
+  InComponent& operator=(const InComponent&) = delete;
+
+ private:
+  UserCodeWatch* watch_;
+};
+
 // A worker's answer: '+' made, or '-' and the one-line error.
 constexpr char kMade = '+';
 constexpr char kRefused = '-';
@@ -55,8 +71,8 @@ std::optional<ComponentRefusal> firstRefusedComponent(const Components& componen
   // A plugin's constructors, task i making list[i]: one process for the list, not one each.
   const WatchedWorker::Work work = [&](std::uint64_t task, UserCodeWatch& watch) -> std::string {
     const ComponentParams& c = list.at(task);
-    watch.enter(phaseOf(c.kind), c.name);
     try {
+      const InComponent in(&watch, c);
       make(components, c);
     } catch (const Error& e) {
       return kRefused + std::string(e.what());
@@ -64,7 +80,6 @@ std::optional<ComponentRefusal> firstRefusedComponent(const Components& componen
       return kRefused + std::string(kindName(c.kind)) + " " + c.name +
              " threw while being made: " + e.what();
     }
-    watch.enter(UserCodeWatch::Phase::kParksim, "");
     return std::string(1, kMade);
   };
   std::unique_ptr<WatchedWorker> worker;
@@ -72,11 +87,9 @@ std::optional<ComponentRefusal> firstRefusedComponent(const Components& componen
     const ComponentParams& c = list[i];
     try {
       const Origin origin = originOf(components, c);
-      if (!origin.plugin || def.watch != nullptr) {
-        UserCodeWatch* watch = origin.trusted ? nullptr : def.watch;
-        if (watch != nullptr) watch->enter(phaseOf(c.kind), c.name);
+      if (!origin.plugin || !def.isolate || def.watch != nullptr) {
+        const InComponent in(origin.trusted ? nullptr : def.watch, c);
         make(components, c);
-        if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kParksim, "");
         continue;
       }
     } catch (const Error& e) {

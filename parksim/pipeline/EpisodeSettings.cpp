@@ -74,9 +74,11 @@ EpisodeSettings resolveSettings(const EpisodeRequest& request) {
   return s;
 }
 
-void checkEpisodeRequest(const EpisodeRequest& request, const UserCodeLimits& limits) {
+void checkEpisodeRequest(const EpisodeRequest& request, const ComponentCheckDef& check) {
   const std::vector<ComponentParams> made = checkEpisodeValues(request);
-  checkComponents(componentsOf(request), made, {limits, {}, request.watch});
+  ComponentCheckDef def = check;
+  if (def.watch == nullptr) def.watch = request.watch;
+  checkComponents(componentsOf(request), made, def);
 }
 
 std::vector<ComponentParams> checkEpisodeValues(const EpisodeRequest& request) {

@@ -31,9 +31,10 @@ inline constexpr int kMaxRealisations = 10'000;
 /// controller that accept their parameters. Throws Error with one line naming the value (and the
 /// plan file). runEpisodePipeline calls it first; front-ends call it before they create an output
 /// directory, so bad input writes nothing. The planner and controller are made to check their
-/// parameters (ComponentCheck.h): a plugin's in a watched process with `limits` (the run's), or
-/// under request.watch when one is set.
-void checkEpisodeRequest(const EpisodeRequest& request, const UserCodeLimits& limits = {});
+/// parameters (ComponentCheck.h): in this process, under request.watch when one is set; a
+/// plugin's in a watched process with `check` {.limits = the run's, .isolate = true} (front-ends
+/// that run the episode in one).
+void checkEpisodeRequest(const EpisodeRequest& request, const ComponentCheckDef& check = {});
 
 /// checkEpisodeRequest without making the planner and controller: what it would make, for
 /// checkComponents (a sweep makes each distinct one once, not once per episode).

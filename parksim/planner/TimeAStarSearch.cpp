@@ -60,7 +60,8 @@ class Search {
     cell_ = def_.cell_m > 0.0 ? def_.cell_m : 0.25 * radius;
     const double step = def_.step_m > 0.0 ? def_.step_m : 1.5 * cell_;
     coarse_ = movesOf(makePrimitives(step, def_.arc_radii_m, def_.spin_angles_rad), c.robot, cost_);
-    cell_keys_ = SearchCells(c.window, {cell_, def_.heading_bins}, {},
+    cell_keys_ = SearchCells(c.window, {cell_, def_.heading_bins},
+                             {def_.fine_cell_m, def_.fine_heading_bins},
                              def_.fine_zone_m < 0.0 ? 2.0 * radius : def_.fine_zone_m, sources);
     setFineLevel(1);
   }

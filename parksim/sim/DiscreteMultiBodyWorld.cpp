@@ -18,6 +18,14 @@ class DiscreteMultiBodyWorld final : public btMultiBodyDynamicsWorld {
   // btMultiBodyDynamicsWorld::predictUnconstraintMotion: the rigid bodies' prediction, then
   // predictMultiBodyTransforms without the prediction itself (see the header).
   void predictUnconstraintMotion(btScalar timeStep) override {
+    // What the skipped prediction feeds: continuous dispatch (time of impact) and a kinematic
+    // base's velocity (btMultiBody::saveKinematicState reads its interpolated transform).
+    // parksim uses neither; should it ever, Bullet's full step runs.
+    if (getDispatchInfo().m_dispatchFunc != btDispatcherInfo::DISPATCH_DISCRETE ||
+        anyKinematicBase()) {
+      btMultiBodyDynamicsWorld::predictUnconstraintMotion(timeStep);
+      return;
+    }
     btDiscreteDynamicsWorld::predictUnconstraintMotion(timeStep);
     for (int b = 0; b < m_multiBodies.size(); b++) {
       btMultiBody* body = m_multiBodies[b];
@@ -26,6 +34,13 @@ class DiscreteMultiBodyWorld final : public btMultiBodyDynamicsWorld {
   }
 
  private:
+  bool anyKinematicBase() const {
+    for (int b = 0; b < m_multiBodies.size(); b++) {
+      if (m_multiBodies[b]->isBaseKinematic()) return true;
+    }
+    return false;
+  }
+
   // Bullet's test in predictMultiBodyTransforms: the base's or any link's collider asleep.
   static bool sleeping(const btMultiBody& body) {
     bool asleep = body.getBaseCollider() != nullptr &&

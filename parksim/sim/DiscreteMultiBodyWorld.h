@@ -16,9 +16,10 @@ namespace parksim {
 /// pose at the end of the step (btMultiBody::predictPositionsMultiDof and its colliders'
 /// interpolation transforms, ~2 k instructions a step for the robot). Those are read only by
 /// continuous collision detection (time of impact; parksim dispatches discretely), by rigid
-/// bodies' swept bounding boxes (never a multibody's link) and by debug drawing, so every
-/// result is bit-identical. Sleeping multibodies still have their velocities cleared, as
-/// Bullet's step does.
+/// bodies' swept bounding boxes (never a multibody's link), by a kinematic base's velocity
+/// (btMultiBody::saveKinematicState; parksim has none) and by debug drawing, so every result is
+/// bit-identical. With continuous dispatch or a kinematic base it steps as Bullet does. Sleeping
+/// multibodies still have their velocities cleared, as Bullet's step does.
 std::unique_ptr<btMultiBodyDynamicsWorld> makeDiscreteMultiBodyWorld(
     btDispatcher* dispatcher, btBroadphaseInterface* broadphase,
     btMultiBodyConstraintSolver* solver, btCollisionConfiguration* config);

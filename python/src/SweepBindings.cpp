@@ -33,7 +33,8 @@ py::dict sweep(const std::string& spec, const std::string& out, const py::dict& 
   def.fork_hooks.after_in_parent = [] { PyOS_AfterFork_Parent(); };
   def.fork_hooks.after_in_child = [] { PyOS_AfterFork_Child(); };
   // A plugin's constructors are made to check their parameters in a process forked the same way.
-  const SweepPlan plan = prepareSweep(spec, extra.get(), {def.limits, def.fork_hooks, nullptr});
+  const SweepPlan plan = prepareSweep(
+      spec, extra.get(), {.limits = def.limits, .hooks = def.fork_hooks, .isolate = true});
   // Ctrl-C ends the sweep at the next row, as it ends `parksim sweep` (the rows written stay;
   // the running episodes' workers are killed).
   const auto interruptible = [](const SweepProgress&) {

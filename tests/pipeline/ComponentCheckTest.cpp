@@ -19,7 +19,7 @@ using Kind = ComponentParams::Kind;
 
 // Short limits: a hanging constructor never ends, so only the limit ends it.
 constexpr UserCodeLimits kShort{0.3, 0.3};
-const ComponentCheckDef kCheck{kShort, {}, nullptr};
+const ComponentCheckDef kCheck{.limits = kShort, .isolate = true};
 
 std::shared_ptr<const Components> faulty() {
   return loadComponents({testing::binaryDir() + "/tests/plugin/libparksim_faulty_plugin.so"});
@@ -108,6 +108,18 @@ TEST(ComponentCheck, UnderAWatchEveryComponentIsMadeHereAndAUsersConstructorIsWa
   checkComponents(*components, {{Kind::kController, "tracking-copy", {}}}, {kShort, {}, &watch});
   EXPECT_EQ(watch.beats(), before + 2);
   EXPECT_EQ(watch.phase(), UserCodeWatch::Phase::kParksim);
+}
+
+// Without isolate (the library's runEpisodePipeline, Python's run(): they make and run the
+// plugin in their own process right after), a plugin's constructor is made in the calling
+// process, with no fork: its crash is this process's.
+TEST(ComponentCheckDeathTest, WithoutIsolationAPluginIsMadeInTheCallingProcess) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const auto components = faulty();
+  const std::vector<ComponentParams> crashing = {{Kind::kPlanner, "segfault-ctor-planner", {}}};
+  EXPECT_DEATH((void)firstRefusedComponent(*components, crashing, {.limits = kShort}), "");
+  // Isolated, the same list is a refusal.
+  EXPECT_TRUE(firstRefusedComponent(*components, crashing, kCheck));
 }
 
 }  // namespace
