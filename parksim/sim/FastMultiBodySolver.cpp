@@ -239,9 +239,12 @@ class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
 
   // A row as the iterations take it. `jac` not null: a row of one multibody of kRobotDofs
   // velocities against a fixed body or nothing, its arrays resolved once per step. The fixed
-  // side adds nothing to such a row: a fixed body's velocity change stays +0 (Bullet applies
-  // impulses only to bodies with an original body), so its dot product is +0 and subtracting
-  // +0 x m_jacDiagABInv (finite, >= 0, checked) leaves every value as it was, -0 included.
+  // side adds nothing to such a row while the step's values are finite: a fixed body's
+  // velocity change stays +0 (its inverse mass is 0, so what any of Bullet's row solvers applies
+  // to it is +0 for a finite impulse), its dot product with the row's finite fixed-side terms is
+  // +0, and subtracting +0 x m_jacDiagABInv (finite, >= 0, checked) leaves every value as it
+  // was, -0 included. A non-finite contact normal or velocity (a state already lost) is not
+  // checked for: there the two paths may give different NaNs.
   struct Row {
     btMultiBodySolverConstraint* c = nullptr;
     const btScalar* jac = nullptr;   // the multibody's Jacobian

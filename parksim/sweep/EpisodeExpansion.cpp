@@ -61,7 +61,8 @@ void checkOffsets(const SweepSpec& spec, const std::vector<SweepWorld>& worlds) 
 }
 
 // A message about a world read with set: values, at the spec's line of the value it names
-// ("set: PATH=VALUE: ..."), else at the spec with the episode's set: values (and sample).
+// ("set: PATH=VALUE: ..."), else with the episode's set: values (and sample) at the line of the
+// first of their axes.
 Error setError(const SweepSpec& spec, const EpisodeParams& p, const SweepWorld& world,
                const std::string& what) {
   for (const SetAxis& axis : spec.set) {
@@ -71,15 +72,19 @@ Error setError(const SweepSpec& spec, const EpisodeParams& p, const SweepWorld& 
     }
   }
   std::string values;
+  int line = 0;
   for (const SetAxis& axis : spec.set) {
     const ParamMap& of = axis.target() == SetAxis::Target::kWorld     ? p.world_set
                          : axis.target() == SetAxis::Target::kPlanner ? p.planner_params
                                                                       : p.controller_params;
     const auto it =
         of.find(axis.target() == SetAxis::Target::kWorld ? axis.path : axis.parameterName());
-    if (it != of.end()) values += (values.empty() ? "" : ", ") + axis.path + "=" + it->second;
+    if (it == of.end()) continue;
+    if (values.empty()) line = axis.line;
+    values += (values.empty() ? "" : ", ") + axis.path + "=" + it->second;
   }
-  return Error(spec.source_path + ": set: " + values +
+  return Error(spec.source_path + (line > 0 ? ":" + std::to_string(line) : std::string()) +
+               ": set: " + values +
                (p.sample ? " (sample " + std::to_string(*p.sample) + ")" : "") + ": " + what);
 }
 

@@ -224,7 +224,7 @@ TEST(SweepUserCode, ConstructorsThatCrashOrHangAreRefusedAtTheirLine) {
         // Drawn values are made as the episodes expand: the first episode's that crashes.
         Case{"planners: [{name: segfault-ctor-planner, params: {fault_above: 0.5}}]\nset:\n"
              "  planner.value: {uniform: [0, 1]}\nsamples: {count: 20, seed: 1}\n",
-             "spec.yaml: set: planner.value=...: " + crash},
+             "spec.yaml:7: set: planner.value=...: " + crash},
         Case{"controllers: [hanging-ctor-controller]\n",
              "spec.yaml:5: controllers[0]: controller hanging-ctor-controller gave no command "
              "within its time limit of 0.5 s (its process was killed)"}}) {
