@@ -1,6 +1,8 @@
 #include "parksim/sim/RobotBody.h"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
@@ -10,6 +12,8 @@
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
+#include "parksim/core/Error.h"
+#include "parksim/core/NumberFormat.h"
 #include "parksim/sim/BulletFrames.h"
 #include "parksim/sim/CollisionGroups.h"
 #include "parksim/sim/MultiBodyInverseMass.h"
@@ -60,6 +64,19 @@ RobotBody::RobotBody(btMultiBodyDynamicsWorld& world, const RobotDef& robot,
   if (model_.body.wheel_axle_inertia_kgm2 > 0.0) {  // the axle is the link's y axis
     left_inertia.setY(btScalar(model_.body.wheel_axle_inertia_kgm2));
     right_inertia.setY(btScalar(model_.body.wheel_axle_inertia_kgm2));
+  }
+  // btMultiBody gives a revolute joint whose inertia about its axis is below SIMD_EPSILON
+  // (single precision: 1.2e-7 kg m^2) no acceleration at all (computeAccelerations...: invD =
+  // 0): such a wheel never turns, whatever its motor does. A 1 cm robot's 2 mm, 0.1 g wheels
+  // are 1.6e-10. Refused rather than simulated standing still.
+  const btScalar axle_inertia = std::min(left_inertia.y(), right_inertia.y());
+  if (!(axle_inertia >= SIMD_EPSILON)) {
+    throw Error("simulation: the wheels' axle inertia, " + formatGeneral(double(axle_inertia), 3) +
+                " kg m^2 (physics.wheel_mass_kg " + formatGeneral(physics_.wheel_mass_kg) +
+                " kg as a sphere of robot.wheel_radius " + formatGeneral(r) +
+                " m), is below Bullet's " + formatGeneral(double(SIMD_EPSILON), 3) +
+                " kg m^2, under which a wheel joint never turns: at this radius a wheel needs " +
+                formatGeneral(double(SIMD_EPSILON) / (0.4 * r * r), 3) + " kg or more");
   }
   const RobotSupports supports = robotSupports(robot_, physics_, model_);
   btCollisionShape* support_shape =

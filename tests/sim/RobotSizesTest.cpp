@@ -26,8 +26,10 @@
 
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/DiffDrive.h"
+#include "parksim/core/Error.h"
 #include "parksim/planner/PlanScenario.h"
 #include "parksim/scenario/ScenarioReader.h"
+#include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/Episode.h"
 #include "parksim/sim/TrackingController.h"
 #include "tests/support/TestPaths.h"
@@ -80,6 +82,37 @@ INSTANTIATE_TEST_SUITE_P(Sim, RobotSizes,
                                            SizeCase{"tests/sim/worlds/head_in_1m.yaml", "robot_1m"},
                                            SizeCase{"worlds/car_lot.yaml", "car_4m"}),
                          caseName);
+
+// Bullet gives a wheel joint whose axle inertia is below SIMD_EPSILON (1.19e-7 kg m^2 in single
+// precision) no acceleration: it never turns. For the study's 20 mm wheels (a sphere's 2/5 m r^2)
+// that is a wheel under 0.745 g: at 0.5 g the world is refused with the fields to change, at
+// 1 g the wheels follow their motors. The 1 cm micro robot's 2 mm, 0.1 g wheels are refused.
+TEST(RobotSizes, AWheelBulletWouldHoldStillIsRefused) {
+  Scenario s = loadScenario(parksim::testing::sourceDir() + "/worlds/head_in.yaml");
+  const double threshold_kg =
+      1.1920929e-7 / (0.4 * s.robot.wheel_radius_m * s.robot.wheel_radius_m);
+  EXPECT_NEAR(threshold_kg, 7.45e-4, 1e-6);
+  s.physics.wheel_mass_kg = 0.5e-3;
+  try {
+    DynamicsWorld world(s, s.start);
+    ADD_FAILURE() << "a 0.5 g wheel was simulated";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("axle inertia, 8e-08 kg m^2"), std::string::npos) << what;
+    EXPECT_NE(what.find("physics.wheel_mass_kg"), std::string::npos) << what;
+    EXPECT_NE(what.find("robot.wheel_radius"), std::string::npos) << what;
+  }
+  s.physics.wheel_mass_kg = 1e-3;
+  DynamicsWorld world(s, s.start);
+  world.setWheelTargets({2.0, 2.0});
+  for (int i = 0; i < 240; ++i) world.step();
+  EXPECT_NEAR(world.robot().wheels.left_radps, 2.0, 0.1);
+  EXPECT_NEAR(world.robot().wheels.right_radps, 2.0, 0.1);
+
+  const Scenario micro =
+      loadScenario(parksim::testing::sourceDir() + "/tests/sim/worlds/head_in_1cm.yaml");
+  EXPECT_THROW(DynamicsWorld(micro, micro.start), Error);
+}
 
 }  // namespace
 }  // namespace parksim
