@@ -135,7 +135,16 @@ BenchPlan benchPlanFrom(const BenchOptions& o) {
   b.components = o.plugins.load();
   const PlannerRegistry& registry = b.components->planners;
   if (o.planners.empty()) {
-    b.planners = registry.names();
+    // Every planner that runs with its defaults: not the command planner, which needs its
+    // command line (--planners names planners; their parameters are not bench options).
+    for (const std::string& name : registry.names()) {
+      try {
+        (void)registry.make(name, {});
+      } catch (const Error&) {
+        continue;
+      }
+      b.planners.push_back(name);
+    }
   } else if (o.planners != std::vector<std::string>{"none"}) {  // "none": OMPL alone
     for (const std::string& name : o.planners) {
       (void)registry.find(name);  // an unknown name fails here, before any run
@@ -317,8 +326,8 @@ void addOptions(CLI::App& sub, BenchOptions* opt, OutputOptions& output) {
       ->capture_default_str()
       ->check(integerIn(1, 100'000));
   sub.add_option("--planners", opt->planners,
-                 "parksim planners, comma-separated (default: every planner, the plugins' too; "
-                 "none: OMPL only)")
+                 "parksim planners, comma-separated (default: every planner that runs with its "
+                 "defaults, the plugins' too; none: OMPL only)")
       ->delimiter(',');
   opt->plugins.addTo(sub);
   sub.add_option("--steering", opt->steerings,

@@ -47,6 +47,22 @@ TEST(ParksimBench, WritesTheCsvWithItsRequiredColumns) {
   EXPECT_EQ(summary.find("issue"), std::string::npos) << summary;  // speaks to users
 }
 
+// Without --planners, every planner that runs with its defaults: all of parksim's but the
+// command planner, whose command line no bench option gives (the README's first bench command).
+TEST(ParksimBench, WithoutPlannersEveryPlannerThatRunsWithItsDefaults) {
+  const fs::path out = testing::testOutputDir("parksim_bench_all");
+  fs::remove_all(out);
+  const CliRun r = runBench(testing::sourceDir() + "/worlds/head_in.yaml" +
+                            " --seeds 1 --steering balkcom-mason --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string csv = slurp(out / "bench.csv");
+  for (const char* planner : {",time-a-star,", ",hybrid-a-star,", ",rrt,", ",rrt-connect,",
+                              ",rrt-goal-connect,", ",rrt-star,"}) {
+    EXPECT_NE(csv.find(planner), std::string::npos) << planner << "\n" << csv;
+  }
+  EXPECT_EQ(csv.find(",command,"), std::string::npos) << csv;
+}
+
 // A plugin's planner is benchmarked beside the built-ins, its paths checked like theirs.
 TEST(ParksimBench, APluginsPlannerRunsBesideTheBuiltIns) {
   const fs::path out = testing::testOutputDir("parksim_bench_plugin");
