@@ -15,10 +15,17 @@ namespace parksim {
 /// One control period. `wheels` are held from t_s until the next point's t_s; integrated
 /// exactly (integrateExact) they take `pose` to the next point's pose. The last point of a
 /// trajectory carries zero wheel speeds: the robot stops there.
+///
+/// For a car (RobotDef::isCar), `wheels` are its rear wheels' speeds (wheel_base_m is the track,
+/// so the same exact integration holds) and steer_rad is the front-wheel angle of the bicycle
+/// model, held like the wheels from t_s to the next point: while the car moves, a row's
+/// curvature (omega / v) is tan(steer_rad) / axle_distance_m, and consecutive rows' angles
+/// differ by at most max_steer_rate_radps times the period. A differential drive's stays 0.
 struct TrajectoryPoint {
   double t_s = 0.0;  ///< s since the trajectory's start
   Pose2 pose;
   WheelSpeeds wheels;
+  double steer_rad = 0.0;  ///< a car's steering angle from t_s on, rad (left positive)
 
   friend bool operator==(const TrajectoryPoint&, const TrajectoryPoint&) = default;
 };
