@@ -14,7 +14,9 @@
 #   compiled and optimised once per batch, not once per file. Names at file scope (anonymous
 #   namespaces, static functions) must then be unique within a target: a second definition of one
 #   is a compile error ("redefinition of ...") naming both files. Rename one, or add the file to
-#   PARKSIM_UNITY_SKIP below. Test programs are not batched (their files share helper names).
+#   PARKSIM_UNITY_SKIP below. Test programs are batched too, in batches of
+#   PARKSIM_TEST_UNITY_BATCH_SIZE; their files share helper names more often (`errorOf`, `kWorld`),
+#   and the files that would clash are in PARKSIM_UNITY_SKIP as well.
 #
 # Both are on by default and off with -DPARKSIM_PCH=OFF / -DPARKSIM_UNITY=OFF (e.g. to check that
 # every file includes what it uses, which a precompiled header can hide).
@@ -23,6 +25,8 @@ option(PARKSIM_PCH "Precompile the heavy third-party headers (docs/building.md)"
 option(PARKSIM_UNITY "Compile each target's sources in batches (unity build; docs/building.md)" ON)
 set(PARKSIM_UNITY_BATCH_SIZE 6 CACHE STRING
     "Sources per unity batch: larger builds faster cold, smaller rebuilds less after an edit")
+set(PARKSIM_TEST_UNITY_BATCH_SIZE 8 CACHE STRING
+    "Test sources per unity batch (test programs; docs/building.md)")
 # Sources compiled on their own in a unity build (paths relative to the top folder), each with the
 # reason: mostly a name it shares with another file of its target.
 set(PARKSIM_UNITY_SKIP
@@ -34,6 +38,28 @@ set(PARKSIM_UNITY_SKIP
   # Not a name: it includes ProvenanceGit.h, which a commit or a first edit rewrites; alone,
   # only this file is compiled again then, not its batch.
   parksim/core/Provenance.cpp
+  # Test files: each shares a name with an earlier file of its program (found by compiling each
+  # program's files as one batch: so any batch size and order compiles).
+  tests/bench/OmplLogTest.cpp                # splitLines, also in BenchCsvTest.cpp
+  tests/bench/PathCheckTest.cpp              # headIn, also in OmplPlannersTest.cpp
+  tests/collision/ShapeObstaclesTest.cpp     # kSweepDivisor, kMargins: BulletCollisionWorldTest.cpp
+  tests/command/CommandPlannerTest.cpp       # headIn, testDir: CommandCliTest, CommandControllerTest
+  tests/pipeline/UserCodeIsolationTest.cpp   # kShort, also in UserCodeTest.cpp
+  tests/planner/TimeCostTest.cpp             # piece, also in PathSmootherTest.cpp
+  tests/renders/OffscreenContextTest.cpp     # distinctColours, also in FiguresTest.cpp
+  tests/results/TrajectoryFileTest.cpp       # sample, also in NpzFileTest.cpp
+  # errorOf (in 9 files, each its own) and kWorld (in 3): the rest of the program is batched.
+  tests/scenario/MovingAiMapTest.cpp
+  tests/scenario/RealismReaderTest.cpp
+  tests/scenario/RosMapTest.cpp
+  tests/scenario/ScenarioOverridesTest.cpp
+  tests/scenario/ScenarioReaderTest.cpp
+  tests/scenario/SvgPathTest.cpp
+  tests/scenario/WorldTest.cpp
+  tests/sim/StudyWorldsTest.cpp              # Case, also in FastMultiBodySolverTest.cpp
+  tests/sweep/ResultsIntegrityTest.cpp       # row, errorOf: ParameterReportTest.cpp, SetAxesTest.cpp
+  tests/sweep/SweepSpecReaderTest.cpp        # errorOf, also in SetAxesTest.cpp
+  tests/sweep/SweepUserCodeTest.cpp          # sweepThenKill, also in SweepCliTest.cpp
 )
 
 if(PARKSIM_SANITIZE)
@@ -117,9 +143,12 @@ function(parksim_target_defaults target)
   # export macros), so a compiler cache serves one from the other (scripts/test.sh).
   set_target_properties(${target} PROPERTIES DEFINE_SYMBOL "")
   get_target_property(kind ${target} PARKSIM_PCH_KIND)
-  if(PARKSIM_UNITY AND NOT kind STREQUAL "test")
-    set_target_properties(${target} PROPERTIES
-      UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${PARKSIM_UNITY_BATCH_SIZE})
+  if(PARKSIM_UNITY)
+    set(batch ${PARKSIM_UNITY_BATCH_SIZE})
+    if(kind STREQUAL "test")
+      set(batch ${PARKSIM_TEST_UNITY_BATCH_SIZE})
+    endif()
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${batch})
     # A batch includes its sources like headers, and GCC then warns that a class of one (a
     # parksim type with a member from the file's anonymous namespace) could be seen elsewhere.
     target_compile_options(${target} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-Wno-subobject-linkage>)
