@@ -67,15 +67,10 @@ if(PARKSIM_SANITIZE)
   add_link_options(-fsanitize=address,undefined)
 endif()
 
-# The standard headers that parksim's sources include most (counted over parksim/, app/, tests/).
-set(PARKSIM_PCH_STD
-  <algorithm> <array> <charconv> <chrono> <cmath> <cstddef> <cstdint> <cstdio> <cstdlib>
-  <cstring> <filesystem> <fstream> <functional> <limits> <map> <memory> <optional> <random>
-  <set> <sstream> <string> <string_view> <thread> <utility> <vector>)
-# Every library may include these (Eigen comes with parksim_core). Bullet (5 files, ~1 s to
-# parse) and OMPL stay out: their include directories belong to a few targets only, and Bullet
-# types must not become visible outside parksim/sim and parksim/collision.
-set(PARKSIM_PCH_COMMON ${PARKSIM_PCH_STD} <Eigen/Core> <nlohmann/json.hpp> <yaml-cpp/yaml.h>)
+# The headers every precompiled header starts with: the standard headers parksim includes most,
+# Eigen, nlohmann/json and yaml-cpp (the list, and why Bullet and OMPL are not in it, is in the
+# file; scripts/fuzz.sh precompiles the same file for the fuzzers).
+set(PARKSIM_PCH_COMMON ${PROJECT_SOURCE_DIR}/cmake/PchCommon.h)
 
 # A target whose precompiled header others reuse: its flags are those of the targets that reuse
 # it (C++20, the warnings: -Wpedantic changes predefined macros the header checks).
