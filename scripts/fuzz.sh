@@ -13,6 +13,8 @@
 #                                            then the dict path's Python half
 #                                            (tests/fuzz/world_dict_fuzz.py, FUZZ_DICT_RUNS,
 #                                            default 2000) when build/python has the module
+#   scripts/fuzz.sh --build                  only build the fuzzers (scripts/test.sh builds them
+#                                            while the sanitizer tests run)
 #   scripts/fuzz.sh world [libFuzzer args]   long campaign on one reader, e.g.
 #   scripts/fuzz.sh world -max_total_time=3600 -jobs=2 -workers=2
 #
@@ -132,6 +134,7 @@ link() {  # link READER: its harness and groups, into build-fuzz/fuzz_READER
 for reader in "${readers[@]}"; do
   link "$reader"
 done
+[ "${1:-}" = --build ] && exit 0
 
 timeout_s=${FUZZ_TIMEOUT:-10}
 common=(-timeout="$timeout_s" -rss_limit_mb=2048 -malloc_limit_mb=2048 -max_len=65536

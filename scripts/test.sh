@@ -9,6 +9,10 @@
 #      (`ctest -L front_end`); compiled with clang unless CXX names a compiler
 #      (scripts/build.sh);
 #   3. fuzzing: the readers' libFuzzer harnesses, bounded (scripts/fuzz.sh --ci).
+# Passes 2 and 3 are built behind pass 1, at the lowest priority (nice 19): their compiles take
+# what the sanitizer build and its tests leave of the cores (configuring, linking, tests that
+# wait on a child process), and the sanitizer pass runs as fast as alone. Their output is
+# printed when they are joined. Then the front-ends' tests run beside the bounded fuzzing.
 # Every test runs once. Usage:
 #   scripts/test.sh                              all passes
 #   PARKSIM_SKIP_SANITIZERS=1 scripts/test.sh    no sanitizer build: everything in Release
@@ -31,14 +35,49 @@ test_timeout=${PARKSIM_TEST_TIMEOUT:-600}
 # objects, and a cold cache only costs (each file preprocessed once more for its key).
 ccache=1
 [ "${CI:-}" = true ] && ccache=0
-shared_front_ends() {  # shared_front_ends BUILD_DIR: the front-ends and their tests, shared
+front_ends_build() {  # front_ends_build BUILD_DIR: the front-ends (shared libraries)
   PARKSIM_CCACHE=$ccache scripts/build.sh "$1" -DPARKSIM_SHARED=ON \
     -DPARKSIM_BUILD_TESTS=ON -DPARKSIM_BUILD_BENCH=ON -DPARKSIM_PYTHON=ON \
     --target parksim_front_end_tests
+}
+front_ends_tests() {  # front_ends_tests BUILD_DIR: their tests
   ctest --test-dir "$1" --output-on-failure --parallel "$jobs" --timeout "$test_timeout" -L front_end
 }
+shared_front_ends() { front_ends_build "$1" && front_ends_tests "$1"; }
+
+# Passes running behind the foreground one: each in its own process group (stopped, with its
+# children, when this script exits early), its output in a log printed when it is joined.
+logs=$(mktemp -d)
+behind_pids=()
+stop_behind() { for pid in "${behind_pids[@]}"; do kill -- "-$pid" 2>/dev/null || true; done; }
+trap 'stop_behind; rm -rf "$logs"' EXIT
+behind() {  # behind NAME NICENESS COMMAND...: start COMMAND in the background
+  local name=$1 niceness=$2
+  shift 2
+  set -m
+  nice -n "$niceness" "$@" > "$logs/$name.log" 2>&1 &
+  set +m
+  behind_pids+=($!)
+  eval "behind_$name=$!"
+}
+join() {  # join NAME: wait for it, print its output; fails as it failed
+  local pid_var=behind_$1 status=0
+  wait "${!pid_var}" || status=$?
+  echo "== (behind) $1: exit status $status"
+  cat "$logs/$1.log"
+  return $status
+}
+export -f front_ends_build
+export ccache
 
 if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
+  # In build/, where the documentation's commands find them. The libraries compile alike
+  # static and shared (cmake/TargetDefaults.cmake), so after scripts/demo.sh this pass only
+  # links them again; one pass builds the libraries in Release, where a static and a shared
+  # pass compiled them twice (clang's precompiled headers, which embed their build directory,
+  # gave a compiler cache no hits across the two: 152 s more in CI).
+  behind build 19 bash -c 'front_ends_build build && scripts/fuzz.sh --build'
+
   echo "== Sanitizer build (clang, ASan + LSan + UBSan) and the library's tests"
   # Only what the tests run: the GoogleTest programs and the parksim program (parksim_tests).
   # clang, -O1 -g1 (line tables: reports still name file and line): this build took 350 s on
@@ -61,22 +100,20 @@ if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --test-dir build-sanitize --output-on-failure --parallel "$jobs" --timeout "$test_timeout"
 
-  echo "== Front-ends (Release, shared libraries) and their tests"
-  # In build/, where the documentation's commands find them. The libraries compile alike
-  # static and shared (cmake/TargetDefaults.cmake), so after scripts/demo.sh this pass only
-  # links them again; one pass builds the libraries in Release, where a static and a shared
-  # pass compiled them twice (clang's precompiled headers, which embed their build directory,
-  # gave a compiler cache no hits across the two: 152 s more in CI).
-  shared_front_ends build
+  echo "== Front-ends (Release, shared libraries) and the fuzzers: built behind the above"
+  join build
+  echo "== The front-ends' tests, beside the bounded fuzzing of the readers (docs/limits.md)"
+  behind fuzz 10 scripts/fuzz.sh --ci
+  front_ends_tests build
+  join fuzz
 else
   echo "== Release build (static libraries): everything and every test"
   PARKSIM_CCACHE=$ccache scripts/build.sh build -DPARKSIM_SHARED=OFF -DPARKSIM_BUILD_TESTS=ON \
     -DPARKSIM_BUILD_BENCH=ON -DPARKSIM_PYTHON=ON
   ctest --test-dir build --output-on-failure --parallel "$jobs" --timeout "$test_timeout"
+  echo "== Fuzzing the world-file and plan-file readers (bounded; docs/limits.md)"
+  scripts/fuzz.sh --ci
 fi
-
-echo "== Fuzzing the world-file and plan-file readers (bounded; docs/limits.md)"
-scripts/fuzz.sh --ci
 
 if [ "${PARKSIM_SKIP_SANITIZERS:-0}" = 1 ]; then
   echo "== The front-ends against the shared libraries"
