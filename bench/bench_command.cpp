@@ -14,7 +14,7 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/command/CommandController.h"
 #include "parksim/command/CommandLine.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/Episode.h"

@@ -27,7 +27,7 @@
 
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/GridRectangles.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/scenario/World.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "tests/support/TestPaths.h"

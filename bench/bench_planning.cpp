@@ -31,7 +31,7 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/scenario/ScenarioReader.h"
 
 namespace {

@@ -37,8 +37,8 @@
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
 #include "parksim/core/Provenance.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/planner/TreePlanner.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/planner/tree/TreePlanner.h"
 #include "parksim/results/OmplLog.h"
 #include "parksim/scenario/ScenarioReader.h"
 

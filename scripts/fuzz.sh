@@ -40,13 +40,13 @@ done
 # Each source is compiled once into build-fuzz/obj/ (the readers share the core library's
 # sources), on all cores, and again only when it or a parksim header changed since.
 # The sweep-spec reader takes its name lists (planners, steerings, timings) from
-# parksim/planner/PlanScenario.cpp, whose other functions need the whole planner (OMPL, Bullet),
+# parksim/planner/base/PlanScenario.cpp, whose other functions need the whole planner (OMPL, Bullet),
 # its record format's names from parksim/results/ExecutedFile.cpp (the record writers), and
 # its files policy's from parksim/pipeline/EpisodeRequest.cpp.
 # The fuzzer's coverage tables keep every instrumented function alive, so that file is compiled
 # without them (still with ASan and UBSan, as .nocov.o) and --gc-sections drops what the spec
 # reader does not call.
-nocov="parksim/planner/PlanScenario.cpp parksim/results/ExecutedFile.cpp"
+nocov="parksim/planner/base/PlanScenario.cpp parksim/results/ExecutedFile.cpp"
 object_of() {  # the object of SOURCE
   case " $nocov " in *" $1 "*) echo "$out/obj/${1%.cpp}.nocov.o" ;; *) echo "$out/obj/${1%.cpp}.o" ;; esac
 }
@@ -88,7 +88,7 @@ sources[world]="tests/fuzz/WorldReaderFuzz.cpp ${scenario[*]} ${realism[*]} ${co
 sources[plan]="tests/fuzz/PlanReaderFuzz.cpp parksim/results/TrajectoryFile.cpp ${core[*]}"
 sources[spec]="tests/fuzz/SweepSpecFuzz.cpp parksim/sweep/SweepSpecReader.cpp
   parksim/sweep/ComponentChoiceReader.cpp parksim/command/CommandLine.cpp parksim/sweep/EpisodeSetup.cpp parksim/sweep/SetValues.cpp parksim/results/EpisodeRecord.cpp
-  parksim/planner/PlanScenario.cpp
+  parksim/planner/base/PlanScenario.cpp
   parksim/results/ExecutedFile.cpp parksim/pipeline/EpisodeRequest.cpp
   parksim/sim/ExecutionDef.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
 sources[jsonl]="tests/fuzz/ResultsJsonlFuzz.cpp ${tables[*]} ${core[*]}"

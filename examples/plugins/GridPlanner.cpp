@@ -11,7 +11,7 @@
 
 #include "ExamplePlugins.h"
 #include "parksim/core/Geometry.h"
-#include "parksim/planner/PlanFinishing.h"
+#include "parksim/planner/base/PlanFinishing.h"
 
 namespace example {
 

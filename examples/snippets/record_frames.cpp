@@ -9,7 +9,7 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/Episode.h"

@@ -12,7 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "parksim/core/Scenario.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 
 namespace parksim::cli {
 

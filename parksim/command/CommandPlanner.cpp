@@ -13,8 +13,8 @@
 #include "parksim/core/Error.h"
 #include "parksim/core/InputFile.h"
 #include "parksim/core/NumberFormat.h"
-#include "parksim/planner/PathCost.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/planner/motion/PathCost.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/TrajectoryFile.h"
 

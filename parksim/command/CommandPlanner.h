@@ -12,7 +12,7 @@
 //
 // The answer:
 // - exit status 0 and a trajectory.csv with rows: the plan (checked before it is driven,
-//   planner/PlanCheck.h: it is user code, never trusted);
+//   planner/base/PlanCheck.h: it is user code, never trusted);
 // - exit status 0 and a trajectory.csv with its header alone: "no plan", an unsolved result
 //   (plan_failed), the last line of its standard error as the message;
 // - anything else is the planner's failure, a UserCodeError (planner_error) naming the command
@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "parksim/core/ParamMap.h"
-#include "parksim/planner/Planner.h"
+#include "parksim/planner/base/Planner.h"
 
 namespace parksim {
 

@@ -1,6 +1,6 @@
 #include "parksim/command/ProblemFile.h"
 
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 
 namespace parksim {
 

@@ -1,6 +1,6 @@
 #pragma once
 // The planning problem as a JSON file, for a planner that is a command (CommandPlanner.h): what
-// PlanningProblem holds (planner/Planner.h) that a program in any language can use, in the
+// PlanningProblem holds (planner/base/Planner.h) that a program in any language can use, in the
 // format `parksim-planning-problem/1` (docs/your-code.md documents every field). The world
 // part is also what a controller process is told at its reset (CommandController.h).
 //
@@ -11,7 +11,7 @@
 
 #include "parksim/core/ParamMap.h"
 #include "parksim/core/Scenario.h"
-#include "parksim/planner/Planner.h"
+#include "parksim/planner/base/Planner.h"
 
 namespace parksim {
 

@@ -1,5 +1,5 @@
 #pragma once
-// Components chosen by name: planners (planner/PlannerRegistry.h) and controllers
+// Components chosen by name: planners (planner/base/PlannerRegistry.h) and controllers
 // (sim/ControllerRegistry.h), parksim's own and those plugins add. One registry type for both,
 // so names, errors and trust follow the same rules.
 //

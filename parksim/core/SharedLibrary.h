@@ -1,10 +1,9 @@
 #pragma once
 // A shared library loaded when first needed (dlopen), for dependencies only some runs use: the
 // GL backends (libEGL, libOSMesa, and LLVM behind it) cost a process ~40 libraries to map and
-// relocate at start-up even when it never renders, and OMPL (parksim/planner/OmplApi.h) half of
-// what remained. A library is never unloaded (RTLD_NODELETE:
-// Mesa and LLVM do not survive being unloaded), so its functions stay valid after the handle
-// is gone.
+// relocate at start-up even when it never renders, and OMPL (parksim/planner/steering/OmplApi.h)
+// half of what remained. A library is never unloaded (RTLD_NODELETE: Mesa and LLVM do not survive
+// being unloaded), so its functions stay valid after the handle is gone.
 
 #include <optional>
 #include <string>

@@ -2,7 +2,7 @@
 
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
-#include "parksim/planner/MoveToPoseSteering.h"
+#include "parksim/planner/steering/MoveToPoseSteering.h"
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/results/TrajectoryFile.h"
 

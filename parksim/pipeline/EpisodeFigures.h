@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "parksim/core/Scenario.h"
-#include "parksim/planner/PlanResult.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanResult.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/renders/Figures.h"
 #include "parksim/renders/FrameRecorder.h"
 #include "parksim/renders/TrackingPlot.h"

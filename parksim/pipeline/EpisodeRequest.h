@@ -20,7 +20,7 @@
 #include "parksim/core/TrackingTolerance.h"
 #include "parksim/core/Trajectory.h"
 #include "parksim/core/UserCodeWatch.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/plugin/Components.h"
 #include "parksim/renders/Figures.h"
 #include "parksim/renders/FrameRecorder.h"

@@ -10,7 +10,7 @@
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
 #include "parksim/core/Text.h"
-#include "parksim/planner/PlanCheck.h"
+#include "parksim/planner/base/PlanCheck.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/sim/Episode.h"
 

@@ -10,7 +10,7 @@
 #include "parksim/core/UserCodeWatch.h"
 #include "parksim/pipeline/ComponentCheck.h"
 #include "parksim/pipeline/EpisodeRequest.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/sim/ExecutionDef.h"
 
 namespace parksim {

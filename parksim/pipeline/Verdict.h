@@ -16,8 +16,8 @@
 #include "parksim/core/Error.h"
 #include "parksim/core/Scenario.h"
 #include "parksim/core/TrackingTolerance.h"
-#include "parksim/planner/PlanCheck.h"
-#include "parksim/planner/PlanResult.h"
+#include "parksim/planner/base/PlanCheck.h"
+#include "parksim/planner/base/PlanResult.h"
 #include "parksim/sim/Episode.h"
 
 namespace parksim {
@@ -58,7 +58,7 @@ struct Verdict {
 /// The verdict on a plan that was not solved ("unsolved plan (iteration_limit): ...").
 Verdict planFailedVerdict(const PlanResult& plan);
 
-/// The verdict on a plan that failed its check before driving (planner/PlanCheck.h):
+/// The verdict on a plan that failed its check before driving (planner/base/PlanCheck.h):
 /// "plan_invalid: at t = 5.210 s (...) the footprint overlaps dropped_box".
 Verdict planInvalidVerdict(const PlanViolation& violation);
 

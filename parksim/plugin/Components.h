@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "parksim/planner/PlannerRegistry.h"
+#include "parksim/planner/base/PlannerRegistry.h"
 #include "parksim/sim/Controller.h"
 
 namespace parksim {

@@ -1,5 +1,5 @@
 #pragma once
-// The one header a plugin includes: planners (planner/Planner.h) and controllers
+// The one header a plugin includes: planners (planner/base/Planner.h) and controllers
 // (sim/Controller.h) a shared library adds to parksim, registered through one exported entry
 // point that carries the plugin API version it was built against (nav2 and MoveIt load
 // planners and controllers the same way; docs/your-code.md).
@@ -21,7 +21,7 @@
 #include <cstdint>
 #include <string>
 
-#include "parksim/planner/Planner.h"
+#include "parksim/planner/base/Planner.h"
 #include "parksim/sim/Controller.h"
 
 /// Bumped whenever a type a plugin sees changes meaning; a plugin must match it exactly.

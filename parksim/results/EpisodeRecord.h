@@ -22,7 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/planner/PlanResult.h"
+#include "parksim/planner/base/PlanResult.h"
 #include "parksim/sim/EpisodeMetrics.h"
 
 namespace parksim {

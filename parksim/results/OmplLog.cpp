@@ -10,7 +10,7 @@
 
 #include "parksim/core/NumberFormat.h"
 #include "parksim/core/Provenance.h"
-#include "parksim/planner/OmplPlugin.h"
+#include "parksim/planner/steering/OmplPlugin.h"
 
 namespace parksim::bench {
 namespace {

@@ -8,8 +8,8 @@
 
 #include "parksim/core/Scenario.h"
 #include "parksim/core/Trajectory.h"
-#include "parksim/planner/PlanResult.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanResult.h"
+#include "parksim/planner/base/PlanScenario.h"
 
 namespace parksim {
 

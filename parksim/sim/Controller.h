@@ -119,7 +119,7 @@ struct ControllerEntry {
 };
 
 /// A ControllerEntry whose controller type C is constructed as C(def) from a Def struct D whose
-/// parameters `bind` declares (as plannerEntry, planner/Planner.h).
+/// parameters `bind` declares (as plannerEntry, planner/base/Planner.h).
 template <class C, class D>
 ControllerEntry controllerEntry(ControllerInfo info, D def, void (*bind)(D&, ParamSet&)) {
   const std::string owner = "controller " + info.name;

@@ -26,7 +26,7 @@
 #include "parksim/core/Fnv1a.h"
 #include "parksim/core/ParamMap.h"
 #include "parksim/pipeline/EpisodeRequest.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/sim/ExecutionDef.h"
 
 namespace parksim {

@@ -6,7 +6,7 @@
 #include "parksim/core/Angle.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/Text.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/sweep/SetValues.h"
 

@@ -8,7 +8,7 @@
 #include "parksim/core/ParamMap.h"
 #include "parksim/core/Scenario.h"
 #include "parksim/pipeline/EpisodeRequest.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "python/src/Bindings.h"
 
 namespace parksim::python {

@@ -18,8 +18,8 @@
 #include <pybind11/stl.h>
 
 #include "parksim/core/Error.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/planner/Planner.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/planner/base/Planner.h"
 #include "parksim/plugin/PluginLoader.h"
 #include "parksim/rl/TaskSpaces.h"
 #include "parksim/sim/Controller.h"
@@ -378,7 +378,7 @@ void bindUserCode(py::module_& m) {
       .def_readonly("plan_ended", &ControllerInput::plan_ended);
 
   py::class_<PyProblem>(m, "PlanningProblem",
-                        "What a Python planner's solve() is given (planner/Planner.h); valid "
+                        "What a Python planner's solve() is given (planner/base/Planner.h); valid "
                         "during that call.")
       .def_property_readonly("start",
                              [](const PyProblem& p) { return poseTuple(p.p->scenario.start); })

@@ -18,7 +18,7 @@
 #include "parksim/core/Geometry.h"
 #include "parksim/core/Provenance.h"
 #include "parksim/core/Trajectory.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/renders/FigureSelection.h"
 #include "parksim/renders/PngEncoder.h"
 #include "parksim/results/TrajectoryFile.h"

@@ -1,4 +1,4 @@
-#include "parksim/planner/BalkcomMasonSteering.h"
+#include "parksim/planner/steering/BalkcomMasonSteering.h"
 
 #include <cmath>
 #include <random>
@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/Error.h"
-#include "parksim/planner/BalkcomMason.h"
+#include "parksim/planner/steering/BalkcomMason.h"
 #include "tests/support/PlanChecks.h"
 
 namespace parksim {

@@ -1,4 +1,4 @@
-#include "parksim/planner/BalkcomMason.h"
+#include "parksim/planner/steering/BalkcomMason.h"
 
 #include <algorithm>
 #include <cmath>

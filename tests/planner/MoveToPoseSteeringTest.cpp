@@ -1,4 +1,4 @@
-#include "parksim/planner/MoveToPoseSteering.h"
+#include "parksim/planner/steering/MoveToPoseSteering.h"
 
 #include <cmath>
 #include <random>

@@ -1,4 +1,4 @@
-#include "parksim/planner/OmplPlugin.h"
+#include "parksim/planner/steering/OmplPlugin.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "parksim/core/Angle.h"
-#include "parksim/planner/ReedsSheppSteering.h"
+#include "parksim/planner/steering/ReedsSheppSteering.h"
 #include "tests/support/LoadedLibraries.h"
 
 namespace parksim {

@@ -1,4 +1,4 @@
-#include "parksim/planner/PathSmoother.h"
+#include "parksim/planner/base/PathSmoother.h"
 
 #include <cmath>
 #include <random>
@@ -7,8 +7,8 @@
 
 #include "parksim/core/DiffDrive.h"
 #include "parksim/core/Error.h"
-#include "parksim/planner/BalkcomMason.h"
-#include "parksim/planner/MotionPrimitives.h"
+#include "parksim/planner/motion/MotionPrimitives.h"
+#include "parksim/planner/steering/BalkcomMason.h"
 #include "tests/support/StudyLot.h"
 
 namespace parksim {

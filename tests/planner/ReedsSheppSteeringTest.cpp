@@ -1,4 +1,4 @@
-#include "parksim/planner/ReedsSheppSteering.h"
+#include "parksim/planner/steering/ReedsSheppSteering.h"
 
 #include <cmath>
 #include <random>

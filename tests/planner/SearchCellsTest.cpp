@@ -1,4 +1,4 @@
-#include "parksim/planner/SearchCells.h"
+#include "parksim/planner/search/SearchCells.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "parksim/planner/SpeedProfile.h"
+#include "parksim/planner/motion/SpeedProfile.h"
 
 #include <cmath>
 #include <numeric>

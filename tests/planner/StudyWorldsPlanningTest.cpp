@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "tests/support/PlanChecks.h"
 #include "tests/support/TestPaths.h"

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/MetricsFile.h"

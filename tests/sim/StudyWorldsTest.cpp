@@ -12,7 +12,7 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/Geometry.h"
 #include "parksim/pipeline/Verdict.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/MetricsFile.h"

@@ -10,9 +10,9 @@
 #include "parksim/core/DiffDrive.h"
 #include "parksim/core/Scenario.h"
 #include "parksim/core/Trajectory.h"
-#include "parksim/planner/MotionValidator.h"
-#include "parksim/planner/PathCost.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/planner/motion/MotionValidator.h"
+#include "parksim/planner/motion/PathCost.h"
 #include "tests/support/StudyLot.h"
 
 namespace parksim::testing {
