@@ -20,9 +20,9 @@
 #include "parksim/pipeline/EpisodeFigures.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/renders/Figures.h"
-#include "parksim/renders/FrameRecorder.h"
-#include "parksim/renders/TrackingPlot.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/renders/plots/Figures.h"
+#include "parksim/renders/plots/TrackingPlot.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/TrajectoryFile.h"
 

@@ -26,8 +26,8 @@ set(PARKSIM_UNITY_BATCH_SIZE 6 CACHE STRING
 # Sources compiled on their own in a unity build (paths relative to the top folder), each with the
 # reason: mostly a name it shares with another file of its target.
 set(PARKSIM_UNITY_SKIP
-  parksim/planner/tree/ShortcutSmoother.cpp  # kCostEpsilonM, also in TreePlanner.cpp
-  parksim/renders/PngEncoderStb.cpp     # stb_image_write's statics, also in PngEncoder.cpp
+  parksim/planner/tree/ShortcutSmoother.cpp   # kCostEpsilonM, also in TreePlanner.cpp
+  parksim/renders/image/PngEncoderStb.cpp     # stb_image_write's statics, also in PngEncoder.cpp
   # Added after the planner's batches were laid out: alone, it leaves them as they were
   # (TreeSearch.h's and TimeAStarSearch.cpp's Clock would otherwise meet in one batch).
   parksim/planner/search/ReachableBudget.cpp

@@ -10,7 +10,7 @@
 #include "parksim/core/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
 #include "parksim/planner/base/PlanScenario.h"
-#include "parksim/renders/FrameRecorder.h"
+#include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/Episode.h"
 

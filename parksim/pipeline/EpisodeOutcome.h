@@ -16,7 +16,7 @@
 #include "parksim/pipeline/Verdict.h"
 #include "parksim/planner/base/PlanResult.h"
 #include "parksim/planner/base/PlanScenario.h"
-#include "parksim/renders/FrameRecorder.h"
+#include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/scenario/World.h"
 #include "parksim/sim/Episode.h"
 #include "parksim/sim/ExecutionDef.h"

@@ -8,8 +8,8 @@
 #include "parksim/core/RobotDef.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/realism/RealismDef.h"
-#include "parksim/renders/FrameRecorder.h"
-#include "parksim/renders/PngEncoder.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/renders/image/PngEncoder.h"
 #include "parksim/rl/ParkingTaskDef.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/ExecutionDef.h"
@@ -205,7 +205,7 @@ void bindEpisodeDefs(py::module_& m) {
       .def_readwrite("ground_margin_m", &SimModelDef::ground_margin_m)
       .def_readwrite("local_frame_grid_m", &SimModelDef::local_frame_grid_m);
 
-  defClass<FrameDef>(m, "FrameDef", "Filming an episode (renders/FrameRecorder.h).")
+  defClass<FrameDef>(m, "FrameDef", "Filming an episode (renders/film/FrameRecorder.h).")
       .def_readwrite("fps", &FrameDef::fps)
       .def_readwrite("width_px", &FrameDef::width_px)
       .def_readwrite("height_px", &FrameDef::height_px)

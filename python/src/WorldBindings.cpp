@@ -7,7 +7,7 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/Geometry.h"
 #include "parksim/core/InputFile.h"
-#include "parksim/renders/CSpace.h"
+#include "parksim/renders/plots/CSpace.h"
 #include "parksim/scenario/ScenarioReader.h"
 #include "parksim/scenario/World.h"
 #include "python/src/Bindings.h"

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "parksim/pipeline/EpisodePipeline.h"
-#include "parksim/renders/SceneBuilder.h"
+#include "parksim/renders/scene/SceneBuilder.h"
 #include "parksim/scenario/World.h"
 #include "tests/support/TestPaths.h"
 

@@ -1,4 +1,4 @@
-#include "parksim/renders/CSpace.h"
+#include "parksim/renders/plots/CSpace.h"
 
 #include <gtest/gtest.h>
 

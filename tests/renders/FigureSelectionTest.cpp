@@ -1,4 +1,4 @@
-#include "parksim/renders/FigureSelection.h"
+#include "parksim/renders/plots/FigureSelection.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 
 #include "RenderTestUtil.h"
 #include "parksim/core/Error.h"
-#include "parksim/renders/Figures.h"
+#include "parksim/renders/plots/Figures.h"
 
 namespace parksim {
 namespace {

@@ -1,4 +1,4 @@
-#include "parksim/renders/FontLookup.h"
+#include "parksim/renders/text/FontLookup.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "parksim/core/Error.h"
-#include "parksim/renders/Font.h"
+#include "parksim/renders/text/Font.h"
 
 namespace parksim {
 namespace {

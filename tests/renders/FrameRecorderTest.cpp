@@ -1,4 +1,4 @@
-#include "parksim/renders/FrameRecorder.h"
+#include "parksim/renders/film/FrameRecorder.h"
 
 #include <gtest/gtest.h>
 
@@ -12,9 +12,9 @@
 
 #include "RenderTestUtil.h"
 #include "parksim/core/Error.h"
-#include "parksim/renders/PngEncoder.h"
-#include "parksim/renders/Process.h"
-#include "parksim/renders/SceneBuilder.h"
+#include "parksim/renders/film/Process.h"
+#include "parksim/renders/image/PngEncoder.h"
+#include "parksim/renders/scene/SceneBuilder.h"
 
 namespace parksim {
 namespace {

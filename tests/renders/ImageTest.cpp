@@ -1,4 +1,4 @@
-#include "parksim/renders/Image.h"
+#include "parksim/renders/image/Image.h"
 
 #include <gtest/gtest.h>
 

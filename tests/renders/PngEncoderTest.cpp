@@ -1,4 +1,4 @@
-#include "parksim/renders/PngEncoder.h"
+#include "parksim/renders/image/PngEncoder.h"
 
 #include <gtest/gtest.h>
 #include <zlib.h>

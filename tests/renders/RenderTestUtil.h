@@ -10,7 +10,7 @@
 #include "parksim/core/Angle.h"
 #include "parksim/core/Geometry.h"
 #include "parksim/core/Scenario.h"
-#include "parksim/renders/SceneBuilder.h"
+#include "parksim/renders/scene/SceneBuilder.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim::rendertest {

@@ -1,4 +1,4 @@
-#include "parksim/renders/SceneClip.h"
+#include "parksim/renders/scene/SceneClip.h"
 
 #include <gtest/gtest.h>
 

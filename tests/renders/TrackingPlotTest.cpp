@@ -1,4 +1,4 @@
-#include "parksim/renders/TrackingPlot.h"
+#include "parksim/renders/plots/TrackingPlot.h"
 
 #include <gtest/gtest.h>
 

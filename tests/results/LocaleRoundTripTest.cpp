@@ -19,7 +19,7 @@
 #include "parksim/core/NumberFormat.h"
 #include "parksim/core/Trajectory.h"
 #include "parksim/pipeline/Verdict.h"
-#include "parksim/renders/TrackingPlot.h"
+#include "parksim/renders/plots/TrackingPlot.h"
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/MetricsFile.h"
