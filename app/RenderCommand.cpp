@@ -14,7 +14,6 @@
 #include "parksim/cli/TerminalText.h"
 #include "parksim/cli/Validators.h"
 #include "parksim/cli/WorldOptions.h"
-#include "parksim/command/CommandPlanner.h"
 #include "parksim/core/AtomicFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
@@ -25,6 +24,7 @@
 #include "parksim/renders/plots/TrackingPlot.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/TrajectoryFile.h"
+#include "parksim/usercode/CommandPlanner.h"
 
 namespace parksim::app {
 

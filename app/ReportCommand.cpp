@@ -24,10 +24,10 @@
 #include "parksim/pages/JUnitPageLinks.h"
 #include "parksim/pages/SweepPage.h"
 #include "parksim/pipeline/Verdict.h"
+#include "parksim/report/Report.h"
 #include "parksim/results/JUnitReport.h"
 #include "parksim/results/OmplLog.h"
 #include "parksim/results/ResultsTable.h"
-#include "parksim/sweep/Report.h"
 #include "parksim/sweep/SweepManifest.h"
 
 namespace parksim::app {

@@ -28,10 +28,10 @@
 #include "parksim/realism/Distribution.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/renders/image/PngEncoder.h"
+#include "parksim/report/Report.h"
 #include "parksim/results/JUnitReport.h"
 #include "parksim/results/TrajectoryFile.h"
 #include "parksim/sweep/EpisodeRun.h"
-#include "parksim/sweep/Report.h"
 
 namespace parksim::app {
 

@@ -20,7 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/sweep/Report.h"
+#include "parksim/report/Report.h"
 
 namespace parksim {
 

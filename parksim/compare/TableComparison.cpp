@@ -16,8 +16,8 @@
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
 #include "parksim/core/Text.h"
+#include "parksim/report/Report.h"
 #include "parksim/sweep/EpisodeParams.h"
-#include "parksim/sweep/Report.h"
 
 namespace parksim {
 

@@ -1,6 +1,6 @@
 #pragma once
 // A program parksim starts and talks to: a user's planner or controller given as a command
-// (command/CommandPlanner.h, CommandController.h). Started without a shell (argv as given), in
+// (usercode/CommandPlanner.h, CommandController.h). Started without a shell (argv as given), in
 // its own process group so that everything it starts can be ended with it, with pipes that are
 // close-on-exec on parksim's side, so that a process started at the same time by another thread
 // never holds them open.

@@ -1,6 +1,6 @@
 #pragma once
 // What a process running user code (a plugin's or a Python object's planner or controller)
-// publishes to the process that watches it (pipeline/UserCodeIsolation.h), in memory they
+// publishes to the process that watches it (usercode/UserCodeIsolation.h), in memory they
 // share: which component it is in, and that the component is making progress. Lock-free
 // atomics, so the parent reads them while the child runs; plain data, so it lives in an
 // anonymous shared mapping.

@@ -8,10 +8,10 @@
 
 #include "parksim/core/TrackingTolerance.h"
 #include "parksim/core/UserCodeWatch.h"
-#include "parksim/pipeline/ComponentCheck.h"
 #include "parksim/pipeline/EpisodeRequest.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/sim/ExecutionDef.h"
+#include "parksim/usercode/ComponentCheck.h"
 
 namespace parksim {
 

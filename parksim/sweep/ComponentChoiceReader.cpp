@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "parksim/command/CommandLine.h"
-#include "parksim/command/CommandPlanner.h"
 #include "parksim/core/ComponentRegistry.h"
 #include "parksim/core/ParamSet.h"
+#include "parksim/usercode/CommandLine.h"
+#include "parksim/usercode/CommandPlanner.h"
 
 namespace parksim {
 namespace {

@@ -1,6 +1,6 @@
 #include "parksim/sweep/EpisodeExpansion.h"
 
-#include "parksim/plugin/PluginLoader.h"
+#include "parksim/usercode/PluginLoader.h"
 
 #include <algorithm>
 #include <atomic>

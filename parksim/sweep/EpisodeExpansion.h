@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "parksim/pipeline/ComponentCheck.h"
-#include "parksim/plugin/Components.h"
 #include "parksim/scenario/World.h"
 #include "parksim/sweep/EpisodeParams.h"
 #include "parksim/sweep/SweepSpec.h"
+#include "parksim/usercode/ComponentCheck.h"
+#include "parksim/usercode/Components.h"
 
 namespace parksim {
 

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "parksim/core/Error.h"
-#include "parksim/renders/film/Process.h"
+#include "parksim/core/Process.h"
 #include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/Shard.h"
 

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "parksim/plugin/Components.h"
 #include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/EpisodeExpansion.h"
 #include "parksim/sweep/Shard.h"
 #include "parksim/sweep/SweepRunner.h"
 #include "parksim/sweep/SweepSpec.h"
+#include "parksim/usercode/Components.h"
 
 namespace parksim {
 

@@ -6,7 +6,7 @@
 //
 // Workers are threads while every planner and controller of the episodes is parksim's own.
 // When one is user code (a plugin's, a Python object's, a command's: pipeline/EpisodeSettings.h
-// runsUserCode), they are processes (pipeline/UserCodeIsolation.h, one per worker, reused from
+// runsUserCode), they are processes (usercode/UserCodeIsolation.h, one per worker, reused from
 // episode to episode): an episode whose user code crashes or hangs past its limit then becomes
 // a row with its planner_error or controller_error, the worker is replaced, and the sweep goes
 // on.
@@ -15,10 +15,10 @@
 #include <functional>
 #include <vector>
 
-#include "parksim/pipeline/UserCodeIsolation.h"
 #include "parksim/results/ResultsTable.h"
 #include "parksim/sweep/EpisodeExpansion.h"
 #include "parksim/sweep/EpisodeRun.h"
+#include "parksim/usercode/UserCodeIsolation.h"
 
 namespace parksim {
 

@@ -97,7 +97,7 @@ struct SweepSpec {
   std::vector<std::string> world_paths;
   int worlds_line = 0;  ///< line of `worlds:` in the spec, for errors found when loading them
   /// `plugins:`: shared libraries whose planners and controllers the axes may name
-  /// (plugin/PluginLoader.h), as the spec names them and resolved against its folder.
+  /// (usercode/PluginLoader.h), as the spec names them and resolved against its folder.
   std::vector<std::string> plugin_files;
   std::vector<std::string> plugin_paths;
   int plugins_line = 0;

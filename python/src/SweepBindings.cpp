@@ -5,8 +5,8 @@
 
 #include <Python.h>
 
-#include "parksim/plugin/PluginLoader.h"
 #include "parksim/sweep/SweepJob.h"
+#include "parksim/usercode/PluginLoader.h"
 #include "python/src/Bindings.h"
 #include "python/src/UserCode.h"
 

@@ -1,7 +1,7 @@
 // A command as one line of text: split as a shell splits words (no expansions), canonical text,
 // placeholders, and the command parameter's checks.
 
-#include "parksim/command/CommandLine.h"
+#include "parksim/usercode/CommandLine.h"
 
 #include <gtest/gtest.h>
 

@@ -11,9 +11,9 @@
 #include "parksim/core/Error.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/plugin/PluginLoader.h"
 #include "parksim/results/TrajectoryFile.h"
 #include "parksim/scenario/World.h"
+#include "parksim/usercode/PluginLoader.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

@@ -1,4 +1,4 @@
-#include "parksim/plugin/PluginLoader.h"
+#include "parksim/usercode/PluginLoader.h"
 
 #include <string>
 
@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/Error.h"
-#include "parksim/plugin/PluginApi.h"
+#include "parksim/usercode/PluginApi.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

@@ -12,7 +12,7 @@
 
 #include "RenderTestUtil.h"
 #include "parksim/core/Error.h"
-#include "parksim/renders/film/Process.h"
+#include "parksim/core/Process.h"
 #include "parksim/renders/image/PngEncoder.h"
 #include "parksim/renders/scene/SceneBuilder.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Planners by name: parksim's own (builtInPlanners) and those a front-end adds from plugins
-// (parksim/plugin/). `--planner NAME`, a sweep's `planners:` axis, Python's plan(planner=...)
+// (parksim/usercode/). `--planner NAME`, a sweep's `planners:` axis, Python's plan(planner=...)
 // and parksim-bench all look names up here, so a plugin's planner is selected exactly as a
 // built-in one.
 

@@ -1,10 +1,10 @@
-#include "parksim/renders/plots/BoxPlot.h"
+#include "parksim/report/BoxPlot.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "parksim/renders/plots/PlotCanvas.h"
 #include "parksim/renders/plots/TrackingPlot.h"
+#include "parksim/report/PlotCanvas.h"
 
 namespace parksim {
 

@@ -1,10 +1,10 @@
-#include "parksim/renders/plots/SuccessMatrix.h"
+#include "parksim/report/SuccessMatrix.h"
 
 #include <algorithm>
 #include <cstdio>
 
 #include "parksim/core/Error.h"
-#include "parksim/renders/plots/PlotCanvas.h"
+#include "parksim/report/PlotCanvas.h"
 
 namespace parksim {
 namespace {

@@ -1,4 +1,4 @@
-#include "parksim/command/CommandLine.h"
+#include "parksim/usercode/CommandLine.h"
 
 #include "parksim/core/ChildProcess.h"
 #include "parksim/core/Error.h"

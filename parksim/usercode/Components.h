@@ -25,7 +25,7 @@ struct PluginRecord {
 
 /// What a run may select without a plugin: parksim's own planners (builtInPlanners) and
 /// controllers (builtInControllers), then the command planner and controller, which run a
-/// user's program (command/CommandPlanner.h, CommandController.h).
+/// user's program (usercode/CommandPlanner.h, CommandController.h).
 PlannerRegistry ownPlanners();
 ControllerRegistry ownControllers();
 

@@ -1,14 +1,14 @@
-#include "parksim/command/CommandController.h"
+#include "parksim/usercode/CommandController.h"
 
 #include <charconv>
 #include <chrono>
 #include <stdexcept>
 
-#include "parksim/command/CommandLine.h"
-#include "parksim/command/ProblemFile.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
 #include "parksim/core/Text.h"
+#include "parksim/usercode/CommandLine.h"
+#include "parksim/usercode/ProblemFile.h"
 
 namespace parksim {
 

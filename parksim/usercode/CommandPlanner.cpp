@@ -1,4 +1,4 @@
-#include "parksim/command/CommandPlanner.h"
+#include "parksim/usercode/CommandPlanner.h"
 
 #include <stdlib.h>
 
@@ -7,8 +7,6 @@
 #include <optional>
 #include <system_error>
 
-#include "parksim/command/CommandLine.h"
-#include "parksim/command/ProblemFile.h"
 #include "parksim/core/ChildProcess.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/InputFile.h"
@@ -17,6 +15,8 @@
 #include "parksim/planner/motion/PathCost.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/TrajectoryFile.h"
+#include "parksim/usercode/CommandLine.h"
+#include "parksim/usercode/ProblemFile.h"
 
 namespace parksim {
 

@@ -1,4 +1,4 @@
-#include "parksim/pipeline/ComponentCheck.h"
+#include "parksim/usercode/ComponentCheck.h"
 
 #include <memory>
 

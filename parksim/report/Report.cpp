@@ -1,4 +1,4 @@
-#include "parksim/sweep/Report.h"
+#include "parksim/report/Report.h"
 
 #include <algorithm>
 #include <cctype>
@@ -12,9 +12,9 @@
 #include "parksim/core/NumberFormat.h"
 #include "parksim/renders/gl/Renderer.h"
 #include "parksim/renders/image/PngEncoder.h"
-#include "parksim/renders/plots/BoxPlot.h"
-#include "parksim/renders/plots/ParameterPlot.h"
-#include "parksim/renders/plots/SuccessMatrix.h"
+#include "parksim/report/BoxPlot.h"
+#include "parksim/report/ParameterPlot.h"
+#include "parksim/report/SuccessMatrix.h"
 #include "parksim/results/EpisodeRecord.h"
 #include "parksim/results/ResultsFile.h"
 #include "parksim/sweep/EpisodeParams.h"

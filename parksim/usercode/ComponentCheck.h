@@ -19,8 +19,8 @@
 
 #include "parksim/core/ParamMap.h"
 #include "parksim/core/UserCodeWatch.h"
-#include "parksim/pipeline/UserCodeIsolation.h"
-#include "parksim/plugin/Components.h"
+#include "parksim/usercode/Components.h"
+#include "parksim/usercode/UserCodeIsolation.h"
 
 namespace parksim {
 

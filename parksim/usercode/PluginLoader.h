@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "parksim/plugin/Components.h"
+#include "parksim/usercode/Components.h"
 
 namespace parksim {
 

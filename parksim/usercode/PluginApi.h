@@ -4,7 +4,7 @@
 // point that carries the plugin API version it was built against (nav2 and MoveIt load
 // planners and controllers the same way; docs/your-code.md).
 //
-//   #include "parksim/plugin/PluginApi.h"
+//   #include "parksim/usercode/PluginApi.h"
 //
 //   void registerMine(parksim::PluginRegistrar& r) {
 //     r.addPlanner(parksim::plannerEntry<MyPlanner>({.name = "mine", .description = "..."},

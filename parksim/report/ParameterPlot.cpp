@@ -1,10 +1,10 @@
-#include "parksim/renders/plots/ParameterPlot.h"
+#include "parksim/report/ParameterPlot.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "parksim/renders/plots/PlotCanvas.h"
 #include "parksim/renders/plots/TrackingPlot.h"
+#include "parksim/report/PlotCanvas.h"
 
 namespace parksim {
 namespace {

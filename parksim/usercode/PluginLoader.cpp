@@ -1,4 +1,4 @@
-#include "parksim/plugin/PluginLoader.h"
+#include "parksim/usercode/PluginLoader.h"
 
 #include <filesystem>
 #include <fstream>
@@ -8,7 +8,7 @@
 #include "parksim/core/Fnv1a.h"
 #include "parksim/core/SharedLibrary.h"
 #include "parksim/core/Text.h"
-#include "parksim/plugin/PluginApi.h"
+#include "parksim/usercode/PluginApi.h"
 
 namespace parksim {
 
@@ -85,7 +85,7 @@ const PluginRecord& loadPlugin(Components& components, const std::string& path) 
   }
   if (entry == nullptr) {
     throw Error(path + ": not a parksim plugin (no " + kPluginEntryPoint +
-                " entry point; define one with PARKSIM_PLUGIN, parksim/plugin/PluginApi.h)");
+                " entry point; define one with PARKSIM_PLUGIN, parksim/usercode/PluginApi.h)");
   }
   // The library stays loaded (RTLD_NODELETE), so its functions outlive the handle.
   using EntryPoint = const PluginDescriptor* (*)();

@@ -1,7 +1,7 @@
-#include "parksim/plugin/Components.h"
+#include "parksim/usercode/Components.h"
 
-#include "parksim/command/CommandController.h"
-#include "parksim/command/CommandPlanner.h"
+#include "parksim/usercode/CommandController.h"
+#include "parksim/usercode/CommandPlanner.h"
 
 namespace parksim {
 

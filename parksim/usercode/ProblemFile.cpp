@@ -1,4 +1,4 @@
-#include "parksim/command/ProblemFile.h"
+#include "parksim/usercode/ProblemFile.h"
 
 #include "parksim/planner/base/PlanScenario.h"
 

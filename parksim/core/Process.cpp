@@ -1,4 +1,4 @@
-#include "parksim/renders/film/Process.h"
+#include "parksim/core/Process.h"
 
 #include <fcntl.h>
 #include <signal.h>

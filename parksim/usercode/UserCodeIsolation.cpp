@@ -1,4 +1,4 @@
-#include "parksim/pipeline/UserCodeIsolation.h"
+#include "parksim/usercode/UserCodeIsolation.h"
 
 #include <fcntl.h>
 #include <poll.h>
