@@ -121,7 +121,7 @@ std::string writeIndexPage(const std::string& dir, const std::string& out, const
   page.rows = &rows;
   page.axes = parameterColumns(rows);
   for (const EpisodeStatus s : allEpisodeStatuses()) page.statuses.push_back(toString(s));
-  page.episodes_href = relativeHref(out, dir + "/episodes");
+  page.episodes_href = hrefOf(relativeHref(out, dir + "/episodes"));
   page.kept = keptEpisodePages(dir + "/episodes", rows);
   page.warnings = mixes;
   const std::string path = staged + "/index.html";

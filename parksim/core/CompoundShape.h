@@ -14,8 +14,9 @@
 namespace parksim {
 
 struct CompoundShape {
-  /// Convex parts, each strictly convex and counter-clockwise, m (lot frame); their interiors
-  /// are disjoint and their union is the footprint.
+  /// Convex parts, each strictly convex and counter-clockwise, m (lot frame); their union is
+  /// the footprint. Their interiors are disjoint but for walls a drawing draws as lines
+  /// (scenario/SvgMap.h), each a part of its own that overlaps the others where they meet.
   std::vector<std::vector<Eigen::Vector2d>> parts;
   /// Each part's axis-aligned bounds, m.
   std::vector<Eigen::AlignedBox2d> bounds;

@@ -59,6 +59,26 @@ std::string relativeHref(const std::string& from, const std::string& to) {
   return rel.generic_string();
 }
 
+std::string hrefOf(std::string_view path) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string href;
+  href.reserve(path.size());
+  for (const char c : path) {
+    const auto byte = static_cast<unsigned char>(c);
+    const bool kept = (byte >= 'A' && byte <= 'Z') || (byte >= 'a' && byte <= 'z') ||
+                      (byte >= '0' && byte <= '9') || c == '-' || c == '.' || c == '_' ||
+                      c == '~' || c == '/';
+    if (kept) {
+      href += c;
+    } else {
+      href += '%';
+      href += kHex[byte >> 4];
+      href += kHex[byte & 15];
+    }
+  }
+  return href;
+}
+
 nlohmann::json sweepPageData(const SweepPage& page) {
   if (page.rows == nullptr) throw Error("sweepPageData: no rows");
   if (!page.kept.empty() && page.kept.size() != page.rows->size()) {

@@ -13,6 +13,7 @@
 #include "parksim/core/ConvexPartition.h"
 #include "parksim/core/Error.h"
 #include "parksim/core/ExactOrientation.h"
+#include "parksim/core/Geometry.h"
 #include "parksim/core/InputFile.h"
 #include "parksim/core/PolygonRegion.h"
 #include "parksim/core/Text.h"
@@ -95,21 +96,26 @@ class SvgSite {
   const xmlNode* node_;
 };
 
-// A length attribute in user units ("12", "12.5px"); other units and percentages are refused.
-double userLength(const SvgSite& site, const xmlNode* n, const char* name, double fallback) {
-  const auto text = attribute(n, name);
-  if (!text) return fallback;
-  std::string s = trimmed(*text);
+// A length in user units ("12", "12.5px"), the value of `name`; other units and percentages
+// are refused.
+double userLengthText(const SvgSite& site, const std::string& name, const std::string& text) {
+  std::string s = trimmed(text);
   if (s.size() > 2 && s.compare(s.size() - 2, 2, "px") == 0) s.resize(s.size() - 2);
   double v = 0.0;
   const char* first = s.data() + (!s.empty() && s[0] == '+' ? 1 : 0);
   const auto [end, ec] = std::from_chars(first, s.data() + s.size(), v);
   if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) {
-    site.fail(std::string(name) + "=\"" + *text +
+    site.fail(name + "=\"" + text +
               "\": a length in user units (a number, or px) is expected; other units and "
               "percentages are not supported");
   }
   return v;
+}
+
+// A length attribute in user units, or `fallback` where the element has none.
+double userLength(const SvgSite& site, const xmlNode* n, const char* name, double fallback) {
+  const auto text = attribute(n, name);
+  return text ? userLengthText(site, name, *text) : fallback;
 }
 
 // A root length with an optional unit, in metres per unit when the unit is physical.
@@ -147,6 +153,9 @@ struct WalkState {
   SvgTransform ctm;  // user units of this element to the page's user units
   bool evenodd = false;
   bool selected = false;
+  // The stroke-width in force (inherited), as written: read only where a wall is drawn as a
+  // line, so that a width in units elsewhere refuses nothing.
+  std::optional<std::string> stroke_width;
 };
 
 class SvgReader {
@@ -281,6 +290,9 @@ class SvgReader {
       else if (*rule != "inherit")
         site.fail("fill-rule: " + *rule + " is neither nonzero nor evenodd");
     }
+    if (auto width = property(n, "stroke-width"); width && *width != "inherit") {
+      state.stroke_width = std::move(width);
+    }
     if (tag == "g" || tag == "a" || tag == "switch") {
       walkChildren(n, state, depth);
       return;
@@ -300,7 +312,6 @@ class SvgReader {
       walkChildren(n, state, depth);
       return;
     }
-    if (tag == "line") site.fail("a line has no area; draw walls as rectangles or closed paths");
     for (const char* p : {"clip-path", "mask"}) {
       const auto v = property(n, p);
       if (v && *v != "none") site.fail(std::string(p) + " is not supported on an obstacle shape");
@@ -383,6 +394,9 @@ class SvgReader {
       } else {
         rings.push_back({{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}});
       }
+    } else if (tag == "line") {
+      rings.push_back({{userLength(site, n, "x1", 0.0), userLength(site, n, "y1", 0.0)},
+                       {userLength(site, n, "x2", 0.0), userLength(site, n, "y2", 0.0)}});
     } else if (tag == "polygon" || tag == "polyline") {
       try {
         rings.push_back(parseSvgPoints(attribute(n, "points").value_or("")));
@@ -398,7 +412,7 @@ class SvgReader {
         site.fail("d: " + std::string(e.what()));
       }
     }
-    addRings(name, site, to_lot, std::move(rings), state.evenodd);
+    addRings(name, site, to_lot, std::move(rings), state);
   }
 
   void addObstacle(Obstacle o, const SvgSite& site, std::size_t parts) {
@@ -409,11 +423,25 @@ class SvgReader {
     out_.obstacles.push_back(std::move(o));
   }
 
-  // The rings in the lot, without repeated points or flat rings; their filled regions by the
-  // fill rule; one obstacle of them.
+  // The thickness of a wall drawn as a line, in the shape's user units: the stroke-width in
+  // force, else SVG's initial value, 1.
+  static double wallThickness(const SvgSite& site, const WalkState& state) {
+    if (!state.stroke_width) return 1.0;
+    const double width = userLengthText(site, "stroke-width", *state.stroke_width);
+    if (!(width > 0.0)) {
+      site.fail("stroke-width=\"" + *state.stroke_width +
+                "\": a wall drawn as a line (it has no area) is as thick as its stroke, which "
+                "must be wider than 0");
+    }
+    return width;
+  }
+
+  // The rings in the lot, without repeated points; those with area filled by the fill rule,
+  // those on one line walls as thick as their stroke (strokeOutline); one obstacle of them.
   void addRings(const std::string& name, const SvgSite& site, const SvgTransform& to_lot,
-                std::vector<Ring> user_rings, bool evenodd) {
-    std::vector<Ring> rings;
+                std::vector<Ring> user_rings, const WalkState& state) {
+    std::vector<Ring> rings;    // outlines with area
+    std::vector<Ring> strokes;  // walls drawn as lines, convex
     for (Ring& r : user_rings) {
       Ring lot;
       for (const Eigen::Vector2d& p : r) {
@@ -434,18 +462,41 @@ class SvgReader {
       for (std::size_t k = 2; k < lot.size() && flat; ++k) {
         flat = orientation(lot[0], lot[1], lot[k]) == 0;
       }
-      if (lot.size() < 3 || flat) continue;
-      rings.push_back(std::move(lot));
+      if (lot.size() >= 3 && !flat) {
+        rings.push_back(std::move(lot));
+      } else if (lot.size() >= 2) {
+        Ring quad = svgLineStroke(r, wallThickness(site, state), to_lot);
+        if (quad.empty()) {
+          site.fail("a wall drawn as a line has no area in the lot (its transform flattens it)");
+        }
+        strokes.push_back(std::move(quad));
+      }
+      // One point has neither area nor length: SVG draws nothing there.
     }
-    if (rings.empty()) return;
-    if (const auto problem = ringsProblem(rings)) site.fail(*problem);
-    const std::vector<PolygonWithHoles> regions = filledRegions(rings, evenodd);
-    if (regions.size() == 1 && regions[0].holes.empty()) {
+    std::vector<PolygonWithHoles> regions;
+    if (!rings.empty()) {
+      if (const auto problem = ringsProblem(rings)) site.fail(*problem);
+      regions = filledRegions(rings, state.evenodd);
+    }
+    if (strokes.empty() && regions.size() == 1 && regions[0].holes.empty()) {
       const PolygonWithHoles tidy = normalizedRegion(regions[0]);
       if (isStrictlyConvexCcw(tidy.outer)) {
         addObstacle(Obstacle::makePolygon(name, def_.kind, tidy.outer, def_.height_m), site, 1);
         return;
       }
+    }
+    if (regions.empty() && strokes.size() == 1) {
+      const Ring& q = strokes.front();
+      if (!to_lot.isSimilarity()) {
+        addObstacle(Obstacle::makePolygon(name, def_.kind, q, def_.height_m), site, 1);
+        return;
+      }
+      OrientedBox box;
+      box.center = 0.5 * (q[0] + q[2]);
+      box.half_extents = {0.5 * (q[1] - q[0]).norm(), 0.5 * (q[3] - q[0]).norm()};
+      box.yaw = std::atan2(q[1].y() - q[0].y(), q[1].x() - q[0].x());
+      addObstacle(Obstacle::makeBox(name, def_.kind, box, def_.height_m), site, 1);
+      return;
     }
     std::vector<Ring> parts;
     std::vector<Ring> outline;
@@ -455,6 +506,11 @@ class SvgReader {
       const PolygonWithHoles tidy = normalizedRegion(region);
       outline.push_back(tidy.outer);
       outline.insert(outline.end(), tidy.holes.begin(), tidy.holes.end());
+    }
+    // Walls drawn as lines are parts of their own, overlapping where they meet.
+    for (const Ring& q : strokes) {
+      parts.push_back(q);
+      outline.push_back(q);
     }
     if (parts.empty()) return;
     const std::size_t count = parts.size();

@@ -468,4 +468,36 @@ std::vector<Eigen::Vector2d> svgEllipseArc(double cx, double cy, double rx, doub
   return out;
 }
 
+std::vector<Eigen::Vector2d> svgLineStroke(const std::vector<Eigen::Vector2d>& points, double width,
+                                           const SvgTransform& to_lot) {
+  // The line runs from the first point towards the farthest; every point projects onto it.
+  const Eigen::Vector2d a = points.front();
+  Eigen::Vector2d far = a;
+  for (const Eigen::Vector2d& p : points) {
+    if ((p - a).squaredNorm() > (far - a).squaredNorm()) far = p;
+  }
+  if (far == a) return {};
+  const Eigen::Vector2d u = (far - a).normalized();
+  const Eigen::Vector2d n(-u.y(), u.x());
+  double lo = 0.0;
+  double hi = 0.0;
+  for (const Eigen::Vector2d& p : points) {
+    lo = std::min(lo, (p - a).dot(u));
+    hi = std::max(hi, (p - a).dot(u));
+  }
+  const double h = 0.5 * width;
+  std::vector<Eigen::Vector2d> quad = {
+      to_lot.apply(a + (lo - h) * u - h * n), to_lot.apply(a + (hi + h) * u - h * n),
+      to_lot.apply(a + (hi + h) * u + h * n), to_lot.apply(a + (lo - h) * u + h * n)};
+  double area = 0.0;
+  for (std::size_t i = 0; i < quad.size(); ++i) {
+    const Eigen::Vector2d& p = quad[i];
+    const Eigen::Vector2d& q = quad[(i + 1) % quad.size()];
+    area += p.x() * q.y() - q.x() * p.y();
+  }
+  if (!std::isfinite(area) || area == 0.0) return {};
+  if (area < 0.0) std::reverse(quad.begin(), quad.end());
+  return quad;
+}
+
 }  // namespace parksim

@@ -60,4 +60,11 @@ std::vector<Eigen::Vector2d> parseSvgPoints(std::string_view text);
 std::vector<Eigen::Vector2d> svgEllipseArc(double cx, double cy, double rx, double ry, double a0,
                                            double a1, double tolerance);
 
+/// A wall drawn as a line (`points`, in user units, all on one line and not all equal): the
+/// rectangle its stroke covers, `width` user units wide, its ends out by half the width (as a
+/// square cap draws them, so that walls meeting at a corner close it), carried into the lot by
+/// `to_lot` (a parallelogram under a shear); counter-clockwise. Empty when the map flattens it.
+std::vector<Eigen::Vector2d> svgLineStroke(const std::vector<Eigen::Vector2d>& points, double width,
+                                           const SvgTransform& to_lot);
+
 }  // namespace parksim

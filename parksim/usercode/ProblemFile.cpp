@@ -30,7 +30,7 @@ nlohmann::json obstacleJson(const Obstacle& o, const RobotDef& robot) {
       break;
     }
     case ObstacleShape::kCompound: {
-      // Non-convex outlines and map cells: the convex parts (disjoint, their union the shape)
+      // Non-convex outlines and map cells: the convex parts (their union the shape)
       // and, where there is one, the outline (outer rings counter-clockwise, holes clockwise).
       j["shape"] = "compound";
       auto rings = [](const std::vector<std::vector<Eigen::Vector2d>>& polygons) {
