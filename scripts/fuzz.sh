@@ -33,8 +33,8 @@ flags=(-std=c++20 -O1 -g1 -fno-omit-frame-pointer -fsanitize=fuzzer,address,unde
        -isystem /usr/include/libxml2)
 # The readers need the core library but not its build-provenance file (a configured header).
 core=()
-for f in parksim/core/*.cpp; do
-  [ "$f" = parksim/core/Provenance.cpp ] || core+=("$f")
+for f in parksim/core/*/*.cpp; do
+  [ "$f" = parksim/core/system/Provenance.cpp ] || core+=("$f")
 done
 
 # Each source is compiled once into build-fuzz/obj/ (the readers share the core library's
@@ -76,18 +76,18 @@ link() {  # link NAME OBJECTS... LIBS...
 # The reader's realism: section is checked by the Bullet-free parksim_realism library
 # (parksim/realism/, all of it).
 realism=(parksim/realism/*.cpp)
-scenario=(parksim/scenario/*.cpp)
+scenario=(parksim/scenario/*/*.cpp)
 # The results tables' readers and what they share (the episode record's fields, seals, ids,
 # manifests, merge's sources).
 tables=(parksim/results/ResultsFile.cpp parksim/results/RowSeal.cpp parksim/results/TableVerify.cpp
         parksim/results/EpisodeRecord.cpp parksim/sim/ExecutionDef.cpp
-        parksim/sweep/EpisodeParams.cpp parksim/sweep/SetValues.cpp parksim/sweep/SweepManifest.cpp
-        parksim/sweep/Shard.cpp parksim/sweep/Merge.cpp)
+        parksim/sweep/spec/EpisodeParams.cpp parksim/sweep/spec/SetValues.cpp parksim/sweep/shards/SweepManifest.cpp
+        parksim/sweep/shards/Shard.cpp parksim/sweep/shards/Merge.cpp)
 declare -A sources
 sources[world]="tests/fuzz/WorldReaderFuzz.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
 sources[plan]="tests/fuzz/PlanReaderFuzz.cpp parksim/results/TrajectoryFile.cpp ${core[*]}"
-sources[spec]="tests/fuzz/SweepSpecFuzz.cpp parksim/sweep/SweepSpecReader.cpp
-  parksim/sweep/ComponentChoiceReader.cpp parksim/usercode/CommandLine.cpp parksim/sweep/EpisodeSetup.cpp parksim/sweep/SetValues.cpp parksim/results/EpisodeRecord.cpp
+sources[spec]="tests/fuzz/SweepSpecFuzz.cpp parksim/sweep/spec/SweepSpecReader.cpp
+  parksim/sweep/spec/ComponentChoiceReader.cpp parksim/usercode/CommandLine.cpp parksim/sweep/spec/EpisodeSetup.cpp parksim/sweep/spec/SetValues.cpp parksim/results/EpisodeRecord.cpp
   parksim/planner/base/PlanScenario.cpp
   parksim/results/ExecutedFile.cpp parksim/pipeline/EpisodeRequest.cpp
   parksim/sim/ExecutionDef.cpp ${scenario[*]} ${realism[*]} ${core[*]}"

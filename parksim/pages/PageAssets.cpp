@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 

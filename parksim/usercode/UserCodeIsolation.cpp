@@ -13,8 +13,8 @@
 #include <cstring>
 #include <new>
 
-#include "parksim/core/NumberFormat.h"
-#include "parksim/core/SigpipeBlocked.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/system/SigpipeBlocked.h"
 
 namespace parksim {
 
