@@ -19,8 +19,8 @@
 #include "parksim/cli/OutputDir.h"
 #include "parksim/cli/ReportFileOption.h"
 #include "parksim/cli/TerminalText.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pages/JUnitPageLinks.h"
 #include "parksim/pages/SweepPage.h"
 #include "parksim/pipeline/Verdict.h"
@@ -28,7 +28,7 @@
 #include "parksim/results/JUnitReport.h"
 #include "parksim/results/OmplLog.h"
 #include "parksim/results/ResultsTable.h"
-#include "parksim/sweep/SweepManifest.h"
+#include "parksim/sweep/shards/SweepManifest.h"
 
 namespace parksim::app {
 

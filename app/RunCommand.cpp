@@ -31,7 +31,7 @@
 #include "parksim/report/Report.h"
 #include "parksim/results/JUnitReport.h"
 #include "parksim/results/TrajectoryFile.h"
-#include "parksim/sweep/EpisodeRun.h"
+#include "parksim/sweep/run/EpisodeRun.h"
 
 namespace parksim::app {
 

@@ -14,7 +14,7 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/realism/RealismDef.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 #include "parksim/sim/Episode.h"
 #include "parksim/usercode/CommandController.h"
 #include "parksim/usercode/CommandLine.h"

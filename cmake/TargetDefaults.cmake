@@ -33,7 +33,7 @@ set(PARKSIM_UNITY_SKIP
   parksim/planner/search/ReachableBudget.cpp
   # Not a name: it includes ProvenanceGit.h, which a commit or a first edit rewrites; alone,
   # only this file is compiled again then, not its batch.
-  parksim/core/Provenance.cpp
+  parksim/core/system/Provenance.cpp
 )
 
 if(PARKSIM_SANITIZE)

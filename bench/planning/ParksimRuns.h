@@ -7,7 +7,7 @@
 
 #include "bench/planning/PathCheck.h"
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/results/BenchRecord.h"
 

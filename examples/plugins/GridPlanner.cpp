@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "ExamplePlugins.h"
-#include "parksim/core/Geometry.h"
+#include "parksim/core/model/Geometry.h"
 #include "parksim/planner/base/PlanFinishing.h"
 
 namespace example {

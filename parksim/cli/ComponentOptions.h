@@ -10,8 +10,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "parksim/core/ParamMap.h"
-#include "parksim/core/UserCodeWatch.h"
+#include "parksim/core/params/ParamMap.h"
+#include "parksim/core/system/UserCodeWatch.h"
 #include "parksim/usercode/Components.h"
 
 namespace parksim::cli {

@@ -15,8 +15,8 @@
 #include <thread>
 
 #include "parksim/cli/Progress.h"
-#include "parksim/core/ChildProcess.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/system/ChildProcess.h"
 
 namespace parksim::cli {
 

@@ -11,7 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/planner/base/PlanScenario.h"
 
 namespace parksim::cli {

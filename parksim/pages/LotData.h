@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/renders/scene/SceneStyle.h"
 
 namespace parksim {

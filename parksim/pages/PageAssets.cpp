@@ -5,8 +5,12 @@
 
 #include <nlohmann/json.hpp>
 
+<<<<<<< HEAD
 #include "parksim/core/Error.h"
 #include "parksim/pages/ColumnCodec.h"
+=======
+#include "parksim/core/io/Error.h"
+>>>>>>> house
 
 namespace parksim {
 

@@ -1,7 +1,7 @@
 #include "parksim/pages/PageDocument.h"
 
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Provenance.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/system/Provenance.h"
 #include "parksim/results/XmlText.h"
 
 namespace parksim {

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <unordered_set>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pages/ColumnCodec.h"
 #include "parksim/pages/PageDocument.h"
 #include "parksim/pages/TableColumns.h"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/planner/base/PlanResult.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/renders/film/FrameRecorder.h"

@@ -16,15 +16,15 @@
 #include <optional>
 #include <string>
 
-#include "parksim/core/ParamMap.h"
-#include "parksim/core/TrackingTolerance.h"
-#include "parksim/core/Trajectory.h"
-#include "parksim/core/UserCodeWatch.h"
+#include "parksim/core/model/TrackingTolerance.h"
+#include "parksim/core/model/Trajectory.h"
+#include "parksim/core/params/ParamMap.h"
+#include "parksim/core/system/UserCodeWatch.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/renders/plots/Figures.h"
 #include "parksim/results/ExecutedFile.h"
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/World.h"
 #include "parksim/sim/ExecutionDef.h"
 #include "parksim/usercode/Components.h"
 

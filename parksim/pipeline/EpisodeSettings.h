@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "parksim/core/TrackingTolerance.h"
-#include "parksim/core/UserCodeWatch.h"
+#include "parksim/core/model/TrackingTolerance.h"
+#include "parksim/core/system/UserCodeWatch.h"
 #include "parksim/pipeline/EpisodeRequest.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/sim/ExecutionDef.h"

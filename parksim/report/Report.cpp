@@ -8,8 +8,8 @@
 #include <set>
 #include <tuple>
 
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/NumberFormat.h"
 #include "parksim/renders/gl/Renderer.h"
 #include "parksim/renders/image/PngEncoder.h"
 #include "parksim/report/BoxPlot.h"
@@ -17,7 +17,7 @@
 #include "parksim/report/SuccessMatrix.h"
 #include "parksim/results/EpisodeRecord.h"
 #include "parksim/results/ResultsFile.h"
-#include "parksim/sweep/EpisodeParams.h"
+#include "parksim/sweep/spec/EpisodeParams.h"
 
 namespace parksim {
 namespace {

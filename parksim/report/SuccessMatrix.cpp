@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/report/PlotCanvas.h"
 
 namespace parksim {

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/TrackingTolerance.h"
+#include "parksim/core/model/TrackingTolerance.h"
 #include "parksim/sim/Episode.h"
 
 namespace parksim {

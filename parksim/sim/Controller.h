@@ -27,13 +27,13 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/ComponentRegistry.h"
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/ParamMap.h"
-#include "parksim/core/ParamSet.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
+#include "parksim/core/params/ComponentRegistry.h"
+#include "parksim/core/params/ParamMap.h"
+#include "parksim/core/params/ParamSet.h"
 
 namespace parksim {
 

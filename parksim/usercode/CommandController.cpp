@@ -4,9 +4,9 @@
 #include <chrono>
 #include <stdexcept>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/core/Text.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/io/Text.h"
 #include "parksim/usercode/CommandLine.h"
 #include "parksim/usercode/ProblemFile.h"
 

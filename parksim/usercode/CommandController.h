@@ -27,8 +27,8 @@
 #include <string_view>
 #include <vector>
 
-#include "parksim/core/ChildProcess.h"
-#include "parksim/core/ParamMap.h"
+#include "parksim/core/params/ParamMap.h"
+#include "parksim/core/system/ChildProcess.h"
 #include "parksim/sim/Controller.h"
 
 namespace parksim {

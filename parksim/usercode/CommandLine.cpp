@@ -1,8 +1,8 @@
 #include "parksim/usercode/CommandLine.h"
 
-#include "parksim/core/ChildProcess.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/Text.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/Text.h"
+#include "parksim/core/system/ChildProcess.h"
 
 namespace parksim {
 

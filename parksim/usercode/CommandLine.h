@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/ParamMap.h"
-#include "parksim/core/ParamSet.h"
+#include "parksim/core/params/ParamMap.h"
+#include "parksim/core/params/ParamSet.h"
 
 namespace parksim {
 

@@ -7,10 +7,10 @@
 #include <optional>
 #include <system_error>
 
-#include "parksim/core/ChildProcess.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/InputFile.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/InputFile.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/system/ChildProcess.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/planner/motion/PathCost.h"
 #include "parksim/results/JsonFile.h"

@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/ParamMap.h"
+#include "parksim/core/params/ParamMap.h"
 #include "parksim/planner/base/Planner.h"
 
 namespace parksim {

@@ -17,8 +17,8 @@
 #include <tuple>
 #include <vector>
 
-#include "parksim/core/ParamMap.h"
-#include "parksim/core/UserCodeWatch.h"
+#include "parksim/core/params/ParamMap.h"
+#include "parksim/core/system/UserCodeWatch.h"
 #include "parksim/usercode/Components.h"
 #include "parksim/usercode/UserCodeIsolation.h"
 

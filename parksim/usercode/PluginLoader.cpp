@@ -4,10 +4,10 @@
 #include <fstream>
 #include <utility>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/Fnv1a.h"
-#include "parksim/core/SharedLibrary.h"
-#include "parksim/core/Text.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/Fnv1a.h"
+#include "parksim/core/io/Text.h"
+#include "parksim/core/system/SharedLibrary.h"
 #include "parksim/usercode/PluginApi.h"
 
 namespace parksim {

@@ -13,8 +13,8 @@
 #include <cstring>
 #include <new>
 
-#include "parksim/core/NumberFormat.h"
-#include "parksim/core/SigpipeBlocked.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/system/SigpipeBlocked.h"
 
 namespace parksim {
 
@@ -26,7 +26,7 @@ constexpr char kPlannerFailure = 'P';
 constexpr char kControllerFailure = 'C';
 constexpr char kParksimFailure = 'E';
 // Bounded: a row, a verdict, an exit code; anything longer is not an answer.
-constexpr std::uint64_t kMaxAnswerBytes = 64u << 20;
+constexpr std::uint64_t kMaxIsolatedAnswerBytes = 64u << 20;
 
 bool writeAll(int fd, const void* data, std::size_t size) {
   const char* p = static_cast<const char*>(data);
@@ -212,7 +212,7 @@ std::optional<WorkerResult> WatchedWorker::poll() {
       if (received_.size() >= 9) {
         std::uint64_t size = 0;
         std::memcpy(&size, received_.data() + 1, sizeof size);
-        if (size > kMaxAnswerBytes) {
+        if (size > kMaxIsolatedAnswerBytes) {
           kill("sent more than 64 MB back");
           break;
         }

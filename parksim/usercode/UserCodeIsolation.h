@@ -19,8 +19,8 @@
 #include <optional>
 #include <string>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/UserCodeWatch.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/system/UserCodeWatch.h"
 
 namespace parksim {
 

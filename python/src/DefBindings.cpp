@@ -5,7 +5,7 @@
 
 #include <pybind11/stl.h>
 
-#include "parksim/core/RobotDef.h"
+#include "parksim/core/model/RobotDef.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/renders/film/FrameRecorder.h"
@@ -94,7 +94,8 @@ SolverKernel solverFromName(const std::string& name) {
 }
 
 void bindPlanningDefs(py::module_& m) {
-  defClass<RobotDef>(m, "RobotDef", "The differential-drive robot (core/RobotDef.h), SI units.")
+  defClass<RobotDef>(m, "RobotDef",
+                     "The differential-drive robot (core/model/RobotDef.h), SI units.")
       .def_readwrite("length_m", &RobotDef::length_m)
       .def_readwrite("width_m", &RobotDef::width_m)
       .def_readwrite("front_overhang_m", &RobotDef::front_overhang_m)

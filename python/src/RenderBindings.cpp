@@ -7,7 +7,7 @@
 
 #include <pybind11/stl.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
 #include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/renders/gl/Renderer.h"

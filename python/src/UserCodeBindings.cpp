@@ -17,7 +17,7 @@
 
 #include <pybind11/stl.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/planner/base/Planner.h"
 #include "parksim/rl/TaskSpaces.h"

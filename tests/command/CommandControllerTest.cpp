@@ -18,9 +18,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/AtomicFile.h"
+#include "parksim/core/io/AtomicFile.h"
 #include "parksim/pipeline/EpisodePipeline.h"
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/World.h"
 #include "parksim/usercode/CommandLine.h"
 #include "parksim/usercode/CommandPlanner.h"
 #include "tests/support/TestPaths.h"

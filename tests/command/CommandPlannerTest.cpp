@@ -17,11 +17,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/World.h"
 #include "parksim/usercode/CommandLine.h"
 #include "parksim/usercode/ProblemFile.h"
 #include "tests/support/TestPaths.h"

@@ -9,7 +9,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pages/JUnitPageLinks.h"
 #include "tests/pages/PageTestSupport.h"
 #include "tests/support/TestPaths.h"

@@ -15,7 +15,7 @@
 
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/renders/scene/SceneBuilder.h"
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/World.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

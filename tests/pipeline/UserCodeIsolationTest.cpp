@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/pipeline/EpisodePipeline.h"
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/World.h"
 #include "parksim/usercode/PluginLoader.h"
 #include "tests/support/TestPaths.h"
 

@@ -11,7 +11,7 @@
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/planner/motion/TimeOptimalTiming.h"
 #include "parksim/planner/search/ReachableBudget.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 #include "tests/support/PlanChecks.h"
 #include "tests/support/TestPaths.h"
 

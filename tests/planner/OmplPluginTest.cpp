@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "parksim/core/Angle.h"
+#include "parksim/core/geometry/Angle.h"
 #include "parksim/planner/steering/ReedsSheppSteering.h"
 #include "tests/support/LoadedLibraries.h"
 

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/DiffDrive.h"
 #include "parksim/planner/motion/MotionPrimitives.h"
 #include "parksim/planner/steering/BalkcomMason.h"
 #include "tests/support/StudyLot.h"

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "tests/support/PlanChecks.h"
 
 namespace parksim {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/DiffDrive.h"
+#include "parksim/core/model/DiffDrive.h"
 #include "parksim/planner/steering/BalkcomMason.h"
 
 namespace parksim {

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/model/Geometry.h"
+#include "parksim/core/model/Scenario.h"
 #include "tests/support/ExactShapes.h"
 
 namespace parksim {

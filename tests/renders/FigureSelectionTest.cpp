@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "RenderTestUtil.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/renders/plots/Figures.h"
 
 namespace parksim {

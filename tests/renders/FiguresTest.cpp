@@ -10,7 +10,7 @@
 #include "parksim/renders/plots/CSpace.h"
 #include "parksim/renders/scene/SceneBuilder.h"
 #include "parksim/renders/scene/SceneClip.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 
 namespace parksim {
 namespace {

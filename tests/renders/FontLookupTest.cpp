@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/renders/text/Font.h"
 
 namespace parksim {

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/renders/text/FontLookup.h"
 
 namespace parksim {

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "RenderTestUtil.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/Process.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/system/Process.h"
 #include "parksim/renders/image/PngEncoder.h"
 #include "parksim/renders/scene/SceneBuilder.h"
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 namespace {

@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "RenderTestUtil.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/renders/gl/GlFunctions.h"
 #include "parksim/renders/gl/Renderer.h"

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "RenderTestUtil.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/renders/image/PngEncoder.h"
 #include "parksim/renders/scene/SceneBuilder.h"

@@ -5,7 +5,7 @@
 #include <fstream>
 
 #include "RenderTestUtil.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 namespace {

@@ -1,13 +1,13 @@
 // SVG drawings as obstacles: shapes, transforms, holes by fill rule, the page's placement and
 // scale, ids and layers, and what is refused.
 
-#include "parksim/scenario/SvgMap.h"
+#include "parksim/scenario/maps/SvgMap.h"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/core/Geometry.h"
 #include "tests/support/MapFiles.h"
 

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/planner/motion/MotionValidator.h"
 #include "parksim/planner/motion/PathCost.h"

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/DiffDrive.h"
 #include "parksim/planner/motion/MotionPrimitives.h"
 #include "parksim/planner/motion/TimeCost.h"
 #include "parksim/planner/steering/BalkcomMason.h"

@@ -20,8 +20,8 @@
 #include <random>
 #include <vector>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/RobotDef.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/RobotDef.h"
 #include "parksim/planner/motion/MotionValidator.h"
 #include "parksim/planner/motion/TimeOptimalTiming.h"
 #include "parksim/planner/steering/ReedsSheppSteering.h"

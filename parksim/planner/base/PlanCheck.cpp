@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Geometry.h"
 
 namespace parksim {
 

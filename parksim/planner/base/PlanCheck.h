@@ -8,9 +8,9 @@
 #include <optional>
 #include <string>
 
-#include "parksim/core/FootprintChecker.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/model/FootprintChecker.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
 #include "parksim/planner/motion/MotionValidator.h"
 
 namespace parksim {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/Trajectory.h"
 
 namespace parksim {
 

@@ -8,8 +8,8 @@
 #include <random>
 #include <string>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
 #include "parksim/planner/base/FreeSpaceBound.h"
 #include "parksim/planner/base/PlanCheck.h"
 #include "parksim/planner/motion/SpeedProfile.h"

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/FootprintChecker.h"
-#include "parksim/core/ParamMap.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/FootprintChecker.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/params/ParamMap.h"
 #include "parksim/planner/base/PathSmoother.h"
 #include "parksim/planner/base/PlannerRegistry.h"
 #include "parksim/planner/base/SearchDef.h"
@@ -117,7 +117,7 @@ void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup,
 /// lower bound and free-space bound. parksim's planners smooth and time their plans themselves
 /// (PlanFinishing.h). A planner that is not built in and throws, or returns a solved result
 /// without a usable trajectory (empty, non-finite, times not increasing), raises
-/// UserCodeError (core/Error.h); its plan, solved or not, is checked later (PlanCheck.h).
+/// UserCodeError (core/io/Error.h); its plan, solved or not, is checked later (PlanCheck.h).
 /// `progress` is passed to the planner.
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
                         const PlanSetup& setup, const PlanProgress& progress = {},

@@ -27,11 +27,11 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/ComponentRegistry.h"
-#include "parksim/core/FootprintChecker.h"
-#include "parksim/core/ParamMap.h"
-#include "parksim/core/ParamSet.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/FootprintChecker.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/params/ComponentRegistry.h"
+#include "parksim/core/params/ParamMap.h"
+#include "parksim/core/params/ParamSet.h"
 #include "parksim/planner/base/PlanResult.h"
 #include "parksim/planner/base/SearchDef.h"
 #include "parksim/planner/motion/MotionValidator.h"

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/ParamMap.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/params/ParamMap.h"
 #include "parksim/planner/base/Planner.h"
 
 namespace parksim {

@@ -1,7 +1,7 @@
 #include "parksim/planner/motion/MotionPrimitives.h"
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/DiffDrive.h"
 
 namespace parksim {
 

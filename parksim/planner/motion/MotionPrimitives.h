@@ -6,9 +6,9 @@
 
 #include <vector>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Trajectory.h"
 #include "parksim/planner/motion/TimeOptimalTiming.h"
 
 namespace parksim {

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/Geometry.h"
+#include "parksim/core/model/Scenario.h"
 
 namespace parksim {
 

@@ -11,18 +11,18 @@
 #include <optional>
 #include <vector>
 
-#include "parksim/core/FootprintChecker.h"
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/model/FootprintChecker.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
 
 namespace parksim {
 
 struct MotionValidatorDef {
   /// Largest distance any footprint point travels between two checks, m; also twice the
   /// clearance every checked pose keeps. 0 (the default): motionCheckResolution(robot)
-  /// (core/Scenario.h), 1 mm for the study's 85 mm robot and in proportion to any robot's size,
-  /// so a car's plans keep as much clearance for its size as the study robot's do.
+  /// (core/model/Scenario.h), 1 mm for the study's 85 mm robot and in proportion to any robot's
+  /// size, so a car's plans keep as much clearance for its size as the study robot's do.
   double resolution_m = 0.0;
 };
 

@@ -2,10 +2,10 @@
 // Steering: a trajectory from one pose toward another, with the wheel speeds that drive it.
 // The planner sees only this interface, so steering functions are interchangeable per run.
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Trajectory.h"
 
 namespace parksim {
 

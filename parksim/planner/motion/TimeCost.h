@@ -12,7 +12,7 @@
 
 #include <vector>
 
-#include "parksim/core/DiffDrive.h"
+#include "parksim/core/model/DiffDrive.h"
 #include "parksim/planner/motion/TimeOptimalTiming.h"
 
 namespace parksim {

@@ -12,8 +12,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Scenario.h"
 
 namespace parksim {
 

@@ -10,8 +10,8 @@
 #include <queue>
 #include <unordered_map>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/Geometry.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/Geometry.h"
 #include "parksim/planner/motion/MotionPrimitives.h"
 #include "parksim/planner/motion/PathCost.h"
 #include "parksim/planner/search/ObstacleHeuristic.h"

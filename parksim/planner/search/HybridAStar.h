@@ -14,8 +14,8 @@
 // timed at the wheel limits (TimeOptimalTiming.h). Deterministic: no randomness at all, so the
 // seed does not matter.
 
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/planner/base/PlanResult.h"
 #include "parksim/planner/base/SearchDef.h"
 #include "parksim/planner/motion/MotionValidator.h"

@@ -6,7 +6,7 @@
 #include <limits>
 #include <queue>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 

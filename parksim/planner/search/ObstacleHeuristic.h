@@ -8,8 +8,8 @@
 #include <functional>
 #include <vector>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/planner/motion/MotionValidator.h"
 
 namespace parksim {

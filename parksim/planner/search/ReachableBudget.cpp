@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "parksim/core/Geometry.h"
+#include "parksim/core/model/Geometry.h"
 #include "parksim/planner/motion/MotionValidator.h"
 #include "parksim/planner/search/FootprintFit.h"
 

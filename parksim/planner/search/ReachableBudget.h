@@ -6,7 +6,7 @@
 // kReachableGridCellsPerSide a side) whose centre the robot fits on in some heading
 // (FootprintFit.h), connected to the start's cell.
 
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Scenario.h"
 
 namespace parksim {
 

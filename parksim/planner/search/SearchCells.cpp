@@ -3,7 +3,7 @@
 #include <cmath>
 #include <utility>
 
-#include "parksim/core/Angle.h"
+#include "parksim/core/geometry/Angle.h"
 
 namespace parksim {
 

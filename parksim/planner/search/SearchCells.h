@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/Scenario.h"
 
 namespace parksim {
 

@@ -5,8 +5,8 @@
 // search that runs out of room (every reachable cell of the window expanded) tries again in a
 // window twice as wide, up to the whole lot.
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/Scenario.h"
 
 namespace parksim {
 

@@ -8,7 +8,7 @@
 #include <random>
 #include <string>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/planner/motion/MotionPrimitives.h"
 #include "parksim/planner/search/FootprintFit.h"
 #include "parksim/planner/search/TimeAStarSearch.h"

@@ -25,8 +25,8 @@
 
 #include <vector>
 
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/planner/base/PathSmoother.h"
 #include "parksim/planner/base/PlanResult.h"
 #include "parksim/planner/base/SearchDef.h"

@@ -3,7 +3,7 @@
 
 #include <memory>
 
-#include "parksim/core/Geometry.h"
+#include "parksim/core/model/Geometry.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/planner/base/Planner.h"
 #include "parksim/planner/search/ReachableBudget.h"

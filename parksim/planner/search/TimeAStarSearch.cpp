@@ -9,7 +9,7 @@
 #include <queue>
 #include <unordered_map>
 
-#include "parksim/core/Geometry.h"
+#include "parksim/core/model/Geometry.h"
 #include "parksim/planner/motion/MotionPrimitives.h"
 #include "parksim/planner/motion/TimeCost.h"
 #include "parksim/planner/search/FootprintFit.h"

@@ -7,9 +7,9 @@
 #include <chrono>
 #include <vector>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/planner/base/PlanResult.h"
 #include "parksim/planner/motion/MotionValidator.h"
 #include "parksim/planner/motion/TimeOptimalTiming.h"

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/DiffDrive.h"
 
 namespace parksim {
 

@@ -17,8 +17,8 @@
 
 #include <vector>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/RobotDef.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/RobotDef.h"
 #include "parksim/planner/motion/TimeOptimalTiming.h"
 
 namespace parksim {

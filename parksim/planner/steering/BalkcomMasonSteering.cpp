@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/planner/steering/BalkcomMason.h"
 
 namespace parksim {

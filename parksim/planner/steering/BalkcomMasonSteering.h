@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "parksim/core/RobotDef.h"
+#include "parksim/core/model/RobotDef.h"
 #include "parksim/planner/motion/SteeringFunction.h"
 #include "parksim/planner/motion/TimeOptimalTiming.h"
 

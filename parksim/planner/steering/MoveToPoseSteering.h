@@ -10,7 +10,7 @@
 //   then a rotate-translate-rotate finisher closes the remaining fraction of a millimetre and
 //   the heading exactly (where the controller would otherwise only turn in place).
 
-#include "parksim/core/RobotDef.h"
+#include "parksim/core/model/RobotDef.h"
 #include "parksim/planner/motion/SteeringFunction.h"
 #include "parksim/planner/steering/RotateTranslateRotateSteering.h"
 

@@ -4,7 +4,7 @@
 // loads it (the build tree's lib/parksim/; installed, <prefix>/lib/parksim/, or beside the
 // Python module), then LD_LIBRARY_PATH. Loading an already loaded plugin costs a lookup only.
 
-#include "parksim/core/SharedLibrary.h"
+#include "parksim/core/system/SharedLibrary.h"
 #include "parksim/planner/steering/OmplApi.h"
 
 namespace parksim {

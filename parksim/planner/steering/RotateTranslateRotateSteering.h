@@ -9,7 +9,7 @@
 // robot first brakes, each phase ramps up and down by whole acceleration steps with half steps
 // at its ends, so consecutive phases, the start and the final stop all stay within the limit.
 
-#include "parksim/core/RobotDef.h"
+#include "parksim/core/model/RobotDef.h"
 #include "parksim/planner/motion/SteeringFunction.h"
 
 namespace parksim {

@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "parksim/core/Pose2.h"
+#include "parksim/core/geometry/Pose2.h"
 
 namespace parksim {
 

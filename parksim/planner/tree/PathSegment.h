@@ -7,8 +7,8 @@
 
 #include <vector>
 
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Trajectory.h"
 #include "parksim/planner/motion/PathCost.h"
 
 namespace parksim {

@@ -6,8 +6,8 @@
 #include <utility>
 #include <vector>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Pose2.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/DiffDrive.h"
 #include "parksim/planner/motion/PathCost.h"
 #include "parksim/planner/tree/NearestNeighbors.h"
 #include "parksim/planner/tree/PathSegment.h"

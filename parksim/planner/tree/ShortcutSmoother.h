@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include "parksim/core/RobotDef.h"
+#include "parksim/core/model/RobotDef.h"
 #include "parksim/planner/motion/MotionValidator.h"
 #include "parksim/planner/motion/PathCost.h"
 #include "parksim/planner/motion/SteeringFunction.h"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parksim/core/Geometry.h"
+#include "parksim/core/model/Geometry.h"
 #include "parksim/planner/tree/ShortcutSmoother.h"
 
 namespace parksim::detail {

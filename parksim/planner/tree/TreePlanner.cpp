@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/Geometry.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/Geometry.h"
 #include "parksim/planner/tree/TreeSearch.h"
 
 namespace parksim {

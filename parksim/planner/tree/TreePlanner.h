@@ -36,10 +36,10 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
 #include "parksim/planner/base/PlanResult.h"
 #include "parksim/planner/base/SearchDef.h"
 #include "parksim/planner/motion/MotionValidator.h"

@@ -8,7 +8,7 @@
 #include <cstring>
 #include <span>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 

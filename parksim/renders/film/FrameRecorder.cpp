@@ -16,10 +16,10 @@
 #include <regex>
 #include <thread>
 
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/core/Process.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/system/Process.h"
 #include "parksim/renders/film/EncodeQueue.h"
 #include "parksim/renders/gl/Renderer.h"
 #include "parksim/renders/image/PngEncoder.h"

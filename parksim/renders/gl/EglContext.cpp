@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/SharedLibrary.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/system/SharedLibrary.h"
 #include "parksim/renders/gl/GlFunctions.h"
 
 namespace parksim::detail {

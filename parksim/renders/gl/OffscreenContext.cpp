@@ -2,7 +2,7 @@
 
 #include <cstdlib>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/renders/gl/EglContext.h"
 #include "parksim/renders/gl/GlFunctions.h"
 #include "parksim/renders/gl/OsMesaContext.h"

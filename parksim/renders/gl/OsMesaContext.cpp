@@ -11,8 +11,8 @@
 #include <optional>
 #include <string>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/SharedLibrary.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/system/SharedLibrary.h"
 
 namespace parksim::detail {
 

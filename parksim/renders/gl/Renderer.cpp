@@ -6,7 +6,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/renders/gl/RendererImpl.h"
 
 // The context, framebuffers, buffers and shaders, and drawing a DrawList; a film's layered view

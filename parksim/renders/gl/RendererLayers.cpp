@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/renders/gl/RendererImpl.h"
 #include "parksim/renders/scene/DrawListChange.h"
 

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 

@@ -6,7 +6,7 @@
 #include <cstring>
 #include <string>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 

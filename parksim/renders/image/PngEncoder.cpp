@@ -11,8 +11,8 @@
 
 #include <stb/stb_image.h>  // implementation linked from libstb
 
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/renders/image/Adler32.h"
 #include "parksim/renders/image/RunLengthDeflate.h"
 

@@ -13,9 +13,9 @@
 
 #include <Eigen/Core>
 
-#include "parksim/core/Geometry.h"
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Geometry.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Scenario.h"
 
 namespace parksim {
 

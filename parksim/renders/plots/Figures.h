@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
 #include "parksim/renders/gl/OffscreenContext.h"
 #include "parksim/renders/plots/FigureSelection.h"
 #include "parksim/renders/plots/TrackingPlot.h"

@@ -7,10 +7,10 @@
 #include <optional>
 #include <sstream>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Csv.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Csv.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
 
 namespace parksim {
 

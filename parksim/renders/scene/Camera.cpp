@@ -5,8 +5,8 @@
 
 #include <Eigen/Geometry>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 

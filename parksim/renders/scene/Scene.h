@@ -13,8 +13,8 @@
 
 #include <Eigen/Core>
 
-#include "parksim/core/Geometry.h"
-#include "parksim/core/Pose2.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/Geometry.h"
 #include "parksim/renders/image/Color.h"
 
 namespace parksim {

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/model/DiffDrive.h"
 
 namespace parksim {
 

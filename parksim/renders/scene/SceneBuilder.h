@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
 #include "parksim/renders/scene/Scene.h"
 #include "parksim/renders/scene/SceneStyle.h"
 

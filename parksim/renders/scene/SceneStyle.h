@@ -3,7 +3,7 @@
 // screen and in print. Widths are pixels at a 480-pixel-high image; scaled() adapts them to
 // another image size so a 1080p frame does not get hairlines.
 
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/renders/image/Color.h"
 
 namespace parksim {

@@ -9,7 +9,7 @@
 
 #include <stb/stb_truetype.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 

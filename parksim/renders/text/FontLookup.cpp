@@ -4,8 +4,8 @@
 
 #include <memory>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/SharedLibrary.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/system/SharedLibrary.h"
 
 namespace parksim {
 
