@@ -45,14 +45,7 @@ sources_under() {  # sources_under DIR: every source under DIR, subfolders inclu
   find "$1" -name '*.cpp' | LC_ALL=C sort
 }
 # The readers need the core library but not its build-provenance file (a configured header).
-<<<<<<< HEAD
 mapfile -t core < <(sources_under parksim/core | grep -v '/Provenance\.cpp$')
-=======
-core=()
-for f in parksim/core/*/*.cpp; do
-  [ "$f" = parksim/core/system/Provenance.cpp ] || core+=("$f")
-done
->>>>>>> house
 
 # Each source is compiled once into build-fuzz/obj/ (the readers share the core library's
 # sources), on all cores, and again only when it or a parksim header changed since.
@@ -92,7 +85,6 @@ link() {  # link NAME OBJECTS... LIBS...
 
 # The reader's realism: section is checked by the Bullet-free parksim_realism library
 # (parksim/realism/, all of it).
-<<<<<<< HEAD
 mapfile -t realism < <(sources_under parksim/realism)
 mapfile -t scenario < <(sources_under parksim/scenario)
 # The results tables' readers and what they share (the episode record's fields, seals, ids,
@@ -109,24 +101,6 @@ declare -A sources
 sources[world]="tests/fuzz/WorldReaderFuzz.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
 sources[plan]="tests/fuzz/PlanReaderFuzz.cpp $(src TrajectoryFile.cpp) ${core[*]}"
 sources[spec]="tests/fuzz/SweepSpecFuzz.cpp ${spec[*]} ${scenario[*]} ${realism[*]} ${core[*]}"
-=======
-realism=(parksim/realism/*.cpp)
-scenario=(parksim/scenario/*/*.cpp)
-# The results tables' readers and what they share (the episode record's fields, seals, ids,
-# manifests, merge's sources).
-tables=(parksim/results/ResultsFile.cpp parksim/results/RowSeal.cpp parksim/results/TableVerify.cpp
-        parksim/results/EpisodeRecord.cpp parksim/sim/ExecutionDef.cpp
-        parksim/sweep/spec/EpisodeParams.cpp parksim/sweep/spec/SetValues.cpp parksim/sweep/shards/SweepManifest.cpp
-        parksim/sweep/shards/Shard.cpp parksim/sweep/shards/Merge.cpp)
-declare -A sources
-sources[world]="tests/fuzz/WorldReaderFuzz.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
-sources[plan]="tests/fuzz/PlanReaderFuzz.cpp parksim/results/TrajectoryFile.cpp ${core[*]}"
-sources[spec]="tests/fuzz/SweepSpecFuzz.cpp parksim/sweep/spec/SweepSpecReader.cpp
-  parksim/sweep/spec/ComponentChoiceReader.cpp parksim/usercode/CommandLine.cpp parksim/sweep/spec/EpisodeSetup.cpp parksim/sweep/spec/SetValues.cpp parksim/results/EpisodeRecord.cpp
-  parksim/planner/base/PlanScenario.cpp
-  parksim/results/ExecutedFile.cpp parksim/pipeline/EpisodeRequest.cpp
-  parksim/sim/ExecutionDef.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
->>>>>>> house
 sources[jsonl]="tests/fuzz/ResultsJsonlFuzz.cpp ${tables[*]} ${core[*]}"
 sources[csv]="tests/fuzz/ResultsCsvFuzz.cpp ${tables[*]} ${core[*]}"
 sources[manifest]="tests/fuzz/SweepManifestFuzz.cpp ${tables[*]} ${core[*]}"

@@ -5,12 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
-<<<<<<< HEAD
-#include "parksim/core/Error.h"
-#include "parksim/pages/ColumnCodec.h"
-=======
 #include "parksim/core/io/Error.h"
->>>>>>> house
+#include "parksim/pages/ColumnCodec.h"
 
 namespace parksim {
 

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/io/Error.h"
-#include "parksim/core/Geometry.h"
+#include "parksim/core/model/Geometry.h"
 #include "tests/support/MapFiles.h"
 
 namespace parksim {

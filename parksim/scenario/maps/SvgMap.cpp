@@ -10,26 +10,15 @@
 #include <string_view>
 #include <tuple>
 
-<<<<<<< HEAD:parksim/scenario/SvgMap.cpp
-#include "parksim/core/ConvexPartition.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/ExactOrientation.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/core/InputFile.h"
-#include "parksim/core/PolygonRegion.h"
-#include "parksim/core/Text.h"
-#include "parksim/scenario/MapLimits.h"
-#include "parksim/scenario/SvgPath.h"
-=======
 #include "parksim/core/geometry/ConvexPartition.h"
 #include "parksim/core/geometry/ExactOrientation.h"
 #include "parksim/core/geometry/PolygonRegion.h"
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/InputFile.h"
 #include "parksim/core/io/Text.h"
+#include "parksim/core/model/Geometry.h"
 #include "parksim/scenario/maps/MapLimits.h"
 #include "parksim/scenario/maps/SvgPath.h"
->>>>>>> house:parksim/scenario/maps/SvgMap.cpp
 
 namespace parksim {
 
