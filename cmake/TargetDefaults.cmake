@@ -28,7 +28,6 @@ set(PARKSIM_UNITY_BATCH_SIZE 6 CACHE STRING
 set(PARKSIM_UNITY_SKIP
   parksim/planner/tree/ShortcutSmoother.cpp   # kCostEpsilonM, also in TreePlanner.cpp
   parksim/renders/image/PngEncoderStb.cpp     # stb_image_write's statics, also in PngEncoder.cpp
-  parksim/usercode/UserCodeIsolation.cpp      # kMaxAnswerBytes, also in CommandController.h
   # Added after the planner's batches were laid out: alone, it leaves them as they were
   # (TreeSearch.h's and TimeAStarSearch.cpp's Clock would otherwise meet in one batch).
   parksim/planner/search/ReachableBudget.cpp
