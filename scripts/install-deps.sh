@@ -19,6 +19,8 @@ demo_packages=(
   build-essential cmake pkg-config ninja-build
   libbullet-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libnanoflann-dev libstb-dev zlib1g-dev libompl-dev
+  # The PNG frames' Adler-32 (libdeflate's, 4x parksim's former SSE2 loop: docs/rendering.md).
+  libdeflate-dev
   # SVG maps in world files (`map:`) are parsed by libxml2.
   libxml2-dev
   libegl-dev libgl1-mesa-dri libfontconfig-dev fonts-dejavu-core ffmpeg
@@ -31,6 +33,8 @@ test_packages=(
   # OSMesa: the tests compare its images with EGL's, byte for byte.
   libosmesa6-dev
   libgtest-dev libgmock-dev libbenchmark-dev locales
+  # bench/bench_render's BM_PngLibrary: the PNG libraries measured beside parksim's encoder.
+  libspng-dev
   # The sweep's Slurm path, tested on a one-node cluster (scripts/slurm-local.sh); procps:
   # pkill, which stops a task mid-shard in tests/sweep/slurm_missing_test.sh.
   slurm-wlm munge procps

@@ -1,5 +1,6 @@
 #include "parksim/renders/image/PngEncoder.h"
 
+#include <libdeflate.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -13,7 +14,6 @@
 
 #include "parksim/core/io/AtomicFile.h"
 #include "parksim/core/io/Error.h"
-#include "parksim/renders/image/Adler32.h"
 #include "parksim/renders/image/RunLengthDeflate.h"
 
 namespace parksim {
@@ -53,10 +53,12 @@ void checkImage(const Pixels& image) {
 }
 
 // `adler` updated with a row as the PNG holds it: filter byte 0 (none), then its pixels.
+// libdeflate's Adler-32 (vectorised; 0.013 ms a 640x480 frame where zlib's byte loop takes
+// 0.23 ms and the SSE2 loop parksim had 0.060 ms: docs/rendering.md).
 std::uint32_t filteredRowAdler(std::uint32_t adler, const unsigned char* row,
                                std::size_t row_bytes) {
   static constexpr unsigned char kFilterNone = 0;
-  return adler32(adler32(adler, &kFilterNone, 1), row, row_bytes);
+  return libdeflate_adler32(libdeflate_adler32(adler, &kFilterNone, 1), row, row_bytes);
 }
 
 constexpr unsigned char kSignature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
