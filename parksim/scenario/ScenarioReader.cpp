@@ -412,7 +412,6 @@ World readWorldDocument(const YAML::Node& document, const std::string& source_na
   top.rejectUnknownKeys({"format", "name", "lot", "map", "robot", "obstacles", "parked_robots",
                          "start", "goal", "physics", "realism", "tolerance"});
   World world;
-  world.sections = readRealismSections(top);
   Scenario& s = world.scenario;
   s.source_path = source_name;
   s.name = top.required("name").name();
@@ -439,6 +438,8 @@ World readWorldDocument(const YAML::Node& document, const std::string& source_na
   if (const std::optional<std::string> problem = driveProblem(s.robot, s.physics)) {
     (robot ? *robot : physics ? *physics : root).fail(*problem);
   }
+  // The default tolerance follows the robot's size.
+  world.sections = readRealismSections(top, s.robot);
 
   if (maps) {
     const YamlField list = *top.optional("map");
