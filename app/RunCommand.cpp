@@ -154,7 +154,7 @@ EpisodeRequest toRequest(const RunOptions& o) {
   r.controller = o.controller.name;
   r.controller_params = o.controller.paramMap();
   if (!o.plan_file.empty()) {
-    r.given_plan = readTrajectoryCsv(o.plan_file);
+    r.given_plan = readTrajectoryCsv(o.plan_file, r.world->scenario.robot);
     r.given_plan_source = o.plan_file;
   }
   r.execution.tracking = trackingModeFromString(o.tracking);

@@ -26,8 +26,9 @@ namespace parksim {
 enum class EpisodeStatus {
   kMet,         ///< "met": solved, driven, within every bound
   kPlanFailed,  ///< "plan_failed": no plan, so nothing was driven
-  /// "plan_invalid": a plan parksim did not make (a user planner's, a plan file) failed the
-  /// check before driving (collision, lot bounds, speed or acceleration limits); not driven
+  /// "plan_invalid": a plan parksim did not make (a user planner's, a plan file), or any
+  /// car's plan, failed the check before driving (collision, lot bounds, speed or acceleration
+  /// limits, a car's steering: planner/PlanCheck.h); not driven
   kPlanInvalid,
   /// "planner_error": the user's planner threw, returned garbage, crashed or ran out of time
   kPlannerError,

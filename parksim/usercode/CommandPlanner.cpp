@@ -133,7 +133,7 @@ PlanResult CommandPlanner::solve(const PlanningProblem& problem) {
   Trajectory trajectory;
   try {
     const std::string text = readInputFile(answer.string(), PlanFileLimits::kMaxBytes, "plan file");
-    trajectory = parseTrajectoryCsvRows(text, "{out}/trajectory.csv");
+    trajectory = parseTrajectoryCsvRows(text, "{out}/trajectory.csv", problem.scenario.robot);
   } catch (const Error& e) {
     std::string why = e.what();
     // The scratch directory's path means nothing to the user.

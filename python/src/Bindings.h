@@ -102,8 +102,9 @@ py::object toPython(const nlohmann::json& json);
 /// The plan as a structured array: t, x, y, theta, omega_left, omega_right, v, omega.
 py::array trajectoryArray(const Trajectory& trajectory, const RobotDef& robot);
 /// A trajectory from a PlanResult, a structured array with fields t, x, y, theta, omega_left,
-/// omega_right (others ignored), or a trajectory.csv path.
-Trajectory trajectoryFrom(const py::handle& plan);
+/// omega_right (others ignored), or a trajectory.csv path (read for `robot`: a car's file holds
+/// v and steer_rad, results/TrajectoryFile.h).
+Trajectory trajectoryFrom(const py::handle& plan, const RobotDef& robot = {});
 /// Executed rows as a structured array with executed.csv's columns (its realism columns too
 /// when `realism_columns`, as executedCsv writes them under an active realism).
 py::array executedArray(const std::vector<ExecutedRow>& rows, bool realism_columns);

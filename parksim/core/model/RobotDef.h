@@ -88,6 +88,15 @@ struct RobotDef {
   double timeScale() const { return sizeScale() / (topSpeed() / kStudyTopSpeed_mps); }
 };
 
+/// Sets a car's rear-wheel limits from its own (a world file gives a car no wheel limits):
+/// the outer rear wheel's speed at the tightest turn and top speed, and its acceleration at the
+/// car's (wheel speeds are what plans carry, Trajectory.h).
+inline void setCarWheelLimits(RobotDef& car) {
+  car.max_wheel_speed_radps =
+      car.max_speed_mps * (1.0 + 0.5 * car.wheel_base_m * car.maxCurvature()) / car.wheel_radius_m;
+  car.max_wheel_accel_radps2 = car.max_accel_mps2 / car.wheel_radius_m;
+}
+
 /// The car a world's `robot: {drive: car}` starts from before its other keys: a mid-size car
 /// (4.689 x 1.942 m, 2.8 m between the axles, front wheels <= 0.75 rad at <= 0.5 rad/s,
 /// 2.5 m/s, 1 m/s^2; the automated-parking benchmarks' car, docs/cars.md). The one place these
@@ -105,11 +114,7 @@ inline RobotDef midSizeCar() {
   car.max_steer_rate_radps = 0.5;
   car.max_speed_mps = 2.5;
   car.max_accel_mps2 = 1.0;
-  // The rear wheels' limits follow from the car's: the outer rear wheel at the tightest turn
-  // and top speed, and its acceleration at the car's (wheel speeds are what plans carry).
-  car.max_wheel_speed_radps =
-      car.max_speed_mps * (1.0 + 0.5 * car.wheel_base_m * car.maxCurvature()) / car.wheel_radius_m;
-  car.max_wheel_accel_radps2 = car.max_accel_mps2 / car.wheel_radius_m;
+  setCarWheelLimits(car);
   car.height_m = 1.5;
   car.ground_clearance_m = 0.15;
   return car;

@@ -1,8 +1,11 @@
 #pragma once
 // The tracking contract as data: which bounds an episode must meet to pass. A world file's
-// tolerance: section sets it (scenario/world/RealismReader.h), a sweep spec's tolerance: section
-// and the command line override it, and the one verdict (pipeline/Verdict.h) judges by it. Defaults
-// are parksim's own acceptance bounds for closed-loop tracking on the study worlds.
+// tolerance: section sets it (scenario/RealismReader.h), a sweep spec's tolerance: section and
+// the command line override it, and the one verdict (pipeline/Verdict.h) judges by it.
+// Defaults are parksim's own acceptance bounds for closed-loop tracking on the study worlds;
+// defaultTolerance gives them to a robot of any size.
+
+#include "parksim/core/RobotDef.h"
 
 namespace parksim {
 
@@ -21,5 +24,20 @@ struct TrackingTolerance {
   /// this makes checkTracking's list of violations say so too.
   bool require_goal_reached = false;
 };
+
+/// parksim's default tolerance for `robot`, the one a world without a `tolerance:` section (or
+/// with some of its bounds) is held to: TrackingTolerance{}'s lengths (max_pos_err_m,
+/// goal_pos_err_m, max_parked_displacement_m) times robot.sizeScale(), its heading and
+/// contact bounds as they are. The study's robot keeps exactly the numbers above (its scale is
+/// 1 to the bit); a 4.25 m robot, 50 study robots long, may stray 250 mm from its plan and end
+/// 150 mm from its goal, as the study's robot its 5 mm and 3 mm (docs/simulation.md).
+inline TrackingTolerance defaultTolerance(const RobotDef& robot) {
+  TrackingTolerance t;
+  const double scale = robot.sizeScale();
+  t.max_pos_err_m *= scale;
+  t.goal_pos_err_m *= scale;
+  t.max_parked_displacement_m *= scale;
+  return t;
+}
 
 }  // namespace parksim

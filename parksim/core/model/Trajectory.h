@@ -12,6 +12,10 @@
 
 namespace parksim {
 
+/// A car's row stands still where its speed is at most this fraction of its
+/// robot.max_speed_mps (a billionth: the rounding of speeds computed to be zero).
+inline constexpr double kCarStillFraction = 1e-9;
+
 /// One control period. `wheels` are held from t_s until the next point's t_s; integrated
 /// exactly (integrateExact) they take `pose` to the next point's pose. The last point of a
 /// trajectory carries zero wheel speeds: the robot stops there.

@@ -7,9 +7,10 @@
 // dt sum_k min(V, k A dt, (n + 1 - k) A dt) (one acceleration step per period from rest and to
 // rest): the bound is the fewest periods whose envelope reaches W.
 
-#include "parksim/core/geometry/Pose2.h"
-#include "parksim/core/model/RobotDef.h"
-#include "parksim/planner/motion/TimeOptimalTiming.h"
+#include "parksim/core/Pose2.h"
+#include "parksim/core/RobotDef.h"
+#include "parksim/core/Scenario.h"
+#include "parksim/planner/TimeOptimalTiming.h"
 
 namespace parksim {
 
@@ -17,5 +18,19 @@ namespace parksim {
 /// `limits` (rows limits.period_s apart, from and to rest), s. 0 when the poses are equal.
 double freeSpaceDurationBound(const Pose2& from, const Pose2& to, const RobotDef& robot,
                               const TimingLimits& limits);
+
+/// A car's (RobotDef::isCar, docs/cars.md): no plan of a car arrives sooner than its shortest
+/// path, the Reeds-Shepp curve at its tightest turning radius (minTurningRadius), driven from
+/// rest to rest in rows `period_s` apart at its speed and acceleration limits (the envelope
+/// above, in m/s). It leaves out the steering: the time to turn the wheels (at the start they
+/// are straight) and the stops at the curve's cusps, which a plan also spends. 0 when the
+/// poses are equal.
+double carFreeSpaceDurationBound(const Pose2& from, const Pose2& to, const RobotDef& car,
+                                 double period_s);
+
+/// The bound from `scenario`'s start to its goal (to the nearer of its two headings when the
+/// goal takes either): a car's carFreeSpaceDurationBound in rows limits.period_s apart, a
+/// differential drive's freeSpaceDurationBound within `limits`.
+double scenarioFreeSpaceBound(const Scenario& scenario, const TimingLimits& limits);
 
 }  // namespace parksim

@@ -1,9 +1,10 @@
 #pragma once
 // The check every plan parksim did not make itself gets before it is driven: a user planner's
 // (a plugin's, a Python object's, a command's) and a plan file's. parksim's own planners
-// validate each trajectory as they build it (MotionValidator.h), so theirs are not checked
-// again. A plan that fails is never driven: the episode's verdict is plan_invalid, with the
-// first offending time, pose and obstacle or limit (pipeline/Verdict.h).
+// validate each trajectory as they build it (MotionValidator.h), so a differential drive's
+// plans from them are not checked again; a car's plans are checked whoever made them. A plan that
+// fails is never driven: the episode's verdict is plan_invalid, with the first offending time, pose
+// and obstacle or limit (pipeline/Verdict.h).
 
 #include <optional>
 #include <string>
@@ -17,6 +18,12 @@ namespace parksim {
 
 /// Most rows a plan may have (as a plan file: results/TrajectoryFile.h).
 inline constexpr std::size_t kMaxPlanRows = 1'000'000;
+
+/// How far a car's plan's curvature may exceed tan(max_steer) / axle_distance, and differ from
+/// its steering angle's, relative to that limit: a millionth, the rounding of a curvature
+/// computed from wheel speeds that were computed from a steering angle (and of a plan file's
+/// speed and steering angle read back).
+inline constexpr double kCarCurvatureSlack = 1e-6;
 
 /// Why `plan` cannot even be checked, or nothing: no rows, more than kMaxPlanRows, a value that
 /// is not finite, times that do not increase. For a planner's solved result this is the
@@ -38,8 +45,16 @@ struct PlanViolation {
 /// - each row's pose is where the previous row's wheel speeds lead (within `validation`'s
 ///   resolution of footprint travel, by default the robot's): a plan is the exact integral of
 ///   its wheel speeds;
-/// - wheel speeds within the robot's limit, and each change of a wheel's speed (from rest at
-///   the start, to rest at the end) within the acceleration limit times the row's period;
+/// - a differential drive's wheel speeds within the robot's limit, and each change of a
+///   wheel's speed (from rest at the start, to rest at the end) within the acceleration limit
+///   times the row's period;
+/// - a car's (RobotDef::isCar, docs/cars.md) rows: never turning in place; a moving row's
+///   curvature its steering angle's, tan(steer) / axle_distance, and within the car's largest
+///   (both to kCarCurvatureSlack); the steering angle within max_steer and, from straight
+///   wheels at the start, changing by at most max_steer_rate times the period since the
+///   previous row, moving or stopped; the speed within max_speed and, from rest at the start
+///   to rest at the end, changing by at most max_accel times that period; a stop between
+///   driving forward and in reverse (a gear change);
 /// - the swept footprint, without gaps, free of every obstacle and the reference point inside
 ///   the lot: the motion check parksim's planners use (MotionValidator.h, the same margin);
 /// - it ends inside the goal region (position and heading tolerance).

@@ -229,14 +229,7 @@ PlanResult solveUserPlanner(Planner& planner, const PlannerInfo& info,
 // The plan's bounds: its own geometry's (durationLowerBound) and the free-space optimum's.
 void setBounds(const Scenario& scenario, const TimingLimits& limits, PlanResult& result) {
   result.duration_lower_bound_s = durationLowerBound(pathPieces(result.trajectory), limits);
-  double free_space =
-      freeSpaceDurationBound(scenario.start, scenario.goal.pose, scenario.robot, limits);
-  if (scenario.goal.either_heading) {
-    const Pose2 turned{scenario.goal.pose.x, scenario.goal.pose.y, scenario.goal.pose.theta + kPi};
-    free_space = std::min(free_space,
-                          freeSpaceDurationBound(scenario.start, turned, scenario.robot, limits));
-  }
-  result.free_space_bound_s = free_space;
+  result.free_space_bound_s = scenarioFreeSpaceBound(scenario, limits);
 }
 
 }  // namespace

@@ -48,6 +48,20 @@ const std::vector<ParameterRange>& physicalRanges() {
        "below 0.1 rad/s^2 a wheel takes minutes to reach a walking pace; above 10000 rad/s^2 it "
        "reaches 1000 rad/s in a tenth of a second"},
       {"robot.height", 0.002, 20.0, " m", "a body from 2 mm to 20 m tall"},
+      // A car's own (robot.drive: car, docs/cars.md).
+      {"robot.track", 0.005, 20.0, " m", "a track from a micro robot's 5 mm to a 20 m vehicle's"},
+      {"robot.axle_distance", 0.005, 20.0, " m",
+       "between the axles, from a micro robot's 5 mm to a 20 m vehicle's"},
+      {"robot.max_steer_deg", 0.5, 80.0, " degrees",
+       "below 0.5 degrees the tightest turn is over 100 wheelbases wide; cars steer their front "
+       "wheels to about 40 degrees, and near 90 the bicycle model turns about its rear axle"},
+      {"robot.max_steer_rate_degps", 0.1, 3600.0, " degrees/s",
+       "from minutes from lock to lock to ten turns a second; cars steer their front wheels at "
+       "about 30 degrees/s"},
+      {"robot.max_speed_mps", 0.01, 100.0, " m/s",
+       "from 1 cm/s, 1 mm per 0.1 s control period, to 360 km/h"},
+      {"robot.max_accel_mps2", 0.01, 100.0, " m/s^2",
+       "from a thousandth of g to 10 g, beyond any tyre's grip"},
       {"physics.time_step_s", 1e-5, 0.01, " s",
        "each 0.1 s control period of a plan is followed over at least 10 physics steps, and the "
        "realism's 100 Hz pose sensor takes one sample per step at most; below 10 us the limit "
@@ -100,7 +114,9 @@ WheelDemand wheelDemand(const RobotDef& r, const PhysicsDef& p) {
   const double yaw_accel = 2.0 * accel / r.wheel_base_m;
   WheelDemand w;
   w.straight_n = 0.5 * mass * accel;
-  w.turn_n = yaw_inertia * yaw_accel / r.wheel_base_m;
+  // A car never turns on the spot, and its steered front wheels' grip turns it, not a
+  // difference between its driven wheels' forces.
+  w.turn_n = r.isCar() ? 0.0 : yaw_inertia * yaw_accel / r.wheel_base_m;
   w.grip_n = p.wheel_friction * p.ground_friction * 0.5 * mass * p.gravity_mps2;
   return w;
 }

@@ -39,7 +39,8 @@ std::optional<std::string> rangeProblem(const ParameterRange& range, double valu
 
 /// What the wheels must do at the robot's acceleration limit, in N per wheel: the grip force
 /// to accelerate the whole robot straight ahead, and to start a turn on the spot (yaw inertia of
-/// the chassis, a uniform box about the axle's middle, and of the wheels, as point masses).
+/// the chassis, a uniform box about the axle's middle, and of the wheels, as point masses; none
+/// for a car, which never turns on the spot).
 struct WheelDemand {
   double straight_n = 0.0;
   double turn_n = 0.0;

@@ -150,11 +150,11 @@ RealismDef readRealism(const YamlField& field) {
   return d;
 }
 
-TrackingTolerance readTolerance(const YamlField& field) {
+TrackingTolerance readTolerance(const YamlField& field, const RobotDef& robot) {
   const YamlMap m =
       field.map({"max_pos_err_m", "goal_pos_err_m", "goal_heading_err_deg", "max_contacts",
                  "max_parked_displacement_m", "require_goal_reached"});
-  TrackingTolerance t;
+  TrackingTolerance t = defaultTolerance(robot);
   const Section s(m);
   s.positive("max_pos_err_m", t.max_pos_err_m);
   s.positive("goal_pos_err_m", t.goal_pos_err_m);
@@ -171,14 +171,15 @@ TrackingTolerance readTolerance(const YamlField& field) {
 
 }  // namespace
 
-WorldRealism readRealismSections(const YamlMap& top) {
+WorldRealism readRealismSections(const YamlMap& top, const RobotDef& robot) {
   WorldRealism w;
+  w.tolerance = defaultTolerance(robot);
   if (const std::optional<YamlField> f = top.optional("realism")) {
     w.realism = readRealism(*f);
     w.has_realism = true;
   }
   if (const std::optional<YamlField> f = top.optional("tolerance")) {
-    w.tolerance = readTolerance(*f);
+    w.tolerance = readTolerance(*f, robot);
     w.has_tolerance = true;
   }
   return w;

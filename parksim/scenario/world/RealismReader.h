@@ -12,7 +12,8 @@ struct WorldRealism {
   bool has_realism = false;
   RealismDef realism;  ///< presetRealism(preset) with the section's overrides
   bool has_tolerance = false;
-  TrackingTolerance tolerance;  ///< TrackingTolerance{} with the section's overrides
+  /// defaultTolerance(the world's robot) with the section's overrides
+  TrackingTolerance tolerance;
 };
 
 }  // namespace parksim

@@ -7,6 +7,7 @@
 
 namespace parksim {
 
-WorldRealism readRealismSections(const YamlMap& top);
+/// `robot` is the world's: its size scales the default tolerance (core/TrackingTolerance.h).
+WorldRealism readRealismSections(const YamlMap& top, const RobotDef& robot);
 
 }  // namespace parksim

@@ -11,17 +11,18 @@
 #include <system_error>
 #include <vector>
 
-#include "parksim/core/geometry/Angle.h"
-#include "parksim/core/geometry/ConvexPartition.h"
-#include "parksim/core/geometry/PolygonRegion.h"
-#include "parksim/core/io/Error.h"
-#include "parksim/core/io/Text.h"
-#include "parksim/core/model/Geometry.h"
-#include "parksim/scenario/world/MapSection.h"
-#include "parksim/scenario/world/PhysicalRanges.h"
-#include "parksim/scenario/world/RealismSections.h"
-#include "parksim/scenario/world/WorldDocument.h"
-#include "parksim/scenario/yaml/YamlField.h"
+#include "parksim/core/Angle.h"
+#include "parksim/core/ConvexPartition.h"
+#include "parksim/core/Error.h"
+#include "parksim/core/Geometry.h"
+#include "parksim/core/PolygonRegion.h"
+#include "parksim/core/Text.h"
+#include "parksim/scenario/MapSection.h"
+#include "parksim/scenario/PhysicalRanges.h"
+#include "parksim/scenario/RealismSections.h"
+#include "parksim/scenario/RobotReader.h"
+#include "parksim/scenario/WorldDocument.h"
+#include "parksim/scenario/YamlField.h"
 
 namespace parksim {
 
@@ -105,17 +106,6 @@ void readFormat(const YamlField& field) {
   if (format != kFormat) field.fail("expected " + inQuotes(kFormat) + ", got " + inQuotes(format));
 }
 
-// A robot or physics value: its sign first (the messages every reader gives), then the range
-// a real robot and a stable simulation can have (PhysicalRanges.h), with its reason.
-double ranged(const YamlField& f, std::string_view key, bool zero_allowed = false) {
-  const double v = zero_allowed ? f.nonNegative() : f.positive();
-  if (const std::optional<std::string> problem =
-          rangeProblem(physicalRange(key), v, f.node().Scalar())) {
-    f.fail(*problem);
-  }
-  return v;
-}
-
 LotBounds readLot(const YamlField& field) {
   const YamlMap m = field.map({"x_min", "y_min", "x_max", "y_max"});
   LotBounds lot;
@@ -136,66 +126,6 @@ LotBounds readLot(const YamlField& field) {
   return lot;
 }
 
-RobotDef readRobot(const YamlField& field) {
-  const YamlMap m =
-      field.map({"length", "width", "front_overhang", "wheel_base", "wheel_radius",
-                 "max_wheel_speed_radps", "max_wheel_accel_radps2", "height", "ground_clearance"});
-  RobotDef robot;
-  // Each key overrides one field; absent keys keep the study's robot.
-  const auto set = [&m](std::string_view key, double& out) {
-    if (const std::optional<YamlField> f = m.optional(key)) {
-      out = ranged(*f, "robot." + std::string(key));
-    }
-  };
-  set("length", robot.length_m);
-  set("width", robot.width_m);
-  set("wheel_base", robot.wheel_base_m);
-  set("wheel_radius", robot.wheel_radius_m);
-  set("max_wheel_speed_radps", robot.max_wheel_speed_radps);
-  set("max_wheel_accel_radps2", robot.max_wheel_accel_radps2);
-  set("height", robot.height_m);
-  // The chassis' underside must stay below its top.
-  if (const std::optional<YamlField> f = m.optional("ground_clearance")) {
-    robot.ground_clearance_m = f->nonNegative();
-    if (!(robot.ground_clearance_m < robot.height_m)) {
-      f->fail("must be below robot.height (" + formatNumber(robot.height_m) + "), got " +
-              f->node().Scalar());
-    }
-  } else if (!(robot.ground_clearance_m < robot.height_m)) {
-    m.required("height").fail("must be above robot.ground_clearance (" +
-                              formatNumber(robot.ground_clearance_m) + "), got " +
-                              m.required("height").node().Scalar());
-  }
-
-  // The planner checks the body's footprint only, and the simulated wheels touch only the
-  // ground: a wheel beyond the body's sides would drive through obstacles unseen.
-  if (robot.wheel_base_m > robot.width_m) {
-    const std::string why = " (the wheels must lie within the body, which alone meets obstacles)";
-    if (const std::optional<YamlField> base = m.optional("wheel_base")) {
-      base->fail("must not exceed robot.width (" + formatNumber(robot.width_m) + ")" + why +
-                 ", got " + base->node().Scalar());
-    }
-    const YamlField width = m.required("width");
-    width.fail("must be at least robot.wheel_base (" + formatNumber(robot.wheel_base_m) + ")" +
-               why + ", got " + width.node().Scalar());
-  }
-
-  // Zero is a real design (axle at the front edge); beyond the length the reference point
-  // would lie outside the body it steers.
-  const std::optional<YamlField> overhang = m.optional("front_overhang");
-  if (overhang) robot.front_overhang_m = overhang->nonNegative();
-  if (robot.front_overhang_m > robot.length_m) {
-    if (overhang) {
-      overhang->fail("must not exceed robot.length (" + formatNumber(robot.length_m) + "), got " +
-                     overhang->node().Scalar());
-    }
-    const YamlField length = m.required("length");
-    length.fail("must be at least robot.front_overhang (" + formatNumber(robot.front_overhang_m) +
-                "), got " + length.node().Scalar());
-  }
-  return robot;
-}
-
 PhysicsDef readPhysics(const YamlField& field) {
   const YamlMap m =
       field.map({"time_step_s", "solver_iterations", "gravity_mps2", "chassis_mass_kg",
@@ -204,13 +134,13 @@ PhysicsDef readPhysics(const YamlField& field) {
   PhysicsDef physics;
   const auto positive = [&m](std::string_view key, double& out) {
     if (const std::optional<YamlField> f = m.optional(key)) {
-      out = ranged(*f, "physics." + std::string(key));
+      out = rangedValue(*f, "physics." + std::string(key));
     }
   };
   // A friction coefficient of zero is a frictionless contact, which the slider wants.
   const auto friction = [&m](std::string_view key, double& out) {
     if (const std::optional<YamlField> f = m.optional(key)) {
-      out = ranged(*f, "physics." + std::string(key), true);
+      out = rangedValue(*f, "physics." + std::string(key), true);
     }
   };
   positive("time_step_s", physics.time_step_s);
@@ -375,7 +305,7 @@ Obstacle readParkedRobot(const YamlField& field, const RobotDef& robot) {
   obstacle.height_m = robot.height_m;
   if (const std::optional<YamlField> f = m.optional("height")) obstacle.height_m = length(*f);
   if (const std::optional<YamlField> f = m.optional("mass_kg")) {
-    obstacle.mass_kg = ranged(*f, "parked_robots.mass_kg");
+    obstacle.mass_kg = rangedValue(*f, "parked_robots.mass_kg");
   }
   return obstacle;
 }
@@ -482,7 +412,6 @@ World readWorldDocument(const YAML::Node& document, const std::string& source_na
   top.rejectUnknownKeys({"format", "name", "lot", "map", "robot", "obstacles", "parked_robots",
                          "start", "goal", "physics", "realism", "tolerance"});
   World world;
-  world.sections = readRealismSections(top);
   Scenario& s = world.scenario;
   s.source_path = source_name;
   s.name = top.required("name").name();
@@ -509,6 +438,8 @@ World readWorldDocument(const YAML::Node& document, const std::string& source_na
   if (const std::optional<std::string> problem = driveProblem(s.robot, s.physics)) {
     (robot ? *robot : physics ? *physics : root).fail(*problem);
   }
+  // The default tolerance follows the robot's size.
+  world.sections = readRealismSections(top, s.robot);
 
   if (maps) {
     const YamlField list = *top.optional("map");
