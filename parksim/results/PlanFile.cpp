@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/planner/FreeSpaceBound.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/planner/base/FreeSpaceBound.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/TrajectoryFile.h"
 

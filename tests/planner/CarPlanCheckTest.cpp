@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/FootprintChecker.h"
-#include "parksim/planner/PlanCheck.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/FootprintChecker.h"
+#include "parksim/planner/base/PlanCheck.h"
 
 namespace parksim {
 namespace {

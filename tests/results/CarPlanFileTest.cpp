@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/InputFile.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/InputFile.h"
+#include "parksim/core/model/DiffDrive.h"
 #include "parksim/results/PlanFile.h"
 #include "parksim/results/TrajectoryFile.h"
 #include "tests/support/TestPaths.h"

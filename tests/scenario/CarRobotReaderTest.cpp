@@ -7,11 +7,11 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/scenario/ScenarioOverrides.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/Geometry.h"
+#include "parksim/scenario/world/ScenarioOverrides.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 
 namespace parksim {
 namespace {

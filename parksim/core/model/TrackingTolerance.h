@@ -5,7 +5,7 @@
 // Defaults are parksim's own acceptance bounds for closed-loop tracking on the study worlds;
 // defaultTolerance gives them to a robot of any size.
 
-#include "parksim/core/RobotDef.h"
+#include "parksim/core/model/RobotDef.h"
 
 namespace parksim {
 

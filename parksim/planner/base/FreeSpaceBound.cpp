@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
-#include "parksim/planner/BalkcomMason.h"
-#include "parksim/planner/ReedsSheppSteering.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/planner/steering/BalkcomMason.h"
+#include "parksim/planner/steering/ReedsSheppSteering.h"
 
 namespace parksim {
 

@@ -7,10 +7,10 @@
 // dt sum_k min(V, k A dt, (n + 1 - k) A dt) (one acceleration step per period from rest and to
 // rest): the bound is the fewest periods whose envelope reaches W.
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/planner/TimeOptimalTiming.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/planner/motion/TimeOptimalTiming.h"
 
 namespace parksim {
 

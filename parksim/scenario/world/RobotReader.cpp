@@ -1,11 +1,11 @@
-#include "parksim/scenario/RobotReader.h"
+#include "parksim/scenario/world/RobotReader.h"
 
 #include <optional>
 #include <string>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/scenario/PhysicalRanges.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/scenario/world/PhysicalRanges.h"
 
 namespace parksim {
 

@@ -5,8 +5,8 @@
 
 #include <string_view>
 
-#include "parksim/core/RobotDef.h"
-#include "parksim/scenario/YamlField.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/scenario/yaml/YamlField.h"
 
 namespace parksim {
 

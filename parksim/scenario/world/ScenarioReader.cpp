@@ -11,18 +11,18 @@
 #include <system_error>
 #include <vector>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/ConvexPartition.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/core/PolygonRegion.h"
-#include "parksim/core/Text.h"
-#include "parksim/scenario/MapSection.h"
-#include "parksim/scenario/PhysicalRanges.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/geometry/ConvexPartition.h"
+#include "parksim/core/geometry/PolygonRegion.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/Text.h"
+#include "parksim/core/model/Geometry.h"
 #include "parksim/scenario/RealismSections.h"
-#include "parksim/scenario/RobotReader.h"
-#include "parksim/scenario/WorldDocument.h"
-#include "parksim/scenario/YamlField.h"
+#include "parksim/scenario/world/MapSection.h"
+#include "parksim/scenario/world/PhysicalRanges.h"
+#include "parksim/scenario/world/RobotReader.h"
+#include "parksim/scenario/world/WorldDocument.h"
+#include "parksim/scenario/yaml/YamlField.h"
 
 namespace parksim {
 
