@@ -80,7 +80,7 @@ scenario=(parksim/scenario/*.cpp)
 # The results tables' readers and what they share (the episode record's fields, seals, ids,
 # manifests, merge's sources).
 tables=(parksim/results/ResultsFile.cpp parksim/results/RowSeal.cpp parksim/results/TableVerify.cpp
-        parksim/results/EpisodeRecord.cpp parksim/sim/ExecutionDef.cpp
+        parksim/results/EpisodeRecord.cpp parksim/sim/episode/ExecutionDef.cpp
         parksim/sweep/EpisodeParams.cpp parksim/sweep/SetValues.cpp parksim/sweep/SweepManifest.cpp
         parksim/sweep/Shard.cpp parksim/sweep/Merge.cpp)
 declare -A sources
@@ -90,7 +90,7 @@ sources[spec]="tests/fuzz/SweepSpecFuzz.cpp parksim/sweep/SweepSpecReader.cpp
   parksim/sweep/ComponentChoiceReader.cpp parksim/usercode/CommandLine.cpp parksim/sweep/EpisodeSetup.cpp parksim/sweep/SetValues.cpp parksim/results/EpisodeRecord.cpp
   parksim/planner/base/PlanScenario.cpp
   parksim/results/ExecutedFile.cpp parksim/pipeline/EpisodeRequest.cpp
-  parksim/sim/ExecutionDef.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
+  parksim/sim/episode/ExecutionDef.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
 sources[jsonl]="tests/fuzz/ResultsJsonlFuzz.cpp ${tables[*]} ${core[*]}"
 sources[csv]="tests/fuzz/ResultsCsvFuzz.cpp ${tables[*]} ${core[*]}"
 sources[manifest]="tests/fuzz/SweepManifestFuzz.cpp ${tables[*]} ${core[*]}"

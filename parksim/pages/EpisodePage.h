@@ -19,8 +19,8 @@
 #include "parksim/core/Scenario.h"
 #include "parksim/core/TrackingTolerance.h"
 #include "parksim/core/Trajectory.h"
-#include "parksim/sim/EpisodeMetrics.h"
-#include "parksim/sim/ExecutedRow.h"
+#include "parksim/sim/episode/EpisodeMetrics.h"
+#include "parksim/sim/episode/ExecutedRow.h"
 
 namespace parksim {
 

@@ -22,7 +22,7 @@
 #include "parksim/realism/RealismDef.h"
 #include "parksim/results/EpisodeRecord.h"
 #include "parksim/scenario/YamlField.h"
-#include "parksim/sim/ExecutionDef.h"
+#include "parksim/sim/episode/ExecutionDef.h"
 #include "parksim/sweep/ComponentChoiceReader.h"
 #include "parksim/sweep/EpisodeSetup.h"
 #include "parksim/sweep/SetValues.h"
