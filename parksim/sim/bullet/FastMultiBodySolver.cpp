@@ -14,6 +14,10 @@
 #include "parksim/sim/bullet/MultiBodyContactRows.h"
 #include "parksim/sim/bullet/SolverWarmStart.h"
 
+// Every file of this folder reads Bullet's internals as 3.24 has them (README.md); the build
+// compiles them against 3.24 only (cmake/BulletSolver.cmake), and this says so if it did not.
+static_assert(BT_BULLET_VERSION == 324, "parksim/sim/bullet/ transcribes Bullet 3.24");
+
 namespace parksim {
 
 namespace {

@@ -15,12 +15,12 @@ namespace {
 // one multibody, field for field, with the response from MultiBodyInverseMass.
 class WheelMotor final : public btMultiBodyJointMotor {
  public:
-  WheelMotor(btMultiBody& body, int link, btScalar max_impulse, MultiBodyInverseMass* inverse_mass)
+  WheelMotor(btMultiBody& body, int link, btScalar max_impulse, MultiBodyInverseMass& inverse_mass)
       : btMultiBodyJointMotor(&body, link, 0, max_impulse), inverse_mass_(inverse_mass) {}
 
   void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
                             const btContactSolverInfo& info) override {
-    if (inverse_mass_ == nullptr || !inverse_mass_->covers(m_bodyA) ||
+    if (!inverse_mass_.covers(m_bodyA) ||
         m_bodyA->getLink(m_linkA).m_jointType != btMultibodyLink::eRevolute) {
       btMultiBodyJointMotor::createConstraintRows(rows, data, info);
       return;
@@ -60,7 +60,7 @@ class WheelMotor final : public btMultiBodyJointMotor {
     const btScalar* jac = jacobianA(row);
     for (int i = 0; i < ndof; i++) data.m_jacobians[c.m_jacAindex + i] = jac[i];
     data.m_deltaVelocitiesUnitImpulse.resize(data.m_deltaVelocitiesUnitImpulse.size() + ndof);
-    inverse_mass_->respond(*m_bodyA, c.m_jacAindex, data);
+    inverse_mass_.respond(*m_bodyA, c.m_jacAindex, data);
 
     btScalar denom = 0;
     btScalar rel_vel = 0;
@@ -95,19 +95,15 @@ class WheelMotor final : public btMultiBodyJointMotor {
     c.m_relpos2CrossNormal = -axis;
   }
 
-  MultiBodyInverseMass* inverse_mass_;
+  MultiBodyInverseMass& inverse_mass_;
 };
 
 }  // namespace
 
-std::unique_ptr<btMultiBodyConstraint> makeWheelMotor(btMultiBody& body, int link,
+std::unique_ptr<btMultiBodyJointMotor> makeWheelMotor(btMultiBody& body, int link,
                                                       double max_impulse,
-                                                      MultiBodyInverseMass* inverse_mass) {
+                                                      MultiBodyInverseMass& inverse_mass) {
   return std::make_unique<WheelMotor>(body, link, btScalar(max_impulse), inverse_mass);
-}
-
-void setWheelMotorTarget(btMultiBodyConstraint& motor, double target_radps) {
-  static_cast<btMultiBodyJointMotor&>(motor).setVelocityTarget(btScalar(target_radps));
 }
 
 }  // namespace parksim

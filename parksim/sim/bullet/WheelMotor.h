@@ -7,19 +7,17 @@
 #include <memory>
 
 class btMultiBody;
-class btMultiBodyConstraint;
+class btMultiBodyJointMotor;
 
 namespace parksim {
 
 class MultiBodyInverseMass;
 
 /// A velocity motor on revolute joint `link` of `body`, at most `max_impulse` (N m s) per step,
-/// target 0. `inverse_mass` (may be null: Bullet's own row setup) must outlive the motor.
-std::unique_ptr<btMultiBodyConstraint> makeWheelMotor(btMultiBody& body, int link,
+/// target 0, whose row comes from `inverse_mass` while it covers `body` (else Bullet's own row
+/// setup). `inverse_mass` must outlive the motor.
+std::unique_ptr<btMultiBodyJointMotor> makeWheelMotor(btMultiBody& body, int link,
                                                       double max_impulse,
-                                                      MultiBodyInverseMass* inverse_mass);
-
-/// The motor's velocity target, rad/s (positive as the joint turns positive).
-void setWheelMotorTarget(btMultiBodyConstraint& motor, double target_radps);
+                                                      MultiBodyInverseMass& inverse_mass);
 
 }  // namespace parksim

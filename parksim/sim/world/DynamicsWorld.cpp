@@ -11,22 +11,18 @@
 #include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
-#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 
 #include "parksim/core/Error.h"
 #include "parksim/core/Geometry.h"
 #include "parksim/core/ProvenanceConfig.h"
-#include "parksim/sim/bullet/DiscreteMultiBodyWorld.h"
-#include "parksim/sim/bullet/FastMultiBodySolver.h"
-#include "parksim/sim/bullet/MultiBodyInverseMass.h"
 #include "parksim/sim/world/BulletFrames.h"
 #include "parksim/sim/world/ChassisContacts.h"
 #include "parksim/sim/world/CollisionGroups.h"
 #include "parksim/sim/world/GroundSlab.h"
+#include "parksim/sim/world/KernelParts.h"
 #include "parksim/sim/world/ObstacleBodies.h"
 #include "parksim/sim/world/RobotBody.h"
-#include "parksim/sim/world/SphereBoxContacts.h"
 
 namespace parksim {
 
@@ -107,8 +103,7 @@ struct DynamicsWorld::Impl {
     buildWorld();
     addGround(scenario.lot);
     obstacles.emplace(*world, scenario.obstacles, scenario.robot, physics, model, origin);
-    robot.emplace(*world, scenario.robot, physics, model, start, origin,
-                  model.solver == SolverKernel::kFast ? &inverse_mass : nullptr);
+    robot.emplace(*world, scenario.robot, physics, model, start, origin, *kernel);
     state = robot->state();
     obstacles->wakeNear(start);
   }
@@ -120,11 +115,9 @@ struct DynamicsWorld::Impl {
   // Destroyed in reverse order: the robot and the bodies leave the world before it goes.
   std::unique_ptr<btDefaultCollisionConfiguration> config;
   std::unique_ptr<btCollisionDispatcher> dispatcher;
-  std::optional<SphereBoxContacts> sphere_box;           // registered with the dispatcher
   std::unique_ptr<btOverlapFilterCallback> pair_filter;  // outlives the broadphase
   std::unique_ptr<btDbvtBroadphase> broadphase;
-  MultiBodyInverseMass inverse_mass;  // outlives the solver and the robot's motors
-  std::unique_ptr<btMultiBodyConstraintSolver> solver;
+  std::optional<KernelParts> kernel;  // the solver; outlives the world and the robot's motors
   std::unique_ptr<btMultiBodyDynamicsWorld> world;
   std::unique_ptr<btBoxShape> ground_shape;
   std::unique_ptr<btRigidBody> ground;
@@ -152,27 +145,11 @@ struct DynamicsWorld::Impl {
     pools.m_defaultMaxCollisionAlgorithmPoolSize = 64;
     config = std::make_unique<btDefaultCollisionConfiguration>(pools);
     dispatcher = std::make_unique<btCollisionDispatcher>(config.get());
-    if (model.solver == SolverKernel::kFast) sphere_box.emplace(*dispatcher);
+    kernel.emplace(model, *dispatcher);
     pair_filter = makeFixedObstaclePairFilter();
     broadphase = std::make_unique<btDbvtBroadphase>();
     broadphase->getOverlappingPairCache()->setOverlapFilterCallback(pair_filter.get());
-    FastSolverDef fast;
-    fast.pairwise_dots = model.solver == SolverKernel::kFast;
-    fast.warm_start = model.warm_start;
-    // kFast sets the robot's rows up from its constant mass matrix (rounding differs from
-    // Bullet's); kExact keeps Bullet's setup, bit for bit.
-    if (model.solver == SolverKernel::kFast) fast.inverse_mass = &inverse_mass;
-    solver = model.solver == SolverKernel::kBullet ? std::make_unique<btMultiBodyConstraintSolver>()
-                                                   : makeFastMultiBodySolver(fast);
-    // Bullet's kernel is the reference in Bullet's own world, so the kernels' bit-identity test
-    // (FastMultiBodySolverTest) covers the discrete world's skipped prediction too.
-    if (model.solver == SolverKernel::kBullet) {
-      world = std::make_unique<btMultiBodyDynamicsWorld>(dispatcher.get(), broadphase.get(),
-                                                         solver.get(), config.get());
-    } else {
-      world = makeDiscreteMultiBodyWorld(dispatcher.get(), broadphase.get(), solver.get(),
-                                         config.get());
-    }
+    world = kernel->makeWorld(*dispatcher, *broadphase, *config);
     world->setGravity(btVector3(0, 0, btScalar(-physics.gravity_mps2)));
     world->getSolverInfo().m_numIterations = physics.solver_iterations;
     world->getSolverInfo().m_leastSquaresResidualThreshold =

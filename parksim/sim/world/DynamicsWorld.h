@@ -22,6 +22,9 @@
 namespace parksim {
 
 /// How the constraint solver's iterations are computed (same model, same iteration count).
+/// kExact and kFast run parksim's transcription of Bullet 3.24's solver (sim/bullet/README.md),
+/// which a build has only against Bullet 3.24 and with PARKSIM_BULLET_FAST_SOLVER on
+/// (docs/building.md); any other build runs kBullet for them (effectiveSolverKernel).
 enum class SolverKernel {
   /// Bullet's own btMultiBodyConstraintSolver: the reference.
   kBullet,
@@ -137,6 +140,10 @@ struct SimModelDef {
   /// keep ~1e-6 m wherever the lot lies.
   double local_frame_grid_m = 16.0;
 };
+
+/// The kernel a world built with `requested` runs: `requested`, or kBullet in a build without
+/// the transcription of Bullet 3.24's solver.
+SolverKernel effectiveSolverKernel(SolverKernel requested);
 
 /// Origin of Bullet's local frame in the lot frame for a robot starting at `start`: its
 /// position rounded down to the grid (SimModelDef::local_frame_grid_m), heading 0. The

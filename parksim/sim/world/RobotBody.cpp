@@ -8,23 +8,22 @@
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
-#include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 #include "parksim/core/Error.h"
 #include "parksim/core/NumberFormat.h"
-#include "parksim/sim/bullet/MultiBodyInverseMass.h"
-#include "parksim/sim/bullet/WheelMotor.h"
 #include "parksim/sim/world/BulletFrames.h"
 #include "parksim/sim/world/CollisionGroups.h"
+#include "parksim/sim/world/KernelParts.h"
 #include "parksim/sim/world/RobotSupports.h"
 
 namespace parksim {
 
 RobotBody::RobotBody(btMultiBodyDynamicsWorld& world, const RobotDef& robot,
                      const PhysicsDef& physics, const SimModelDef& model, const Pose2& start,
-                     const Eigen::Vector2d& origin, MultiBodyInverseMass* inverse_mass)
+                     const Eigen::Vector2d& origin, KernelParts& kernel)
     : world_(world),
       robot_(robot),
       physics_(physics),
@@ -139,8 +138,8 @@ RobotBody::RobotBody(btMultiBodyDynamicsWorld& world, const RobotDef& robot,
   btAlignedObjectArray<btVector3> scratch_v;
   body_->forwardKinematics(scratch_q, scratch_v);
   body_->updateCollisionObjectWorldTransforms(scratch_q, scratch_v);
-  if (inverse_mass != nullptr) inverse_mass->add(body_.get());
-  addMotors(inverse_mass);
+  kernel.addRobot(*body_);
+  addMotors(kernel);
 }
 
 RobotBody::~RobotBody() {
@@ -185,22 +184,22 @@ void RobotBody::addColliders(btCollisionShape* chassis_shape, btCollisionShape* 
 
 // Motor limits are impulses per step: torque x dt. Driven by torque, the "motor" is the drive
 // train's Coulomb friction: a target of zero speed that at most that torque holds.
-void RobotBody::addMotors(MultiBodyInverseMass* inverse_mass) {
+void RobotBody::addMotors(KernelParts& kernel) {
   const bool torque_drive = model_.body.drive == WheelDrive::kTorque;
   if (torque_drive && !(model_.body.joint_friction_nm > 0.0)) return;
   const double max_impulse =
       (torque_drive ? model_.body.joint_friction_nm : physics_.max_wheel_torque_nm) *
       physics_.time_step_s;
   for (int link : {kLeftWheel, kRightWheel}) {
-    motors_.push_back(makeWheelMotor(*body_, link, max_impulse, inverse_mass));
+    motors_.push_back(kernel.makeWheelMotor(*body_, link, max_impulse));
     world_.addMultiBodyConstraint(motors_.back().get());
   }
 }
 
 void RobotBody::setWheelTargets(const WheelSpeeds& targets) {
   if (model_.body.drive != WheelDrive::kVelocityMotor) return;
-  setWheelMotorTarget(*motors_[kLeftWheel], targets.left_radps);
-  setWheelMotorTarget(*motors_[kRightWheel], targets.right_radps);
+  motors_[kLeftWheel]->setVelocityTarget(btScalar(targets.left_radps));
+  motors_[kRightWheel]->setVelocityTarget(btScalar(targets.right_radps));
 }
 
 void RobotBody::addWheelTorques(const WheelSpeeds& torques_nm) {

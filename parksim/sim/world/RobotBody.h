@@ -21,12 +21,12 @@ class btCollisionObject;
 class btCollisionShape;
 class btMultiBody;
 class btMultiBodyDynamicsWorld;
-class btMultiBodyConstraint;
+class btMultiBodyJointMotor;
 class btMultiBodyLinkCollider;
 
 namespace parksim {
 
-class MultiBodyInverseMass;
+class KernelParts;
 
 class RobotBody {
  public:
@@ -38,13 +38,13 @@ class RobotBody {
 
   /// Builds the robot as `model.body` says (true radii and track, drive) with its reference
   /// point at `start` (lot frame), and adds it to `world`, whose frame has its origin at
-  /// `origin` in the lot frame. Keeps a reference to `world`. With `inverse_mass` (may be
-  /// null), the solver rows of its contacts and motors are set up from it: the robot's mass
-  /// matrix is constant in its base frame (sphere wheels turn about their axles, the sliders
-  /// are fixed), as MultiBodyInverseMass requires.
+  /// `origin` in the lot frame. Keeps a reference to `world`. Its motors come from `kernel`
+  /// (the world's), which must outlive it; the robot's mass matrix is constant in its base
+  /// frame (sphere wheels turn about their axles, the sliders are fixed), as
+  /// KernelParts::addRobot requires.
   RobotBody(btMultiBodyDynamicsWorld& world, const RobotDef& robot, const PhysicsDef& physics,
             const SimModelDef& model, const Pose2& start, const Eigen::Vector2d& origin,
-            MultiBodyInverseMass* inverse_mass = nullptr);
+            KernelParts& kernel);
   /// Removes the robot from the world.
   ~RobotBody();
 
@@ -69,7 +69,7 @@ class RobotBody {
  private:
   void addColliders(btCollisionShape* chassis_shape, btCollisionShape* left_shape,
                     btCollisionShape* right_shape, btCollisionShape* support_shape, int supports);
-  void addMotors(MultiBodyInverseMass* inverse_mass);
+  void addMotors(KernelParts& kernel);
   btCollisionShape* own(std::unique_ptr<btCollisionShape> shape);
 
   btMultiBodyDynamicsWorld& world_;
@@ -87,7 +87,7 @@ class RobotBody {
   std::vector<std::unique_ptr<btCollisionShape>> shapes_;
   std::unique_ptr<btMultiBody> body_;
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;  // chassis, wheels, sliders
-  std::vector<std::unique_ptr<btMultiBodyConstraint>> motors_;       // left, right
+  std::vector<std::unique_ptr<btMultiBodyJointMotor>> motors_;       // left, right
 };
 
 }  // namespace parksim
