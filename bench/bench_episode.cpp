@@ -25,6 +25,8 @@
 #include "parksim/results/MetricsFile.h"
 #include "parksim/scenario/world/ScenarioReader.h"
 #include "parksim/sim/Episode.h"
+#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/sim/episode/Episode.h"
 
 namespace parksim {
 namespace {

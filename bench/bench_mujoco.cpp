@@ -37,6 +37,9 @@
 #include "parksim/scenario/world/ScenarioReader.h"
 #include "parksim/sim/Episode.h"
 #include "parksim/sim/ReferenceTrajectory.h"
+#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/sim/episode/Episode.h"
+#include "parksim/sim/episode/ReferenceTrajectory.h"
 
 namespace parksim {
 namespace {

@@ -13,6 +13,8 @@
 #include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/scenario/world/ScenarioReader.h"
 #include "parksim/sim/Episode.h"
+#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/sim/episode/Episode.h"
 
 int main(int argc, char** argv) {
   using namespace parksim;

@@ -20,6 +20,9 @@
 #include "parksim/scenario/world/World.h"
 #include "parksim/sim/Episode.h"
 #include "parksim/sim/ExecutionDef.h"
+#include "parksim/scenario/World.h"
+#include "parksim/sim/episode/Episode.h"
+#include "parksim/sim/episode/ExecutionDef.h"
 
 namespace parksim {
 

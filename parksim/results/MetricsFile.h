@@ -9,6 +9,8 @@
 
 #include "parksim/core/model/TrackingTolerance.h"
 #include "parksim/sim/Episode.h"
+#include "parksim/core/TrackingTolerance.h"
+#include "parksim/sim/episode/Episode.h"
 
 namespace parksim {
 

@@ -12,6 +12,9 @@
 #include "parksim/core/geometry/Angle.h"
 #include "parksim/core/io/Error.h"
 #include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/Angle.h"
+#include "parksim/core/DiffDrive.h"
+#include "parksim/core/Error.h"
 #include "parksim/realism/Encoder.h"
 #include "parksim/realism/Estimator.h"
 #include "parksim/realism/MotorModel.h"
@@ -20,6 +23,8 @@
 #include "parksim/realism/WheelSpeedLoop.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

@@ -26,6 +26,11 @@
 #include "parksim/sweep/spec/ComponentChoiceReader.h"
 #include "parksim/sweep/spec/EpisodeSetup.h"
 #include "parksim/sweep/spec/SetValues.h"
+#include "parksim/scenario/YamlField.h"
+#include "parksim/sim/episode/ExecutionDef.h"
+#include "parksim/sweep/ComponentChoiceReader.h"
+#include "parksim/sweep/EpisodeSetup.h"
+#include "parksim/sweep/SetValues.h"
 
 namespace parksim {
 namespace {
