@@ -24,8 +24,6 @@
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/MetricsFile.h"
 #include "parksim/scenario/world/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
-#include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/episode/Episode.h"
 
 namespace parksim {

@@ -35,9 +35,6 @@
 
 #include "parksim/results/TrajectoryFile.h"
 #include "parksim/scenario/world/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
-#include "parksim/sim/ReferenceTrajectory.h"
-#include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/episode/Episode.h"
 #include "parksim/sim/episode/ReferenceTrajectory.h"
 

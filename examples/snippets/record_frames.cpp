@@ -12,8 +12,6 @@
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/scenario/world/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
-#include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/episode/Episode.h"
 
 int main(int argc, char** argv) {

@@ -18,9 +18,6 @@
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/scenario/world/World.h"
-#include "parksim/sim/Episode.h"
-#include "parksim/sim/ExecutionDef.h"
-#include "parksim/scenario/World.h"
 #include "parksim/sim/episode/Episode.h"
 #include "parksim/sim/episode/ExecutionDef.h"
 

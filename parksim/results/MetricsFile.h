@@ -8,8 +8,6 @@
 #include <nlohmann/json.hpp>
 
 #include "parksim/core/model/TrackingTolerance.h"
-#include "parksim/sim/Episode.h"
-#include "parksim/core/TrackingTolerance.h"
 #include "parksim/sim/episode/Episode.h"
 
 namespace parksim {

@@ -29,9 +29,6 @@
 
 #include "parksim/core/params/ParamMap.h"
 #include "parksim/core/system/ChildProcess.h"
-#include "parksim/sim/Controller.h"
-#include "parksim/core/ChildProcess.h"
-#include "parksim/core/ParamMap.h"
 #include "parksim/sim/control/Controller.h"
 
 namespace parksim {

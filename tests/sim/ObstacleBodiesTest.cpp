@@ -6,8 +6,6 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/geometry/ConvexPartition.h"
-#include "parksim/sim/DynamicsWorld.h"
-#include "parksim/core/ConvexPartition.h"
 #include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/sim/SimTestSupport.h"
 

@@ -15,8 +15,6 @@
 
 #include "parksim/results/TrajectoryFile.h"
 #include "parksim/scenario/world/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
-#include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/episode/Episode.h"
 #include "tests/support/TestPaths.h"
 

@@ -12,8 +12,6 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/geometry/Angle.h"
-#include "parksim/sim/DynamicsWorld.h"
-#include "parksim/core/Angle.h"
 #include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/sim/SimTestSupport.h"
 

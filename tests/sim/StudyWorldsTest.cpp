@@ -17,8 +17,6 @@
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/MetricsFile.h"
 #include "parksim/scenario/world/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
-#include "parksim/scenario/ScenarioReader.h"
 #include "parksim/sim/episode/Episode.h"
 #include "tests/support/TestPaths.h"
 

@@ -23,11 +23,6 @@
 #include "parksim/core/model/DiffDrive.h"
 #include "parksim/core/model/RobotDef.h"
 #include "parksim/core/model/Trajectory.h"
-#include "parksim/sim/Controller.h"
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Trajectory.h"
 #include "parksim/sim/control/Controller.h"
 
 namespace parksim {

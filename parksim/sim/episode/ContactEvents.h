@@ -7,8 +7,6 @@
 #include <vector>
 
 #include "parksim/core/model/Scenario.h"
-#include "parksim/sim/EpisodeMetrics.h"
-#include "parksim/core/Scenario.h"
 #include "parksim/sim/episode/EpisodeMetrics.h"
 
 namespace parksim {

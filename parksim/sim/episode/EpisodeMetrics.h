@@ -8,8 +8,6 @@
 #include <vector>
 
 #include "parksim/core/geometry/Pose2.h"
-#include "parksim/sim/ExecutionDef.h"
-#include "parksim/core/Pose2.h"
 #include "parksim/sim/episode/ExecutionDef.h"
 
 namespace parksim {

@@ -6,10 +6,6 @@
 
 #include "parksim/core/geometry/Pose2.h"
 #include "parksim/core/model/Scenario.h"
-#include "parksim/sim/DynamicsWorld.h"
-#include "parksim/sim/EpisodeMetrics.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
 #include "parksim/sim/episode/EpisodeMetrics.h"
 #include "parksim/sim/world/DynamicsWorld.h"
 

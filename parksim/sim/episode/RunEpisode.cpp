@@ -2,8 +2,6 @@
 // simulated time.
 
 #include "parksim/core/io/Error.h"
-#include "parksim/sim/Episode.h"
-#include "parksim/core/Error.h"
 #include "parksim/sim/episode/Episode.h"
 
 #include <utility>

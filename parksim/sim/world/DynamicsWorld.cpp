@@ -13,22 +13,13 @@
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 
+#include "parksim/core/ProvenanceConfig.h"
 #include "parksim/core/io/Error.h"
 #include "parksim/core/model/Geometry.h"
 #include "parksim/core/system/ProvenanceConfig.h"
-#include "parksim/sim/BulletFrames.h"
-#include "parksim/sim/ChassisContacts.h"
-#include "parksim/sim/CollisionGroups.h"
-#include "parksim/sim/DiscreteMultiBodyWorld.h"
-#include "parksim/sim/FastMultiBodySolver.h"
-#include "parksim/sim/GroundSlab.h"
-#include "parksim/sim/MultiBodyInverseMass.h"
-#include "parksim/sim/ObstacleBodies.h"
-#include "parksim/sim/RobotBody.h"
-#include "parksim/sim/SphereBoxContacts.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/core/ProvenanceConfig.h"
+#include "parksim/sim/bullet/DiscreteMultiBodyWorld.h"
+#include "parksim/sim/bullet/FastMultiBodySolver.h"
+#include "parksim/sim/bullet/MultiBodyInverseMass.h"
 #include "parksim/sim/world/BulletFrames.h"
 #include "parksim/sim/world/ChassisContacts.h"
 #include "parksim/sim/world/CollisionGroups.h"
@@ -36,6 +27,7 @@
 #include "parksim/sim/world/KernelParts.h"
 #include "parksim/sim/world/ObstacleBodies.h"
 #include "parksim/sim/world/RobotBody.h"
+#include "parksim/sim/world/SphereBoxContacts.h"
 
 namespace parksim {
 

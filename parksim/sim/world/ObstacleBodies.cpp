@@ -10,9 +10,6 @@
 
 #include "parksim/collision/ObstacleShape.h"
 #include "parksim/core/model/Geometry.h"
-#include "parksim/sim/BulletFrames.h"
-#include "parksim/sim/CollisionGroups.h"
-#include "parksim/core/Geometry.h"
 #include "parksim/sim/world/BulletFrames.h"
 #include "parksim/sim/world/CollisionGroups.h"
 

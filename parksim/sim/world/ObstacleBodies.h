@@ -19,10 +19,6 @@
 
 #include "parksim/core/geometry/Pose2.h"
 #include "parksim/core/model/Scenario.h"
-#include "parksim/sim/DynamicsWorld.h"
-#include "parksim/sim/ParkedRobotGrid.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
 #include "parksim/sim/world/DynamicsWorld.h"
 #include "parksim/sim/world/ParkedRobotGrid.h"
 

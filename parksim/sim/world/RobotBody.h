@@ -15,10 +15,6 @@
 #include "parksim/core/geometry/Pose2.h"
 #include "parksim/core/model/DiffDrive.h"
 #include "parksim/core/model/Scenario.h"
-#include "parksim/sim/DynamicsWorld.h"
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
 #include "parksim/sim/world/DynamicsWorld.h"
 
 class btCollisionObject;
