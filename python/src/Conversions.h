@@ -2,12 +2,15 @@
 // Types shared between binding files whose Python classes convert into core types.
 
 #include <memory>
+#include <optional>
 
 #include <pybind11/pybind11.h>
 
 #include "parksim/core/ParamMap.h"
 #include "parksim/core/Scenario.h"
+#include "parksim/pipeline/EpisodeOutcome.h"
 #include "parksim/pipeline/EpisodeRequest.h"
+#include "parksim/pipeline/Verdict.h"
 #include "parksim/planner/PlanScenario.h"
 #include "python/src/Bindings.h"
 
@@ -17,9 +20,24 @@ namespace parksim::python {
 struct PlanOutcome {
   std::shared_ptr<const Scenario> scenario;
   PlanSetup setup;  ///< as used (automatic choices made)
-  PlanResult result;
+  /// The planner's result; none when the planner failed (the verdict is planner_error).
+  std::optional<PlanResult> result;
   nlohmann::json summary;  ///< plan.json's content
+  /// The pipeline's verdict on the plan: met when it may be driven, else plan_failed,
+  /// plan_invalid or planner_error with the reason (pipeline/Verdict.h).
+  Verdict verdict;
+
+  /// The planner's status ("solved", "iteration_limit", ..., "plan_invalid"), or the verdict's
+  /// when there is no result ("planner_error").
+  std::string status() const;
+  /// The planner's message, or the verdict's reason when there is no result.
+  std::string message() const;
 };
+
+/// The plan part of a pipeline outcome that planned (outcome.plan_setup, plan, plan_summary,
+/// and the verdict on the plan: met when solved, else the outcome's).
+PlanOutcome planOutcomeOf(const std::shared_ptr<const Scenario>& scenario,
+                          const EpisodeOutcome& outcome);
 
 /// plan()'s options taken from `options` (removed from it): planner, planner_params, steering,
 /// SearchDef and PlanSetup fields, over the library's defaults.

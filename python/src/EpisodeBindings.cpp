@@ -63,10 +63,7 @@ RunOutcome runWorld(const WorldHandle& world, const py::object& plan, const py::
     py::gil_scoped_release release;
     r.outcome = runEpisodePipeline(request);
   }
-  if (r.outcome.plan) {
-    r.plan =
-        PlanOutcome{world.scenario, r.outcome.plan_setup, *r.outcome.plan, r.outcome.plan_summary};
-  }
+  if (!request.given_plan) r.plan = planOutcomeOf(world.scenario, r.outcome);
   return r;
 }
 
@@ -208,7 +205,8 @@ void bindRunResult(py::module_& m) {
             if (!r.plan) return py::none();
             return py::cast(*r.plan);
           },
-          "The PlanResult when run() planned; None when a plan was given.")
+          "The PlanResult when run() planned (its status planner_error when the planner failed); "
+          "None when a plan was given.")
       .def_property_readonly(
           "solved", [](const RunOutcome& r) { return r.outcome.driven(); },
           "False when planning failed (then nothing ran: executed is empty, metrics {}).")
