@@ -199,7 +199,8 @@ std::optional<PlanResult> placementFailure(const Scenario& scenario, const PlanS
 }
 
 // A user's planner, whose failures are its own (UserCodeError), not the input's: anything it
-// throws, and a solved result without a trajectory that can even be checked.
+// throws, a status only parksim gives, and a solved result without a trajectory that can even
+// be checked. A solved plan that can is checked (PlanCheck.h): one that fails is kPlanInvalid.
 PlanResult solveUserPlanner(Planner& planner, const PlannerInfo& info,
                             const PlanningProblem& problem) {
   const auto failed = [&](const std::string& what) {
@@ -214,6 +215,9 @@ PlanResult solveUserPlanner(Planner& planner, const PlannerInfo& info,
     throw failed(std::string("threw: ") + e.what());
   } catch (...) {
     throw failed("threw something that is not a std::exception");
+  }
+  if (result.status == PlanStatus::kPlanInvalid) {
+    throw failed("returned the status plan_invalid, which only parksim's plan check gives");
   }
   if (result.solved()) {
     if (std::optional<std::string> problem_text = malformedPlan(result.trajectory)) {
@@ -271,6 +275,14 @@ PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checke
     if (result.solved() && st.first_solution_s < 0.0) {
       st.first_solution_s = st.times.total_s;
       st.first_solution_iteration = st.iterations;
+    }
+    // The one check of a plan parksim did not make, whichever front end asked for it.
+    if (result.solved()) {
+      if (const std::optional<PlanViolation> v =
+              checkPlan(scenario, checker, result.trajectory, setup.validation)) {
+        result.status = PlanStatus::kPlanInvalid;
+        result.message = v->reason;
+      }
     }
   }
   if (result.solved()) setBounds(scenario, limits, result);

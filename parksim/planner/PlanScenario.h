@@ -117,8 +117,10 @@ void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup,
 /// lower bound and free-space bound. parksim's planners smooth and time their plans themselves
 /// (PlanFinishing.h). A planner that is not built in and throws, or returns a solved result
 /// without a usable trajectory (empty, non-finite, times not increasing), raises
-/// UserCodeError (core/Error.h); its plan, solved or not, is checked later (PlanCheck.h).
-/// `progress` is passed to the planner.
+/// UserCodeError (core/Error.h); its solved plan is checked here (checkPlan, PlanCheck.h), and
+/// one that fails is returned as PlanStatus::kPlanInvalid with the violation as its message and
+/// the plan kept. Every front end plans through here, so none can drive, draw or report such a
+/// plan as solved. `progress` is passed to the planner.
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
                         const PlanSetup& setup, const PlanProgress& progress = {},
                         const PlannerRegistry& registry = builtInPlanners());

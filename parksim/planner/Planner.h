@@ -112,6 +112,9 @@ struct PlannerInfo {
   bool trusted = false;
   /// The plugin that registered it ("" for built-ins).
   std::string plugin;
+  /// Set by a front end that registers user code of its own (neither a plugin's nor a command):
+  /// what it is, for results ("Python object my_module.Straight"; plan.json's planner_origin).
+  std::string origin;
 };
 
 /// Makes a planner with its parameters applied; throws Error naming the planner and the

@@ -209,11 +209,13 @@ void bindRunResult(py::module_& m) {
           "None when a plan was given.")
       .def_property_readonly(
           "solved", [](const RunOutcome& r) { return r.outcome.driven(); },
-          "False when planning failed (then nothing ran: executed is empty, metrics {}).")
+          "False when there was nothing to drive (then executed is empty and metrics holds the "
+          "verdict without measurements).")
       .def_property_readonly(
           "status", [](const RunOutcome& r) { return toString(r.outcome.verdict.status); },
-          "The verdict: met, plan_failed, contact, goal_missed or tolerance_missed (as the "
-          "command line's exit status and a sweep row's status).")
+          "The verdict: met, plan_failed, plan_invalid, planner_error, controller_error, "
+          "contact, goal_missed or tolerance_missed (as the command line's exit status and a "
+          "sweep row's status).")
       .def_property_readonly(
           "met", [](const RunOutcome& r) { return r.outcome.verdict.met(); },
           "True when the episode met its tolerance (status == 'met').")
@@ -246,11 +248,9 @@ void bindRunResult(py::module_& m) {
           },
           "Structured array with executed.csv's columns.")
       .def_property_readonly(
-          "metrics",
-          [](const RunOutcome& r) {
-            return r.outcome.driven() ? toPython(r.outcome.metrics) : py::object(py::dict());
-          },
-          "metrics.json's content as a dict.")
+          "metrics", [](const RunOutcome& r) { return toPython(r.outcome.metrics); },
+          "metrics.json's content as a dict: the measurements and the verdict; the verdict, "
+          "the plan's keys and the tolerance alone when nothing was driven.")
       .def_property_readonly(
           "files", [](const RunOutcome& r) { return r.outcome.files; },
           "Files written (paths under out), when out was given.")

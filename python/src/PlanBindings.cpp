@@ -55,12 +55,13 @@ PlanOutcome planWorld(const WorldHandle& world, const EpisodeRequest& request) {
 void bindPlan(py::module_& m) {
   py::class_<PlanOutcome>(m, "PlanResult", "A plan: status, trajectory and statistics.")
       .def_property_readonly(
-          "solved", [](const PlanOutcome& p) { return p.result && p.result->solved(); },
-          "True when the planner solved the problem.")
+          "solved", [](const PlanOutcome& p) { return p.verdict.met(); },
+          "True when the plan may be driven: solved and, when parksim did not make it, checked.")
       .def_property_readonly(
           "status", &PlanOutcome::status,
           "The planner's status (solved, iteration_limit, time_limit, invalid_start, "
-          "invalid_goal, cancelled), or planner_error when a user's planner failed.")
+          "invalid_goal, cancelled), plan_invalid when a plan parksim did not make failed its "
+          "check, or planner_error when a user's planner failed.")
       .def_property_readonly("message", &PlanOutcome::message,
                              "One line: the planner's message, or why the plan failed.")
       .def_property_readonly(
@@ -81,7 +82,8 @@ void bindPlan(py::module_& m) {
                                    p.scenario->robot);
           },
           "Structured array with trajectory.csv's columns t, x, y, theta, omega_left, "
-          "omega_right, v, omega (s, m, rad, rad/s, m/s); empty unless solved.")
+          "omega_right, v, omega (s, m, rad, rad/s, m/s); empty unless solved or plan_invalid "
+          "(then the plan that failed its check).")
       .def_property_readonly(
           "stats", [](const PlanOutcome& p) { return toPython(p.summary); },
           "plan.json's content as a dict.")
