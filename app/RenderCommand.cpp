@@ -110,7 +110,8 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
       r.plan = options.toSetup();
       r.components = components;
       r.drive = false;
-      checkEpisodeRequest(r, {.limits = opt->user_code.limits, .isolate = true});
+      r.limits = opt->user_code.limits;
+      checkEpisodeRequest(r, {.limits = r.limits, .isolate = true});
       user_code = user_code || runsUserCode(r);
     }
     if (!opt->executed.empty()) inputs.tracking = readTrackingRecord(opt->executed);

@@ -23,6 +23,17 @@ namespace {
 // first and the last row are recorded.
 constexpr int kFirstAndLastRowOnly = INT_MAX / 2;
 
+// plan.json's content for a planner that gave no result (out.verdict: its planner_error): what
+// was asked, why it failed, and whose code it was.
+nlohmann::json plannerFailureSummary(const EpisodeRequest& request, const EpisodeOutcome& out) {
+  const Components& components = componentsOf(request);
+  const PlannerInfo& info = components.planners.find(out.plan_setup.planner).info;
+  nlohmann::json j = failedPlanSummary(request.world->scenario, out.plan_setup,
+                                       toString(out.verdict.status), out.verdict.reason);
+  j["planner_origin"] = plannerOrigin(components, info, out.plan_setup.planner_params);
+  return j;
+}
+
 // Plans, or takes the given plan. Sets the trajectory to drive, the plan's summary, and the
 // verdict when there is nothing to drive: plan_failed when the planner found nothing,
 // planner_error when a user's planner failed, plan_invalid when a plan parksim did not make
@@ -43,23 +54,21 @@ void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
   const Components& components = componentsOf(request);
   const PlannerInfo& info = components.planners.find(out.plan_setup.planner).info;
   // Where the planner's own code runs, for a watching process (UserCodeIsolation.h); a command
-  // keeps its own time limits.
+  // stops its program at request.limits itself.
   UserCodeWatch* watch = info.trusted || info.own_process ? nullptr : request.watch;
-  // What made the plan, recorded beside it: nothing else says which code it was.
-  const std::string origin = plannerOrigin(components, info, out.plan_setup.planner_params);
   if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kPlanner, info.name);
   try {
     out.plan = planScenario(scenario, collision, out.plan_setup, request.progress.plan,
-                            components.planners);
+                            components.planners, request.limits.planner_s);
   } catch (const UserCodeError& e) {
     out.verdict = userCodeVerdict(e);
-    out.plan_summary = failedPlanSummary(scenario, out.plan_setup, toString(out.verdict.status),
-                                         out.verdict.reason);
-    out.plan_summary["planner_origin"] = origin;
+    out.plan_summary = plannerFailureSummary(request, out);
     return;
   }
   if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kParksim, "");
   out.plan_summary = planSummary(scenario, out.plan_setup, *out.plan);
+  // What made the plan, recorded beside it: nothing else says which code it was.
+  const std::string origin = plannerOrigin(components, info, out.plan_setup.planner_params);
   if (!origin.empty()) out.plan_summary["planner_origin"] = origin;
   // A plan that failed its check is kept to be shown (the episode's page), never driven.
   if (out.plan->solved() || out.plan->status == PlanStatus::kPlanInvalid) {
@@ -77,7 +86,7 @@ EpisodeController controllerFor(const EpisodeRequest& request) {
   if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kController, info.name);
   std::unique_ptr<Controller> controller = entry.make(request.controller_params);
   if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kParksim, "");
-  return {std::move(controller), info.name, info.trusted, watch};
+  return {std::move(controller), info.name, info.trusted, watch, request.limits.controller_tick_s};
 }
 
 // A recorder filming into the request's directory, with the plan drawn.
@@ -246,6 +255,24 @@ std::string outDirNeeded(const EpisodeRequest& request) {
 }
 
 }  // namespace
+
+EpisodeOutcome userCodeFailureOutcome(const EpisodeRequest& request, const UserCodeError& error) {
+  const EpisodeSettings settings = resolveSettings(request);
+  EpisodeOutcome out;
+  out.world = request.world;
+  out.plan_setup = settings.plan;
+  out.tolerance = settings.tolerance;
+  out.verdict = userCodeVerdict(error);
+  if (request.given_plan) {
+    out.trajectory = *request.given_plan;
+    out.plan_summary = trajectorySummary(request.world->scenario, out.trajectory);
+    if (!request.given_plan_source.empty()) out.plan_summary["source"] = request.given_plan_source;
+  } else if (error.component() == UserCodeError::Component::kPlanner) {
+    out.plan_summary = plannerFailureSummary(request, out);
+  }
+  if (request.drive) out.metrics = metricsOf(request, out, nullptr);
+  return out;
+}
 
 int EpisodeOutcome::realisationsMet() const {
   int met = 0;

@@ -247,7 +247,7 @@ void setBounds(const Scenario& scenario, const TimingLimits& limits, PlanResult&
 
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
                         const PlanSetup& requested, const PlanProgress& progress,
-                        const PlannerRegistry& registry) {
+                        const PlannerRegistry& registry, double time_limit_s) {
   const PlannerEntry& entry = registry.find(requested.planner);
   const PlanSetup setup = resolvedPlanSetup(requested, scenario, registry);
   checkPlanningLimits(scenario, setup, registry);
@@ -262,7 +262,8 @@ PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checke
   const MotionValidator validator(checker, scenario.robot, scenario.lot, setup.validation);
   const TimingLimits limits = timingLimits(scenario.robot, setup.feedback_headroom,
                                            setup.timing_period_s, setup.start_jerk_radps3);
-  const PlanningProblem problem{scenario, checker, validator, *steering, setup, limits, progress};
+  const PlanningProblem problem{scenario, checker, validator, *steering,
+                                setup,    limits,  progress,  time_limit_s};
   PlanResult result;
   if (entry.info.trusted) {
     result = planner->solve(problem);

@@ -120,9 +120,11 @@ void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup,
 /// UserCodeError (core/Error.h); its solved plan is checked here (checkPlan, PlanCheck.h), and
 /// one that fails is returned as PlanStatus::kPlanInvalid with the violation as its message and
 /// the plan kept. Every front end plans through here, so none can drive, draw or report such a
-/// plan as solved. `progress` is passed to the planner.
+/// plan as solved. `progress` and `time_limit_s` (the run's limit on a user's planner, s; 0:
+/// none) are handed to the planner in its problem (Planner.h).
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
                         const PlanSetup& setup, const PlanProgress& progress = {},
-                        const PlannerRegistry& registry = builtInPlanners());
+                        const PlannerRegistry& registry = builtInPlanners(),
+                        double time_limit_s = 0.0);
 
 }  // namespace parksim

@@ -43,8 +43,29 @@ PlanOutcome planOutcomeOf(const std::shared_ptr<const Scenario>& scenario,
 /// SearchDef and PlanSetup fields, over the library's defaults.
 PlanSetup planSetupFrom(py::dict& options);
 
-/// Plans through the episode pipeline (a request that does not drive), the GIL released.
-PlanOutcome planWorld(const WorldHandle& world, const EpisodeRequest& request);
+/// plan()'s and run()'s isolate, planner_timeout and controller_timeout (s) (RunRequest.cpp).
+struct IsolationOptions {
+  bool isolate = false;
+  std::optional<double> planner_s;
+  std::optional<double> controller_tick_s;
+
+  /// Sets request.limits and says whether to run in a worker. A time limit given for code that
+  /// would run in this process (no isolate) is a TypeError: it could not hold; a limit out of
+  /// range an Error. Call it once the request's components and plan are known.
+  bool applyTo(EpisodeRequest& request) const;
+};
+
+/// The options above, taken from `options` (removed from it).
+IsolationOptions takeIsolation(py::dict& options);
+
+/// The pipeline's outcome of `request`: in this process with the GIL released, or with
+/// `isolate` in a watched worker forked from the calling thread (pipeline/IsolatedEpisode.h),
+/// the interpreter's fork handling around the fork.
+EpisodeOutcome runRequest(const EpisodeRequest& request, bool isolate);
+
+/// Plans through the episode pipeline (a request that does not drive), as runRequest runs it.
+PlanOutcome planWorld(const WorldHandle& world, const EpisodeRequest& request,
+                      bool isolate = false);
 
 /// A dict of planner or controller parameters ({"goal_bias": 0.1}) as a ParamMap: bools as
 /// true/false, numbers in their shortest round-trip form, strings as they are; anything else is

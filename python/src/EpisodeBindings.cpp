@@ -46,8 +46,10 @@ void takePlan(const py::object& plan, EpisodeRequest& request) {
 RunOutcome runWorld(const WorldHandle& world, const py::object& plan, const py::object& film,
                     const py::object& out, py::dict& options) {
   EpisodeRequest request = requestFrom(world, options, plan.is_none());
+  const IsolationOptions isolation = takeIsolation(options);
   rejectUnknownOptions(options, "run");
   takePlan(plan, request);
+  const bool isolate = isolation.applyTo(request);
   if (!out.is_none()) {
     request.out_dir = py::str(py::module_::import("os").attr("fspath")(out));
     request.record.files = FilesPolicy::kAll;
@@ -59,11 +61,12 @@ RunOutcome runWorld(const WorldHandle& world, const py::object& plan, const py::
   }
   RunOutcome r;
   r.scenario = world.scenario;
-  {
-    py::gil_scoped_release release;
-    r.outcome = runEpisodePipeline(request);
+  r.outcome = runRequest(request, isolate);
+  // The plan, when it was made here or the planner failed (a plan made in a worker whose
+  // controller then crashed is lost with it).
+  if (!request.given_plan && (r.outcome.plan || !r.outcome.plan_summary.is_null())) {
+    r.plan = planOutcomeOf(world.scenario, r.outcome);
   }
-  if (!request.given_plan) r.plan = planOutcomeOf(world.scenario, r.outcome);
   return r;
 }
 
@@ -291,7 +294,12 @@ Options: realism ("world": the world's realism: section, else ideal; or "ideal",
 film: None, or a FrameDef / dict of its fields (out_dir, fps, video, ...) to write frames.
 out: None, or a directory for trajectory.csv, plan.json, executed.csv and metrics.json.
 The result's status, met and reason are the verdict. Results are bit-identical to
-`parksim run` for the same options. Releases the GIL while planning and simulating.)");
+`parksim run` for the same options. Releases the GIL while planning and simulating.
+isolate=True runs the episode in a worker process, as parksim.sweep's workers run: a Python
+  object or a plugin that crashes, plans longer than planner_timeout (s, default 600) or takes
+  longer than controller_timeout (s, default 10) for one command gives planner_error or
+  controller_error instead of ending the interpreter; the result is otherwise the same.
+  The timeouts also stop a command planner's or controller's program (without isolate too).)");
 }
 
 void bindEpisodeHandle(py::module_& m) {

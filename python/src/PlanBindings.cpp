@@ -45,11 +45,10 @@ PlanOutcome planOutcomeOf(const std::shared_ptr<const Scenario>& scenario,
           solved ? Verdict{} : outcome.verdict};
 }
 
-PlanOutcome planWorld(const WorldHandle& world, const EpisodeRequest& request) {
+PlanOutcome planWorld(const WorldHandle& world, const EpisodeRequest& request, bool isolate) {
   EpisodeRequest plan_only = request;
   plan_only.drive = false;
-  py::gil_scoped_release release;
-  return planOutcomeOf(world.scenario, runEpisodePipeline(plan_only));
+  return planOutcomeOf(world.scenario, runRequest(plan_only, isolate));
 }
 
 void bindPlan(py::module_& m) {
@@ -120,8 +119,10 @@ void bindPlan(py::module_& m) {
         request.world = world.world;
         takeComponents(options, request);
         request.plan = planSetupFrom(options);
+        request.drive = false;
+        const IsolationOptions isolation = takeIsolation(options);
         rejectUnknownOptions(options, "plan");
-        return planWorld(world, request);
+        return planWorld(world, request, isolation.applyTo(request));
       },
       py::arg("world"),
       R"(Plans the world's parking manoeuvre, as `parksim plan` does.
@@ -133,7 +134,11 @@ Options (keywords; the defaults are the library's, the same as `parksim plan`'s 
   rotate-translate-rotate, move-to-pose), any SearchDef field (seed, max_iterations: 0 for
   the lot's budget, smooth, smoothing_attempts, ...), and any PlanSetup field (timing, feedback_headroom, goal_tolerance_fraction,
   move_to_pose={...}, reeds_shepp={...}, validation={...}). parksim.PlanSetup() shows every
-  default. Releases the GIL while planning.)");
+  default. Releases the GIL while planning.
+isolate=True plans in a worker process, as parksim.sweep's workers run: a Python object or a
+  plugin that crashes, or plans longer than planner_timeout (s, default 600), gives
+  planner_error instead of ending the interpreter. planner_timeout also stops a command
+  planner's program (without isolate too).)");
 
   m.def(
       "read_trajectory",

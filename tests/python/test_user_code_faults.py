@@ -1,6 +1,7 @@
 """User code that fails, through plan() and run(): a verdict with its reason, never a corrupt
-result or a lost interpreter. Each case runs in a fresh interpreter, so that a crash is this
-test's failure (its exit status and stderr shown), not the end of every test after it."""
+result or a lost interpreter; with isolate=True one that crashes or hangs past its time limit
+too. Each case runs in a fresh interpreter, so that a crash or a hang is this test's failure
+(its exit status and stderr shown, or its timeout), not the end of every test after it."""
 
 import json
 import os
@@ -16,7 +17,7 @@ from conftest import SOURCE_DIR
 PLUGIN = os.environ.get("PARKSIM_TEST_PLUGIN", "")
 
 PRELUDE = """
-import json, sys
+import json, os, signal, sys
 import numpy as np
 import parksim
 world = parksim.load_world(%r)
@@ -34,6 +35,25 @@ class ReturnsNan:
 class WrongShape:
     def solve(self, problem):
         return np.zeros((4, 3))
+
+class Hangs:
+    def solve(self, problem):
+        while True:
+            pass
+
+class Crashes:
+    def solve(self, problem):
+        os.kill(os.getpid(), signal.SIGSEGV)
+
+def hangs_on(obs):
+    while obs.t > 0.5:
+        pass
+    return obs.feedforward
+
+def verdict(result):
+    if hasattr(result, "verdict"):  # a PlanResult
+        return {"status": result.status, "reason": result.message}
+    return {"status": result.status, "reason": result.reason}
 
 def report(result):
     # Every property, read: a corrupt result raises or crashes here.
@@ -88,3 +108,76 @@ def test_a_plugins_failing_planner_is_a_planner_error_from_plan(planner, reason)
     assert r["status"] == "planner_error" and not r["solved"], r
     assert r["message"].startswith(reason), r
 
+
+@pytest.mark.parametrize("call,status,reason", [
+    ("parksim.plan(world, planner=Hangs(), isolate=True, planner_timeout=1)", "planner_error",
+     "planner Hangs ran past its time limit of 1 s (its process was killed)"),
+    ("parksim.plan(world, planner=Crashes(), isolate=True)", "planner_error",
+     "planner Crashes crashed (SIGSEGV, Segmentation fault)"),
+    ("parksim.run(world, planner=Hangs(), isolate=True, planner_timeout=1)", "planner_error",
+     "planner Hangs ran past its time limit of 1 s (its process was killed)"),
+    ("parksim.run(world, controller=hangs_on, isolate=True, controller_timeout=1)",
+     "controller_error",
+     "controller hangs_on gave no command within its time limit of 1 s (its process was killed)"),
+])
+def test_isolated_python_code_that_crashes_or_hangs_is_a_verdict(call, status, reason):
+    r = in_child(f"""
+        r = {call}
+        # The interpreter goes on: the next episode runs as ever.
+        print(json.dumps([verdict(r), parksim.plan(world).solved]))
+    """)
+    assert r == [{"status": status, "reason": reason}, True]
+
+
+@pytest.mark.skipif(not PLUGIN, reason="PARKSIM_TEST_PLUGIN is not set (run through ctest)")
+@pytest.mark.parametrize("options,status,reason", [
+    ("planner='segfault-planner'", "planner_error",
+     "planner segfault-planner crashed (SIGSEGV, Segmentation fault)"),
+    ("controller='hanging-controller', controller_timeout=0.5", "controller_error",
+     "controller hanging-controller gave no command within its time limit of 0.5 s (its process "
+     "was killed)"),
+])
+def test_an_isolated_plugins_crash_or_hang_is_a_verdict(options, status, reason):
+    r = in_child(f"""
+        r = parksim.run(world, plugins=[{PLUGIN!r}], {options}, isolate=True)
+        print(json.dumps([verdict(r), r.metrics["status"]]))
+    """)
+    assert r == [{"status": status, "reason": reason}, status]
+
+
+def test_an_isolated_run_gives_what_the_run_in_process_gives():
+    r = in_child("""
+        def ff(obs):
+            return obs.feedforward
+        a = parksim.run(world, controller=ff, realism="lab", realisations=2)
+        b = parksim.run(world, controller=ff, realism="lab", realisations=2, isolate=True)
+        # Wall-clock measurements differ from run to run; everything else is the same.
+        clocks = ("wall_time_s", "real_time_factor", "plan_planning_time_s",
+                  "plan_first_solution_s", "plan_phase_times_s.")
+        differ = [k for k in a.metrics if not k.startswith(clocks) and a.metrics[k] != b.metrics[k]]
+        print(json.dumps([a.status, b.status, a.executed.tobytes() == b.executed.tobytes(),
+                          a.executed.dtype == b.executed.dtype, differ == [],
+                          sorted(a.metrics) == sorted(b.metrics),
+                          [x["status"] for x in a.realisations] ==
+                          [x["status"] for x in b.realisations],
+                          a.plan.stats["path_length_m"] == b.plan.stats["path_length_m"]]))
+    """)
+    assert r[0] == r[1] and all(r[2:]), r
+
+
+def test_a_time_limit_that_cannot_hold_is_refused_and_a_commands_holds():
+    r = in_child("""
+        try:
+            parksim.plan(world, planner=Hangs(), planner_timeout=1)
+            refused = ""
+        except TypeError as e:
+            refused = str(e)
+        p = parksim.plan(world, planner="command", planner_timeout=1,
+                         planner_params={"command": "sh -c 'sleep 60' sh {out}"})
+        print(json.dumps([refused, verdict(p)]))
+    """)
+    refused, command = r
+    assert "isolate=True" in refused, refused
+    assert command == {"status": "planner_error", "reason":
+                       "planner command `sh -c 'sleep 60' sh {out}` gave no answer within the "
+                       "planner time limit of 1 s and was killed"}
