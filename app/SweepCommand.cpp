@@ -69,7 +69,7 @@ struct SweepOptions {
   std::string junit;
   bool list = false;               // print the episodes and run nothing
   cli::PluginOptions plugins;      // besides the spec's plugins:
-  cli::UserCodeOptions user_code;  // the limits on user code in the worker processes
+  cli::UserCodeOptions user_code;  // the limits on user code: workers and commands
 };
 
 std::string duration(double s) {

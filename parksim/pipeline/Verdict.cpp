@@ -51,6 +51,7 @@ EpisodeStatus episodeStatusFromString(const std::string& name) {
 }
 
 Verdict planFailedVerdict(const PlanResult& plan) {
+  if (plan.status == PlanStatus::kPlanInvalid) return {EpisodeStatus::kPlanInvalid, plan.message};
   return {EpisodeStatus::kPlanFailed,
           std::string("unsolved plan (") + toString(plan.status) + "): " + plan.message};
 }

@@ -110,7 +110,7 @@ void addRealisations(nlohmann::json& j, const std::vector<MetricsDocument::Reali
 
 nlohmann::json metricsDocumentJson(const MetricsDocument& doc) {
   EpisodeFacts facts;
-  facts.metrics = &doc.metrics;
+  facts.metrics = doc.metrics ? &*doc.metrics : nullptr;
   facts.plan_summary = &doc.plan_summary;
   facts.judged = true;
   facts.status = doc.status;

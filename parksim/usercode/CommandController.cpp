@@ -51,6 +51,20 @@ std::string resetLine(const ControllerSetup& setup, const ParamMap& passed) {
   return "reset " + message.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
+// A wait's limit: a timeout parameter's, or the run's limit on one command of a user's
+// controller (ControllerSetup::time_limit_s) when that is shorter, and how messages name it.
+struct WaitLimit {
+  double s = 0.0;
+  std::string text;  // "tick_timeout_s = 5 s", "the controller time limit of 2 s"
+};
+
+WaitLimit waitLimit(const char* param, double param_s, double run_s) {
+  if (run_s > 0.0 && run_s < param_s) {
+    return {run_s, "the controller time limit of " + formatGeneral(run_s) + " s"};
+  }
+  return {param_s, std::string(param) + " = " + formatGeneral(param_s) + " s"};
+}
+
 // Time a process whose output ended has to become an exit status, s.
 constexpr double kClosedGraceS = 0.2;
 
@@ -132,7 +146,9 @@ void CommandController::end() {
 
 void CommandController::reset(const ControllerSetup& setup) {
   end();
-  const auto deadline = after(def_.start_timeout_s);
+  run_limit_s_ = setup.time_limit_s;
+  const WaitLimit limit = waitLimit("start_timeout_s", def_.start_timeout_s, run_limit_s_);
+  const auto deadline = after(limit.s);
   try {
     process_ = std::make_unique<ChildProcess>(ChildProcessDef{def_.command, true, true});
   } catch (const Error& e) {
@@ -147,9 +163,7 @@ void CommandController::reset(const ControllerSetup& setup) {
       if (answer_ == "ready" || answer_ == "ready\r") return;
       why = "answered '" + escapeTextShortened(answer_, 60) + "' to reset, not 'ready'";
       break;
-    case ChildProcess::LineStatus::kTimeout:
-      why = "was not ready within start_timeout_s = " + formatGeneral(def_.start_timeout_s) + " s";
-      break;
+    case ChildProcess::LineStatus::kTimeout: why = "was not ready within " + limit.text; break;
     case ChildProcess::LineStatus::kClosed: why = "ended before it was ready: " + ended(); break;
     case ChildProcess::LineStatus::kTooLong:
       why = "answered reset with a line longer than " + std::to_string(kMaxAnswerBytes) + " bytes";
@@ -164,7 +178,8 @@ WheelSpeeds CommandController::command(const ControllerInput& input) {
     throw UserCodeError(UserCodeError::Component::kController,
                         "process `" + shown_ + "` was asked for a command before its reset");
   }
-  const auto deadline = after(def_.tick_timeout_s);
+  const WaitLimit limit = waitLimit("tick_timeout_s", def_.tick_timeout_s, run_limit_s_);
+  const auto deadline = after(limit.s);
   const std::string at = " at tick " + std::to_string(input.tick);
   if (process_->pendingOutput() > 0) {
     process_->kill();
@@ -181,8 +196,7 @@ WheelSpeeds CommandController::command(const ControllerInput& input) {
             ": expected 'LEFT RIGHT', two numbers in rad/s";
       break;
     case ChildProcess::LineStatus::kTimeout:
-      why = "gave no answer" + at +
-            " within tick_timeout_s = " + formatGeneral(def_.tick_timeout_s) + " s";
+      why = "gave no answer" + at + " within " + limit.text;
       break;
     case ChildProcess::LineStatus::kClosed: why = ended() + at; break;
     case ChildProcess::LineStatus::kTooLong:

@@ -13,6 +13,8 @@
 // - command() sends one line per control tick, "tick" and the ControllerInput's 17 numbers
 //   (kTickFields, shortest round-trip text); the process answers one line, "LEFT RIGHT", the
 //   wheel speed commands in rad/s, within tick_timeout_s.
+// - The run's limit on one command (ControllerSetup::time_limit_s, `--controller-timeout`)
+//   replaces either timeout when it is shorter; messages name the limit that struck.
 // - At the episode's end (the controller is destroyed) its standard input is closed; the
 //   process should exit, and is killed with its process group kExitGraceS later.
 // Anything else (an exit, a line that is not two numbers, a line longer than kMaxAnswerBytes,
@@ -99,7 +101,8 @@ class CommandController : public Controller {
   void end();
 
   CommandControllerDef def_;
-  std::string shown_;  // the command, for messages
+  double run_limit_s_ = 0.0;  // the run's limit on one command (ControllerSetup), 0: none
+  std::string shown_;         // the command, for messages
   std::unique_ptr<ChildProcess> process_;
   std::string request_;  // reused tick line
   std::string answer_;

@@ -236,6 +236,14 @@ std::string componentName(const py::handle& obj, const char* what) {
   return name;
 }
 
+// "Python object MODULE.QUALNAME" of a function, a class or (by its class) an instance: where
+// results say the code came from.
+std::string pythonOrigin(const py::object& object) {
+  const py::object of = py::hasattr(object, "__qualname__") ? object : py::type::of(object);
+  const std::string module = py::str(py::getattr(of, "__module__", py::str("?")));
+  return "Python object " + module + "." + std::string(py::str(of.attr("__qualname__")));
+}
+
 }  // namespace
 
 void takeComponents(py::dict& options, EpisodeRequest& request) {
@@ -277,6 +285,7 @@ std::string addPythonPlanner(Components& components, const py::object& planner,
   PlannerEntry entry;
   entry.info.name = name.empty() ? componentName(planner, "planner") : name;
   entry.info.description = "a Python object";
+  entry.info.origin = pythonOrigin(planner);
   entry.info.runs_user_code = true;
   entry.info.uses_steering = true;
   auto held = std::make_shared<Held>(planner);

@@ -69,15 +69,26 @@ class Tracking:
         return left / scale, right / scale
 
 
-def test_a_python_planner_plans_and_its_plan_is_checked(head_in):
+def test_a_python_planner_plans_and_its_plan_is_checked(head_in, tmp_path):
     planner = Straight(check=False)
+    # Straight through the lot: planning alone, the one check finds what it hits, as run does.
     p = parksim.plan(head_in, planner=planner)
-    assert p.solved and p.stats["planner"] == "straight"
+    assert not p.solved and p.status == "plan_invalid" and p.stats["planner"] == "straight"
+    assert "the footprint overlaps" in p.message and p.verdict["status"] == "plan_invalid"
+    assert p.stats["planner_origin"] == "Python object test_user_code.Straight"
+    assert len(p.trajectory) > 0  # kept to be looked at
     assert planner.problems[0][0] == head_in.start
-    # Straight through the lot: the check before driving finds what it hits.
-    r = parksim.run(head_in, planner=Straight(check=False))
-    assert r.status == "plan_invalid" and "the footprint overlaps" in r.reason
+    with pytest.raises(parksim.Error, match="may not be driven \\(plan_invalid\\)"):
+        parksim.run(head_in, plan=p)
+    r = parksim.run(head_in, planner=Straight(check=False), out=tmp_path)
+    assert r.status == "plan_invalid" and r.reason == p.message
+    assert r.plan.status == "plan_invalid"
     assert r.executed is None or len(r.executed) == 0
+    # Its metrics.json holds the verdict and whose code it was, and no measurement.
+    assert r.metrics["status"] == "plan_invalid" and r.metrics["failure"] == r.reason
+    assert r.metrics["plan_planner_origin"] == "Python object test_user_code.Straight"
+    assert "max_pos_err_m" not in r.metrics
+    assert (tmp_path / "metrics.json").exists() and not (tmp_path / "trajectory.csv").exists()
     # Checking its own plans, it reports that it found none.
     r = parksim.run(head_in, planner=Straight(check=True))
     assert r.status == "plan_failed" and "found no plan" in r.reason
@@ -132,6 +143,8 @@ def test_a_python_controllers_failures_are_controller_errors(head_in, answer, re
     r = parksim.run(head_in, controller=faulty)
     assert r.status == "controller_error"
     assert r.reason.startswith("controller faulty ") and reason in r.reason
+    # The plan was fine: its own verdict is met.
+    assert r.plan.solved and r.plan.status == "solved" and r.plan.verdict["met"]
     assert r.executed["t"][-1] == pytest.approx(0.5, abs=0.005)
 
 

@@ -56,7 +56,8 @@ Written writeEverything(const fs::path& dir) {
   w.setup.search.seed = 1;
   const BulletCollisionWorld collision(w.scenario);
   w.plan = planScenario(w.scenario, collision, w.setup);
-  writePlanFiles(dir.string(), w.scenario, w.setup, w.plan);
+  writePlanFiles(dir.string(), w.scenario, &w.plan.trajectory,
+                 planSummary(w.scenario, w.setup, w.plan));
   w.episode = runEpisode(w.scenario, w.plan.trajectory);
   writeExecutedCsv((dir / "executed.csv").string(), w.episode.rows);
   w.metrics = metricsToJson(w.episode.metrics);

@@ -1,7 +1,7 @@
 // Sweeps of user code end to end (docs/your-code.md): a plugin's planner and controller beside
 // parksim's own, sharded and merged to the same rows; a faulty controller that crashes its
 // process in one episode of a hundred, killed in the middle and resumed; a rebuilt plugin
-// refused on resume; a planner that is a command in another language.
+// refused on resume; a planner that is a command in another language, and its time limit.
 
 #include <signal.h>
 #include <sys/wait.h>
@@ -199,6 +199,25 @@ TEST(SweepUserCode, APlannerInAnotherLanguageSweepsAsACommand) {
   EXPECT_EQ(bad.exit_code, 2) << bad.out;
   EXPECT_NE(bad.out.find("bad.yaml:5: planners[0]: "), std::string::npos) << bad.out;
   EXPECT_FALSE(fs::exists(dir + "/bad"));
+}
+
+// A sweep's --planner-timeout stops a command planner's program too: that episode's
+// planner_error names the limit (under `timeout 25`: a limit that does nothing fails here).
+TEST(SweepUserCode, ThePlannerTimeLimitStopsACommand) {
+  const std::string dir = scratchDir();
+  writeText(dir + "/spec.yaml",
+            "format: parksim-sweep/1\nname: slow\nworlds: [" + world("head_in") +
+                "]\nplanners: [{command: [sh, -c, 'sleep 60', sh, '{out}']}]\n");
+  const auto r =
+      testing::runProgram("timeout 25 " + testing::parksimExe(),
+                          "sweep " + dir + "/spec.yaml --planner-timeout 1 --out " + dir + "/out");
+  EXPECT_EQ(r.exit_code, 1) << r.out;  // an episode failed
+  const std::vector<nlohmann::json> all = rows(dir + "/out/results.jsonl");
+  ASSERT_EQ(all.size(), 1u) << r.out;
+  EXPECT_EQ(all[0]["status"], "planner_error");
+  EXPECT_EQ(all[0]["failure"],
+            "planner command `sh -c 'sleep 60' sh {out}` gave no answer within the planner time "
+            "limit of 1 s and was killed");
 }
 
 // The spec's components are made to check their parameters: a plugin's constructor that crashes

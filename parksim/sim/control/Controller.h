@@ -59,6 +59,11 @@ struct ControllerSetup {
   /// True for the ideal robot (no realism active): the input's pose, twist and wheel speeds are
   /// the truth, and every physics step is a tick.
   bool ideal_robot = true;
+  /// The run's limit on one command of a user's controller, its reset included, s
+  /// (UserCodeLimits::controller_tick_s, `--controller-timeout`; 0: none): the watch of a
+  /// worker process enforces it on code in parksim's process, and a controller that runs a
+  /// process of its own (the command controller) gives up on the process at it.
+  double time_limit_s = 0.0;
 };
 
 /// What the robot knows at one control tick. Poses are in the lot frame.

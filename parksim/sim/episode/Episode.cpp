@@ -205,6 +205,7 @@ struct Episode::Impl {
     setup.latency_s = loop ? loop->def.control.latency_s : 0.0;
     setup.estimated_pose = loop && loop->def.estimator.kind != EstimatorKind::kTruth;
     setup.ideal_robot = !loop;
+    setup.time_limit_s = controller.time_limit_s;
     if (controller.trusted) {
       controller.controller->reset(setup);
       return;

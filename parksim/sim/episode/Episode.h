@@ -52,6 +52,8 @@ struct EpisodeController {
   bool trusted = true;
   /// Told when an untrusted controller's code starts and ends (UserCodeWatch.h); may be null.
   UserCodeWatch* watch = nullptr;
+  /// The run's limit on one command, s (ControllerSetup::time_limit_s; 0: none).
+  double time_limit_s = 0.0;
 };
 
 /// Physics steps the episode of `plan` may take at most: (plan duration + max_stop_time_s) /

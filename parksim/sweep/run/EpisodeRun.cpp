@@ -48,6 +48,7 @@ nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const Episod
   const Clock::time_point t0 = Clock::now();
   EpisodeRequest request = sweepEpisodeRequest(episode);
   request.watch = watch;
+  request.limits = def.limits;
   applyRecord(def, def.episodes_dir + "/" + episode.id, request);
   const EpisodeOutcome out = runEpisodePipeline(request);
 

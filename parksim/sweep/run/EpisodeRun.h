@@ -27,6 +27,9 @@ struct EpisodeRunDef {
   /// Serialises filming (one off-screen GL context at a time); required when
   /// record.film_failures is set.
   std::mutex* film_mutex = nullptr;
+  /// The limits on user code (EpisodeRequest::limits): a command planner or controller stops
+  /// its program at them; in worker processes the watch enforces them too (SweepRunner.h).
+  UserCodeLimits limits;
 };
 
 /// The episode's results row, without provenance: its id, its parameters (EpisodeParams.h)
