@@ -15,7 +15,7 @@
 // input throws parksim::Error before anything is written (checkEpisodeRequest), and a machine
 // without OpenGL throws EnvironmentError when filming or drawing is asked for.
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodeOutcome.h"
 #include "parksim/pipeline/EpisodeRequest.h"
 

@@ -18,7 +18,7 @@
 
 #include "parksim/pipeline/EpisodeOutcome.h"
 #include "parksim/pipeline/EpisodeRequest.h"
-#include "parksim/pipeline/UserCodeIsolation.h"
+#include "parksim/usercode/UserCodeIsolation.h"
 
 namespace parksim {
 

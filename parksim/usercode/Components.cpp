@@ -1,8 +1,8 @@
 #include "parksim/usercode/Components.h"
 
-#include "parksim/command/CommandController.h"
-#include "parksim/command/CommandLine.h"
-#include "parksim/command/CommandPlanner.h"
+#include "parksim/usercode/CommandController.h"
+#include "parksim/usercode/CommandLine.h"
+#include "parksim/usercode/CommandPlanner.h"
 
 namespace parksim {
 

@@ -10,9 +10,9 @@
 
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/IsolatedEpisode.h"
-#include "parksim/plugin/PluginLoader.h"
 #include "parksim/results/MetricsFile.h"
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/World.h"
+#include "parksim/usercode/PluginLoader.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

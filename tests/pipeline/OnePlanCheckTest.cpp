@@ -15,9 +15,9 @@
 
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/pipeline/EpisodePipeline.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/plugin/PluginLoader.h"
-#include "parksim/scenario/World.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/scenario/world/World.h"
+#include "parksim/usercode/PluginLoader.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
