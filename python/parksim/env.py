@@ -48,8 +48,9 @@ def own_step_limit(definition):
 def task_spaces(observation_low, observation_high, num_envs=None):
     """(action_space, observation_space) of the parking task (rl/TaskSpaces.h): the action two
     fractions in [-1, 1] (wheel speeds, or a car's acceleration and steering), the observation
-    10 values within the task's bounds; with num_envs, the batched spaces of that many. The one definition of both for ParkingEnv,
-    VecParkingEnv, the Stable-Baselines3 adapter and anything that runs their policies."""
+    10 values within the task's bounds; with num_envs, the batched spaces of that many. The one
+    definition of both for ParkingEnv, VecParkingEnv, the Stable-Baselines3 adapter and
+    anything that runs their policies."""
     low = np.asarray(observation_low, dtype=np.float32)
     high = np.asarray(observation_high, dtype=np.float32)
     action_shape = (2,)
