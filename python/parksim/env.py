@@ -107,8 +107,9 @@ class ParkingEnv(_Base):
 
     Observation: Box(low, high, (10,), float32), bounds from the lot and the robot's limits:
         x, y, cos(theta), sin(theta), v, omega, x_goal, y_goal, cos(theta_goal), sin(theta_goal)
-    (m, m/s, rad/s); for a car the sixth value is the steering angle (rad) instead of omega. The robot's part is what its controller knows: the true state for the
-    ideal robot, the realism's estimate (and encoder speeds) otherwise.
+    (m, m/s, rad/s); for a car the sixth value is the steering angle (rad) instead of omega.
+    The robot's part is what its controller knows: the true state for the ideal robot, the
+    realism's estimate (and encoder speeds) otherwise.
 
     Reward (docs/python.md, "Reward"): success_reward (10) on success, contact_reward (-10) on
     a step with a contact, exit_reward (-10) on leaving the lot, nothing per step; plus
