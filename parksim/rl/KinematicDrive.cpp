@@ -41,9 +41,9 @@ class KinematicDrive final : public TaskDrive {
     out.t_s = t_s_;
   }
 
-  void act(const WheelSpeeds& wheels, long steps, DriveState& out) override {
+  void act(const TaskAction& action, long steps, DriveState& out) override {
     const double period = static_cast<double>(steps) * dt_;
-    const Twist twist = toTwist(wheels, robot_);
+    const Twist twist = toTwist(taskWheelSpeeds(action, robot_), robot_);
     // A footprint point at distance r from the reference point moves at most |v| + |omega| r.
     const double travel =
         (std::abs(twist.v_mps) + std::abs(twist.omega_radps) * radius_m_) * period;
@@ -88,6 +88,7 @@ class KinematicDrive final : public TaskDrive {
 
 std::unique_ptr<TaskDrive> makeKinematicDrive(const Scenario& scenario, const ParkingTaskDef& def,
                                               const BulletCollisionWorld& collision) {
+  if (scenario.robot.isCar()) return makeKinematicCarDrive(scenario, def, collision);
   return std::make_unique<KinematicDrive>(scenario, def, collision);
 }
 
