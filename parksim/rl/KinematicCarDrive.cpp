@@ -12,11 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
-#include <unordered_map>
 
-#include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/model/Geometry.h"
+#include "parksim/rl/KinematicSweep.h"
 #include "parksim/rl/TaskDrive.h"
 
 namespace parksim {
@@ -29,15 +26,7 @@ class KinematicCarDrive final : public TaskDrive {
                     const BulletCollisionWorld& collision)
       : robot_(scenario.robot),
         dt_(scenario.physics.time_step_s),
-        check_m_(def.kinematic_check_m),
-        radius_m_(footprintRadius(scenario.robot)),
-        collision_(collision) {
-    for (std::size_t i = 0; i < scenario.obstacles.size(); ++i) {
-      const Obstacle& o = scenario.obstacles[i];
-      index_.emplace(o.name, static_cast<int>(i));
-      obstacles_.push_back({o.box.center.x(), o.box.center.y(), o.box.yaw});
-    }
-  }
+        sweep_(scenario, def, collision) {}
 
   void reset(const Pose2& start, std::uint64_t /*noise_seed*/, DriveState& out) override {
     pose_ = start;
@@ -68,31 +57,16 @@ class KinematicCarDrive final : public TaskDrive {
     report(twist, out);
   }
 
-  std::vector<Pose2> obstaclePoses() const override { return obstacles_; }
+  std::vector<Pose2> obstaclePoses() const override { return sweep_.obstaclePoses(); }
 
  private:
   // Moves along `twist` for one physics step, checked; false (pose_ the last free pose, the
-  // contacts in `out`) on a penetration.
+  // contacts in `out`) on a penetration. Standing still is not checked: the pose is the last
+  // one checked.
   bool move(const Twist& twist, DriveState& out) {
-    // A footprint point at distance r from the reference point moves at most |v| + |omega| r.
-    const double travel = (std::abs(twist.v_mps) + std::abs(twist.omega_radps) * radius_m_) * dt_;
-    if (travel == 0.0) return true;  // still: the pose is the last one checked
-    const long checks = std::max(1L, static_cast<long>(std::ceil(travel / check_m_)));
-    const Pose2 from = pose_;
-    for (long j = 1; j <= checks; ++j) {
-      const double t =
-          j == checks ? dt_ : dt_ * static_cast<double>(j) / static_cast<double>(checks);
-      const Pose2 pose = integrateExact(from, twist, t);
-      if (!collision_.isFree(pose)) {
-        for (const std::string& name : collision_.overlapping(pose)) {
-          out.contacts.push_back(index_.at(name));
-        }
-        std::sort(out.contacts.begin(), out.contacts.end());
-        return false;
-      }
-      pose_ = pose;
-    }
-    return true;
+    if (twist.v_mps == 0.0) return true;
+    pose_ = sweep_.move(pose_, twist, dt_, out.contacts);
+    return out.contacts.empty();
   }
 
   void report(const Twist& twist, DriveState& out) const {
@@ -104,11 +78,7 @@ class KinematicCarDrive final : public TaskDrive {
 
   RobotDef robot_;
   double dt_;
-  double check_m_;
-  double radius_m_;
-  const BulletCollisionWorld& collision_;
-  std::unordered_map<std::string, int> index_;  // obstacle name -> scenario index
-  std::vector<Pose2> obstacles_;
+  KinematicSweep sweep_;
   Pose2 pose_;
   double speed_mps_ = 0.0;  // of the reference point, negative in reverse
   double steer_rad_ = 0.0;  // front-wheel angle, left positive
