@@ -18,6 +18,7 @@
 #include "parksim/core/Geometry.h"
 #include "parksim/core/ProvenanceConfig.h"
 #include "parksim/sim/BulletFrames.h"
+#include "parksim/sim/CarBody.h"
 #include "parksim/sim/ChassisContacts.h"
 #include "parksim/sim/CollisionGroups.h"
 #include "parksim/sim/DiscreteMultiBodyWorld.h"
@@ -87,6 +88,16 @@ void validate(const Scenario& scenario, const SimModelDef& model) {
     throw Error("simulation: wheel_axle_inertia_kgm2 and joint_friction_nm must not be negative");
   }
   requirePositive(model.local_frame_grid_m, "local_frame_grid_m");
+  if (r.isCar()) {
+    requirePositive(r.axle_distance_m, "robot.axle_distance_m");
+    requirePositive(r.max_steer_rad, "robot.max_steer_rad");
+    requirePositive(r.max_steer_rate_radps, "robot.max_steer_rate_radps");
+    requirePositive(model.car.tyre_deflection_per_radius, "car tyre_deflection_per_radius");
+    requirePositive(model.car.knuckle_mass_fraction, "car knuckle_mass_fraction");
+    if (!(model.car.steer_position_gain > 0.0 && model.car.steer_position_gain <= 1.0)) {
+      throw Error("simulation: car steer_position_gain must lie in (0, 1]");
+    }
+  }
 }
 
 }  // namespace
@@ -107,8 +118,13 @@ struct DynamicsWorld::Impl {
     buildWorld();
     addGround(scenario.lot);
     obstacles.emplace(*world, scenario.obstacles, scenario.robot, physics, model, origin);
-    robot.emplace(*world, scenario.robot, physics, model, start, origin,
-                  model.solver == SolverKernel::kFast ? &inverse_mass : nullptr);
+    if (scenario.robot.isCar()) {
+      robot = std::make_unique<CarBody>(*world, scenario.robot, physics, model, start, origin);
+    } else {
+      robot = std::make_unique<RobotBody>(
+          *world, scenario.robot, physics, model, start, origin,
+          model.solver == SolverKernel::kFast ? &inverse_mass : nullptr);
+    }
     state = robot->state();
     obstacles->wakeNear(start);
   }
@@ -129,9 +145,10 @@ struct DynamicsWorld::Impl {
   std::unique_ptr<btBoxShape> ground_shape;
   std::unique_ptr<btRigidBody> ground;
   std::optional<ObstacleBodies> obstacles;
-  std::optional<RobotBody> robot;
+  std::unique_ptr<EgoBody> robot;
 
   WheelSpeeds targets;
+  double steer_target = 0.0;
   WheelSpeeds torques;
   RobotState state;
   long step_count = 0;
@@ -217,6 +234,13 @@ void DynamicsWorld::setWheelTargets(const WheelSpeeds& targets) {
 
 const WheelSpeeds& DynamicsWorld::wheelTargets() const { return impl_->targets; }
 
+void DynamicsWorld::setSteerTarget(double steer_rad) {
+  impl_->steer_target = steer_rad;
+  impl_->robot->setSteerTarget(steer_rad);
+}
+
+double DynamicsWorld::steerTarget() const { return impl_->steer_target; }
+
 void DynamicsWorld::setWheelTorques(const WheelSpeeds& torques_nm) { impl_->torques = torques_nm; }
 
 double DynamicsWorld::leftWheelRadius() const { return impl_->robot->leftRadius(); }
@@ -227,6 +251,7 @@ void DynamicsWorld::step() {
   Impl& d = *impl_;
   const btScalar dt = btScalar(d.physics.time_step_s);
   if (d.model.body.drive == WheelDrive::kTorque) d.robot->addWheelTorques(d.torques);
+  d.robot->beforeStep(d.physics.time_step_s);
   // One internal step of exactly dt: the default arguments would step at 1/60 s and
   // interpolate.
   d.world->stepSimulation(dt, 1, dt);
