@@ -19,6 +19,11 @@ struct CarModelDef {
   /// The steering servo's position gain: the share of a front wheel's angle error it removes
   /// in one step, on top of following the set-point's rate (Bullet's joint motor kp, erp 1).
   double steer_position_gain = 0.5;
+  /// A car's constraint solver runs at least this many iterations a step (at most: it stops
+  /// once converged; PhysicsDef::solver_iterations if more). Its 1.5 t chassis on 20 kg wheels
+  /// converges slowly: at 15 the hand-made plan of CarEpisodeTest was tracked to 20 mm, at 50 to
+  /// 4 mm (docs/simulation.md).
+  int min_solver_iterations = 50;
   /// Largest torque of each front wheel's steering motor, N m; 0: PhysicsDef::max_wheel_torque_nm.
   double max_steer_torque_nm = 0.0;
 };

@@ -1,5 +1,6 @@
 #include "parksim/sim/DynamicsWorld.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -114,7 +115,8 @@ struct DynamicsWorld::Impl {
   Impl(const Scenario& scenario, const Pose2& start, const SimModelDef& m)
       : physics(scenario.physics),
         model(m),
-        origin(originXY(localFrameOrigin(start, m.local_frame_grid_m))) {
+        origin(originXY(localFrameOrigin(start, m.local_frame_grid_m))),
+        car(scenario.robot.isCar()) {
     buildWorld();
     addGround(scenario.lot);
     obstacles.emplace(*world, scenario.obstacles, scenario.robot, physics, model, origin);
@@ -132,6 +134,7 @@ struct DynamicsWorld::Impl {
   PhysicsDef physics;
   SimModelDef model;
   Eigen::Vector2d origin;
+  bool car;
 
   // Destroyed in reverse order: the robot and the bodies leave the world before it goes.
   std::unique_ptr<btDefaultCollisionConfiguration> config;
@@ -176,6 +179,7 @@ struct DynamicsWorld::Impl {
     FastSolverDef fast;
     fast.pairwise_dots = model.solver == SolverKernel::kFast;
     fast.warm_start = model.warm_start;
+    fast.warm_start_friction = !car;
     // kFast sets the robot's rows up from its constant mass matrix (rounding differs from
     // Bullet's); kExact keeps Bullet's setup, bit for bit.
     if (model.solver == SolverKernel::kFast) fast.inverse_mass = &inverse_mass;
@@ -191,7 +195,9 @@ struct DynamicsWorld::Impl {
                                          config.get());
     }
     world->setGravity(btVector3(0, 0, btScalar(-physics.gravity_mps2)));
-    world->getSolverInfo().m_numIterations = physics.solver_iterations;
+    world->getSolverInfo().m_numIterations =
+        car ? std::max(physics.solver_iterations, model.car.min_solver_iterations)
+            : physics.solver_iterations;
     world->getSolverInfo().m_leastSquaresResidualThreshold =
         btScalar(model.solver_residual_threshold);
     // Bullet warm-starts rigid bodies' contacts (woken parked robots) at 85 % of their last
