@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/Angle.h"
+#include "parksim/results/ExecutedFile.h"
 #include "parksim/sim/Episode.h"
 #include "tests/sim/CarTestSupport.h"
 
@@ -76,6 +77,17 @@ TEST(CarEpisodeTest, RowsRecordCommandedAndMeasuredSteering) {
   // The plan's left arc at 0.5 rad: commanded and measured.
   EXPECT_NEAR(largest_cmd, 0.5, 0.02);
   EXPECT_NEAR(largest, 0.5, 0.02);
+
+  // executed.csv: a car's three steering columns last; a differential drive's file without.
+  const std::string csv = executedCsv(r.rows, false, true);
+  const std::string header = csv.substr(0, csv.find('\n'));
+  EXPECT_EQ(header,
+            "t,x,y,theta,x_ref,y_ref,theta_ref,omega_left_cmd,omega_right_cmd,omega_left,"
+            "omega_right,pos_err,heading_err,steer_ref,steer_cmd,steer");
+  const std::vector<DataColumn> columns = executedColumns(r.rows, false, true);
+  ASSERT_NE(findColumn(columns, "steer"), nullptr);
+  EXPECT_EQ(findColumn(columns, "steer")->values.back(), r.rows.back().steer_rad);
+  EXPECT_EQ(executedCsv(r.rows).find("steer"), std::string::npos);
 }
 
 }  // namespace
