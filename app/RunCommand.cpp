@@ -27,11 +27,11 @@
 #include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/realism/Distribution.h"
 #include "parksim/realism/RealismDef.h"
-#include "parksim/renders/PngEncoder.h"
+#include "parksim/renders/image/PngEncoder.h"
+#include "parksim/report/Report.h"
 #include "parksim/results/JUnitReport.h"
 #include "parksim/results/TrajectoryFile.h"
-#include "parksim/sweep/EpisodeRun.h"
-#include "parksim/sweep/Report.h"
+#include "parksim/sweep/run/EpisodeRun.h"
 
 namespace parksim::app {
 

@@ -21,11 +21,11 @@
 #include <string>
 #include <vector>
 
-#include "parksim/renders/FrameRecorder.h"
-#include "parksim/renders/PngEncoder.h"
-#include "parksim/renders/Renderer.h"
-#include "parksim/renders/SceneBuilder.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/renders/gl/Renderer.h"
+#include "parksim/renders/image/PngEncoder.h"
+#include "parksim/renders/scene/SceneBuilder.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 
 namespace parksim {
 namespace {

@@ -48,7 +48,8 @@ test_packages=(
   # scripts/build.sh compiles through it where it is installed: a second build of the same
   # sources on one machine (a test.sh run again, another clone) costs seconds (CI does without).
   ccache
-  # The HTML reports opened from file:// in a real browser (tests/pages/test_pages.py).
+  # The HTML reports opened from file:// in a real browser (tests/pages/test_pages.py and
+  # test_hostile_names.py, which also reads world files with python3-yaml).
   chromium chromium-driver python3-selenium
 )
 

@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
 #include "parksim/pipeline/EpisodeReport.h"
 #include "parksim/pipeline/EpisodeSettings.h"

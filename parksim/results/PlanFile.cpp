@@ -2,8 +2,8 @@
 
 #include <filesystem>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/AtomicFile.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/AtomicFile.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/TrajectoryFile.h"
 

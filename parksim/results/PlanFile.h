@@ -6,10 +6,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
-#include "parksim/planner/PlanResult.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
+#include "parksim/planner/base/PlanResult.h"
+#include "parksim/planner/base/PlanScenario.h"
 
 namespace parksim {
 

@@ -11,11 +11,11 @@
 #include <optional>
 #include <vector>
 
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/InputFile.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/InputFile.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/model/DiffDrive.h"
 
 namespace parksim {
 

@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Trajectory.h"
 
 namespace parksim {
 
@@ -46,7 +46,7 @@ Trajectory parseTrajectoryCsv(std::string_view text, const std::string& source_n
 /// instead of an error: how a planner that is a command says "no plan" (docs/your-code.md).
 Trajectory parseTrajectoryCsvRows(std::string_view text, const std::string& source_name);
 
-/// Largest file checkTimeSeriesCsv reads: as readCsvFile's (core/Csv.h), 32 MiB.
+/// Largest file checkTimeSeriesCsv reads: as readCsvFile's (core/io/Csv.h), 32 MiB.
 inline constexpr std::uintmax_t kMaxSeriesFileBytes = 32u << 20;
 
 /// Checks another time series in CSV (`render --executed`'s executed.csv) as readTrajectoryCsv

@@ -23,10 +23,10 @@
 
 #include <Eigen/Core>
 
-#include "parksim/core/Ackermann.h"
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/Ackermann.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/EgoBody.h"
 

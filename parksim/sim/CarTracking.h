@@ -21,8 +21,8 @@
 // (ReferenceTrajectory::steerTargetAt), so the steering turns through each of the plan's changes
 // centred on it.
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/RobotDef.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/RobotDef.h"
 #include "parksim/sim/Controller.h"
 
 namespace parksim {

@@ -2,7 +2,7 @@
 // The ego robot's multibody as the dynamics world drives it: a differential drive (RobotBody.h)
 // or a car (CarBody.h). Internal to sim/; Bullet's types are only declared here.
 
-#include "parksim/core/DiffDrive.h"
+#include "parksim/core/model/DiffDrive.h"
 
 class btCollisionObject;
 

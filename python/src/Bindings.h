@@ -10,11 +10,11 @@
 #include <pybind11/pybind11.h>
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
 #include "parksim/pipeline/EpisodeRequest.h"
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/World.h"
 #include "parksim/sim/Episode.h"
 
 namespace parksim::python {
@@ -30,8 +30,8 @@ void bindTasks(py::module_& m);     // TaskBindings.cpp: the reinforcement-learn
 void bindUserCode(py::module_& m);  // UserCodeBindings.cpp: Python planners and controllers
 void bindSweep(py::module_& m);     // SweepBindings.cpp: sweep()
 
-/// A loaded world (scenario/World.h): immutable, shared by every plan and episode made from it.
-/// It keeps the text it was read from, so that it pickles as that text and re-reads it.
+/// A loaded world (scenario/world/World.h): immutable, shared by every plan and episode made from
+/// it. It keeps the text it was read from, so that it pickles as that text and re-reads it.
 struct WorldHandle {
   WorldHandle(std::shared_ptr<const World> w, std::string text, std::string name)
       : world(std::move(w)),

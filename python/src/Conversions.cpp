@@ -5,10 +5,10 @@
 
 #include <pybind11/stl.h>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/core/ParamSet.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/params/ParamSet.h"
 #include "parksim/results/TrajectoryFile.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"

@@ -6,7 +6,7 @@
 
 #include <pybind11/stl.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/results/EpisodeRecord.h"

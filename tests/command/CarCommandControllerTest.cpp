@@ -11,10 +11,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/command/CommandController.h"
-#include "parksim/command/CommandLine.h"
-#include "parksim/core/AtomicFile.h"
+#include "parksim/core/io/AtomicFile.h"
 #include "parksim/sim/Episode.h"
+#include "parksim/usercode/CommandController.h"
+#include "parksim/usercode/CommandLine.h"
 #include "tests/sim/CarTestSupport.h"
 #include "tests/support/TestPaths.h"
 

@@ -1,6 +1,6 @@
-// A car's steering geometry (core/Ackermann.h) against the turn's centre, found here.
+// A car's steering geometry (core/model/Ackermann.h) against the turn's centre, found here.
 
-#include "parksim/core/Ackermann.h"
+#include "parksim/core/model/Ackermann.h"
 
 #include <cmath>
 

@@ -1,10 +1,10 @@
-#include "parksim/planner/FreeSpaceBound.h"
+#include "parksim/planner/base/FreeSpaceBound.h"
 
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "parksim/planner/BalkcomMasonSteering.h"
+#include "parksim/planner/steering/BalkcomMasonSteering.h"
 
 namespace parksim {
 namespace {

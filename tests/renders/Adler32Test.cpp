@@ -1,4 +1,4 @@
-#include "parksim/renders/Adler32.h"
+#include "parksim/renders/image/Adler32.h"
 
 #include <gtest/gtest.h>
 #include <zlib.h>

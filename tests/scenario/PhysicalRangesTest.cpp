@@ -4,7 +4,7 @@
 // world is read, each naming its field and the reason; every shipped world and real robots from
 // 1 cm to 10 m stay valid.
 
-#include "parksim/scenario/PhysicalRanges.h"
+#include "parksim/scenario/world/PhysicalRanges.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -12,8 +12,8 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/scenario/World.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/scenario/world/World.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

@@ -1,14 +1,14 @@
-#include "parksim/scenario/RealismReader.h"
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/RealismReader.h"
+#include "parksim/scenario/world/World.h"
 
 #include <string>
 #include <string_view>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 
 namespace parksim {
 namespace {

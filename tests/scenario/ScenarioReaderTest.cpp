@@ -1,4 +1,4 @@
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 
 #include <filesystem>
 #include <fstream>
@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/Geometry.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/Geometry.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 #include <Eigen/Dense>
 
-#include "parksim/core/Ackermann.h"
-#include "parksim/core/Angle.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/model/Ackermann.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "tests/sim/CarTestSupport.h"
 

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
+#include "parksim/core/geometry/Angle.h"
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/sim/Episode.h"
 #include "tests/sim/CarTestSupport.h"

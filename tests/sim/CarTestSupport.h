@@ -7,10 +7,10 @@
 #include <cmath>
 #include <vector>
 
-#include "parksim/core/Ackermann.h"
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/model/Ackermann.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
 
 namespace parksim::testing {
 

@@ -354,7 +354,7 @@
         this.drawWheel(ctx, x, y, theta, 0, side * r.wheel_base_m / 2, r.wheel_radius_m, hw, 0);
       }
       if (car) {
-        // The front wheels at their Ackermann angles of the steering (core/Ackermann.h).
+        // The front wheels at their Ackermann angles of the steering (core/model/Ackermann.h).
         const l = r.axle_distance_m;
         const k = l * Math.tan(steer || 0);
         const half = r.wheel_base_m / 2;

@@ -1,0 +1,12 @@
+#pragma once
+// Internal to the scenario module (pulls in yaml-cpp through YamlField): the reader of the
+// realism: and tolerance: sections, called by the world reader on the top-level map.
+
+#include "parksim/scenario/world/RealismReader.h"
+#include "parksim/scenario/yaml/YamlField.h"
+
+namespace parksim {
+
+WorldRealism readRealismSections(const YamlMap& top);
+
+}  // namespace parksim
