@@ -197,7 +197,8 @@ void writeFiles(const EpisodeRequest& request, EpisodeOutcome& out) {
   if (out.driven()) {
     const RecordFormat format = request.record.format;
     writeExecutedFile(dir + "/" + executedFileName(format), out.episode.rows,
-                      out.execution.realism.active(), format);
+                      out.execution.realism.active(), format,
+                      request.world->scenario.robot.isCar());
     out.files.push_back(executedFileName(format));
     if (out.execution.realism.pose_sensor.enabled) {
       writeSensorsFile(dir + "/" + sensorsFileName(format), out.episode.pose_samples,

@@ -260,3 +260,24 @@ def test_a_sweep_runs_python_components_in_workers_and_resumes(head_in, tmp_path
     assert cli["episode_id"] == ours["episode_id"]
     for key in ("max_pos_err_m", "final_x_m", "final_y_m", "final_theta_rad", "steps"):
         assert cli[key] == ours[key], key
+
+
+def test_a_car_command_holds_a_speed_or_an_acceleration_and_a_steering_angle():
+    c = parksim.CarCommand(speed=1.5, steer=-0.25)
+    assert (c.speed, c.accel, c.steer) == (1.5, None, -0.25)
+    a = parksim.CarCommand(accel=-0.5, steer=0.1)
+    assert (a.speed, a.accel, a.steer) == (None, -0.5, 0.1)
+    for bad in ({}, {"speed": 1.0, "accel": 1.0}):
+        with pytest.raises(ValueError):
+            parksim.CarCommand(**bad)
+
+
+def test_a_differential_robots_observation_has_no_steering(head_in):
+    seen = []
+
+    def feedforward(obs):
+        seen.append((obs.steer, obs.reference_steer, obs.commanded_speed))
+        return obs.feedforward
+
+    assert parksim.run(head_in, controller=feedforward).status == "met"
+    assert seen and all(s == (0.0, 0.0, 0.0) for s in seen)

@@ -18,6 +18,7 @@
 #include "parksim/core/geometry/Pose2.h"
 #include "parksim/core/model/DiffDrive.h"
 #include "parksim/core/model/Scenario.h"
+#include "parksim/sim/CarModelDef.h"
 
 namespace parksim {
 
@@ -127,6 +128,8 @@ struct SimModelDef {
   double solver_residual_threshold = 3e-7;
   /// The robot as built (calibration errors, drive train); defaults: the nominal robot.
   TrueRobotDef body;
+  /// A car's tyres and steering servo (RobotDef::isCar; sim/CarBody.h).
+  CarModelDef car;
   /// Where the robot is expected to drive (e.g. the plan's bounding box, lot frame). The ground
   /// slab under it spans this region plus ground_margin_m, clipped to the lot plus 1 m: sized
   /// for float precision (a slab as large as a 200 m lot rounds contact points by ~1e-5 m),
@@ -170,6 +173,12 @@ struct RobotState {
   /// Slip of each wheel: its rim speed (joint speed x true radius) minus the ground speed of
   /// its contact point along the heading, m/s.
   WheelSpeeds slip_mps;
+  /// A car's steering, the bicycle angle of its front wheels' joint angles (Ackermann.h), rad;
+  /// 0 for a differential drive.
+  double steer_rad = 0.0;
+  /// The rate-limited bicycle angle its steering servos follow, rad (DynamicsWorld::
+  /// setSteerTarget); 0 for a differential drive.
+  double steer_setpoint_rad = 0.0;
   /// False if Bullet put the robot to sleep (it must never happen: sleeping is disabled).
   bool awake = true;
 };
@@ -189,6 +198,12 @@ class DynamicsWorld {
   /// fast as the torque limit (PhysicsDef::max_wheel_torque_nm) and ground friction allow.
   void setWheelTargets(const WheelSpeeds& targets);
   const WheelSpeeds& wheelTargets() const;
+
+  /// A car (RobotDef::isCar): the bicycle angle its steering turns to, rad, held until
+  /// changed. The servos' set-point moves toward it at most robot.max_steer_rate_radps and
+  /// stays within +-robot.max_steer_rad (sim/CarBody.h). A differential drive ignores it.
+  void setSteerTarget(double steer_rad);
+  double steerTarget() const;
 
   /// WheelDrive::kTorque: the torque of each wheel's motor for the next step, N m (positive
   /// drives forward). Ignored with kVelocityMotor.

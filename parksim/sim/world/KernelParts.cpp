@@ -40,7 +40,8 @@ struct KernelParts::Impl {
   std::unique_ptr<btMultiBodyConstraintSolver> solver;
 };
 
-KernelParts::KernelParts(const SimModelDef& model, btCollisionDispatcher& dispatcher)
+KernelParts::KernelParts(const SimModelDef& model, btCollisionDispatcher& dispatcher,
+                         bool warm_start_friction)
     : impl_(std::make_unique<Impl>()) {
   Impl& d = *impl_;
   d.kernel = effectiveSolverKernel(model.solver);
@@ -53,12 +54,14 @@ KernelParts::KernelParts(const SimModelDef& model, btCollisionDispatcher& dispat
   FastSolverDef fast;
   fast.pairwise_dots = d.kernel == SolverKernel::kFast;
   fast.warm_start = model.warm_start;
+  fast.warm_start_friction = warm_start_friction;
   // kFast sets the robot's rows up from its constant mass matrix (rounding differs from
   // Bullet's); kExact keeps Bullet's setup, bit for bit.
   if (d.kernel == SolverKernel::kFast) fast.inverse_mass = &d.inverse_mass;
   d.solver = makeFastMultiBodySolver(fast);
 #else
   (void)dispatcher;
+  (void)warm_start_friction;
 #endif
 }
 

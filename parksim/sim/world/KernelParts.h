@@ -22,8 +22,10 @@ namespace parksim {
 class KernelParts {
  public:
   /// The parts of effectiveSolverKernel(model.solver) for a world of `dispatcher`, which must
-  /// outlive them.
-  KernelParts(const SimModelDef& model, btCollisionDispatcher& dispatcher);
+  /// outlive them. `warm_start_friction`: whether the transcribed solver warm-starts friction
+  /// rows too (FastSolverDef; false for a car).
+  KernelParts(const SimModelDef& model, btCollisionDispatcher& dispatcher,
+              bool warm_start_friction = true);
   ~KernelParts();
 
   KernelParts(const KernelParts&) = delete;
