@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "parksim/core/io/AtomicFile.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 #include "parksim/usercode/CommandController.h"
 #include "parksim/usercode/CommandLine.h"
 #include "tests/sim/CarTestSupport.h"

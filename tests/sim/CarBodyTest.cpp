@@ -10,7 +10,7 @@
 
 #include "parksim/core/geometry/Angle.h"
 #include "parksim/core/model/Ackermann.h"
-#include "parksim/sim/DynamicsWorld.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/sim/CarTestSupport.h"
 
 namespace parksim {

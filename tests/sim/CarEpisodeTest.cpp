@@ -8,7 +8,7 @@
 
 #include "parksim/core/geometry/Angle.h"
 #include "parksim/results/ExecutedFile.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 #include "tests/sim/CarTestSupport.h"
 
 namespace parksim {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parksim/sim/Controller.h"
+#include "parksim/sim/control/Controller.h"
 
 namespace parksim {
 

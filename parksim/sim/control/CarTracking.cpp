@@ -1,9 +1,9 @@
-#include "parksim/sim/CarTracking.h"
+#include "parksim/sim/control/CarTracking.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "parksim/sim/TrackingController.h"
+#include "parksim/sim/control/TrackingController.h"
 
 namespace parksim {
 

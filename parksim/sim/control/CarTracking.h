@@ -23,7 +23,7 @@
 
 #include "parksim/core/geometry/Pose2.h"
 #include "parksim/core/model/RobotDef.h"
-#include "parksim/sim/Controller.h"
+#include "parksim/sim/control/Controller.h"
 
 namespace parksim {
 

@@ -24,8 +24,8 @@
 #include "parksim/core/model/DiffDrive.h"
 #include "parksim/core/model/RobotDef.h"
 #include "parksim/core/model/Trajectory.h"
-#include "parksim/sim/CarTracking.h"
-#include "parksim/sim/Controller.h"
+#include "parksim/sim/control/CarTracking.h"
+#include "parksim/sim/control/Controller.h"
 
 namespace parksim {
 

@@ -12,12 +12,12 @@
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/NumberFormat.h"
 #include "parksim/core/model/Ackermann.h"
-#include "parksim/sim/ContactEvents.h"
-#include "parksim/sim/EpisodeStatistics.h"
-#include "parksim/sim/ParkedDisplacements.h"
-#include "parksim/sim/RealismLoop.h"
-#include "parksim/sim/ReferenceTrajectory.h"
-#include "parksim/sim/TrackingController.h"
+#include "parksim/sim/control/TrackingController.h"
+#include "parksim/sim/episode/ContactEvents.h"
+#include "parksim/sim/episode/EpisodeStatistics.h"
+#include "parksim/sim/episode/ParkedDisplacements.h"
+#include "parksim/sim/episode/RealismLoop.h"
+#include "parksim/sim/episode/ReferenceTrajectory.h"
 
 namespace parksim {
 

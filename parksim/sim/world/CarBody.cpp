@@ -1,4 +1,4 @@
-#include "parksim/sim/CarBody.h"
+#include "parksim/sim/world/CarBody.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,9 +14,8 @@
 
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/NumberFormat.h"
-#include "parksim/sim/BulletFrames.h"
-#include "parksim/sim/CollisionGroups.h"
-#include "parksim/sim/WheelMotor.h"
+#include "parksim/sim/world/BulletFrames.h"
+#include "parksim/sim/world/CollisionGroups.h"
 
 namespace parksim {
 
@@ -182,7 +181,10 @@ void CarBody::addMotors() {
     const double max_impulse =
         (torque_drive ? model_.body.joint_friction_nm : physics_.max_wheel_torque_nm) * dt;
     for (int link : {kRearLeft, kRearRight}) {
-      wheel_motors_.push_back(makeWheelMotor(*body_, link, max_impulse, nullptr));
+      // Bullet's own motor rows: a car's mass matrix is not constant in its base frame (the
+      // knuckles steer), so the transcription's (sim/bullet/WheelMotor.h) does not apply.
+      wheel_motors_.push_back(std::make_unique<btMultiBodyJointMotor>(
+          body_.get(), link, btScalar(0), btScalar(max_impulse)));
       world_.addMultiBodyConstraint(wheel_motors_.back().get());
     }
   }

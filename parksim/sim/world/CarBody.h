@@ -27,8 +27,8 @@
 #include "parksim/core/model/Ackermann.h"
 #include "parksim/core/model/DiffDrive.h"
 #include "parksim/core/model/Scenario.h"
-#include "parksim/sim/DynamicsWorld.h"
-#include "parksim/sim/EgoBody.h"
+#include "parksim/sim/world/DynamicsWorld.h"
+#include "parksim/sim/world/EgoBody.h"
 
 class btCollisionObject;
 class btCollisionShape;

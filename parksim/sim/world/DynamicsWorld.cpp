@@ -18,6 +18,7 @@
 #include "parksim/core/model/Geometry.h"
 #include "parksim/core/system/ProvenanceConfig.h"
 #include "parksim/sim/world/BulletFrames.h"
+#include "parksim/sim/world/CarBody.h"
 #include "parksim/sim/world/ChassisContacts.h"
 #include "parksim/sim/world/CollisionGroups.h"
 #include "parksim/sim/world/GroundSlab.h"
@@ -25,14 +26,6 @@
 #include "parksim/sim/world/ObstacleBodies.h"
 #include "parksim/sim/world/RobotBody.h"
 #include "parksim/sim/world/SphereBoxContacts.h"
-#include "parksim/sim/BulletFrames.h"
-#include "parksim/sim/CarBody.h"
-#include "parksim/sim/ChassisContacts.h"
-#include "parksim/sim/CollisionGroups.h"
-#include "parksim/sim/GroundSlab.h"
-#include "parksim/sim/ObstacleBodies.h"
-#include "parksim/sim/RobotBody.h"
-#include "parksim/sim/SphereBoxContacts.h"
 
 namespace parksim {
 

@@ -18,7 +18,7 @@
 #include "parksim/core/geometry/Pose2.h"
 #include "parksim/core/model/DiffDrive.h"
 #include "parksim/core/model/Scenario.h"
-#include "parksim/sim/CarModelDef.h"
+#include "parksim/sim/world/CarModelDef.h"
 
 namespace parksim {
 
