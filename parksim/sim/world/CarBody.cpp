@@ -201,8 +201,8 @@ void CarBody::addMotors() {
 
 void CarBody::setWheelTargets(const WheelSpeeds& targets) {
   if (wheel_motors_.empty() || model_.body.drive != WheelDrive::kVelocityMotor) return;
-  setWheelMotorTarget(*wheel_motors_[0], targets.left_radps);
-  setWheelMotorTarget(*wheel_motors_[1], targets.right_radps);
+  wheel_motors_[0]->setVelocityTarget(btScalar(targets.left_radps));
+  wheel_motors_[1]->setVelocityTarget(btScalar(targets.right_radps));
 }
 
 void CarBody::addWheelTorques(const WheelSpeeds& torques_nm) {

@@ -96,7 +96,7 @@ class CarBody final : public EgoBody {
   std::vector<std::unique_ptr<btCollisionShape>> shapes_;
   std::unique_ptr<btMultiBody> body_;
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;   // chassis, four wheels
-  std::vector<std::unique_ptr<btMultiBodyConstraint>> wheel_motors_;  // rear left, rear right
+  std::vector<std::unique_ptr<btMultiBodyJointMotor>> wheel_motors_;  // rear left, rear right
   std::vector<std::unique_ptr<btMultiBodyJointMotor>> steer_motors_;  // left, right knuckle
 };
 
