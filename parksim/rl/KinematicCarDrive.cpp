@@ -43,7 +43,7 @@ class KinematicCarDrive final : public TaskDrive {
     out.contacts.clear();
     Twist twist;
     for (long i = 0; i < steps; ++i) {
-      steer_rad_ += std::clamp(command.steer_target_rad - steer_rad_, -max_turn, max_turn);
+      steer_rad_ += std::clamp(command.steer_rad - steer_rad_, -max_turn, max_turn);
       if (!out.contacts.empty()) continue;  // stopped against an obstacle
       speed_mps_ = std::clamp(speed_mps_ + command.accel_mps2 * dt_, -robot_.max_speed_mps,
                               robot_.max_speed_mps);

@@ -83,8 +83,11 @@ WheelSpeeds taskWheelSpeeds(const TaskAction& action, const RobotDef& robot) {
 }
 
 CarCommand taskCarCommand(const TaskAction& action, const RobotDef& robot) {
-  return {std::clamp(action.left, -1.0, 1.0) * robot.max_accel_mps2,
-          std::clamp(action.right, -1.0, 1.0) * robot.max_steer_rad};
+  CarCommand command;
+  command.mode = CarCommand::Mode::kAcceleration;
+  command.accel_mps2 = std::clamp(action.left, -1.0, 1.0) * robot.max_accel_mps2;
+  command.steer_rad = std::clamp(action.right, -1.0, 1.0) * robot.max_steer_rad;
+  return command;
 }
 
 }  // namespace parksim

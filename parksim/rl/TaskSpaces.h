@@ -10,6 +10,7 @@
 #include "parksim/core/geometry/Pose2.h"
 #include "parksim/core/model/DiffDrive.h"
 #include "parksim/core/model/Scenario.h"
+#include "parksim/sim/control/Controller.h"
 
 namespace parksim {
 
@@ -64,15 +65,10 @@ void checkTaskAction(const TaskAction& action, long index = -1);
 /// The wheel speeds an action commands (fractions clipped into [-1, 1]), rad/s.
 WheelSpeeds taskWheelSpeeds(const TaskAction& action, const RobotDef& robot);
 
-/// What an action commands a car: held for the control period, the speed changes at
-/// accel_mps2 (until it reaches +-max_speed_mps) and the steering angle moves towards
-/// steer_target_rad at max_steer_rate_radps (KinematicCarDrive.cpp).
-struct CarCommand {
-  double accel_mps2 = 0.0;
-  double steer_target_rad = 0.0;
-};
-
-/// A car's command from an action (fractions clipped into [-1, 1]).
+/// What an action commands a car (fractions clipped into [-1, 1]): an acceleration
+/// (CarCommand::Mode::kAcceleration, action[0] x max_accel_mps2) and the steering angle to
+/// steer toward (action[1] x max_steer_rad), which the car reaches at max_steer_rate_radps
+/// while the speed changes until it reaches +-max_speed_mps (KinematicCarDrive.cpp).
 CarCommand taskCarCommand(const TaskAction& action, const RobotDef& robot);
 
 }  // namespace parksim
