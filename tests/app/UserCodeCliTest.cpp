@@ -65,6 +65,11 @@ TEST_F(UserCodeCli, ACollidingPlanFileIsInvalidAndNotDriven) {
                                   "m, y [0-9.]+ m, -?[0-9.]+ deg\\) the footprint overlaps "
                                   "dropped_box\n"));
   EXPECT_FALSE(fs::exists(dir_ / "run" / "executed.csv"));
+  // Its metrics.json holds the verdict and the file's name.
+  std::ifstream in(dir_ / "run" / "metrics.json");
+  const nlohmann::json m = nlohmann::json::parse(in);
+  EXPECT_EQ(m["status"], "plan_invalid");
+  EXPECT_NE(m["plan_source"].get<std::string>().find("trajectory.csv"), std::string::npos);
   // Over the world's wheel-speed limit: the limit is named.
   r = testing::runParksim("run " + world("head_in") + " --plan " + out("plan") +
                           "/trajectory.csv --set robot.max_wheel_speed_radps=5 --out " +
