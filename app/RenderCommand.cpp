@@ -22,8 +22,8 @@
 #include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/renders/plots/Figures.h"
 #include "parksim/renders/plots/TrackingPlot.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 #include "parksim/usercode/CommandPlanner.h"
 
 namespace parksim::app {

@@ -29,8 +29,8 @@
 #include "parksim/realism/RealismDef.h"
 #include "parksim/renders/image/PngEncoder.h"
 #include "parksim/report/Report.h"
-#include "parksim/results/JUnitReport.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
+#include "parksim/results/reports/JUnitReport.h"
 #include "parksim/sweep/run/EpisodeRun.h"
 
 namespace parksim::app {

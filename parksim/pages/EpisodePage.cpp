@@ -6,8 +6,8 @@
 #include "parksim/pages/LotData.h"
 #include "parksim/pages/PageDocument.h"
 #include "parksim/renders/scene/SceneBuilder.h"
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/results/MetricsFile.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/results/episode/MetricsFile.h"
 
 namespace parksim {
 namespace {

@@ -3,8 +3,8 @@
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/NumberFormat.h"
 #include "parksim/planner/steering/MoveToPoseSteering.h"
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 
 namespace parksim {
 

@@ -9,11 +9,11 @@
 #include "parksim/pipeline/EpisodeFigures.h"
 #include "parksim/pipeline/EpisodeReport.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/MetricsFile.h"
-#include "parksim/results/PlanFile.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/MetricsFile.h"
+#include "parksim/results/episode/PlanFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 
 namespace parksim {
 

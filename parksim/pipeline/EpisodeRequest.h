@@ -23,7 +23,7 @@
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/renders/plots/Figures.h"
-#include "parksim/results/ExecutedFile.h"
+#include "parksim/results/episode/ExecutedFile.h"
 #include "parksim/scenario/world/World.h"
 #include "parksim/sim/episode/ExecutionDef.h"
 #include "parksim/usercode/Components.h"

@@ -3,8 +3,8 @@
 #include "parksim/core/geometry/Angle.h"
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/NumberFormat.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/MetricsFile.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/MetricsFile.h"
 
 namespace parksim {
 

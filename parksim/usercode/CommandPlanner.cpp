@@ -13,8 +13,8 @@
 #include "parksim/core/system/ChildProcess.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/planner/motion/PathCost.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 #include "parksim/usercode/CommandLine.h"
 #include "parksim/usercode/ProblemFile.h"
 

@@ -114,7 +114,7 @@ def _plain(value):
 
 
 def episode_fields():
-    """The episode record's fields (parksim/results/EpisodeRecord.h), one dict each: key (its
+    """The episode record's fields (parksim/results/tables/EpisodeRecord.h), one dict each: key (its
     column in a sweep's results table), metrics_key (its key in run().metrics and
     metrics.json), group, type, unit, meaning."""
     return _parksim._episode_fields()

@@ -9,7 +9,7 @@
 #include "parksim/core/io/NumberFormat.h"
 #include "parksim/core/model/DiffDrive.h"
 #include "parksim/core/params/ParamSet.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
 

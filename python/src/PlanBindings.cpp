@@ -5,7 +5,7 @@
 #include <pybind11/stl.h>
 
 #include "parksim/pipeline/EpisodePipeline.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
 #include "python/src/UserCode.h"

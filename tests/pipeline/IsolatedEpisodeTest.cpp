@@ -10,7 +10,7 @@
 
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/IsolatedEpisode.h"
-#include "parksim/results/MetricsFile.h"
+#include "parksim/results/episode/MetricsFile.h"
 #include "parksim/scenario/world/World.h"
 #include "parksim/usercode/PluginLoader.h"
 #include "tests/support/TestPaths.h"

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/geometry/Angle.h"
-#include "parksim/results/ExecutedFile.h"
+#include "parksim/results/episode/ExecutedFile.h"
 #include "parksim/sim/episode/Episode.h"
 #include "tests/sim/CarTestSupport.h"
 

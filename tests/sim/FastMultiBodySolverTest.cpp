@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/MetricsFile.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/MetricsFile.h"
 #include "parksim/sim/episode/Episode.h"
 #include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/sim/SimTestSupport.h"

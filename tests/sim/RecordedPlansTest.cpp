@@ -13,7 +13,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 #include "parksim/scenario/world/ScenarioReader.h"
 #include "parksim/sim/episode/Episode.h"
 #include "tests/support/TestPaths.h"

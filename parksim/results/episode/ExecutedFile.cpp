@@ -1,4 +1,4 @@
-#include "parksim/results/ExecutedFile.h"
+#include "parksim/results/episode/ExecutedFile.h"
 
 #include <array>
 #include <iterator>

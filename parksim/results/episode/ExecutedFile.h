@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "parksim/results/NpzFile.h"
+#include "parksim/results/episode/NpzFile.h"
 #include "parksim/sim/episode/Episode.h"
 
 namespace parksim {

@@ -1,4 +1,4 @@
-#include "parksim/results/PlanFile.h"
+#include "parksim/results/episode/PlanFile.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -6,8 +6,8 @@
 #include "parksim/core/geometry/Angle.h"
 #include "parksim/core/io/AtomicFile.h"
 #include "parksim/planner/base/FreeSpaceBound.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 
 namespace parksim {
 

@@ -1,4 +1,4 @@
-#include "parksim/results/EpisodeRecord.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 
 #include <algorithm>
 #include <array>

@@ -5,7 +5,7 @@
 #include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/OutcomeFacts.h"
-#include "parksim/results/EpisodeRecord.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 #include "parksim/sweep/spec/EpisodeSetup.h"
 
 namespace parksim {

@@ -14,7 +14,7 @@
 #include "parksim/core/system/UserCodeWatch.h"
 #include "parksim/pipeline/EpisodeOutcome.h"
 #include "parksim/pipeline/Verdict.h"
-#include "parksim/results/EpisodeRecord.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 #include "parksim/sweep/spec/EpisodeExpansion.h"
 #include "parksim/sweep/spec/SweepSpec.h"
 

@@ -15,7 +15,7 @@
 #include <functional>
 #include <vector>
 
-#include "parksim/results/ResultsTable.h"
+#include "parksim/results/tables/ResultsTable.h"
 #include "parksim/sweep/run/EpisodeRun.h"
 #include "parksim/sweep/spec/EpisodeExpansion.h"
 #include "parksim/usercode/UserCodeIsolation.h"
