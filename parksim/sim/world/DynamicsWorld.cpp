@@ -56,6 +56,7 @@ void validate(const Scenario& scenario, const SimModelDef& model) {
   requirePositive(r.width_m, "robot.width_m");
   requirePositive(r.wheel_radius_m, "robot.wheel_radius_m");
   requirePositive(r.wheel_base_m, "robot.wheel_base_m");
+  requirePositive(model.cold_solver_iterations, "cold_solver_iterations");
   requirePositive(model.support_radius_m, "support_radius_m");
   requirePositive(model.support_mass_kg, "support_mass_kg");
   requirePositive(model.support_deflection_m, "support_clearance_m");
@@ -175,9 +176,9 @@ struct DynamicsWorld::Impl {
     broadphase->getOverlappingPairCache()->setOverlapFilterCallback(pair_filter.get());
     world = kernel->makeWorld(*dispatcher, *broadphase, *config);
     world->setGravity(btVector3(0, 0, btScalar(-physics.gravity_mps2)));
-    world->getSolverInfo().m_numIterations =
+    world->getSolverInfo().m_numIterations = kernel->solverIterations(
         car ? std::max(physics.solver_iterations, model.car.min_solver_iterations)
-            : physics.solver_iterations;
+            : physics.solver_iterations);
     world->getSolverInfo().m_leastSquaresResidualThreshold =
         btScalar(model.solver_residual_threshold);
     // Bullet warm-starts rigid bodies' contacts (woken parked robots) at 85 % of their last

@@ -1,5 +1,6 @@
 #include "parksim/sim/world/KernelParts.h"
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 
@@ -33,6 +34,7 @@ SolverKernel effectiveSolverKernel(SolverKernel requested) {
 
 struct KernelParts::Impl {
   SolverKernel kernel = SolverKernel::kBullet;
+  int min_iterations = 0;
   std::optional<SphereBoxContacts> sphere_box;  // registered with the dispatcher
 #if PARKSIM_BULLET_TRANSCRIPTION
   MultiBodyInverseMass inverse_mass;  // outlives the solver and the motors
@@ -45,6 +47,7 @@ KernelParts::KernelParts(const SimModelDef& model, btCollisionDispatcher& dispat
     : impl_(std::make_unique<Impl>()) {
   Impl& d = *impl_;
   d.kernel = effectiveSolverKernel(model.solver);
+  if (d.kernel != model.solver && model.warm_start) d.min_iterations = model.cold_solver_iterations;
   if (d.kernel == SolverKernel::kBullet) {
     d.solver = std::make_unique<btMultiBodyConstraintSolver>();
     return;
@@ -68,6 +71,10 @@ KernelParts::KernelParts(const SimModelDef& model, btCollisionDispatcher& dispat
 KernelParts::~KernelParts() = default;
 
 SolverKernel KernelParts::kernel() const { return impl_->kernel; }
+
+int KernelParts::solverIterations(int iterations) const {
+  return std::max(iterations, impl_->min_iterations);
+}
 
 std::unique_ptr<btMultiBodyDynamicsWorld> KernelParts::makeWorld(btCollisionDispatcher& dispatcher,
                                                                  btBroadphaseInterface& broadphase,

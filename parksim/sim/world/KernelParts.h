@@ -34,6 +34,11 @@ class KernelParts {
   /// The kernel these parts run.
   SolverKernel kernel() const;
 
+  /// The most solver iterations per step for a world whose PhysicsDef asks for `iterations`:
+  /// those, or SimModelDef::cold_solver_iterations if more where Bullet's own solver stands in
+  /// for a warm-started kernel.
+  int solverIterations(int iterations) const;
+
   /// The world that steps with this kernel's solver; it must not outlive these parts.
   std::unique_ptr<btMultiBodyDynamicsWorld> makeWorld(btCollisionDispatcher& dispatcher,
                                                       btBroadphaseInterface& broadphase,
