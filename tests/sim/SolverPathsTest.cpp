@@ -14,9 +14,9 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/results/TrajectoryFile.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 #include "parksim/sim/episode/Episode.h"
 #include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/sim/SimTestSupport.h"

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Pose2.h"
+#include "parksim/core/geometry/Pose2.h"
 #include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/sim/SimTestSupport.h"
 
