@@ -31,6 +31,10 @@ set(PARKSIM_UNITY_SKIP
   # Added after the planner's batches were laid out: alone, it leaves them as they were
   # (TreeSearch.h's and TimeAStarSearch.cpp's Clock would otherwise meet in one batch).
   parksim/planner/ReachableBudget.cpp
+  # The same for the car planner's files (docs/planning.md, "Cars").
+  parksim/planner/CarPath.cpp
+  parksim/planner/CarPlanAlong.cpp
+  parksim/planner/CarTiming.cpp
   # Not a name: it includes ProvenanceGit.h, which a commit or a first edit rewrites; alone,
   # only this file is compiled again then, not its batch.
   parksim/core/Provenance.cpp
