@@ -32,8 +32,11 @@ set(PARKSIM_UNITY_SKIP
   # (TreeSearch.h's and TimeAStarSearch.cpp's Clock would otherwise meet in one batch).
   parksim/planner/ReachableBudget.cpp
   # The same for the car planner's files (docs/planning.md, "Cars").
+  parksim/planner/CarAStar.cpp
+  parksim/planner/CarAStarPlanner.cpp
   parksim/planner/CarPath.cpp
   parksim/planner/CarPlanAlong.cpp
+  parksim/planner/CarTimeCost.cpp
   parksim/planner/CarTiming.cpp
   # Not a name: it includes ProvenanceGit.h, which a commit or a first edit rewrites; alone,
   # only this file is compiled again then, not its batch.

@@ -83,7 +83,9 @@ Pose2 endOf(const Pose2& start, const std::vector<CarSection>& sections, double 
 
 std::vector<CarSection> transitions(
     const std::vector<CarSection>& sections,
-    const std::function<double(double kappa_before, double kappa_after)>& half_length) {
+    const std::function<double(std::size_t junction, double kappa_before, double kappa_after)>&
+        half_length,
+    std::vector<long>* junction_of) {
   const std::size_t n = sections.size();
   // h[i]: the half-length of the clothoid between sections i and i + 1.
   std::vector<double> h(n, 0.0);
@@ -92,16 +94,21 @@ std::vector<CarSection> transitions(
     const CarSection& b = sections[i + 1];
     if (a.direction != b.direction || a.kappa_end == b.kappa_begin) continue;
     if (!a.constantCurvature() || !b.constantCurvature()) continue;
-    const double wanted = half_length(a.kappa_end, b.kappa_begin);
+    const double wanted = half_length(i, a.kappa_end, b.kappa_begin);
     h[i] = std::max(0.0, std::min({wanted, 0.5 * a.length_m, 0.5 * b.length_m}));
   }
   std::vector<CarSection> out;
+  if (junction_of) junction_of->clear();
   for (std::size_t i = 0; i < n; ++i) {
     CarSection s = sections[i];
     s.length_m -= (i > 0 ? h[i - 1] : 0.0) + h[i];
-    if (s.length_m > kTinyLength_m) out.push_back(s);
+    if (s.length_m > kTinyLength_m) {
+      out.push_back(s);
+      if (junction_of) junction_of->push_back(-1);
+    }
     if (h[i] > 0.0) {
       out.push_back({s.direction, 2.0 * h[i], sections[i].kappa_end, sections[i + 1].kappa_begin});
+      if (junction_of) junction_of->push_back(static_cast<long>(i));
     }
   }
   return out;

@@ -44,12 +44,15 @@ bool stopsBetween(const CarSection& a, const CarSection& b);
 Pose2 endOf(const Pose2& start, const std::vector<CarSection>& sections, double step_m = 0.02);
 
 /// `sections` with every curvature jump between sections driven the same way replaced by a
-/// clothoid centred on it, of half-length `half_length(jump index, kappa before, kappa after)`
-/// (m, >= 0; 0 leaves the jump) but at most half of either neighbouring section's length as the
-/// other transitions leave it.
+/// clothoid centred on it, of half-length `half_length(junction, kappa before, kappa after)`
+/// (m, >= 0; 0 leaves the jump; `junction` i joins sections i and i + 1), but at most half of
+/// either neighbouring section's length. `junction_of`, when given, is set to each returned
+/// section's junction for clothoids, and to -1 for the others.
 std::vector<CarSection> transitions(
     const std::vector<CarSection>& sections,
-    const std::function<double(double kappa_before, double kappa_after)>& half_length);
+    const std::function<double(std::size_t junction, double kappa_before, double kappa_after)>&
+        half_length,
+    std::vector<long>* junction_of = nullptr);
 
 /// `sections` with the lengths of their constant-curvature sections changed, the longer ones
 /// more, so that from `start` they end at `target` (to 1e-9 m and rad), by Newton's method on

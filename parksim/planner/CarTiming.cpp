@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "parksim/core/DiffDrive.h"
 #include "parksim/core/Error.h"
@@ -22,6 +23,8 @@ constexpr long kMaxCells = 400000;
 // A clothoid whose rows still steer too fast is passed this much slower, up to this many times.
 constexpr double kSlower = 0.8;
 constexpr int kMaxSlowdowns = 20;
+// Rows shorter than this take the curvature at their middle, m.
+constexpr double kShortRow_m = 1e-6;
 
 // A run: sections driven one way without a stop, from rest to rest.
 struct Run {
@@ -44,6 +47,17 @@ struct Run {
     const CarSection& c = sections[k];
     const double u = std::clamp(s - begin[k], 0.0, c.length_m);
     return c.kappa_begin + (c.kappa_end - c.kappa_begin) * u / c.length_m;
+  }
+  // The least and the largest curvature between distances a <= b: at the ends or where
+  // sections join (curvature is linear along each).
+  std::pair<double, double> curvatureRange(double a, double b) const {
+    double least = std::min(curvatureAt(a), curvatureAt(b));
+    double most = std::max(curvatureAt(a), curvatureAt(b));
+    for (std::size_t k = sectionAt(a) + 1; k < sections.size() && begin[k] < b; ++k) {
+      least = std::min(least, sections[k].kappa_begin);
+      most = std::max(most, sections[k].kappa_begin);
+    }
+    return {least, most};
   }
   std::size_t sectionAt(double s) const {
     const auto it = std::upper_bound(begin.begin(), begin.end(), s);
@@ -181,8 +195,12 @@ RunRows rowsOf(const Run& run, const Profile& p, double period_s) {
     const double s1 = i + 1 == n ? run.length : p.distanceAt((i + 1) * period_s, cursor);
     const double d = std::max(0.0, s1 - s0);
     rows.distance.push_back(d);
-    rows.kappa.push_back(d > 1e-12 ? (run.integrated(s1) - run.integrated(s0)) / d
-                                   : run.curvatureAt(s0));
+    // The mean curvature, within the curvatures the row passes (a difference of integrals over
+    // a row of micrometres is mostly rounding: that row takes its middle's).
+    const double kappa = d > kShortRow_m ? (run.integrated(s1) - run.integrated(s0)) / d
+                                         : run.curvatureAt(0.5 * (s0 + s1));
+    const auto [least, most] = run.curvatureRange(s0, s1);
+    rows.kappa.push_back(std::clamp(kappa, least, most));
     s0 = std::max(s0, s1);
   }
   return rows;

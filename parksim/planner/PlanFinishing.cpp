@@ -2,9 +2,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <vector>
 
+#include "parksim/planner/CarPlanAlong.h"
 #include "parksim/planner/PathCost.h"
 #include "parksim/planner/PathSmoother.h"
 #include "parksim/planner/PlanScenario.h"
@@ -42,9 +44,64 @@ void smoothPlan(const PlanningProblem& problem, const TimingLimits& limits, Plan
   result.stats.times.total_s += secondsSince(t0);
 }
 
+// A car's plan: the path's pieces, smoothed as a car's when asked, made a car's plan along them
+// (CarPlanAlong.h); the path as it was found when the smoothed one cannot be. No plan when
+// neither can (the status says why).
+void finishCarPlan(const PlanningProblem& problem, bool smooth_geometry, PlanResult& result) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const RobotDef& car = problem.scenario.robot;
+  const MotionValidator& validator = problem.validator;
+  const long before = validator.queries();
+  const CarLimits limits =
+      carLimits(car, problem.setup.feedback_headroom, problem.setup.timing_period_s);
+  const Pose2 start = result.trajectory.points.front().pose;
+  const std::vector<PathPiece> found = pathPieces(result.trajectory);
+  std::vector<PathPiece> pieces = found;
+  if (smooth_geometry) {
+    const PathSmoother smoother(car, validator, limits, problem.setup.smoothing);
+    std::mt19937_64 rng(problem.search().seed ^ 0x5e1ec7edULL);
+    PathSmoothingStats stats;
+    pieces = smoother.smooth(start, found, problem.search().smoothing_attempts, rng, &stats);
+    result.stats.smoothing_shortcuts += stats.shortcuts;
+    result.stats.times.smoothing_s += secondsSince(t0);
+  }
+  // The plan ends where the path does, to a tenth of the goal's tolerance.
+  const double end_tolerance = 0.1 * problem.scenario.goal.position_tolerance_m;
+  std::optional<Trajectory> plan =
+      carPlanAlong(start, pieces, car, limits, validator, end_tolerance);
+  if (!plan && smooth_geometry) {
+    plan = carPlanAlong(start, found, car, limits, validator, end_tolerance);
+  }
+  result.stats.collision_queries += validator.queries() - before;
+  if (!plan) {
+    result.status = PlanStatus::kIterationLimit;
+    result.message = "the path found could not be made a car's plan that validates";
+    result.trajectory = {};
+    result.cost = 0.0;
+    result.cost_history.clear();
+  } else {
+    result.trajectory = std::move(*plan);
+    const CostWeights w{problem.search().reverse_penalty, problem.search().cusp_penalty_m};
+    result.cost = result.objective == PlanObjective::kDuration
+                      ? result.trajectory.duration()
+                      : trajectoryCost(result.trajectory, car, w);
+    if (result.cost_history.empty()) {
+      result.cost_history.push_back({result.stats.times.total_s, result.stats.iterations, 0.0});
+    }
+    result.cost_history.back().cost = result.cost;
+    if (!result.waypoints.empty()) result.waypoints.back() = result.trajectory.points.back().pose;
+  }
+  result.stats.times.timing_s = secondsSince(t0) - result.stats.times.smoothing_s;
+  result.stats.times.total_s += secondsSince(t0);
+}
+
 }  // namespace
 
 void finishPlan(const PlanningProblem& problem, bool smooth_geometry, PlanResult& result) {
+  if (problem.scenario.robot.isCar()) {
+    finishCarPlan(problem, smooth_geometry, result);
+    return;
+  }
   const RobotDef& robot = problem.scenario.robot;
   const bool time_optimal = problem.setup.timing == TimingKind::kTimeOptimal;
   if (smooth_geometry) {

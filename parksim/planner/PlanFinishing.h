@@ -16,6 +16,10 @@ namespace parksim {
 ///   that unless it fails validation;
 /// - sets result.cost to the plan's path cost (search cost weights) and makes the cost history
 ///   end with it.
+/// For a car (RobotDef::isCar) instead: smooths as a car's path when `smooth_geometry`, then
+/// makes the car's plan along it (CarPlanAlong.h) at the setup's headroom and period; its cost is
+/// its duration or path cost (result.objective). When no car's plan validates, the result is
+/// unsolved (kIterationLimit) with a message.
 /// Collision queries and phase times are added to result.stats.
 void finishPlan(const PlanningProblem& problem, bool smooth_geometry, PlanResult& result);
 
