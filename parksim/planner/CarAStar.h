@@ -45,7 +45,7 @@ struct CarAStarDef {
   /// way (2: half and full lock).
   int curvature_steps = 2;
   /// f = g + heuristic_weight * h (>= 1).
-  double heuristic_weight = 1.5;
+  double heuristic_weight = 1.2;
   /// Cost of a gear change on top of its stop and its steering, s (nav2's change penalty).
   double gear_change_penalty_s = 1.0;
   /// The analytic expansion is tried from every node whose heuristic is below this, s, and from

@@ -211,7 +211,7 @@ RunRows rowsOf(const Run& run, const Profile& p, double period_s) {
 CarLimits carLimits(const RobotDef& car, double headroom, double period_s) {
   if (!(headroom >= 0.0 && headroom < 1.0)) throw Error("car timing: headroom must be in [0, 1)");
   CarLimits l;
-  l.max_speed_mps = (1.0 - headroom) * car.max_speed_mps;
+  l.max_speed_mps = car.max_speed_mps;
   l.max_accel_mps2 = car.max_accel_mps2;
   l.max_steer_rad = car.max_steer_rad;
   l.max_steer_rate_radps = (1.0 - headroom) * car.max_steer_rate_radps;

@@ -22,9 +22,10 @@
 
 namespace parksim {
 
-/// What a car's plan may use (the car's own limits less the feedback headroom).
+/// What a car's plan may use: the car's own limits, the steering rate less the feedback
+/// headroom (a tracking controller corrects lateral and heading errors by steering).
 struct CarLimits {
-  double max_speed_mps = 2.0;          ///< of the reference point, m/s
+  double max_speed_mps = 2.5;          ///< of the reference point, m/s
   double max_accel_mps2 = 1.0;         ///< along the path, m/s^2
   double max_steer_rad = 0.75;         ///< front-wheel angle, rad
   double max_steer_rate_radps = 0.4;   ///< rad/s
@@ -32,8 +33,8 @@ struct CarLimits {
   double period_s = 0.02;              ///< rows this far apart, s
 };
 
-/// The limits of `car` leaving `headroom` (in [0, 1)) of its speed and steering rate to a
-/// controller's feedback, rows `period_s` apart.
+/// The limits of `car` leaving `headroom` (in [0, 1)) of its steering rate to a controller's
+/// feedback, rows `period_s` apart.
 CarLimits carLimits(const RobotDef& car, double headroom, double period_s);
 
 /// The plan that drives `sections` from `start` (see the file comment): rows period_s apart from

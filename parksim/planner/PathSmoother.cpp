@@ -290,8 +290,8 @@ PathSmoother::PathSmoother(const RobotDef& robot, const MotionValidator& validat
   }
 }
 
-PathSmoother::PathSmoother(const RobotDef& car, const MotionValidator& validator,
-                           const CarLimits& limits, const PathSmootherDef& def)
+PathSmoother::PathSmoother(const CarLimits& limits, const RobotDef& car,
+                           const MotionValidator& validator, const PathSmootherDef& def)
     : robot_(car), validator_(validator), def_(def), car_(limits) {
   if (!car.isCar()) throw Error("path smoother: car limits for a robot that is not a car");
   for (double m : def.car_curve_radii) {

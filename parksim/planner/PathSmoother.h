@@ -60,7 +60,7 @@ class PathSmoother {
   PathSmoother(const RobotDef& robot, const MotionValidator& validator, const TimingLimits& limits,
                const PathSmootherDef& def = {});
   /// A car's smoothing (see the file comment): `limits` time the candidates as car plans.
-  PathSmoother(const RobotDef& car, const MotionValidator& validator, const CarLimits& limits,
+  PathSmoother(const CarLimits& limits, const RobotDef& car, const MotionValidator& validator,
                const PathSmootherDef& def = {});
   ~PathSmoother();
   PathSmoother(const PathSmoother&) = delete;

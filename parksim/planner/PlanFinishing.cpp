@@ -58,7 +58,7 @@ void finishCarPlan(const PlanningProblem& problem, bool smooth_geometry, PlanRes
   const std::vector<PathPiece> found = pathPieces(result.trajectory);
   std::vector<PathPiece> pieces = found;
   if (smooth_geometry) {
-    const PathSmoother smoother(car, validator, limits, problem.setup.smoothing);
+    const PathSmoother smoother(limits, car, validator, problem.setup.smoothing);
     std::mt19937_64 rng(problem.search().seed ^ 0x5e1ec7edULL);
     PathSmoothingStats stats;
     pieces = smoother.smooth(start, found, problem.search().smoothing_attempts, rng, &stats);

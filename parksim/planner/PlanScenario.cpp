@@ -143,10 +143,10 @@ PlanSetup resolvedPlanSetup(const PlanSetup& setup, const Scenario& scenario,
                             const PlannerRegistry& registry) {
   PlanSetup resolved = setup;
   resolved.validation = resolvedValidation(setup.validation, scenario.robot);
+  resolved.planner = plannerFor(setup.planner, scenario.robot);
   if (scenario.robot.isCar()) {
-    // A car cannot turn in place: the default planner and the steering functions that turn in
-    // place give way to their car counterparts.
-    resolved.planner = plannerFor(setup.planner, scenario.robot);
+    // A car cannot turn in place: the steering functions that turn in place give way to
+    // Reeds-Shepp curves.
     if (setup.steering_kind != SteeringKind::kReedsShepp) {
       resolved.steering_kind = SteeringKind::kReedsShepp;
     }

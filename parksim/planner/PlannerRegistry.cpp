@@ -31,6 +31,7 @@ const PlannerRegistry& builtInPlanners() {
 std::string plannerFor(const std::string& planner, const RobotDef& robot) {
   // time-a-star's moves turn in place; car-a-star is its car counterpart (costed by time too).
   if (robot.isCar() && planner == "time-a-star") return "car-a-star";
+  if (!robot.isCar() && planner == "car-a-star") return "time-a-star";
   return planner;
 }
 

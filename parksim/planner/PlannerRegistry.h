@@ -22,9 +22,11 @@ using PlannerRegistry = ComponentRegistry<PlannerEntry>;
 /// (CarAStarPlanner.cpp). Built once, never changed.
 const PlannerRegistry& builtInPlanners();
 
-/// The planner that plans for `robot` when `planner` is asked for: itself, except that a car
-/// (RobotDef::isCar), which cannot turn in place, is planned by car-a-star when time-a-star
-/// (the default planner, whose moves turn in place) is asked for. resolvedPlanSetup applies it.
+/// The planner that plans for `robot` when `planner` is asked for: itself, except that the
+/// A* planner costed by time is each drive's own: a car (RobotDef::isCar), which cannot turn in
+/// place, is planned by car-a-star when time-a-star (the default planner, whose moves turn in
+/// place) is asked for, and a differential drive by time-a-star when car-a-star is.
+/// resolvedPlanSetup applies it.
 std::string plannerFor(const std::string& planner, const RobotDef& robot);
 
 /// Area of the study's lot (1.8 x 1.2 m), the unit of the default budgets' scaling, m^2.

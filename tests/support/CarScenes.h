@@ -7,7 +7,7 @@
 // - bay_forward / bay_reverse: a free bay in a row of perpendicular bays, head-in and back-in;
 // - garage: a closed garage 3.2 m wide, entered head-in through its door from a yard;
 // - open_lot: an 80 x 50 m lot with two rows of parked cars, a polygon island and a bollard,
-//   the goal in open space far from the start.
+//   the goal in open space far from the start, the way there free.
 // Goal tolerances are 0.05 m and 1 degree.
 
 #include <string>
@@ -121,24 +121,26 @@ inline Scenario carGarageScene() {
   return s;
 }
 
-/// An 80 x 50 m lot with two rows of parked cars, a polygon island and a bollard; from the
-/// south-west to open space in the north-east, heading north (`turn_around`: south).
+/// An 80 x 50 m lot with two rows of parked cars, a polygon island and a bollard, all off the
+/// way from the south-west (5, 5) to open space at (70, 38), where the car ends heading north
+/// (`turn_around`: south, coming round).
 inline Scenario carOpenLotScene(bool turn_around = false) {
   using namespace car_scenes;
   Scenario s =
       carScenario(turn_around ? "car_open_lot_turn" : "car_open_lot", {0.0, 0.0, 80.0, 50.0},
                   {5.0, 5.0, 0.0}, {70.0, 38.0, degToRad(turn_around ? -90.0 : 90.0)});
   for (int k = 0; k < 12; ++k) {
-    s.obstacles.push_back(parkedCar("row1_" + std::to_string(k), 20.0 + 2.7 * k, 15.0, 90.0));
+    // North-west, facing south; south-east, facing north.
+    s.obstacles.push_back(parkedCar("north_" + std::to_string(k), 15.0 + 2.7 * k, 46.0, -90.0));
     if (k % 4 != 1) {
-      s.obstacles.push_back(parkedCar("row2_" + std::to_string(k), 20.0 + 2.7 * k, 28.0, -90.0));
+      s.obstacles.push_back(parkedCar("south_" + std::to_string(k), 45.0 + 2.7 * k, 3.0, 90.0));
     }
   }
   s.obstacles.push_back(
       Obstacle::makePolygon("island", ObstacleKind::kIsland,
-                            {{55.0, 20.0}, {60.0, 19.0}, {62.0, 23.0}, {56.0, 24.0}}, 0.3));
+                            {{15.0, 25.0}, {20.0, 24.0}, {22.0, 28.0}, {16.0, 29.0}}, 0.3));
   s.obstacles.push_back(
-      Obstacle::makeCircle("bollard", ObstacleKind::kBollard, {{45.0, 40.0}, 0.3}, 1.0));
+      Obstacle::makeCircle("bollard", ObstacleKind::kBollard, {{60.0, 15.0}, 0.3}, 1.0));
   return s;
 }
 
