@@ -14,17 +14,17 @@
 #include "parksim/cli/TerminalText.h"
 #include "parksim/cli/Validators.h"
 #include "parksim/cli/WorldOptions.h"
-#include "parksim/command/CommandPlanner.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/renders/Figures.h"
-#include "parksim/renders/FrameRecorder.h"
-#include "parksim/renders/TrackingPlot.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/renders/plots/Figures.h"
+#include "parksim/renders/plots/TrackingPlot.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/TrajectoryFile.h"
+#include "parksim/usercode/CommandPlanner.h"
 
 namespace parksim::app {
 

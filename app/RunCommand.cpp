@@ -27,11 +27,11 @@
 #include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/realism/Distribution.h"
 #include "parksim/realism/RealismDef.h"
-#include "parksim/renders/PngEncoder.h"
+#include "parksim/renders/image/PngEncoder.h"
+#include "parksim/report/Report.h"
 #include "parksim/results/JUnitReport.h"
 #include "parksim/results/TrajectoryFile.h"
-#include "parksim/sweep/EpisodeRun.h"
-#include "parksim/sweep/Report.h"
+#include "parksim/sweep/run/EpisodeRun.h"
 
 namespace parksim::app {
 
@@ -154,7 +154,7 @@ EpisodeRequest toRequest(const RunOptions& o) {
   r.controller = o.controller.name;
   r.controller_params = o.controller.paramMap();
   if (!o.plan_file.empty()) {
-    r.given_plan = readTrajectoryCsv(o.plan_file);
+    r.given_plan = readTrajectoryCsv(o.plan_file, r.world->scenario.robot);
     r.given_plan_source = o.plan_file;
   }
   r.execution.tracking = trackingModeFromString(o.tracking);

@@ -11,7 +11,7 @@
 
 #include "app/Command.h"
 #include "parksim/cli/TerminalText.h"
-#include "parksim/sweep/Merge.h"
+#include "parksim/sweep/shards/Merge.h"
 
 namespace parksim::app {
 

@@ -34,7 +34,7 @@
 #include <vector>
 
 #include "parksim/results/TrajectoryFile.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 #include "parksim/sim/Episode.h"
 #include "parksim/sim/ReferenceTrajectory.h"
 

@@ -29,10 +29,10 @@
 #include "bench/planning/BestKnown.h"
 #include "bench/planning/ParksimRuns.h"
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 
 namespace {
 

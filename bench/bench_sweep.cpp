@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "parksim/results/ResultsTable.h"
-#include "parksim/sweep/EpisodeExpansion.h"
-#include "parksim/sweep/SweepRunner.h"
-#include "parksim/sweep/SweepSpecReader.h"
+#include "parksim/sweep/run/SweepRunner.h"
+#include "parksim/sweep/spec/EpisodeExpansion.h"
+#include "parksim/sweep/spec/SweepSpecReader.h"
 
 namespace {
 

@@ -33,14 +33,14 @@
 #include "parksim/cli/TerminalText.h"
 #include "parksim/cli/Validators.h"
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/core/Provenance.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/planner/TreePlanner.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/system/Provenance.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/planner/tree/TreePlanner.h"
 #include "parksim/results/OmplLog.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 
 namespace parksim::bench {
 namespace {

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # libFuzzer campaigns on parksim's input readers, built with clang
-# (-fsanitize=fuzzer,address,undefined) into build-fuzz/. The main build uses g++; this is a
+# (-fsanitize=fuzzer,address,undefined) into build-fuzz/, apart from the CMake builds: this is a
 # separate, small build of just the readers:
 #   world    the world-file reader                  plan      the plan-file reader
 #   spec     the sweep-spec reader                  jsonl     results.jsonl (sweep, merge, report)
@@ -31,22 +31,32 @@ flags=(-std=c++20 -O1 -g1 -fno-omit-frame-pointer -fsanitize=fuzzer,address,unde
        -fno-sanitize-recover=undefined -ffunction-sections -fdata-sections -I.
        -isystem /usr/include/eigen3 -isystem /usr/include/ompl-1.5 -isystem /usr/include/bullet
        -isystem /usr/include/libxml2)
+# Sources are found by name, and folders by their whole tree: files move between folders and
+# subfolders (docs/architecture.md), and a source's name is unique under parksim/.
+src() {  # src NAME.cpp...: the path of each (one line each); fails when one is not found
+  local name path
+  for name in "$@"; do
+    path=$(find parksim -name "$name" -print -quit)
+    [ -n "$path" ] || { echo "fuzz.sh: no $name under parksim/" >&2; return 1; }
+    echo "$path"
+  done
+}
+sources_under() {  # sources_under DIR: every source under DIR, subfolders included, sorted
+  find "$1" -name '*.cpp' | LC_ALL=C sort
+}
 # The readers need the core library but not its build-provenance file (a configured header).
-core=()
-for f in parksim/core/*.cpp; do
-  [ "$f" = parksim/core/Provenance.cpp ] || core+=("$f")
-done
+mapfile -t core < <(sources_under parksim/core | grep -v '/Provenance\.cpp$')
 
 # Each source is compiled once into build-fuzz/obj/ (the readers share the core library's
 # sources), on all cores, and again only when it or a parksim header changed since.
 # The sweep-spec reader takes its name lists (planners, steerings, timings) from
-# parksim/planner/PlanScenario.cpp, whose other functions need the whole planner (OMPL, Bullet),
+# parksim/planner/base/PlanScenario.cpp, whose other functions need the whole planner (OMPL, Bullet),
 # its record format's names from parksim/results/ExecutedFile.cpp (the record writers), and
 # its files policy's from parksim/pipeline/EpisodeRequest.cpp.
 # The fuzzer's coverage tables keep every instrumented function alive, so that file is compiled
 # without them (still with ASan and UBSan, as .nocov.o) and --gc-sections drops what the spec
 # reader does not call.
-nocov="parksim/planner/PlanScenario.cpp parksim/results/ExecutedFile.cpp"
+nocov="$(src PlanScenario.cpp ExecutedFile.cpp | tr '\n' ' ')"
 object_of() {  # the object of SOURCE
   case " $nocov " in *" $1 "*) echo "$out/obj/${1%.cpp}.nocov.o" ;; *) echo "$out/obj/${1%.cpp}.o" ;; esac
 }
@@ -75,22 +85,22 @@ link() {  # link NAME OBJECTS... LIBS...
 
 # The reader's realism: section is checked by the Bullet-free parksim_realism library
 # (parksim/realism/, all of it).
-realism=(parksim/realism/*.cpp)
-scenario=(parksim/scenario/*.cpp)
+mapfile -t realism < <(sources_under parksim/realism)
+mapfile -t scenario < <(sources_under parksim/scenario)
 # The results tables' readers and what they share (the episode record's fields, seals, ids,
 # manifests, merge's sources).
-tables=(parksim/results/ResultsFile.cpp parksim/results/RowSeal.cpp parksim/results/TableVerify.cpp
-        parksim/results/EpisodeRecord.cpp parksim/sim/ExecutionDef.cpp
-        parksim/sweep/EpisodeParams.cpp parksim/sweep/SetValues.cpp parksim/sweep/SweepManifest.cpp
-        parksim/sweep/Shard.cpp parksim/sweep/Merge.cpp)
+# (An assignment, not mapfile: a name not found stops the script.)
+list=$(src ResultsFile.cpp RowSeal.cpp TableVerify.cpp EpisodeRecord.cpp ExecutionDef.cpp \
+  EpisodeParams.cpp SetValues.cpp SweepManifest.cpp Shard.cpp Merge.cpp)
+mapfile -t tables <<<"$list"
+list=$(src SweepSpecReader.cpp ComponentChoiceReader.cpp CommandLine.cpp EpisodeSetup.cpp \
+  SetValues.cpp EpisodeRecord.cpp PlanScenario.cpp ExecutedFile.cpp EpisodeRequest.cpp \
+  ExecutionDef.cpp)
+mapfile -t spec <<<"$list"
 declare -A sources
 sources[world]="tests/fuzz/WorldReaderFuzz.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
-sources[plan]="tests/fuzz/PlanReaderFuzz.cpp parksim/results/TrajectoryFile.cpp ${core[*]}"
-sources[spec]="tests/fuzz/SweepSpecFuzz.cpp parksim/sweep/SweepSpecReader.cpp
-  parksim/sweep/ComponentChoiceReader.cpp parksim/command/CommandLine.cpp parksim/sweep/EpisodeSetup.cpp parksim/sweep/SetValues.cpp parksim/results/EpisodeRecord.cpp
-  parksim/planner/PlanScenario.cpp
-  parksim/results/ExecutedFile.cpp parksim/pipeline/EpisodeRequest.cpp
-  parksim/sim/ExecutionDef.cpp ${scenario[*]} ${realism[*]} ${core[*]}"
+sources[plan]="tests/fuzz/PlanReaderFuzz.cpp $(src TrajectoryFile.cpp) ${core[*]}"
+sources[spec]="tests/fuzz/SweepSpecFuzz.cpp ${spec[*]} ${scenario[*]} ${realism[*]} ${core[*]}"
 sources[jsonl]="tests/fuzz/ResultsJsonlFuzz.cpp ${tables[*]} ${core[*]}"
 sources[csv]="tests/fuzz/ResultsCsvFuzz.cpp ${tables[*]} ${core[*]}"
 sources[manifest]="tests/fuzz/SweepManifestFuzz.cpp ${tables[*]} ${core[*]}"

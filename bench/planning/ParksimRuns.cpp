@@ -1,6 +1,6 @@
 #include "bench/planning/ParksimRuns.h"
 #include "bench/planning/PlanShape.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/NumberFormat.h"
 
 #include <time.h>
 

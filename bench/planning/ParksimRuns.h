@@ -7,8 +7,8 @@
 
 #include "bench/planning/PathCheck.h"
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/results/BenchRecord.h"
 
 namespace parksim::bench {

@@ -7,10 +7,10 @@
 #include <string>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/Verdict.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 #include "parksim/sim/Episode.h"
 
 int main(int argc, char** argv) {

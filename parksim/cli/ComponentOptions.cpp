@@ -1,12 +1,12 @@
 #include "parksim/cli/ComponentOptions.h"
 
 #include "parksim/cli/Validators.h"
-#include "parksim/command/CommandController.h"
-#include "parksim/command/CommandLine.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/ParamSet.h"
-#include "parksim/core/Text.h"
-#include "parksim/plugin/PluginLoader.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/Text.h"
+#include "parksim/core/params/ParamSet.h"
+#include "parksim/usercode/CommandController.h"
+#include "parksim/usercode/CommandLine.h"
+#include "parksim/usercode/PluginLoader.h"
 
 namespace parksim::cli {
 

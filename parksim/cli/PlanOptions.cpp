@@ -4,12 +4,12 @@
 
 #include "parksim/cli/ComponentOptions.h"
 #include "parksim/cli/Validators.h"
-#include "parksim/command/CommandLine.h"
-#include "parksim/command/CommandPlanner.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/core/ParamSet.h"
-#include "parksim/core/Text.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/io/Text.h"
+#include "parksim/core/params/ParamSet.h"
+#include "parksim/usercode/CommandLine.h"
+#include "parksim/usercode/CommandPlanner.h"
 
 namespace parksim::cli {
 

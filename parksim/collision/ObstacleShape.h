@@ -19,7 +19,7 @@
 
 #include <Eigen/Core>
 
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Scenario.h"
 
 class btCollisionShape;
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <utility>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/results/EpisodeRecord.h"
 
 namespace parksim {

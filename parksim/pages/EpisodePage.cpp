@@ -5,7 +5,7 @@
 #include "parksim/pages/ColumnCodec.h"
 #include "parksim/pages/LotData.h"
 #include "parksim/pages/PageDocument.h"
-#include "parksim/renders/SceneBuilder.h"
+#include "parksim/renders/scene/SceneBuilder.h"
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/results/MetricsFile.h"
 

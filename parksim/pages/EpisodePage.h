@@ -16,9 +16,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/Scenario.h"
-#include "parksim/core/TrackingTolerance.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/TrackingTolerance.h"
+#include "parksim/core/model/Trajectory.h"
 #include "parksim/sim/EpisodeMetrics.h"
 #include "parksim/sim/ExecutedRow.h"
 

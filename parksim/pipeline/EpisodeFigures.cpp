@@ -1,8 +1,8 @@
 #include "parksim/pipeline/EpisodeFigures.h"
 
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/planner/MoveToPoseSteering.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/planner/steering/MoveToPoseSteering.h"
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/results/TrajectoryFile.h"
 

@@ -11,13 +11,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/TrackingTolerance.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/model/TrackingTolerance.h"
+#include "parksim/core/model/Trajectory.h"
 #include "parksim/pipeline/Verdict.h"
-#include "parksim/planner/PlanResult.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/renders/FrameRecorder.h"
-#include "parksim/scenario/World.h"
+#include "parksim/planner/base/PlanResult.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/scenario/world/World.h"
 #include "parksim/sim/Episode.h"
 #include "parksim/sim/ExecutionDef.h"
 

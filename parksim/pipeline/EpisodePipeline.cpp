@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
 #include "parksim/pipeline/EpisodeReport.h"
 #include "parksim/pipeline/EpisodeSettings.h"
@@ -23,8 +23,8 @@ namespace {
 // first and the last row are recorded.
 constexpr int kFirstAndLastRowOnly = INT_MAX / 2;
 
-// A plan parksim did not make (a file's, a user planner's) is checked before it is driven:
-// one that fails is never driven (plan_invalid).
+// A plan parksim did not make (a file's, a user planner's), and any car's, is checked before
+// it is driven: one that fails is never driven (plan_invalid).
 void checkForeignPlan(const Scenario& scenario, const BulletCollisionWorld& collision,
                       const PlanSetup& setup, EpisodeOutcome& out) {
   if (const std::optional<PlanViolation> v =
@@ -67,7 +67,9 @@ void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
     return;
   }
   out.trajectory = out.plan->trajectory;
-  if (!info.trusted) {
+  // parksim's planners validate a differential drive's plans as they build them; a car's
+  // limits are checked on every plan (docs/cars.md).
+  if (!info.trusted || scenario.robot.isCar()) {
     checkForeignPlan(scenario, collision, out.plan_setup, out);
   }
 }

@@ -16,17 +16,17 @@
 #include <optional>
 #include <string>
 
-#include "parksim/core/ParamMap.h"
-#include "parksim/core/TrackingTolerance.h"
-#include "parksim/core/Trajectory.h"
-#include "parksim/core/UserCodeWatch.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/plugin/Components.h"
-#include "parksim/renders/Figures.h"
-#include "parksim/renders/FrameRecorder.h"
+#include "parksim/core/model/TrackingTolerance.h"
+#include "parksim/core/model/Trajectory.h"
+#include "parksim/core/params/ParamMap.h"
+#include "parksim/core/system/UserCodeWatch.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/renders/plots/Figures.h"
 #include "parksim/results/ExecutedFile.h"
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/World.h"
 #include "parksim/sim/ExecutionDef.h"
+#include "parksim/usercode/Components.h"
 
 namespace parksim {
 
@@ -116,7 +116,7 @@ struct EpisodeRequest {
   std::string given_plan_source;
 
   /// The planners and controllers plan.planner and `controller` are looked up in: parksim's own
-  /// and the plugins a front-end loaded (plugin/Components.h). Null: parksim's own.
+  /// and the plugins a front-end loaded (usercode/Components.h). Null: parksim's own.
   std::shared_ptr<const Components> components;
   /// The controller that drives the plan in closed-loop tracking, by its registered name (a
   /// built-in or a plugin's), and its parameters (ParamMap.h).

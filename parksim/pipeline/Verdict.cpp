@@ -1,8 +1,8 @@
 #include "parksim/pipeline/Verdict.h"
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/MetricsFile.h"
 

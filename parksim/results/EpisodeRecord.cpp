@@ -65,7 +65,7 @@ using T = FieldType;
 // where it goes. Keys are the names the files have always used: where the table and
 // metrics.json name one quantity differently (sim_wall_s / wall_time_s), both are here.
 const std::array kFields = {
-    // identity and parameters: the sweep's (sweep/EpisodeParams.h) values
+    // identity and parameters: the sweep's (sweep/spec/EpisodeParams.h) values
     field("episode_id", "", G::kIdentity, T::kString, "",
           "16 hex digits: the hash of the episode's parameters (docs/sweeps.md, \"Episode ids\")",
           nullptr, kColumn | kJUnit),

@@ -12,7 +12,7 @@
 //   appendRecord(facts, row);      // every field read from the outcome, in the table's order
 //
 // Parameters (what the episode was asked to run) are fields too, but their values are the
-// table writer's (sweep/EpisodeParams.h): they are what a sweep varies, not what it measured.
+// table writer's (sweep/spec/EpisodeParams.h): they are what a sweep varies, not what it measured.
 
 #include <cstdint>
 #include <span>
@@ -22,7 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/planner/PlanResult.h"
+#include "parksim/planner/base/PlanResult.h"
 #include "parksim/sim/EpisodeMetrics.h"
 
 namespace parksim {
@@ -30,7 +30,7 @@ namespace parksim {
 /// Where a field sits: the table's columns come group by group in this order.
 enum class FieldGroup {
   kIdentity,    ///< episode_id
-  kParameter,   ///< what the episode was asked to run (values from sweep/EpisodeParams.h)
+  kParameter,   ///< what the episode was asked to run (values from sweep/spec/EpisodeParams.h)
   kOutcome,     ///< the verdict
   kPlan,        ///< the plan's statistics
   kSimulation,  ///< what the drive measured

@@ -3,10 +3,10 @@
 #include <array>
 #include <iterator>
 
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Csv.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Csv.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
 
 namespace parksim {
 

@@ -7,8 +7,8 @@
 #include <map>
 #include <tuple>
 
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/NumberFormat.h"
 #include "parksim/results/EpisodeRecord.h"
 #include "parksim/results/XmlText.h"
 

@@ -77,7 +77,7 @@ std::string junitXml(const JUnitReport& report);
 /// Writes junitXml(report) to `path` atomically. Throws Error when it cannot be written.
 void writeJUnitFile(const std::string& path, const JUnitReport& report);
 
-/// The suite a record belongs to, by its name (sweep/Report.h's rowGroupName: "<world> /
+/// The suite a record belongs to, by its name (report/Report.h's rowGroupName: "<world> /
 /// <planner configuration> / <realism>").
 using RecordSuite = std::function<std::string(const nlohmann::ordered_json&)>;
 

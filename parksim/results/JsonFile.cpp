@@ -2,8 +2,8 @@
 
 #include <fstream>
 
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 

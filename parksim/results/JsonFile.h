@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/Provenance.h"
+#include "parksim/core/system/Provenance.h"
 
 namespace parksim {
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/Provenance.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/system/Provenance.h"
 #include "parksim/realism/Distribution.h"
 #include "parksim/results/EpisodeRecord.h"
 #include "parksim/results/JsonFile.h"

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/TrackingTolerance.h"
+#include "parksim/core/model/TrackingTolerance.h"
 #include "parksim/sim/Episode.h"
 
 namespace parksim {
@@ -38,7 +38,7 @@ struct MetricsDocument {
   nlohmann::json plan_summary;
   /// "provenance.gl": the renderer when the episode was filmed, else empty (no key).
   std::string gl_description;
-  /// "provenance.plugins": the plugins loaded (plugin/Components.h, pluginsProvenance), else
+  /// "provenance.plugins": the plugins loaded (usercode/Components.h, pluginsProvenance), else
   /// empty (no key).
   std::string plugins;
 

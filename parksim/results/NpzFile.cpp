@@ -6,9 +6,9 @@
 #include <cstring>
 #include <set>
 
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/InputFile.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/InputFile.h"
 
 namespace parksim {
 

@@ -8,9 +8,9 @@
 
 #include <ompl/base/PlannerStatus.h>
 
-#include "parksim/core/NumberFormat.h"
-#include "parksim/core/Provenance.h"
-#include "parksim/planner/OmplPlugin.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/system/Provenance.h"
+#include "parksim/planner/steering/OmplPlugin.h"
 
 namespace parksim::bench {
 namespace {

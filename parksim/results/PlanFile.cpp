@@ -1,13 +1,39 @@
 #include "parksim/results/PlanFile.h"
 
+#include <algorithm>
 #include <filesystem>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/AtomicFile.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/planner/base/FreeSpaceBound.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/TrajectoryFile.h"
 
 namespace parksim {
+
+namespace {
+
+// When a car's plan changes gear: the times of its first row moving the other way, s.
+nlohmann::json cuspTimes(const RobotDef& car, const Trajectory& plan) {
+  nlohmann::json times = nlohmann::json::array();
+  const double still = kCarStillFraction * car.max_speed_mps;
+  int gear = 0;
+  for (std::size_t i = 0; i + 1 < plan.points.size(); ++i) {
+    const double v = toTwist(plan.points[i].wheels, car).v_mps;
+    const int g = v > still ? 1 : (v < -still ? -1 : 0);
+    if (g == 0) continue;
+    if (gear != 0 && g != gear) times.push_back(plan.points[i].t_s);
+    gear = g;
+  }
+  return times;
+}
+
+// A car's gear changes (`cusps` counts them), whoever made the plan: when they are.
+void addCarKeys(const Scenario& scenario, const Trajectory& plan, nlohmann::json& j) {
+  j["cusp_times_s"] = cuspTimes(scenario.robot, plan);
+}
+
+}  // namespace
 
 nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
                            const PlanResult& result) {
@@ -78,6 +104,7 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
         result.free_space_bound_s > 0.0 ? result.trajectory.duration() / result.free_space_bound_s
                                         : 0.0;
     j["cusps"] = result.trajectory.cusps(scenario.robot);
+    if (scenario.robot.isCar()) addCarKeys(scenario, result.trajectory, j);
     j["waypoints"] = result.waypoints.size();
     j["final_pos_err_m"] = positionDistance(end, scenario.goal.pose);
     j["final_heading_err_deg"] = radToDeg(headingDistance(end, scenario.goal.pose));
@@ -87,13 +114,29 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
 
 nlohmann::json trajectorySummary(const Scenario& scenario, const Trajectory& plan) {
   const Pose2& end = plan.points.back().pose;
-  return {
+  nlohmann::json j = {
       {"path_length_m", plan.pathLength(scenario.robot)},
       {"duration_s", plan.duration()},
       {"cusps", plan.cusps(scenario.robot)},
       {"final_pos_err_m", positionDistance(end, scenario.goal.pose)},
       {"final_heading_err_deg", radToDeg(headingDistance(end, scenario.goal.pose))},
   };
+  if (scenario.robot.isCar()) {
+    addCarKeys(scenario, plan, j);
+    // In rows as far apart as the plan's farthest: longer rows only lower the bound.
+    double period = 0.0;
+    for (std::size_t i = 0; i + 1 < plan.points.size(); ++i) {
+      period = std::max(period, plan.points[i + 1].t_s - plan.points[i].t_s);
+    }
+    if (period > 0.0) {
+      TimingLimits limits;
+      limits.period_s = period;
+      const double bound = scenarioFreeSpaceBound(scenario, limits);
+      j["free_space_bound_s"] = bound;
+      j["duration_over_free_space_bound"] = bound > 0.0 ? plan.duration() / bound : 0.0;
+    }
+  }
+  return j;
 }
 
 void writePlanFiles(const std::string& dir, const Scenario& scenario, const PlanSetup& setup,

@@ -6,21 +6,23 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
-#include "parksim/planner/PlanResult.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
+#include "parksim/planner/base/PlanResult.h"
+#include "parksim/planner/base/PlanScenario.h"
 
 namespace parksim {
 
 /// plan.json's content: status, planner, steering, seed, iterations, tree sizes, per-phase
 /// times, planning_time_s, first solution, cost and its history, path_length_m, cusps, final
-/// pose error.
+/// pose error; for a car also cusp_times_s (when it changes gear).
 nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
                            const PlanResult& result);
 
 /// The statistics a trajectory carries by itself, for a plan the planner did not make (a plan
-/// file, a Python array): path_length_m, duration_s, cusps, final pose error.
+/// file, a Python array): path_length_m, duration_s, cusps, final pose error; for a car also
+/// cusp_times_s and its free-space bound (planner/FreeSpaceBound.h: free_space_bound_s, in rows
+/// as far apart as the plan's farthest, and duration_over_free_space_bound).
 nlohmann::json trajectorySummary(const Scenario& scenario, const Trajectory& plan);
 
 /// Adds planSummary's keys to a flat metrics.json with a plan_ prefix: nested objects flattened

@@ -12,8 +12,8 @@
 #include <optional>
 #include <tuple>
 
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/results/EpisodeRecord.h"
 #include "parksim/results/RowSeal.h"
 

@@ -1,7 +1,7 @@
 #include "parksim/results/RowSeal.h"
 
-#include "parksim/core/Error.h"
-#include "parksim/core/Fnv1a.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/Fnv1a.h"
 
 namespace parksim {
 namespace {

@@ -3,7 +3,7 @@
 // (not just the first, as the readers do): rows whose seal does not match their content,
 // lines that are not rows, lines of results.csv that are not the rendering of their
 // results.jsonl row, an episode twice in one table, rows of other world contents or builds.
-// Which tables a sweep directory holds (its shards) is the sweep's: sweep/Merge.h's
+// Which tables a sweep directory holds (its shards) is the sweep's: sweep/shards/Merge.h's
 // verifyResults.
 
 #include <cstddef>

@@ -11,19 +11,53 @@
 #include <optional>
 #include <vector>
 
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/InputFile.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/InputFile.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/model/DiffDrive.h"
 
 namespace parksim {
+
+namespace {
+
+// A car's rows: the speed and steering angle it drives by, the curvature and gear they make.
+std::string carCsv(const Trajectory& traj, const RobotDef& car) {
+  std::string out = "t,x,y,theta,v,steer_rad,curvature,gear\n";
+  out.reserve(out.size() + traj.points.size() * 140);
+  for (const TrajectoryPoint& p : traj.points) {
+    const double v = toTwist(p.wheels, car).v_mps;
+    const double still = kCarStillFraction * car.max_speed_mps;
+    const double gear = v > still ? 1.0 : (v < -still ? -1.0 : 0.0);
+    const double values[] = {p.t_s,
+                             p.pose.x,
+                             p.pose.y,
+                             p.pose.theta,
+                             v,
+                             p.steer_rad,
+                             std::tan(p.steer_rad) / car.axle_distance_m,
+                             gear};
+    for (std::size_t i = 0; i < std::size(values); ++i) {
+      if (i > 0) out += ',';
+      appendRoundTrip(out, values[i]);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+}  // namespace
 
 void writeTrajectoryCsv(const std::string& path, const Trajectory& traj, const RobotDef& robot) {
   // What `run --plan` could not read back is not written: the reader's limits are the writer's.
   if (const std::optional<std::string> problem = planFileProblem(traj)) {
     throw Error(path + ": the plan exceeds the limits of a plan file (" + *problem +
                 "; docs/limits.md), so `run --plan` could not read it back");
+  }
+  if (robot.isCar()) {
+    writeFileAtomically(path, carCsv(traj, robot));
+    return;
   }
   std::string out = "t,x,y,theta,omega_left,omega_right,v,omega\n";
   out.reserve(out.size() + traj.points.size() * 160);
@@ -211,8 +245,30 @@ std::optional<std::string> planFileProblem(const Trajectory& traj) {
   return std::nullopt;
 }
 
-Trajectory parseTrajectoryCsvRows(std::string_view text, const std::string& path) {
+Trajectory parseTrajectoryCsvRows(std::string_view text, const std::string& path,
+                                  const RobotDef& robot) {
   Trajectory traj;
+  if (robot.isCar()) {
+    // A car drives by its speed and steering angle; its rear wheels' speeds follow.
+    scanSeries(
+        text, path, "trajectory file", PlanFileLimits::kMaxTimeS,
+        {{"t"}, {"x"}, {"y"}, {"theta"}, {"v"}, {"steer_rad"}}, true,
+        [&traj, &robot, &path](const std::vector<double>& v, int line) {
+          if (!(std::abs(v[5]) < 0.5 * kPi)) {
+            throw Error(path + ":" + std::to_string(line) +
+                        ": column 'steer_rad': must be within +-pi/2 rad (a front wheel "
+                        "turned across the car has no curvature), got " +
+                        limitText(v[5]));
+          }
+          TrajectoryPoint p;
+          p.t_s = v[0];
+          p.pose = {v[1], v[2], v[3]};
+          p.wheels = toWheelSpeeds({v[4], v[4] * std::tan(v[5]) / robot.axle_distance_m}, robot);
+          p.steer_rad = v[5];
+          traj.points.push_back(p);
+        });
+    return traj;
+  }
   scanSeries(text, path, "trajectory file", PlanFileLimits::kMaxTimeS,
              {{"t"}, {"x"}, {"y"}, {"theta"}, {"omega_left"}, {"omega_right"}}, true,
              [&traj](const std::vector<double>& v, int) {
@@ -225,8 +281,9 @@ Trajectory parseTrajectoryCsvRows(std::string_view text, const std::string& path
   return traj;
 }
 
-Trajectory parseTrajectoryCsv(std::string_view text, const std::string& path) {
-  Trajectory traj = parseTrajectoryCsvRows(text, path);
+Trajectory parseTrajectoryCsv(std::string_view text, const std::string& path,
+                              const RobotDef& robot) {
+  Trajectory traj = parseTrajectoryCsvRows(text, path, robot);
   if (traj.points.empty()) throw Error(path + ": trajectory has no rows");
   return traj;
 }
@@ -239,8 +296,9 @@ void checkTimeSeriesCsv(const std::string& path,
              columns, false, [](const std::vector<double>&, int) {});
 }
 
-Trajectory readTrajectoryCsv(const std::string& path) {
-  return parseTrajectoryCsv(readInputFile(path, PlanFileLimits::kMaxBytes, "plan file"), path);
+Trajectory readTrajectoryCsv(const std::string& path, const RobotDef& robot) {
+  return parseTrajectoryCsv(readInputFile(path, PlanFileLimits::kMaxBytes, "plan file"), path,
+                            robot);
 }
 
 }  // namespace parksim

@@ -1,6 +1,6 @@
 #include "parksim/results/XmlText.h"
 
-#include "parksim/core/Text.h"
+#include "parksim/core/io/Text.h"
 
 #include <cstdint>
 

@@ -2,7 +2,7 @@
 // Text from user files (world names, failure lines, paths) on its way into an XML document.
 // XML 1.0 cannot hold most control characters at all, not even as character references, and a
 // consumer stops at the first byte that is not UTF-8; so both are replaced by visible escapes
-// (`\x1b`, as escapeText in core/Text.h writes them) and the markup characters by entities.
+// (`\x1b`, as escapeText in core/io/Text.h writes them) and the markup characters by entities.
 
 #include <string>
 #include <string_view>

@@ -9,7 +9,7 @@
 #include <unordered_map>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Geometry.h"
+#include "parksim/core/model/Geometry.h"
 #include "parksim/rl/TaskDrive.h"
 
 namespace parksim {

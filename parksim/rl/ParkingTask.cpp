@@ -5,8 +5,8 @@
 #include <random>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
 #include "parksim/rl/TaskDrive.h"
 #include "parksim/rl/TaskReward.h"
 

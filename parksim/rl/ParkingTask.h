@@ -12,8 +12,8 @@
 #include <memory>
 #include <vector>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/rl/ParkingTaskDef.h"
 #include "parksim/rl/TaskSpaces.h"
 

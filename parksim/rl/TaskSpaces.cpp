@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
 
 namespace parksim {
 

@@ -7,9 +7,9 @@
 #include <array>
 #include <cstddef>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Scenario.h"
 
 namespace parksim {
 

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/sim/EpisodeMetrics.h"
 
 namespace parksim {

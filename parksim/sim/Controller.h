@@ -27,13 +27,13 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/ComponentRegistry.h"
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/ParamMap.h"
-#include "parksim/core/ParamSet.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
+#include "parksim/core/params/ComponentRegistry.h"
+#include "parksim/core/params/ParamMap.h"
+#include "parksim/core/params/ParamSet.h"
 
 namespace parksim {
 
@@ -119,7 +119,7 @@ struct ControllerEntry {
 };
 
 /// A ControllerEntry whose controller type C is constructed as C(def) from a Def struct D whose
-/// parameters `bind` declares (as plannerEntry, planner/Planner.h).
+/// parameters `bind` declares (as plannerEntry, planner/base/Planner.h).
 template <class C, class D>
 ControllerEntry controllerEntry(ControllerInfo info, D def, void (*bind)(D&, ParamSet&)) {
   const std::string owner = "controller " + info.name;

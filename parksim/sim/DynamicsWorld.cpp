@@ -14,9 +14,9 @@
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/core/ProvenanceConfig.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/Geometry.h"
+#include "parksim/core/system/ProvenanceConfig.h"
 #include "parksim/sim/BulletFrames.h"
 #include "parksim/sim/ChassisContacts.h"
 #include "parksim/sim/CollisionGroups.h"
@@ -30,7 +30,8 @@
 
 namespace parksim {
 
-// Result files record Bullet's precision (parksim/core/Provenance.h); it must be the one compiled.
+// Result files record Bullet's precision (parksim/core/system/Provenance.h); it must be the one
+// compiled.
 static_assert(sizeof(btScalar) == (PARKSIM_BULLET_DOUBLE ? sizeof(double) : sizeof(float)),
               "cmake/Provenance.cmake and Bullet's headers disagree on BT_USE_DOUBLE_PRECISION");
 

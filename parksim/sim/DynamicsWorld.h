@@ -15,9 +15,9 @@
 
 #include <Eigen/Core>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Scenario.h"
 
 namespace parksim {
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <utility>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
 #include "parksim/sim/ContactEvents.h"
 #include "parksim/sim/EpisodeStatistics.h"
 #include "parksim/sim/ParkedDisplacements.h"

@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
-#include "parksim/core/UserCodeWatch.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
+#include "parksim/core/system/UserCodeWatch.h"
 #include "parksim/sim/Controller.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/EpisodeMetrics.h"

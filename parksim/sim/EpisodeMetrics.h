@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/Pose2.h"
+#include "parksim/core/geometry/Pose2.h"
 #include "parksim/sim/ExecutionDef.h"
 
 namespace parksim {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parksim/core/Angle.h"
+#include "parksim/core/geometry/Angle.h"
 
 namespace parksim {
 

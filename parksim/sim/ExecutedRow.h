@@ -1,8 +1,8 @@
 #pragma once
 // One measured instant of an episode: a row of executed.csv.
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Pose2.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/DiffDrive.h"
 
 namespace parksim {
 

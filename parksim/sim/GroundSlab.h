@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Scenario.h"
 
 namespace parksim {
 

@@ -9,7 +9,7 @@
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 
 #include "parksim/collision/ObstacleShape.h"
-#include "parksim/core/Geometry.h"
+#include "parksim/core/model/Geometry.h"
 #include "parksim/sim/BulletFrames.h"
 #include "parksim/sim/CollisionGroups.h"
 

@@ -17,8 +17,8 @@
 
 #include <Eigen/Core>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/ParkedRobotGrid.h"
 

@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/EpisodeMetrics.h"
 

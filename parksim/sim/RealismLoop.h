@@ -14,9 +14,9 @@
 #include <utility>
 #include <vector>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/sim/DynamicsWorld.h"
 

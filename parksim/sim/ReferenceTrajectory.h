@@ -4,10 +4,10 @@
 // integral (integrateExact) from the point's pose. Before the first point the reference is the
 // first pose; after the last, the last pose with zero speeds.
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Trajectory.h"
 
 namespace parksim {
 

@@ -12,8 +12,8 @@
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
 #include "parksim/sim/BulletFrames.h"
 #include "parksim/sim/CollisionGroups.h"
 #include "parksim/sim/MultiBodyInverseMass.h"

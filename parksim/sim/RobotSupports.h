@@ -20,7 +20,7 @@
 // unless its centre of mass lies far enough ahead, gets sprung sliders at both ends; one whose
 // centre of mass lies far ahead of its axle, a rigid front slider.
 
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Scenario.h"
 
 namespace parksim {
 

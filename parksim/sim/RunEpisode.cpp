@@ -1,7 +1,7 @@
 // runEpisode (Episode.h): an episode run to its end, with an observer at a fixed rate of
 // simulated time.
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/sim/Episode.h"
 
 #include <utility>

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 

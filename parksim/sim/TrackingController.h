@@ -19,10 +19,10 @@
 // the inverse latency, so the loop stays far from the rates at which a sampled, delayed loop
 // loses its phase margin (docs/simulation.md).
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Trajectory.h"
 #include "parksim/sim/Controller.h"
 
 namespace parksim {

@@ -5,10 +5,10 @@
 
 #include <pybind11/pybind11.h>
 
-#include "parksim/core/ParamMap.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/params/ParamMap.h"
 #include "parksim/pipeline/EpisodeRequest.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "python/src/Bindings.h"
 
 namespace parksim::python {

@@ -6,7 +6,7 @@
 
 #include <pybind11/stl.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/results/EpisodeRecord.h"
@@ -37,7 +37,7 @@ py::dict verdictDict(const Verdict& v) {
 // run()'s plan argument as the request's plan to drive (None: the pipeline plans).
 void takePlan(const py::object& plan, EpisodeRequest& request) {
   if (plan.is_none()) return;
-  request.given_plan = trajectoryFrom(plan);
+  request.given_plan = trajectoryFrom(plan, request.world->scenario.robot);
   if (py::isinstance<py::str>(plan) || py::hasattr(plan, "__fspath__")) {
     request.given_plan_source = py::str(py::module_::import("os").attr("fspath")(plan));
   }
@@ -306,7 +306,7 @@ void bindEpisodeHandle(py::module_& m) {
              py::dict options = optionsDict(kwargs);
              EpisodeRequest request = requestFrom(world, options, false);
              rejectUnknownOptions(options, "Episode");
-             request.given_plan = trajectoryFrom(plan);
+             request.given_plan = trajectoryFrom(plan, world.scenario->robot);
              checkEpisodeRequest(request);
              const SimModelDef sim_model =
                  model.is_none() ? SimModelDef{} : defFrom<SimModelDef>(model, "model");

@@ -103,7 +103,8 @@ Options (keywords; the defaults are the library's, the same as `parksim plan`'s 
   m.def(
       "read_trajectory",
       [](const WorldHandle& world, const std::string& path) {
-        return trajectoryArray(readTrajectoryCsv(path), world.scenario->robot);
+        return trajectoryArray(readTrajectoryCsv(path, world.scenario->robot),
+                               world.scenario->robot);
       },
       py::arg("world"), py::arg("path"), "A trajectory.csv as a structured array.");
 }

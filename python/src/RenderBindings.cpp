@@ -7,13 +7,13 @@
 
 #include <pybind11/stl.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
-#include "parksim/renders/Figures.h"
-#include "parksim/renders/FrameRecorder.h"
-#include "parksim/renders/PngEncoder.h"
-#include "parksim/renders/Renderer.h"
-#include "parksim/renders/SceneBuilder.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/renders/gl/Renderer.h"
+#include "parksim/renders/image/PngEncoder.h"
+#include "parksim/renders/plots/Figures.h"
+#include "parksim/renders/scene/SceneBuilder.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
 
@@ -300,7 +300,7 @@ whose input is missing is skipped; an unknown name raises parksim.Error.)");
 void bindFrameRecorder(py::module_& m) {
   py::class_<FrameRecorder>(m, "FrameRecorder",
                             "Films an episode into OUT/frames/*.png, and episode.mp4 / .gif with "
-                            "ffmpeg (renders/FrameRecorder.h). Options: FrameDef fields.")
+                            "ffmpeg (renders/film/FrameRecorder.h). Options: FrameDef fields.")
       .def(py::init([](const WorldHandle& world, const py::kwargs& kwargs) {
              py::dict options = optionsDict(kwargs);
              const FrameDef def = takeOptions(FrameDef{}, options);

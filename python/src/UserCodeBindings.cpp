@@ -1,6 +1,6 @@
 // Python objects as parksim planners and controllers (docs/your-code.md): plan(planner=obj) and
 // run(planner=..., controller=...) register them for that call beside parksim's own and the
-// plugins' (plugin/Components.h), as untrusted user code: their plans are checked before they
+// plugins' (usercode/Components.h), as untrusted user code: their plans are checked before they
 // are driven, and what they raise or get wrong is a planner_error or controller_error.
 //
 //   class Straight:                      # a planner: solve(problem) -> trajectory or None
@@ -17,12 +17,12 @@
 
 #include <pybind11/stl.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/planner/Planner.h"
-#include "parksim/plugin/PluginLoader.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/planner/base/Planner.h"
 #include "parksim/rl/TaskSpaces.h"
 #include "parksim/sim/Controller.h"
+#include "parksim/usercode/PluginLoader.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
 #include "python/src/UserCode.h"
@@ -378,7 +378,7 @@ void bindUserCode(py::module_& m) {
       .def_readonly("plan_ended", &ControllerInput::plan_ended);
 
   py::class_<PyProblem>(m, "PlanningProblem",
-                        "What a Python planner's solve() is given (planner/Planner.h); valid "
+                        "What a Python planner's solve() is given (planner/base/Planner.h); valid "
                         "during that call.")
       .def_property_readonly("start",
                              [](const PyProblem& p) { return poseTuple(p.p->scenario.start); })

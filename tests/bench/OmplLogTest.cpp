@@ -1,7 +1,7 @@
 // OMPL's benchmark log format: the header lines ompl_benchmark_statistics.py reads, one
 // planner block per group, every run line with one value per property.
 
-#include "parksim/core/Provenance.h"
+#include "parksim/core/system/Provenance.h"
 #include "parksim/results/OmplLog.h"
 
 #include <gtest/gtest.h>

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim::bench {

@@ -10,10 +10,10 @@
 #include <string>
 #include <string_view>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/results/ResultsFile.h"
 #include "parksim/results/TableVerify.h"
-#include "parksim/sweep/Merge.h"
+#include "parksim/sweep/shards/Merge.h"
 #include "tests/fuzz/FuzzSupport.h"
 
 namespace {

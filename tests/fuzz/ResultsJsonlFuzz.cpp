@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/results/ResultsFile.h"
 #include "parksim/results/RowSeal.h"
 #include "tests/fuzz/FuzzSupport.h"

@@ -14,7 +14,7 @@
 
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/results/ExecutedFile.h"
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/World.h"
 #include "tests/pages/PageTestSupport.h"
 #include "tests/support/TestPaths.h"
 

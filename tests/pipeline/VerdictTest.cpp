@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/MetricsFile.h"
 #include "tests/support/TestPaths.h"

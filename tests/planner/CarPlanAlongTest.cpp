@@ -10,9 +10,9 @@
 #include <gtest/gtest.h>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/planner/CarPath.h"
-#include "parksim/planner/CarPlanAlong.h"
-#include "parksim/planner/ReedsSheppSteering.h"
+#include "parksim/planner/motion/CarPath.h"
+#include "parksim/planner/motion/CarPlanAlong.h"
+#include "parksim/planner/steering/ReedsSheppSteering.h"
 #include "tests/support/CarPlanChecker.h"
 #include "tests/support/CarScenes.h"
 

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/DiffDrive.h"
+#include "parksim/core/model/DiffDrive.h"
 #include "tests/support/CarPlanChecker.h"
 #include "tests/support/CarScenes.h"
 

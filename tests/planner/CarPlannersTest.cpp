@@ -11,9 +11,9 @@
 #include <gtest/gtest.h>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Error.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/planner/ReedsSheppSteering.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/planner/steering/ReedsSheppSteering.h"
 #include "tests/support/CarPlanChecker.h"
 #include "tests/support/CarScenes.h"
 #include "tests/support/StudyLot.h"

@@ -1,13 +1,13 @@
 // The default budget from the free area a search can reach: an empty lot's is its area, a room
 // walled off from the rest is the room's, and only the A* planners follow it.
 
-#include "parksim/planner/ReachableBudget.h"
+#include "parksim/planner/search/ReachableBudget.h"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "parksim/planner/PlannerRegistry.h"
+#include "parksim/planner/base/PlannerRegistry.h"
 
 namespace parksim {
 namespace {

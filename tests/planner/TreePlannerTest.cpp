@@ -1,11 +1,11 @@
-#include "parksim/planner/TreePlanner.h"
+#include "parksim/planner/tree/TreePlanner.h"
 
 #include <string>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "tests/support/PlanChecks.h"
 #include "tests/support/StudyLot.h"
 

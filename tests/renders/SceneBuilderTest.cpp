@@ -1,4 +1,4 @@
-#include "parksim/renders/SceneBuilder.h"
+#include "parksim/renders/scene/SceneBuilder.h"
 
 #include <gtest/gtest.h>
 

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "tests/support/RunParksim.h"
 #include "tests/support/TestPaths.h"

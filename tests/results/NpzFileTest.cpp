@@ -12,7 +12,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 namespace {

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/DiffDrive.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/model/DiffDrive.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/results/JsonFile.h"

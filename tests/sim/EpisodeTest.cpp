@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/Verdict.h"
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/results/JsonFile.h"

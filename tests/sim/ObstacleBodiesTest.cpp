@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/ConvexPartition.h"
+#include "parksim/core/geometry/ConvexPartition.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "tests/sim/SimTestSupport.h"
 

@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/results/TrajectoryFile.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 #include "parksim/sim/Episode.h"
 #include "tests/support/TestPaths.h"
 

@@ -15,7 +15,7 @@
 // prediction (the heading loop adds its own share in the turns). The error is thus independent
 // of the robot's size and of its top speed, and in proportion to its acceleration: relative to
 // the size, a car's is 1.4 mm in 4.25 m, against the 0.5 mm x size / 85 mm clearance its plans
-// keep (the motion checks' margin, core/Scenario.h).
+// keep (the motion checks' margin, core/model/Scenario.h).
 
 #include <algorithm>
 #include <cmath>
@@ -25,10 +25,10 @@
 #include <gtest/gtest.h>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Error.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "parksim/sim/Episode.h"
 #include "parksim/sim/TrackingController.h"

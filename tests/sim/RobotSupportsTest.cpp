@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
+#include "parksim/core/geometry/Angle.h"
 #include "parksim/sim/DynamicsWorld.h"
 #include "tests/sim/SimTestSupport.h"
 

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
+#include "parksim/core/geometry/Angle.h"
 
 namespace parksim {
 namespace {

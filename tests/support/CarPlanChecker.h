@@ -29,8 +29,8 @@
 
 #include <Eigen/Core>
 
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
 
 namespace parksim::testing {
 

@@ -15,8 +15,8 @@
 
 #include <Eigen/Core>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/model/Scenario.h"
 
 namespace parksim::testing {
 
