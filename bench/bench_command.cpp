@@ -15,7 +15,7 @@
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/scenario/world/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 #include "parksim/usercode/CommandController.h"
 #include "parksim/usercode/CommandLine.h"
 

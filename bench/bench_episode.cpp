@@ -24,7 +24,7 @@
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/MetricsFile.h"
 #include "parksim/scenario/world/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 
 namespace parksim {
 namespace {

@@ -29,7 +29,7 @@
 #include "parksim/core/geometry/GridRectangles.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/scenario/world/World.h"
-#include "parksim/sim/DynamicsWorld.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

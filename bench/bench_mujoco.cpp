@@ -35,8 +35,8 @@
 
 #include "parksim/results/TrajectoryFile.h"
 #include "parksim/scenario/world/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
-#include "parksim/sim/ReferenceTrajectory.h"
+#include "parksim/sim/episode/Episode.h"
+#include "parksim/sim/episode/ReferenceTrajectory.h"
 
 namespace parksim {
 namespace {

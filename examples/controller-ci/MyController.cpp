@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include <parksim/sim/TrackingController.h>
+#include <parksim/sim/control/TrackingController.h>
 #include <parksim/usercode/PluginApi.h>
 
 namespace {

@@ -11,7 +11,7 @@
 #include "parksim/pipeline/Verdict.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/scenario/world/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 
 int main(int argc, char** argv) {
   if (argc != 3) {

@@ -12,7 +12,7 @@
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/scenario/world/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 
 int main(int argc, char** argv) {
   using namespace parksim;

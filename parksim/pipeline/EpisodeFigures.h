@@ -14,7 +14,7 @@
 #include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/renders/plots/Figures.h"
 #include "parksim/renders/plots/TrackingPlot.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 
 namespace parksim {
 

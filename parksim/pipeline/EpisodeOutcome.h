@@ -18,8 +18,8 @@
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/scenario/world/World.h"
-#include "parksim/sim/Episode.h"
-#include "parksim/sim/ExecutionDef.h"
+#include "parksim/sim/episode/Episode.h"
+#include "parksim/sim/episode/ExecutionDef.h"
 
 namespace parksim {
 

@@ -25,7 +25,7 @@
 #include "parksim/renders/plots/Figures.h"
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/scenario/world/World.h"
-#include "parksim/sim/ExecutionDef.h"
+#include "parksim/sim/episode/ExecutionDef.h"
 #include "parksim/usercode/Components.h"
 
 namespace parksim {

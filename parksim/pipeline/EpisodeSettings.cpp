@@ -12,7 +12,7 @@
 #include "parksim/core/io/Text.h"
 #include "parksim/planner/base/PlanCheck.h"
 #include "parksim/realism/RealismDef.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 
 namespace parksim {
 

@@ -10,7 +10,7 @@
 #include "parksim/core/system/UserCodeWatch.h"
 #include "parksim/pipeline/EpisodeRequest.h"
 #include "parksim/planner/base/PlanScenario.h"
-#include "parksim/sim/ExecutionDef.h"
+#include "parksim/sim/episode/ExecutionDef.h"
 #include "parksim/usercode/ComponentCheck.h"
 
 namespace parksim {

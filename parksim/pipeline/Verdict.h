@@ -18,7 +18,7 @@
 #include "parksim/core/model/TrackingTolerance.h"
 #include "parksim/planner/base/PlanCheck.h"
 #include "parksim/planner/base/PlanResult.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 
 namespace parksim {
 

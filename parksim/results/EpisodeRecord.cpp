@@ -164,7 +164,7 @@ const std::array kFields = {
           "", "iterations done at the first solution",
           [](const F& f) { return fromSummary(f, "first_solution_iteration"); }, kColumn),
 
-    // simulation (sim/EpisodeMetrics.h; docs/simulation.md, "Measurement")
+    // simulation (sim/episode/EpisodeMetrics.h; docs/simulation.md, "Measurement")
     field("max_pos_err_m", "max_pos_err_m", G::kSimulation, T::kNumber, "m",
           "largest tracking error against the plan", &metric<&EpisodeMetrics::max_pos_err_m>,
           kColumn),

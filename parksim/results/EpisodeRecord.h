@@ -5,7 +5,7 @@
 // run().metrics), a sweep's row, the table's columns and key types, the JUnit properties and
 // the column table of docs/sweeps.md (tested against recordColumnsMarkdown) all come from the
 // list in EpisodeRecord.cpp: adding a metric is one entry there (and its value in
-// sim/EpisodeMetrics.h when the simulation measures something new).
+// sim/episode/EpisodeMetrics.h when the simulation measures something new).
 //
 //   EpisodeFacts facts;            // views of one outcome (pipeline/OutcomeFacts.h fills them)
 //   nlohmann::ordered_json row;    // a sweep row: its id and parameters first (sweep/), then
@@ -23,7 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "parksim/planner/base/PlanResult.h"
-#include "parksim/sim/EpisodeMetrics.h"
+#include "parksim/sim/episode/EpisodeMetrics.h"
 
 namespace parksim {
 

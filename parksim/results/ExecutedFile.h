@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "parksim/results/NpzFile.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 
 namespace parksim {
 

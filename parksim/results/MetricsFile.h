@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "parksim/core/model/TrackingTolerance.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 
 namespace parksim {
 

@@ -1,5 +1,5 @@
 // The dynamics fidelity: the task's actions are wheel commands held through Episode's step API
-// (sim/Episode.h), so the robot is the one `parksim run` drives, realism included, and the
+// (sim/episode/Episode.h), so the robot is the one `parksim run` drives, realism included, and the
 // controller's view is the Episode's estimate. The Episode's plan is the start pose held still
 // for longer than the task can last: its tracking measurements mean nothing here, and its end
 // is never reached.
@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "parksim/rl/TaskDrive.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 
 namespace parksim {
 

@@ -1,7 +1,8 @@
 #pragma once
 // How a parking task's actions move the robot, one implementation per fidelity
-// (ParkingTaskDef.h): DynamicDrive.cpp through sim/Episode.h, KinematicDrive.cpp along exact
-// arcs against the collision checker. ParkingTask judges what they report; they judge nothing.
+// (ParkingTaskDef.h): DynamicDrive.cpp through sim/episode/Episode.h, KinematicDrive.cpp along
+// exact arcs against the collision checker. ParkingTask judges what they report; they judge
+// nothing.
 
 #include <cstdint>
 #include <memory>

@@ -17,7 +17,7 @@
 //   process should exit, and is killed with its process group kExitGraceS later.
 // Anything else (an exit, a line that is not two numbers, a line longer than kMaxAnswerBytes,
 // no answer in time) throws; the episode then ends with controller_error naming the process,
-// the tick and the reason (sim/Episode.cpp), and commands that are NaN or beyond the wheel
+// the tick and the reason (sim/episode/Episode.cpp), and commands that are NaN or beyond the wheel
 // speed limit are refused there too. Its standard error is kept (the last
 // ChildProcess::kStderrTailBytes bytes) and its last line quoted in messages.
 
@@ -29,7 +29,7 @@
 
 #include "parksim/core/params/ParamMap.h"
 #include "parksim/core/system/ChildProcess.h"
-#include "parksim/sim/Controller.h"
+#include "parksim/sim/control/Controller.h"
 
 namespace parksim {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "parksim/planner/base/PlannerRegistry.h"
-#include "parksim/sim/Controller.h"
+#include "parksim/sim/control/Controller.h"
 
 namespace parksim {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The one header a plugin includes: planners (planner/base/Planner.h) and controllers
-// (sim/Controller.h) a shared library adds to parksim, registered through one exported entry
-// point that carries the plugin API version it was built against (nav2 and MoveIt load
+// (sim/control/Controller.h) a shared library adds to parksim, registered through one exported
+// entry point that carries the plugin API version it was built against (nav2 and MoveIt load
 // planners and controllers the same way; docs/your-code.md).
 //
 //   #include "parksim/usercode/PluginApi.h"
@@ -22,7 +22,7 @@
 #include <string>
 
 #include "parksim/planner/base/Planner.h"
-#include "parksim/sim/Controller.h"
+#include "parksim/sim/control/Controller.h"
 
 /// Bumped whenever a type a plugin sees changes meaning; a plugin must match it exactly.
 #define PARKSIM_PLUGIN_API_VERSION 1

@@ -15,7 +15,7 @@
 #include "parksim/core/model/Trajectory.h"
 #include "parksim/pipeline/EpisodeRequest.h"
 #include "parksim/scenario/world/World.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 
 namespace parksim::python {
 

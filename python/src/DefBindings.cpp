@@ -11,8 +11,8 @@
 #include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/renders/image/PngEncoder.h"
 #include "parksim/rl/ParkingTaskDef.h"
-#include "parksim/sim/DynamicsWorld.h"
-#include "parksim/sim/ExecutionDef.h"
+#include "parksim/sim/episode/ExecutionDef.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 #include "python/src/Bindings.h"
 
 namespace parksim::python {
@@ -172,7 +172,8 @@ void bindPlanningDefs(py::module_& m) {
 }
 
 void bindEpisodeDefs(py::module_& m) {
-  defClass<ExecutionDef>(m, "ExecutionDef", "How an episode drives a plan (sim/ExecutionDef.h).")
+  defClass<ExecutionDef>(m, "ExecutionDef",
+                         "How an episode drives a plan (sim/episode/ExecutionDef.h).")
       .def_property(
           "tracking", [](const ExecutionDef& d) { return std::string(toString(d.tracking)); },
           [](ExecutionDef& d, const std::string& s) { d.tracking = trackingModeFromString(s); })
@@ -190,7 +191,7 @@ void bindEpisodeDefs(py::module_& m) {
 
   defClass<SimModelDef>(m, "SimModelDef",
                         "Simulation model parts the world file does not describe "
-                        "(sim/DynamicsWorld.h).")
+                        "(sim/world/DynamicsWorld.h).")
       .def_readwrite("support_radius_m", &SimModelDef::support_radius_m)
       .def_readwrite("support_inset_m", &SimModelDef::support_inset_m)
       .def_readwrite("support_deflection_m", &SimModelDef::support_deflection_m)

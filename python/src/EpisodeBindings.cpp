@@ -11,7 +11,7 @@
 #include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/results/EpisodeRecord.h"
 #include "parksim/results/MetricsFile.h"
-#include "parksim/sim/DynamicsWorld.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
 #include "python/src/UserCode.h"

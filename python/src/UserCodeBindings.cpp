@@ -21,7 +21,7 @@
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/planner/base/Planner.h"
 #include "parksim/rl/TaskSpaces.h"
-#include "parksim/sim/Controller.h"
+#include "parksim/sim/control/Controller.h"
 #include "parksim/usercode/PluginLoader.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
@@ -334,8 +334,9 @@ void bindUserCode(py::module_& m) {
           },
           py::arg("observation"));
 
-  py::class_<ControllerInput>(m, "ControllerInput",
-                              "What a controller knows at one control tick (sim/Controller.h).")
+  py::class_<ControllerInput>(
+      m, "ControllerInput",
+      "What a controller knows at one control tick (sim/control/Controller.h).")
       .def_readonly("tick", &ControllerInput::tick)
       .def_readonly("t", &ControllerInput::t_s, "episode time, s")
       .def_property_readonly(

@@ -8,7 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "parksim/sim/TrackingController.h"
+#include "parksim/sim/control/TrackingController.h"
 #include "parksim/usercode/PluginApi.h"
 
 namespace {

@@ -40,7 +40,7 @@ class Replay:
 
 class Tracking:
     """parksim's tracking law in Python, with the gains its built-in derives for the head-in plan
-    at 240 Hz (sim/TrackingController.h)."""
+    at 240 Hz (sim/control/TrackingController.h)."""
 
     def __init__(self, robot, top_speed):
         self.robot = robot

@@ -1,6 +1,6 @@
 // The simulated robot against ideal unicycle kinematics, and at rest.
 
-#include "parksim/sim/DynamicsWorld.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 
 #include <cmath>
 #include <cstdio>

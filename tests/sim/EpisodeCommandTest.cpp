@@ -10,7 +10,7 @@
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/MetricsFile.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

@@ -1,6 +1,6 @@
 // Running maxima and RMS values of an episode's measured instants.
 
-#include "parksim/sim/EpisodeStatistics.h"
+#include "parksim/sim/episode/EpisodeStatistics.h"
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 // Episodes on plans built in code: tracking, contacts, determinism, the observer.
 
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 
 #include <cmath>
 #include <cstdio>

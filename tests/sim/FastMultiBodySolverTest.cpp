@@ -12,8 +12,8 @@
 #include "parksim/results/ExecutedFile.h"
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/MetricsFile.h"
-#include "parksim/sim/DynamicsWorld.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

@@ -1,8 +1,8 @@
-// The multibody's response to impulses from a matrix kept per body (sim/MultiBodyInverseMass.h)
-// against Bullet's articulated-body pass, at poses and wheel angles other than the one the
-// matrix was taken at.
+// The multibody's response to impulses from a matrix kept per body
+// (sim/bullet/MultiBodyInverseMass.h) against Bullet's articulated-body pass, at poses and wheel
+// angles other than the one the matrix was taken at.
 
-#include "parksim/sim/MultiBodyInverseMass.h"
+#include "parksim/sim/bullet/MultiBodyInverseMass.h"
 
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>

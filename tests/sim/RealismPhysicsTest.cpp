@@ -18,8 +18,8 @@
 #include "parksim/realism/PoseSensor.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/realism/WheelSpeedLoop.h"
-#include "parksim/sim/DynamicsWorld.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

@@ -15,7 +15,7 @@
 #include "parksim/results/JsonFile.h"
 #include "parksim/results/MetricsFile.h"
 #include "parksim/scenario/world/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 #include "tests/sim/SimTestSupport.h"
 #include "tests/support/TestPaths.h"
 

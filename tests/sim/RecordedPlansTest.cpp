@@ -15,7 +15,7 @@
 
 #include "parksim/results/TrajectoryFile.h"
 #include "parksim/scenario/world/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

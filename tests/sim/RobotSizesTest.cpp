@@ -3,9 +3,9 @@
 // cars (worlds/car_lot.yaml) follow their default plans closed loop without contact, to within
 // the error the tracking loop predicts, and park.
 //
-// The bound. The tracking controller (sim/TrackingController.h) corrects the along-track error
-// at the rate w = k_x and has the cross-track/heading loop at the same bandwidth at the plan's
-// speed, so the error dynamics are the same for every robot size and speed. What it corrects
+// The bound. The tracking controller (sim/control/TrackingController.h) corrects the along-track
+// error at the rate w = k_x and has the cross-track/heading loop at the same bandwidth at the
+// plan's speed, so the error dynamics are the same for every robot size and speed. What it corrects
 // is the drive's lag: a velocity motor reaches its target one physics step dt after it is set,
 // so while the plan accelerates at a the robot's speed falls short of the plan's by a dt, which
 // the loop holds at an error of e = a dt / w. The plan accelerates at most at the robot's wheel
@@ -29,9 +29,9 @@
 #include "parksim/core/model/DiffDrive.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/scenario/world/ScenarioReader.h"
-#include "parksim/sim/DynamicsWorld.h"
-#include "parksim/sim/Episode.h"
-#include "parksim/sim/TrackingController.h"
+#include "parksim/sim/control/TrackingController.h"
+#include "parksim/sim/episode/Episode.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

@@ -15,7 +15,7 @@
 #include "parksim/pipeline/Verdict.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/scenario/world/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 #include "tests/sim/SimTestSupport.h"
 #include "tests/support/ExactShapes.h"
 #include "tests/support/PlanChecks.h"

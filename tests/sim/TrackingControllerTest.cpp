@@ -1,4 +1,4 @@
-#include "parksim/sim/TrackingController.h"
+#include "parksim/sim/control/TrackingController.h"
 
 #include <algorithm>
 #include <cmath>

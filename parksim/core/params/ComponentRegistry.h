@@ -1,6 +1,6 @@
 #pragma once
 // Components chosen by name: planners (planner/base/PlannerRegistry.h) and controllers
-// (sim/ControllerRegistry.h), parksim's own and those plugins add. One registry type for both,
+// (sim/control/Controller.h), parksim's own and those plugins add. One registry type for both,
 // so names, errors and trust follow the same rules.
 //
 // An Entry is a struct with `info` (holding `name`, `params`, `runs_user_code`, `trusted` and

@@ -17,7 +17,7 @@
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/Text.h"
 #include "parksim/core/model/Geometry.h"
-#include "parksim/scenario/RealismSections.h"
+#include "parksim/scenario/world/RealismSections.h"
 #include "parksim/scenario/world/MapSection.h"
 #include "parksim/scenario/world/PhysicalRanges.h"
 #include "parksim/scenario/world/RobotReader.h"

@@ -27,7 +27,7 @@
 #include "parksim/core/params/ParamMap.h"
 #include "parksim/pipeline/EpisodeRequest.h"
 #include "parksim/planner/base/PlanScenario.h"
-#include "parksim/sim/ExecutionDef.h"
+#include "parksim/sim/episode/ExecutionDef.h"
 
 namespace parksim {
 

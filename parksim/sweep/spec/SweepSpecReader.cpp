@@ -22,7 +22,7 @@
 #include "parksim/realism/RealismDef.h"
 #include "parksim/results/EpisodeRecord.h"
 #include "parksim/scenario/yaml/YamlField.h"
-#include "parksim/sim/ExecutionDef.h"
+#include "parksim/sim/episode/ExecutionDef.h"
 #include "parksim/sweep/spec/ComponentChoiceReader.h"
 #include "parksim/sweep/spec/EpisodeSetup.h"
 #include "parksim/sweep/spec/SetValues.h"
