@@ -12,9 +12,11 @@
 
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/io/Error.h"
+#include "parksim/planner/base/PlanCheck.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/planner/steering/ReedsSheppSteering.h"
 #include "tests/support/CarPlanChecker.h"
+#include "tests/support/CarPlanning.h"
 #include "tests/support/CarScenes.h"
 #include "tests/support/StudyLot.h"
 
@@ -28,12 +30,12 @@ std::string joined(const std::vector<std::string>& lines) {
 }
 
 struct Case {
-  const char* planner;
+  std::string planner;
   int scene;  // index into carScenes()
 };
 
 std::string caseName(const ::testing::TestParamInfo<Case>& info) {
-  std::string name = std::string(info.param.planner) + "_" +
+  std::string name = info.param.planner + "_" +
                      testing::carScenes()[static_cast<std::size_t>(info.param.scene)].name;
   for (char& c : name) {
     if (c == '-') c = '_';
@@ -43,42 +45,22 @@ std::string caseName(const ::testing::TestParamInfo<Case>& info) {
 
 class CarPlanners : public ::testing::TestWithParam<Case> {};
 
-// The A* planners are deterministic; the tree planners are tried with seeds 1 to 3 (the first
-// that solves counts) at their default budget for a car, and rrt-star, which spends all of it,
-// at 3000 iterations (20,000 and seed 2 in the parallel slot, which its rest-to-rest edges
-// seldom reach: seeds 1 and 4 do not within 20,000).
 TEST_P(CarPlanners, SolveAndThePlanPassesTheCarChecker) {
   const Case c = GetParam();
   const Scenario s = testing::carScenes()[static_cast<std::size_t>(c.scene)];
   const BulletCollisionWorld checker(s);
-  PlanSetup setup;
-  setup.planner = c.planner;
-  setup.search.record_tree = false;
-  const std::string planner = c.planner;
-  const bool tree = planner.rfind("rrt", 0) == 0;
-  std::vector<int> seeds = tree ? std::vector<int>{1, 2, 3} : std::vector<int>{1};
-  if (planner == "rrt-star") {
-    setup.search.max_iterations = 3000;
-    if (s.name == "car_parallel") {
-      setup.search.max_iterations = 20000;
-      seeds = {2};
-    }
-  }
-  PlanResult r;
-  for (int seed : seeds) {
-    setup.search.seed = static_cast<std::uint64_t>(seed);
-    r = planScenario(s, checker, setup);
-    if (r.solved()) break;
-  }
+  const PlanResult r = testing::planForCarTest(s, checker, c.planner);
   ASSERT_TRUE(r.solved()) << s.name << ": " << r.message;
   const auto problems = testing::carPlanViolations(s, r.trajectory);
   EXPECT_TRUE(problems.empty()) << s.name << ":\n" << joined(problems);
+  // And parksim's own check, which every plan it did not make gets (PlanCheck.h).
+  const std::optional<PlanViolation> v = checkPlan(s, checker, r.trajectory);
+  EXPECT_FALSE(v.has_value()) << (v ? v->reason : "");
 }
 
 std::vector<Case> allCases() {
   std::vector<Case> out;
-  for (const char* planner : {"car-a-star", "time-a-star", "hybrid-a-star", "rrt",
-                              "rrt-goal-connect", "rrt-connect", "rrt-star"}) {
+  for (const std::string& planner : testing::carTestPlanners()) {
     for (int k = 0; k < static_cast<int>(testing::carScenes().size()); ++k) {
       out.push_back({planner, k});
     }
