@@ -38,6 +38,7 @@ set(PARKSIM_UNITY_SKIP
   parksim/planner/motion/CarPlanAlong.cpp
   parksim/planner/motion/CarTimeCost.cpp
   parksim/planner/motion/CarTiming.cpp
+  parksim/planner/motion/ClearanceValidator.cpp
   # Not a name: it includes ProvenanceGit.h, which a commit or a first edit rewrites; alone,
   # only this file is compiled again then, not its batch.
   parksim/core/system/Provenance.cpp

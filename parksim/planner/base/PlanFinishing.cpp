@@ -58,11 +58,14 @@ void finishCarPlan(const PlanningProblem& problem, bool smooth_geometry, PlanRes
   const std::vector<PathPiece> found = pathPieces(result.trajectory);
   std::vector<PathPiece> pieces = found;
   if (smooth_geometry) {
-    const PathSmoother smoother(limits, car, validator, problem.setup.smoothing);
+    // Shortcuts keep the search's clearance (carSearchValidation).
+    const std::unique_ptr<ClearanceValidator> clear = carSearchValidation(problem);
+    const PathSmoother smoother(limits, car, clear->validator(), problem.setup.smoothing);
     std::mt19937_64 rng(problem.search().seed ^ 0x5e1ec7edULL);
     PathSmoothingStats stats;
     pieces = smoother.smooth(start, found, problem.search().smoothing_attempts, rng, &stats);
     result.stats.smoothing_shortcuts += stats.shortcuts;
+    result.stats.collision_queries += clear->validator().queries();
     result.stats.times.smoothing_s += secondsSince(t0);
   }
   // The plan ends where the path does, to a tenth of the goal's tolerance.
@@ -96,6 +99,17 @@ void finishCarPlan(const PlanningProblem& problem, bool smooth_geometry, PlanRes
 }
 
 }  // namespace
+
+std::unique_ptr<ClearanceValidator> carSearchValidation(const PlanningProblem& problem) {
+  const Scenario& s = problem.scenario;
+  if (!s.robot.isCar()) return nullptr;
+  std::vector<Pose2> spared{s.start, s.goal.pose};
+  if (s.goal.either_heading) {
+    spared.push_back({s.goal.pose.x, s.goal.pose.y, s.goal.pose.theta + kPi});
+  }
+  return std::make_unique<ClearanceValidator>(problem.checker, s.robot, s.lot,
+                                              problem.setup.validation, std::move(spared));
+}
 
 void finishPlan(const PlanningProblem& problem, bool smooth_geometry, PlanResult& result) {
   if (problem.scenario.robot.isCar()) {

@@ -5,8 +5,8 @@
 #include <limits>
 #include <utility>
 
-#include "parksim/core/model/DiffDrive.h"
 #include "parksim/core/io/Error.h"
+#include "parksim/core/model/DiffDrive.h"
 
 namespace parksim {
 

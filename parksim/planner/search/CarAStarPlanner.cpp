@@ -5,11 +5,11 @@
 
 #include "parksim/core/io/Error.h"
 #include "parksim/core/model/Geometry.h"
-#include "parksim/planner/search/CarAStar.h"
 #include "parksim/planner/base/PlanFinishing.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/planner/base/Planner.h"
 #include "parksim/planner/base/PlannerRegistry.h"
+#include "parksim/planner/search/CarAStar.h"
 #include "parksim/planner/search/ReachableBudget.h"
 
 namespace parksim {
@@ -28,7 +28,10 @@ class CarAStarPlanner : public Planner {
           "(time-a-star plans for it)");
     }
     const CarLimits limits = carLimits(s.robot, p.setup.feedback_headroom, p.setup.timing_period_s);
-    const CarAStar planner(s.robot, s.lot, p.validator, p.search(), def_, limits, &s.obstacles);
+    // Moves keep the clearance that lets the car's plan along them validate (PlanFinishing.h).
+    const std::unique_ptr<ClearanceValidator> clear = carSearchValidation(p);
+    const CarAStar planner(s.robot, s.lot, clear->validator(), p.search(), def_, limits,
+                           &s.obstacles);
     PlanResult result = planner.solve(s.start, s.goal, p.progress);
     if (result.solved()) finishPlan(p, p.search().smooth, result);
     return result;

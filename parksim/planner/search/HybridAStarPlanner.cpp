@@ -35,7 +35,10 @@ class HybridAStarPlanner : public Planner {
       def.fine_cell_m *= s.robot.sizeScale();
       def.fine_step_m *= s.robot.sizeScale();
     }
-    const HybridAStar planner(s.robot, s.lot, curves, p.validator, p.search(), def);
+    // A car's moves keep the clearance that lets its plan along them validate (PlanFinishing.h).
+    const std::unique_ptr<ClearanceValidator> clear = carSearchValidation(p);
+    const HybridAStar planner(s.robot, s.lot, curves, clear ? clear->validator() : p.validator,
+                              p.search(), def);
     PlanResult result = planner.solve(s.start, s.goal, p.progress);
     // It times its own plan; smoothed under study timing, it keeps that timing's limits.
     if (result.solved()) finishPlan(p, p.search().smooth, result);
