@@ -15,11 +15,11 @@
 #include "parksim/core/model/Geometry.h"
 #include "parksim/planner/motion/CarPlanAlong.h"
 #include "parksim/planner/motion/CarTimeCost.h"
-#include "parksim/planner/search/FootprintFit.h"
 #include "parksim/planner/motion/MotionPrimitives.h"
+#include "parksim/planner/search/FootprintFit.h"
 #include "parksim/planner/search/ObstacleHeuristic.h"
-#include "parksim/planner/steering/ReedsSheppSteering.h"
 #include "parksim/planner/search/SearchCells.h"
+#include "parksim/planner/steering/ReedsSheppSteering.h"
 
 namespace parksim {
 
@@ -262,7 +262,9 @@ bool CarSearch::expandNext() {
 CarSearchOutcome CarSearch::run(bool backward) {
   const CarClock::time_point t0 = CarClock::now();
   const double longer = std::max(cell_keys_.width_m(), cell_keys_.height_m());
-  const double grid_cell = std::max(cell_, longer / def_.max_heuristic_cells_per_side);
+  const double grid_cell =
+      std::max(def_.heuristic_cell_m > 0.0 ? def_.heuristic_cell_m : 2.0 * cell_,
+               longer / def_.max_heuristic_cells_per_side);
   grid_ = c_.fit ? std::make_unique<ObstacleHeuristic>(
                        [&](double x, double y) { return c_.fit->fitsSomeHeading(x, y); }, c_.window,
                        grid_cell, targets_.front())
@@ -329,11 +331,11 @@ CarAStar::CarAStar(const RobotDef& car, const LotBounds& lot, const MotionValida
   if (def.max_iterations < 0) throw Error("planner: max_iterations must be >= 0");
   if (!(def.max_time_s >= 0.0)) throw Error("planner: max_time_s must be >= 0");
   const CarAStarDef& s = search;
-  if (!(s.cell_m >= 0.0) || !(s.step_m >= 0.0) || s.heading_bins < 4 || s.curvature_steps < 1 ||
-      !(s.heuristic_weight >= 1.0) || !(s.gear_change_penalty_s >= 0.0) ||
-      s.analytic_interval < 1 || !(s.fine_scale > 0.0 && s.fine_scale < 1.0) ||
-      s.max_heuristic_cells_per_side < 1 || !(s.window.min_margin_m > 0.0) ||
-      !(s.window.margin_fraction >= 0.0)) {
+  if (!(s.cell_m >= 0.0) || !(s.step_m >= 0.0) || !(s.heuristic_cell_m >= 0.0) ||
+      s.heading_bins < 4 || s.curvature_steps < 1 || !(s.heuristic_weight >= 1.0) ||
+      !(s.gear_change_penalty_s >= 0.0) || s.analytic_interval < 1 ||
+      !(s.fine_scale > 0.0 && s.fine_scale < 1.0) || s.max_heuristic_cells_per_side < 1 ||
+      !(s.window.min_margin_m > 0.0) || !(s.window.margin_fraction >= 0.0)) {
     throw Error(
         "car-a-star: cell and step must be >= 0, heading_bins >= 4, curvature_steps >= 1, "
         "heuristic_weight >= 1, penalty >= 0, analytic_interval >= 1, fine_scale in (0, 1), "

@@ -25,12 +25,12 @@
 
 #include "parksim/core/model/RobotDef.h"
 #include "parksim/core/model/Scenario.h"
-#include "parksim/planner/motion/CarTiming.h"
-#include "parksim/planner/motion/MotionValidator.h"
 #include "parksim/planner/base/PlanResult.h"
 #include "parksim/planner/base/SearchDef.h"
-#include "parksim/planner/search/SearchWindow.h"
+#include "parksim/planner/motion/CarTiming.h"
+#include "parksim/planner/motion/MotionValidator.h"
 #include "parksim/planner/motion/TimeOptimalTiming.h"
+#include "parksim/planner/search/SearchWindow.h"
 
 namespace parksim {
 
@@ -60,7 +60,10 @@ struct CarAStarDef {
   double fine_zone_m = -1.0;
   double fine_scale = 0.25;
   SearchWindowDef window{5.0, 0.5};
-  /// The obstacle heuristic's grid has at most this many cells along the window's longer side.
+  /// Side of the obstacle heuristic's grid cells, m; 0 selects twice the search cells (the
+  /// grid's free test asks the footprint in eight headings per cell: the grid is most of a short
+  /// search's time). At most max_heuristic_cells_per_side along the window's longer side.
+  double heuristic_cell_m = 0.0;
   int max_heuristic_cells_per_side = 250;
 };
 

@@ -64,6 +64,8 @@ void bind(CarAStarDef& d, ParamSet& s) {
         "the search window reaches at least this far beyond start and goal, m", 1e-6, 1e6);
   s.add("window_margin_fraction", &d.window.margin_fraction,
         "... and at least this fraction of their distance", 0.0, 100.0);
+  s.add("heuristic_cell_m", &d.heuristic_cell_m,
+        "the obstacle heuristic's grid cell side, m; 0: twice the search cells", 0.0, 1e3);
   s.add("max_heuristic_cells_per_side", &d.max_heuristic_cells_per_side,
         "the obstacle heuristic's grid cells along the window's longer side", 1, 4000);
 }
