@@ -117,21 +117,5 @@ TEST(CarPlanning, EachDrivesPlannerCostedByTimeRefusesTheOtherDrive) {
   EXPECT_EQ(resolvedPlanSetup(asked, diff).planner, "time-a-star");
 }
 
-// In the open lot the default plan takes at most 1.3 times the car's free-space bound: its
-// Reeds-Shepp length at the tightest radius (OMPL's, through ReedsSheppSteering) driven from
-// rest to rest at the speed and acceleration limits, L / v + v / a.
-TEST(CarPlanning, DefaultPlanInTheOpenLotIsWithinOnePointThreeOfTheFreeSpaceBound) {
-  const Scenario s = testing::carOpenLotScene();
-  const BulletCollisionWorld checker(s);
-  const PlanResult r = planScenario(s, checker, PlanSetup{});
-  ASSERT_TRUE(r.solved()) << r.message;
-  const double length = ReedsSheppSteering(s.robot).distance(s.start, s.goal.pose);
-  const double v = s.robot.max_speed_mps;
-  const double a = s.robot.max_accel_mps2;
-  ASSERT_GE(length, v * v / a);
-  const double bound = length / v + v / a;
-  EXPECT_LE(r.trajectory.duration(), 1.3 * bound) << "bound " << bound << " s";
-}
-
 }  // namespace
 }  // namespace parksim
