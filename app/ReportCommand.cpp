@@ -25,9 +25,9 @@
 #include "parksim/pages/SweepPage.h"
 #include "parksim/pipeline/Verdict.h"
 #include "parksim/report/Report.h"
-#include "parksim/results/JUnitReport.h"
-#include "parksim/results/OmplLog.h"
-#include "parksim/results/ResultsTable.h"
+#include "parksim/results/reports/JUnitReport.h"
+#include "parksim/results/reports/OmplLog.h"
+#include "parksim/results/tables/ResultsTable.h"
 #include "parksim/sweep/shards/SweepManifest.h"
 
 namespace parksim::app {

@@ -29,8 +29,8 @@
 #include "parksim/realism/RealismDef.h"
 #include "parksim/renders/image/PngEncoder.h"
 #include "parksim/report/Report.h"
-#include "parksim/results/JUnitReport.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
+#include "parksim/results/reports/JUnitReport.h"
 #include "parksim/sweep/run/EpisodeRun.h"
 
 namespace parksim::app {
@@ -329,12 +329,13 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     EpisodeRequest request = toRequest(*opt);
     // Every input is checked before --out is touched; the outputs go to a staging directory
     // that replaces --out whole at the end (OutputDir), so --out never mixes two runs.
-    checkEpisodeRequest(request, {.limits = opt->user_code.limits, .isolate = true});
+    request.limits = opt->user_code.limits;
+    checkEpisodeRequest(request, {.limits = request.limits, .isolate = true});
     cli::OutputDir out(opt->out);
     request.out_dir = out.path();
     // A user's planner or controller runs in a watched child: its crash or hang is a verdict.
     const std::optional<int> code = runWatched(
-        "parksim run", runsUserCode(request), opt->user_code.limits,
+        "parksim run", runsUserCode(request), request.limits,
         [&](UserCodeWatch* watch) { return runEpisodeCommand(*opt, request, watch, out, output); });
     if (code) out.commit();
     return code.value_or(kExitUserCodeFailed);

@@ -31,9 +31,9 @@
 #include "parksim/core/io/Error.h"
 #include "parksim/core/system/ChildProcess.h"
 #include "parksim/report/Report.h"
-#include "parksim/results/JUnitReport.h"
-#include "parksim/results/ResultsTable.h"
-#include "parksim/results/RowSeal.h"
+#include "parksim/results/reports/JUnitReport.h"
+#include "parksim/results/tables/ResultsTable.h"
+#include "parksim/results/tables/RowSeal.h"
 #include "parksim/sweep/run/SweepJob.h"
 #include "parksim/sweep/run/SweepRunner.h"
 #include "parksim/sweep/shards/Shard.h"
@@ -69,7 +69,7 @@ struct SweepOptions {
   std::string junit;
   bool list = false;               // print the episodes and run nothing
   cli::PluginOptions plugins;      // besides the spec's plugins:
-  cli::UserCodeOptions user_code;  // the limits on user code in the worker processes
+  cli::UserCodeOptions user_code;  // the limits on user code: workers and commands
 };
 
 std::string duration(double s) {

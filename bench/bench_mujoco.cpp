@@ -33,7 +33,7 @@
 #include <string>
 #include <vector>
 
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 #include "parksim/scenario/world/ScenarioReader.h"
 #include "parksim/sim/episode/Episode.h"
 #include "parksim/sim/episode/ReferenceTrajectory.h"

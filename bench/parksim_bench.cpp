@@ -39,7 +39,7 @@
 #include "parksim/core/system/Provenance.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/planner/tree/TreePlanner.h"
-#include "parksim/results/OmplLog.h"
+#include "parksim/results/reports/OmplLog.h"
 #include "parksim/scenario/world/ScenarioReader.h"
 
 namespace parksim::bench {

@@ -51,7 +51,7 @@ mapfile -t core < <(sources_under parksim/core | grep -v '/Provenance\.cpp$')
 # sources), on all cores, and again only when it or a parksim header changed since.
 # The sweep-spec reader takes its name lists (planners, steerings, timings) from
 # parksim/planner/base/PlanScenario.cpp, whose other functions need the whole planner (OMPL, Bullet),
-# its record format's names from parksim/results/ExecutedFile.cpp (the record writers), and
+# its record format's names from parksim/results/episode/ExecutedFile.cpp (the record writers), and
 # its files policy's from parksim/pipeline/EpisodeRequest.cpp.
 # The fuzzer's coverage tables keep every instrumented function alive, so that file is compiled
 # without them (still with ASan and UBSan, as .nocov.o) and --gc-sections drops what the spec

@@ -23,7 +23,7 @@
 #include "parksim/core/geometry/Pose2.h"
 #include "parksim/core/model/FootprintChecker.h"
 #include "parksim/core/model/Scenario.h"
-#include "parksim/results/BenchRecord.h"
+#include "parksim/results/reports/BenchRecord.h"
 
 namespace parksim::bench {
 

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "parksim/core/system/Provenance.h"
-#include "parksim/results/BenchRecord.h"
+#include "parksim/results/reports/BenchRecord.h"
 
 namespace parksim::bench {
 

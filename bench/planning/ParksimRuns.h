@@ -9,7 +9,7 @@
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/core/model/Scenario.h"
 #include "parksim/planner/base/PlanScenario.h"
-#include "parksim/results/BenchRecord.h"
+#include "parksim/results/reports/BenchRecord.h"
 
 namespace parksim::bench {
 

@@ -37,11 +37,13 @@ void ControllerOptions::addTo(CLI::App& sub) {
 
 void UserCodeOptions::addTo(CLI::App& sub) {
   sub.add_option("--planner-timeout", limits.planner_s,
-                 "a user's planner (plugin, command) is stopped after this long, s")
+                 "a user's planner (plugin, command) is stopped after this long, s (a command at "
+                 "its own timeout_s when that is shorter)")
       ->capture_default_str()
       ->check(realIn(UserCodeLimits::kMin, UserCodeLimits::kMax));
   sub.add_option("--controller-timeout", limits.controller_tick_s,
-                 "a user's controller is stopped when one command takes longer, s")
+                 "a user's controller (plugin, command) is stopped when one command (its reset "
+                 "included) takes longer, s (a command at its own timeouts when they are shorter)")
       ->capture_default_str()
       ->check(realIn(UserCodeLimits::kMin, UserCodeLimits::kMax));
 }

@@ -37,8 +37,9 @@ struct ControllerOptions {
   ParamMap paramMap() const;
 };
 
-/// --planner-timeout and --controller-timeout: the limits on user code (UserCodeWatch.h), which
-/// runs in a watched child process.
+/// --planner-timeout and --controller-timeout: the limits on user code (UserCodeWatch.h): a
+/// plugin's runs in a watched child process, a command stops its own program at them
+/// (EpisodeRequest::limits).
 struct UserCodeOptions {
   UserCodeLimits limits;
 

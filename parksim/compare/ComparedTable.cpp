@@ -3,7 +3,7 @@
 #include <filesystem>
 
 #include "parksim/core/io/Error.h"
-#include "parksim/results/ResultsFile.h"
+#include "parksim/results/tables/ResultsFile.h"
 #include "parksim/sweep/shards/SweepManifest.h"
 
 namespace parksim {

@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "parksim/core/io/Error.h"
-#include "parksim/results/EpisodeRecord.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 
 namespace parksim {
 namespace {

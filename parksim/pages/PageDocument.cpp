@@ -2,7 +2,7 @@
 
 #include "parksim/core/io/AtomicFile.h"
 #include "parksim/core/system/Provenance.h"
-#include "parksim/results/XmlText.h"
+#include "parksim/results/reports/XmlText.h"
 
 namespace parksim {
 namespace {

@@ -23,7 +23,7 @@
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/renders/film/FrameRecorder.h"
 #include "parksim/renders/plots/Figures.h"
-#include "parksim/results/ExecutedFile.h"
+#include "parksim/results/episode/ExecutedFile.h"
 #include "parksim/scenario/world/World.h"
 #include "parksim/sim/episode/ExecutionDef.h"
 #include "parksim/usercode/Components.h"
@@ -149,6 +149,12 @@ struct EpisodeRequest {
   /// none by default.
   FigureDef figures = noFigures();
 
+  /// Time limits on user code (docs/limits.md): a user's planner per plan, a user's controller
+  /// per command. The process watching a worker (UserCodeIsolation.h; IsolatedEpisode.h)
+  /// enforces them on code in parksim's process; the command planner and controller stop their
+  /// program at them (or at their own timeout parameters, whichever is shorter). Code in the
+  /// caller's process without a watch is not stopped.
+  UserCodeLimits limits;
   /// Set in a process that runs user code under a watch (UserCodeIsolation.h): the episode
   /// says there when it enters and leaves a user's planner or controller. Not owned.
   UserCodeWatch* watch = nullptr;

@@ -56,7 +56,8 @@ struct Verdict {
   friend bool operator==(const Verdict&, const Verdict&) = default;
 };
 
-/// The verdict on a plan that was not solved ("unsolved plan (iteration_limit): ...").
+/// The verdict on a plan that was not solved ("unsolved plan (iteration_limit): ..."), or that
+/// failed its check (PlanStatus::kPlanInvalid: plan_invalid with the plan's message).
 Verdict planFailedVerdict(const PlanResult& plan);
 
 /// The verdict on a plan that failed its check before driving (planner/base/PlanCheck.h):

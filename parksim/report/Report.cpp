@@ -15,8 +15,8 @@
 #include "parksim/report/BoxPlot.h"
 #include "parksim/report/ParameterPlot.h"
 #include "parksim/report/SuccessMatrix.h"
-#include "parksim/results/EpisodeRecord.h"
-#include "parksim/results/ResultsFile.h"
+#include "parksim/results/tables/EpisodeRecord.h"
+#include "parksim/results/tables/ResultsFile.h"
 #include "parksim/sweep/spec/EpisodeParams.h"
 
 namespace parksim {

@@ -13,6 +13,12 @@
 // - command() sends one line per control tick, "tick" and the ControllerInput's 17 numbers
 //   (kTickFields, shortest round-trip text); the process answers one line, "LEFT RIGHT", the
 //   wheel speed commands in rad/s, within tick_timeout_s.
+// - The run's limit on one command (ControllerSetup::time_limit_s, `--controller-timeout`)
+//   replaces either timeout when it is shorter; messages name the limit that struck.
+// - A car (the reset's "drive" is "car"; docs/cars.md): its tick lines carry kCarTickFields
+//   after those, and the process may answer "speed V STEER" (m/s, rad) or "accel A STEER"
+//   (m/s^2, rad) instead (CarCommand, sim/Controller.h); "LEFT RIGHT" still drives it, as its
+//   rear wheels.
 // - At the episode's end (the controller is destroyed) its standard input is closed; the
 //   process should exit, and is killed with its process group kExitGraceS later.
 // Anything else (an exit, a line that is not two numbers, a line longer than kMaxAnswerBytes,
@@ -76,12 +82,21 @@ struct CommandControllerDef {
 /// on. Throws Error naming the parameter.
 CommandControllerDef commandControllerDef(const ParamMap& params);
 
-/// The tick line for `in`: "tick" and the kTickFields values, '\n'-terminated.
-std::string tickLine(const ControllerInput& in);
+/// The tick line for `in`: "tick" and the kTickFields values (and a car's kCarTickFields),
+/// '\n'-terminated.
+std::string tickLine(const ControllerInput& in, bool car = false);
+
+/// The numbers a car's tick line carries after kTickFields (ControllerInput's car fields).
+inline constexpr std::array<const char*, 3> kCarTickFields = {"steer_rad", "ref_steer_rad",
+                                                              "commanded_speed_mps"};
 
 /// The wheel speeds an answer line holds: two numbers separated by blanks ("0.5 -1e-3"; a
 /// trailing '\r' allowed), or nothing. "nan" and "inf" parse (and are refused as commands).
 std::optional<WheelSpeeds> parseWheelAnswer(std::string_view line);
+
+/// The car command an answer line holds: "speed V STEER" or "accel A STEER" (blanks between,
+/// a trailing '\r' allowed), or nothing.
+std::optional<CarCommand> parseCarAnswer(std::string_view line);
 
 class CommandController : public Controller {
  public:
@@ -91,15 +106,25 @@ class CommandController : public Controller {
 
   void reset(const ControllerSetup& setup) override;
   WheelSpeeds command(const ControllerInput& input) override;
+  /// A car: the process's answer as a car command, or its wheel speeds read as the rear
+  /// wheels' (carCommandOfWheels).
+  std::optional<CarCommand> carCommand(const ControllerInput& input) override;
 
  private:
+  // Sends the tick line and returns the answer line; throws what command() documents, with
+  // `expected` saying what a good answer is.
+  const std::string& exchangeTick(const ControllerInput& input);
+  // Throws that the last answer is not one of `expected`, ending the process.
+  [[noreturn]] void refuse(const ControllerInput& input, const char* expected);
   std::string failure(const std::string& why) const;
   // Why the process stopped talking: its exit, waited for briefly, or that it closed a pipe.
   std::string ended();
   void end();
 
   CommandControllerDef def_;
-  std::string shown_;  // the command, for messages
+  double run_limit_s_ = 0.0;  // the run's limit on one command (ControllerSetup), 0: none
+  std::string shown_;         // the command, for messages
+  RobotDef robot_;            // the scenario's, from the reset
   std::unique_ptr<ChildProcess> process_;
   std::string request_;  // reused tick line
   std::string answer_;

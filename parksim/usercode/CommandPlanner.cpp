@@ -13,8 +13,8 @@
 #include "parksim/core/system/ChildProcess.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/planner/motion/PathCost.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 #include "parksim/usercode/CommandLine.h"
 #include "parksim/usercode/ProblemFile.h"
 
@@ -102,8 +102,13 @@ PlanResult CommandPlanner::solve(const PlanningProblem& problem) {
   } catch (const Error& e) {
     throw failed(std::string("could not be started: ") + e.what(), nullptr);
   }
+  // The shorter of its own timeout_s and the run's limit on a user's planner, named as such.
+  const bool run_limit = problem.time_limit_s > 0.0 && problem.time_limit_s < def_.timeout_s;
+  const double limit_s = run_limit ? problem.time_limit_s : def_.timeout_s;
+  const std::string limit_text = run_limit ? "the planner time limit of " + formatGeneral(limit_s)
+                                           : "timeout_s = " + formatGeneral(limit_s);
   const auto deadline = start + std::chrono::duration_cast<ChildProcess::Clock::duration>(
-                                    std::chrono::duration<double>(def_.timeout_s));
+                                    std::chrono::duration<double>(limit_s));
   std::optional<ChildExit> exit;
   while (!exit) {
     if (problem.search().cancelled()) {
@@ -116,9 +121,7 @@ PlanResult CommandPlanner::solve(const PlanningProblem& problem) {
     const auto now = ChildProcess::Clock::now();
     if (now >= deadline) {
       child->kill();
-      throw failed("gave no answer within timeout_s = " + formatGeneral(def_.timeout_s) +
-                       " s and was killed",
-                   &*child);
+      throw failed("gave no answer within " + limit_text + " s and was killed", &*child);
     }
     exit = child->waitUntil(std::min(deadline, now + kCancelPoll));
   }

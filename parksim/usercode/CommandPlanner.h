@@ -17,7 +17,9 @@
 //   (plan_failed), the last line of its standard error as the message;
 // - anything else is the planner's failure, a UserCodeError (planner_error) naming the command
 //   and the reason in one line: a non-zero exit or a signal, no trajectory.csv, a malformed one,
-//   more than timeout_s of wall time (the process group is killed).
+//   more than timeout_s of wall time, or than the run's limit on a user's planner
+//   (PlanningProblem::time_limit_s, `--planner-timeout`) when that is shorter (the process group
+//   is killed; the message names the limit).
 // Its standard output and error are kept (the last ChildProcess::kStderrTailBytes bytes) and
 // the last line quoted in messages. The private directory is removed afterwards.
 
@@ -36,7 +38,8 @@ inline constexpr const char* kCommandPlanner = "command";
 struct CommandPlannerDef {
   /// The command's words, {problem} and {out} not yet replaced; one of them contains {out}.
   std::vector<std::string> command;
-  /// Wall time the command may take, s; then its process group is killed (planner_error).
+  /// Wall time the command may take, s; then its process group is killed (planner_error). The
+  /// run's limit (PlanningProblem::time_limit_s) applies when it is shorter.
   double timeout_s = 600.0;
   /// The planner's other parameters, handed to the command in the problem file's "params".
   ParamMap passed;

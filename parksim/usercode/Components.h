@@ -40,6 +40,13 @@ struct Components {
 /// provenance.plugins; a resumed or merged table must carry the same.
 std::string pluginsProvenance(const Components& components);
 
+/// Where the code of the planner `info` comes from, one line, as plan.json's planner_origin
+/// records it: "plugin NAME VERSION (PATH, FNV-1a HASH)", "command `CMD ...`" (its `command`
+/// parameter in `params`), or info.origin ("Python object my_module.Straight"); empty for
+/// parksim's own.
+std::string plannerOrigin(const Components& components, const PlannerInfo& info,
+                          const ParamMap& params);
+
 /// parksim's own planners and controllers, no plugins. Built once, shared.
 std::shared_ptr<const Components> builtInComponents();
 

@@ -25,7 +25,8 @@
 #include "parksim/sim/control/Controller.h"
 
 /// Bumped whenever a type a plugin sees changes meaning; a plugin must match it exactly.
-#define PARKSIM_PLUGIN_API_VERSION 1
+/// 2: Controller::carCommand and ControllerInput's car fields (issue 38).
+#define PARKSIM_PLUGIN_API_VERSION 2
 
 namespace parksim {
 

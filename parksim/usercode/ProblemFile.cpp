@@ -58,6 +58,35 @@ nlohmann::json poseJson(const Pose2& pose) {
   return {{"x_m", pose.x}, {"y_m", pose.y}, {"theta_rad", pose.theta}};
 }
 
+namespace {
+
+// The robot: its drive, size and wheels, and a car's limits (RobotDef.h; a car's wheel_base_m
+// is its track, its wheel limits its rear wheels').
+nlohmann::json robotJson(const RobotDef& r) {
+  nlohmann::json j = {{"drive", r.isCar() ? "car" : "differential"},
+                      {"length_m", r.length_m},
+                      {"width_m", r.width_m},
+                      {"front_overhang_m", r.front_overhang_m},
+                      {"wheel_base_m", r.wheel_base_m},
+                      {"wheel_radius_m", r.wheel_radius_m},
+                      {"max_wheel_speed_radps", r.max_wheel_speed_radps},
+                      {"max_wheel_accel_radps2", r.max_wheel_accel_radps2},
+                      {"height_m", r.height_m},
+                      {"ground_clearance_m", r.ground_clearance_m}};
+  if (r.isCar()) {
+    j["track_m"] = r.wheel_base_m;
+    j["axle_distance_m"] = r.axle_distance_m;
+    j["max_steer_rad"] = r.max_steer_rad;
+    j["max_steer_rate_radps"] = r.max_steer_rate_radps;
+    j["max_speed_mps"] = r.max_speed_mps;
+    j["max_accel_mps2"] = r.max_accel_mps2;
+    j["max_curvature_1pm"] = r.maxCurvature();
+  }
+  return j;
+}
+
+}  // namespace
+
 nlohmann::json worldJson(const Scenario& s) {
   const RobotDef& r = s.robot;
   nlohmann::json obstacles = nlohmann::json::array();
@@ -70,16 +99,7 @@ nlohmann::json worldJson(const Scenario& s) {
         {"y_min_m", s.lot.y_min_m},
         {"x_max_m", s.lot.x_max_m},
         {"y_max_m", s.lot.y_max_m}}},
-      {"robot",
-       {{"length_m", r.length_m},
-        {"width_m", r.width_m},
-        {"front_overhang_m", r.front_overhang_m},
-        {"wheel_base_m", r.wheel_base_m},
-        {"wheel_radius_m", r.wheel_radius_m},
-        {"max_wheel_speed_radps", r.max_wheel_speed_radps},
-        {"max_wheel_accel_radps2", r.max_wheel_accel_radps2},
-        {"height_m", r.height_m},
-        {"ground_clearance_m", r.ground_clearance_m}}},
+      {"robot", robotJson(r)},
       {"obstacles", std::move(obstacles)},
       {"start", poseJson(s.start)},
       {"goal",

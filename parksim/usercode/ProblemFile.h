@@ -18,7 +18,9 @@ namespace parksim {
 /// The problem file's format and version: the value of its "format" key.
 inline constexpr const char* kProblemFormat = "parksim-planning-problem/1";
 
-/// The world as a planner or a controller sees it: name, source file, lot, robot, obstacles
+/// The world as a planner or a controller sees it: name, source file, lot, robot (its drive,
+/// "differential" or "car", and a car's limits: axle distance, track, steering angle and rate,
+/// speed, acceleration, curvature), obstacles
 /// (name, kind, shape and its geometry, height, whether it blocks the robot), start and goal
 /// with its tolerances.
 nlohmann::json worldJson(const Scenario& scenario);

@@ -93,10 +93,12 @@ PlanFigure planFigureFrom(const py::handle& plan) {
     const PlanOutcome& p = plan.cast<const PlanOutcome&>();
     figure.name = p.setup.planner;
     figure.caption = std::string(p.setup.planner) + ", seed " +
-                     std::to_string(p.setup.search.seed) + ": " + p.result.message;
-    figure.trajectory = p.result.trajectory;
-    figure.waypoints = p.result.waypoints;
-    figure.tree_edges = p.result.tree_edges;
+                     std::to_string(p.setup.search.seed) + ": " + p.message();
+    if (p.result) {
+      figure.trajectory = p.result->trajectory;
+      figure.waypoints = p.result->waypoints;
+      figure.tree_edges = p.result->tree_edges;
+    }
   } else {
     figure.trajectory = trajectoryFrom(plan);
   }
@@ -246,7 +248,11 @@ void bindFigures(py::module_& m) {
         auto add = [&](const py::handle& p) {
           if (py::isinstance<PlanOutcome>(p)) {
             const PlanOutcome& outcome = p.cast<const PlanOutcome&>();
-            inputs.plans.push_back(planFigure(scenario, outcome.setup, outcome.result));
+            if (!outcome.result) {
+              throw Error("write_figures: a plan whose planner failed has nothing to draw (" +
+                          outcome.status() + ": " + outcome.message() + ")");
+            }
+            inputs.plans.push_back(planFigure(scenario, outcome.setup, *outcome.result));
           } else {
             inputs.plans.push_back(planFigureFrom(p));
           }

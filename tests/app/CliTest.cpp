@@ -21,7 +21,7 @@
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/renders/image/PngEncoder.h"
 #include "parksim/renders/plots/FigureSelection.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 #include "parksim/scenario/world/ScenarioReader.h"
 #include "tests/support/TestPaths.h"
 

@@ -2,7 +2,7 @@
 // planner block per group, every run line with one value per property.
 
 #include "parksim/core/system/Provenance.h"
-#include "parksim/results/OmplLog.h"
+#include "parksim/results/reports/OmplLog.h"
 
 #include <gtest/gtest.h>
 

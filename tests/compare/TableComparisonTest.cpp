@@ -22,7 +22,7 @@
 
 #include "parksim/compare/ComparedTable.h"
 #include "parksim/core/io/Error.h"
-#include "parksim/results/ResultsTable.h"
+#include "parksim/results/tables/ResultsTable.h"
 #include "parksim/sweep/spec/EpisodeParams.h"
 #include "tests/support/TestPaths.h"
 

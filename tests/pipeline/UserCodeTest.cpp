@@ -11,7 +11,7 @@
 #include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 #include "parksim/scenario/world/World.h"
 #include "parksim/usercode/PluginLoader.h"
 #include "tests/support/TestPaths.h"

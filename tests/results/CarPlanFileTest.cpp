@@ -10,8 +10,8 @@
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/InputFile.h"
 #include "parksim/core/model/DiffDrive.h"
-#include "parksim/results/PlanFile.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/PlanFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

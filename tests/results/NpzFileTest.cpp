@@ -2,7 +2,7 @@
 // damaged archives refused with one line. NumPy itself reads the files in
 // tests/results/test_records_numpy.py.
 
-#include "parksim/results/NpzFile.h"
+#include "parksim/results/episode/NpzFile.h"
 
 #include <bit>
 #include <cmath>

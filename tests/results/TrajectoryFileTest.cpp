@@ -1,4 +1,4 @@
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 
 #include <cstdio>
 #include <filesystem>

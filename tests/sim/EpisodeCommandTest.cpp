@@ -7,9 +7,9 @@
 
 #include "parksim/core/io/Error.h"
 #include "parksim/realism/RealismDef.h"
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/MetricsFile.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/MetricsFile.h"
 #include "parksim/sim/episode/Episode.h"
 #include "tests/sim/SimTestSupport.h"
 

@@ -10,9 +10,9 @@
 #include "parksim/core/geometry/Angle.h"
 #include "parksim/core/io/Error.h"
 #include "parksim/pipeline/Verdict.h"
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/MetricsFile.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/MetricsFile.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

@@ -7,7 +7,7 @@
 
 #include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/results/EpisodeRecord.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 #include "parksim/scenario/world/World.h"
 #include "parksim/sweep/spec/EpisodeExpansion.h"
 #include "parksim/sweep/spec/EpisodeSetup.h"

@@ -14,8 +14,8 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/io/Error.h"
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/results/RowSeal.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/results/tables/RowSeal.h"
 #include "parksim/sweep/shards/Merge.h"
 #include "parksim/sweep/shards/Shard.h"
 #include "parksim/sweep/shards/SweepManifest.h"

@@ -16,8 +16,8 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/results/ResultsTable.h"
-#include "parksim/results/TableVerify.h"
+#include "parksim/results/tables/ResultsTable.h"
+#include "parksim/results/tables/TableVerify.h"
 #include "parksim/sweep/run/SweepRunner.h"
 #include "parksim/sweep/shards/Merge.h"
 #include "parksim/sweep/spec/EpisodeExpansion.h"

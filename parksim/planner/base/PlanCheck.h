@@ -1,10 +1,10 @@
 #pragma once
 // The check every plan parksim did not make itself gets before it is driven: a user planner's
-// (a plugin's, a Python object's, a command's) and a plan file's. parksim's own planners
+// (a plugin's, a Python object's, a command's), in planScenario (PlanScenario.h) whatever front
+// end plans, and a plan file's or array's, in the episode pipeline. parksim's own planners
 // validate each trajectory as they build it (MotionValidator.h), so a differential drive's
-// plans from them are not checked again; a car's plans are checked whoever made them. A plan that
-// fails is never driven: the episode's verdict is plan_invalid, with the first offending time, pose
-// and obstacle or limit (pipeline/Verdict.h).
+// plans from them are not checked again; a car's plans are checked whoever made them. A plan that fails is never driven: the episode's verdict is plan_invalid, with the
+// first offending time, pose and obstacle or limit (pipeline/Verdict.h).
 
 #include <optional>
 #include <string>

@@ -10,6 +10,7 @@ const char* toString(PlanStatus status) {
     case PlanStatus::kInvalidStart: return "invalid_start";
     case PlanStatus::kInvalidGoal: return "invalid_goal";
     case PlanStatus::kCancelled: return "cancelled";
+    case PlanStatus::kPlanInvalid: return "plan_invalid";
   }
   return "?";
 }

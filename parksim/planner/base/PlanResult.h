@@ -18,6 +18,9 @@ enum class PlanStatus {
   kInvalidStart,    ///< the start footprint collides
   kInvalidGoal,     ///< the goal footprint collides (in every accepted heading)
   kCancelled,       ///< SearchDef::cancel was set before a trajectory to the goal was found
+  /// Set by parksim alone (planScenario), never by a planner: the solved plan of a planner that
+  /// is not parksim's own failed the check before driving (PlanCheck.h); the message says where.
+  kPlanInvalid,
 };
 
 const char* toString(PlanStatus status);
@@ -70,8 +73,10 @@ struct PlanStats {
 
 struct PlanResult {
   PlanStatus status = PlanStatus::kIterationLimit;
-  std::string message;                 ///< one line: why it failed, or a summary when solved
-  Trajectory trajectory;               ///< start to goal, exactly as validated; empty unless solved
+  std::string message;  ///< one line: why it failed, or a summary when solved
+  /// Start to goal, exactly as validated; empty unless solved, or kPlanInvalid (then the plan
+  /// that failed its check, kept to be looked at, never driven).
+  Trajectory trajectory;
   std::vector<Pose2> waypoints;        ///< poses where the solution's edges join, start first
   std::vector<Trajectory> tree_edges;  ///< the trees' edges at the end, if recorded
   /// Cost of `trajectory`, 0 unless solved: its path cost with PlannerDef's weights (m), or its

@@ -207,7 +207,8 @@ std::optional<PlanResult> placementFailure(const Scenario& scenario, const PlanS
 }
 
 // A user's planner, whose failures are its own (UserCodeError), not the input's: anything it
-// throws, and a solved result without a trajectory that can even be checked.
+// throws, a status only parksim gives, and a solved result without a trajectory that can even
+// be checked. A solved plan that can is checked (PlanCheck.h): one that fails is kPlanInvalid.
 PlanResult solveUserPlanner(Planner& planner, const PlannerInfo& info,
                             const PlanningProblem& problem) {
   const auto failed = [&](const std::string& what) {
@@ -222,6 +223,9 @@ PlanResult solveUserPlanner(Planner& planner, const PlannerInfo& info,
     throw failed(std::string("threw: ") + e.what());
   } catch (...) {
     throw failed("threw something that is not a std::exception");
+  }
+  if (result.status == PlanStatus::kPlanInvalid) {
+    throw failed("returned the status plan_invalid, which only parksim's plan check gives");
   }
   if (result.solved()) {
     if (std::optional<std::string> problem_text = malformedPlan(result.trajectory)) {
@@ -244,7 +248,7 @@ void setBounds(const Scenario& scenario, const TimingLimits& limits, PlanResult&
 
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
                         const PlanSetup& requested, const PlanProgress& progress,
-                        const PlannerRegistry& registry) {
+                        const PlannerRegistry& registry, double time_limit_s) {
   const PlanSetup setup = resolvedPlanSetup(requested, scenario, registry);
   const PlannerEntry& entry = registry.find(setup.planner);
   checkPlanningLimits(scenario, setup, registry);
@@ -259,7 +263,8 @@ PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checke
   const MotionValidator validator(checker, scenario.robot, scenario.lot, setup.validation);
   const TimingLimits limits = timingLimits(scenario.robot, setup.feedback_headroom,
                                            setup.timing_period_s, setup.start_jerk_radps3);
-  const PlanningProblem problem{scenario, checker, validator, *steering, setup, limits, progress};
+  const PlanningProblem problem{scenario, checker, validator, *steering,
+                                setup,    limits,  progress,  time_limit_s};
   PlanResult result;
   if (entry.info.trusted) {
     result = planner->solve(problem);
@@ -272,6 +277,16 @@ PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checke
     if (result.solved() && st.first_solution_s < 0.0) {
       st.first_solution_s = st.times.total_s;
       st.first_solution_iteration = st.iterations;
+    }
+  }
+  // The one check of a plan parksim did not make, whichever front end asked for it; a car's
+  // plans are checked whoever made them (its steering limits, docs/cars.md). parksim's own
+  // planners validate a differential drive's plans as they build them (MotionValidator.h).
+  if (result.solved() && (!entry.info.trusted || scenario.robot.isCar())) {
+    if (const std::optional<PlanViolation> v =
+            checkPlan(scenario, checker, result.trajectory, setup.validation)) {
+      result.status = PlanStatus::kPlanInvalid;
+      result.message = v->reason;
     }
   }
   if (result.solved()) setBounds(scenario, limits, result);

@@ -120,10 +120,14 @@ void checkPlanningLimits(const Scenario& scenario, const PlanSetup& setup,
 /// lower bound and free-space bound. parksim's planners smooth and time their plans themselves
 /// (PlanFinishing.h). A planner that is not built in and throws, or returns a solved result
 /// without a usable trajectory (empty, non-finite, times not increasing), raises
-/// UserCodeError (core/io/Error.h); its plan, solved or not, is checked later (PlanCheck.h).
-/// `progress` is passed to the planner.
+/// UserCodeError (core/Error.h); its solved plan (and any car's) is checked here (checkPlan, PlanCheck.h), and
+/// one that fails is returned as PlanStatus::kPlanInvalid with the violation as its message and
+/// the plan kept. Every front end plans through here, so none can drive, draw or report such a
+/// plan as solved. `progress` and `time_limit_s` (the run's limit on a user's planner, s; 0:
+/// none) are handed to the planner in its problem (Planner.h).
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
                         const PlanSetup& setup, const PlanProgress& progress = {},
-                        const PlannerRegistry& registry = builtInPlanners());
+                        const PlannerRegistry& registry = builtInPlanners(),
+                        double time_limit_s = 0.0);
 
 }  // namespace parksim

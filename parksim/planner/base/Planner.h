@@ -67,6 +67,10 @@ struct PlanningProblem {
   TimingLimits limits;
   /// Told of the search's progress (done of budget), for displays; may be empty.
   PlanProgress progress;
+  /// The run's limit on a user's planner, s (UserCodeLimits::planner_s, `--planner-timeout`;
+  /// 0: none): the watch of a worker process enforces it on code in parksim's process, and a
+  /// planner that runs a program of its own (the command planner) stops the program at it.
+  double time_limit_s = 0.0;
 
   /// The search settings (setup.search).
   const SearchDef& search() const;
@@ -112,6 +116,9 @@ struct PlannerInfo {
   bool trusted = false;
   /// The plugin that registered it ("" for built-ins).
   std::string plugin;
+  /// Set by a front end that registers user code of its own (neither a plugin's nor a command):
+  /// what it is, for results ("Python object my_module.Straight"; plan.json's planner_origin).
+  std::string origin;
 };
 
 /// Makes a planner with its parameters applied; throws Error naming the planner and the

@@ -372,6 +372,7 @@ void FrameRecorder::Impl::stopDrawing() {
 void FrameRecorder::Impl::render(const FrameInput& in, int index) {
   ViewState view;
   view.robot = in.pose;
+  view.robot_steer_rad = in.steer_rad;
   view.reference = in.reference;
   // Resting bodies creep by nanometres in the simulation; an obstacle is drawn where it is once
   // it moved more than an invisible amount (kShownPositionStep_m), so the kept lot stays kept.

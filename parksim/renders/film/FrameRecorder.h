@@ -98,6 +98,7 @@ double checkFrameLimits(const FrameDef& def, double duration_s);
 struct FrameInput {
   double t_s = 0.0;                ///< simulated time, s; non-decreasing across calls
   Pose2 pose;                      ///< executed pose of the reference point
+  double steer_rad = 0.0;          ///< a car's measured steering angle: its front wheels turn
   std::optional<Pose2> reference;  ///< planned pose at t_s: drawn as an outline
   double position_error_m = 0.0;   ///< shown in the overlay
   double heading_error_rad = 0.0;  ///< shown in the overlay

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/model/Ackermann.h"
 #include "parksim/core/model/DiffDrive.h"
 
 namespace parksim {
@@ -177,7 +179,8 @@ Scene buildLotScene(const Scenario& scenario, const SceneStyle& style,
   return scene;
 }
 
-void addRobot(Scene& scene, const RobotDef& robot, const Pose2& pose, const SceneStyle& style) {
+void addRobot(Scene& scene, const RobotDef& robot, const Pose2& pose, const SceneStyle& style,
+              double steer_rad) {
   // Drawn lengths are the study robot's, in proportion to this one's size.
   const double scale = robot.sizeScale();
   const double clearance = std::min(0.004 * scale, 0.1 * robot.height_m);
@@ -190,6 +193,17 @@ void addRobot(Scene& scene, const RobotDef& robot, const Pose2& pose, const Scen
     wheel.half_extents = {robot.wheel_radius_m, 0.5 * wheel_width};
     wheel.yaw = pose.theta;
     scene.boxes.push_back({wheel, 0.0, 2.0 * robot.wheel_radius_m, style.wheel});
+  }
+  if (robot.isCar()) {
+    const FrontWheelAngles turned = ackermannAngles(robot, steer_rad);
+    for (const auto& [side, angle] :
+         {std::pair{-1.0, turned.right_rad}, std::pair{1.0, turned.left_rad}}) {
+      OrientedBox wheel;
+      wheel.center = toWorld(pose, robot.axle_distance_m, side * 0.5 * robot.wheel_base_m);
+      wheel.half_extents = {robot.wheel_radius_m, 0.5 * wheel_width};
+      wheel.yaw = pose.theta + angle;
+      scene.boxes.push_back({wheel, 0.0, 2.0 * robot.wheel_radius_m, style.wheel});
+    }
   }
   // Heading marker: a triangle in the front part of the top face. It stays ahead of the
   // footprint's centre, which therefore shows the body colour (tests rely on it).
@@ -237,7 +251,7 @@ SceneLayers buildSceneLayers(const Scenario& scenario, const ViewState& view,
   }
   addPath(back, view.planned_path, Layers::kPlanned, style.planned, style.path_px);
   addPath(front, view.executed_path, Layers::kExecuted, style.executed, style.path_px);
-  if (view.robot) addRobot(front, scenario.robot, *view.robot, style);
+  if (view.robot) addRobot(front, scenario.robot, *view.robot, style, view.robot_steer_rad);
   if (view.reference) {
     // Above the body, so that in the top view a tracking error shows as the outline's offset
     // from the body rather than being hidden under it.

@@ -27,7 +27,10 @@ struct Overlay {
 /// Everything about an instant that is not in the Scenario. Spans are views: whatever they point
 /// at must outlive the buildScene call (not the Scene, which copies what it needs).
 struct ViewState {
-  std::optional<Pose2> robot;      ///< executed pose of the reference point; unset: no robot
+  std::optional<Pose2> robot;  ///< executed pose of the reference point; unset: no robot
+  /// A car's steering angle (bicycle model), rad: its front wheels are drawn turned by their
+  /// Ackermann angles of it (core/model/Ackermann.h).
+  double robot_steer_rad = 0.0;
   std::optional<Pose2> reference;  ///< pose the robot should be at now: drawn as an outline
   /// Box centre and yaw of every obstacle in scenario order (pushed robots move); empty: as in
   /// the scenario.
@@ -65,8 +68,10 @@ SceneLayers buildSceneLayers(const Scenario& scenario, const ViewState& view,
 std::vector<Pose2> samplePath(const Trajectory& trajectory, const RobotDef& robot,
                               double max_step_m = 0.005, double max_turn_rad = 0.1);
 
-/// Adds the robot at `pose`: body, wheels and a heading marker on top.
-void addRobot(Scene& scene, const RobotDef& robot, const Pose2& pose, const SceneStyle& style);
+/// Adds the robot at `pose`: body, wheels and a heading marker on top. A car (RobotDef::isCar)
+/// gets its front wheels too, axle_distance ahead, turned by steering angle `steer_rad`.
+void addRobot(Scene& scene, const RobotDef& robot, const Pose2& pose, const SceneStyle& style,
+              double steer_rad = 0.0);
 
 /// Adds `poses` as a polyline at height z_m.
 void addPath(Scene& scene, std::span<const Pose2> poses, double z_m, Rgba8 color, float width_px);

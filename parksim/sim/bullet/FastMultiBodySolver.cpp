@@ -33,7 +33,8 @@ namespace {
 // skipped (see solveConePair).
 class FastMultiBodySolver final : public btMultiBodyConstraintSolver {
  public:
-  explicit FastMultiBodySolver(const FastSolverDef& def) : def_(def) {}
+  explicit FastMultiBodySolver(const FastSolverDef& def)
+      : def_(def), warm_start_(def.warm_start_friction) {}
 
  protected:
   // Bullet's setup, then the rows as the iterations take them (resolveRows), with the one

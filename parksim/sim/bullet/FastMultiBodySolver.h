@@ -19,6 +19,11 @@ struct FastSolverDef {
   bool pairwise_dots = true;
   /// Rows start from the impulses they ended the last step with (SolverWarmStart.h).
   bool warm_start = true;
+  /// With warm_start: contacts' friction rows too. A car (sim/CarBody.h) starts them from zero:
+  /// on four wheels its friction forces are statically indeterminate, and started from the
+  /// last step's they kept it rocking at rest (1-6 mm/s, period two steps) at some iteration
+  /// counts (docs/simulation.md, "A car in Bullet").
+  bool warm_start_friction = true;
   /// Not null: the contact rows of the multibodies it covers against fixed objects are set up
   /// from it (MultiBodyContactRows.h) instead of Bullet's articulated-body pass per row;
   /// results differ by rounding. Must outlive the solver.

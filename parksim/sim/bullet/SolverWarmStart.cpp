@@ -123,6 +123,7 @@ void SolverWarmStart::apply(SolverRows& normals, SolverRows& frictions, SolverRo
                        double(normal[2]) * last->normal[2];
     if (same != 1 || cos < kSameNormalCos) continue;
     applyImpulse(n, btScalar(last->impulse), data, bodies);
+    if (!friction_) continue;
     applyImpulse(frictions[n.m_frictionIndex], btScalar(last->lateral1), data, bodies);
     applyImpulse(frictions[n.m_frictionIndex + 1], btScalar(last->lateral2), data, bodies);
   }

@@ -30,6 +30,9 @@ using SolverRows = btAlignedObjectArray<btMultiBodySolverConstraint>;
 
 class SolverWarmStart {
  public:
+  /// `friction` false: contacts' friction rows start from zero (a car's, DynamicsWorld.cpp).
+  explicit SolverWarmStart(bool friction = true) : friction_(friction) {}
+
   /// After a step's iterations: remembers the normal and friction impulses of every contact
   /// (see above). `frictions` holds two rows per normal row, at its m_frictionIndex.
   void record(const SolverRows& normals, const SolverRows& frictions,
@@ -51,6 +54,7 @@ class SolverWarmStart {
     double lateral1 = 0.0;
     double lateral2 = 0.0;
   };
+  bool friction_ = true;
   std::vector<Contact> contacts_;
   std::vector<Contact> scratch_;
 };

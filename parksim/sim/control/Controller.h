@@ -21,11 +21,21 @@
 // Commands are wheel angular speeds, rad/s, each within the robot's max_wheel_speed_radps. A
 // controller that is not built in and throws, returns a value that is not finite or outside
 // that limit is a controller_error (pipeline/Verdict.h), not an input error.
+//
+// A car (RobotDef::isCar, docs/cars.md) is asked carCommand() instead: a speed of its reference
+// point (or an acceleration) and a steering angle, checked against max_speed_mps,
+// max_accel_mps2 and max_steer_rad the same way. Its rear wheels are then driven at that speed
+// on the curvature of the steering angle measured at the tick (an electronic differential:
+// Ackermann.h's carWheelSpeeds), and its steering turns toward the angle at most
+// max_steer_rate_radps. The default carCommand() reads command()'s wheel speeds as a car's rear
+// wheels, so a controller written for the differential drive also drives a car.
 
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <optional>
 
 #include "parksim/core/geometry/Pose2.h"
 #include "parksim/core/model/DiffDrive.h"
@@ -59,6 +69,11 @@ struct ControllerSetup {
   /// True for the ideal robot (no realism active): the input's pose, twist and wheel speeds are
   /// the truth, and every physics step is a tick.
   bool ideal_robot = true;
+  /// The run's limit on one command of a user's controller, its reset included, s
+  /// (UserCodeLimits::controller_tick_s, `--controller-timeout`; 0: none): the watch of a
+  /// worker process enforces it on code in parksim's process, and a controller that runs a
+  /// process of its own (the command controller) gives up on the process at it.
+  double time_limit_s = 0.0;
 };
 
 /// What the robot knows at one control tick. Poses are in the lot frame.
@@ -80,6 +95,32 @@ struct ControllerInput {
   Twist reference_twist;
   WheelSpeeds feedforward;
   bool plan_ended = false;  ///< past the plan's end: the reference is its last pose, at rest
+  // A car (RobotDef::isCar; 0 for a differential drive):
+  /// Its measured steering angle (the bicycle angle of its front wheels' angles), rad.
+  double steer_rad = 0.0;
+  /// The plan's steering angle to aim at over the interval this tick's command will act (the
+  /// next point's angle from half the time its change takes before it, so that a steering
+  /// turning at its rate limit is centred on the plan's change: the feed-forward), rad.
+  double reference_steer_rad = 0.0;
+  /// The speed it was commanded at the last tick (what an acceleration command adds to), m/s.
+  double commanded_speed_mps = 0.0;
+};
+
+/// A car's command (RobotDef::isCar).
+struct CarCommand {
+  enum class Mode {
+    kSpeed,         ///< drive the reference point at speed_mps
+    kAcceleration,  ///< change the commanded speed by accel_mps2 for one control period
+  };
+  Mode mode = Mode::kSpeed;
+  /// Speed of the reference point (the rear axle's middle) along the heading, m/s; negative
+  /// reverses. Within +-max_speed_mps.
+  double speed_mps = 0.0;
+  /// kAcceleration: rate of change of the commanded speed, m/s^2, within +-max_accel_mps2.
+  double accel_mps2 = 0.0;
+  /// Front-wheel angle of the bicycle model to steer toward, rad, left positive, within
+  /// +-max_steer_rad.
+  double steer_rad = 0.0;
 };
 
 class Controller {
@@ -90,7 +131,18 @@ class Controller {
   virtual void reset(const ControllerSetup& setup) = 0;
   /// The wheel speed commands for this tick, rad/s.
   virtual WheelSpeeds command(const ControllerInput& input) = 0;
+  /// A car's command for this tick, or nothing (the default): the car is then driven by
+  /// command()'s wheel speeds read as its rear wheels' (carCommandOfWheels).
+  virtual std::optional<CarCommand> carCommand(const ControllerInput& /*input*/) {
+    return std::nullopt;
+  }
 };
+
+/// Wheel speeds read as a car's rear wheels': the speed of their mean rim speed, the steering
+/// angle of their curvature (`measured_steer_rad` while they stand still: below 1 mm/s the
+/// curvature is noise), both clamped to the car's limits.
+CarCommand carCommandOfWheels(const WheelSpeeds& wheels, const RobotDef& car,
+                              double measured_steer_rad);
 
 /// What the registry knows of a controller besides how to make one.
 struct ControllerInfo {

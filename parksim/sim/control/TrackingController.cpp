@@ -61,10 +61,18 @@ void TrackingController::reset(const ControllerSetup& setup) {
     top = std::max(top, std::abs(toTwist(p.wheels, robot_).v_mps));
   }
   gains_ = trackingGains(def_, robot_, top, setup.period_s, setup.latency_s);
+  if (robot_.isCar()) {
+    car_gains_ = carTrackingGains(def_, robot_, top, setup.period_s, setup.latency_s);
+  }
 }
 
 WheelSpeeds TrackingController::command(const ControllerInput& in) {
   return trackingCommand(in.pose, in.reference, in.reference_twist, gains_, robot_);
+}
+
+std::optional<CarCommand> TrackingController::carCommand(const ControllerInput& in) {
+  return carTrackingCommand(in.pose, in.reference, in.reference_twist.v_mps, in.reference_steer_rad,
+                            car_gains_, robot_);
 }
 
 namespace {
@@ -78,6 +86,9 @@ void bind(TrackingDef& d, ParamSet& s) {
   s.add("damping", &d.damping, "damping ratio of the heading loop at the design speed", 0.05, 10.0);
   s.add("design_speed_mps", &d.design_speed_mps,
         "speed the heading loop is tuned for, m/s; 0: the plan's top speed", 0.0, 1e3);
+  s.add("car_path_bandwidth_1pm", &d.car_path_bandwidth_1pm,
+        "a car's lateral loop per metre travelled, 1/m; 0: min(2 / axle, w / top speed)", 0.0, 1e3);
+  s.add("car_damping", &d.car_damping, "damping ratio of a car's lateral loop", 0.05, 10.0);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #pragma once
-// parksim's tracking controller ("tracking", the default Controller): Kanayama et al., "A
+// parksim's tracking controller ("tracking", the default Controller; a car's law is
+// CarTracking.h): Kanayama et al., "A
 // stable tracking control method for an autonomous mobile robot", ICRA 1990, adapted so that it
 // also corrects while the plan turns in place or reverses: the heading term is not scaled by
 // the reference speed.
@@ -23,6 +24,7 @@
 #include "parksim/core/model/DiffDrive.h"
 #include "parksim/core/model/RobotDef.h"
 #include "parksim/core/model/Trajectory.h"
+#include "parksim/sim/control/CarTracking.h"
 #include "parksim/sim/control/Controller.h"
 
 namespace parksim {
@@ -56,6 +58,11 @@ struct TrackingDef {
   /// Speed the heading loop is tuned for, m/s; 0: the plan's top speed, at least 5 % of the
   /// robot's top speed (so a plan that barely moves gets bounded gains).
   double design_speed_mps = 0.0;
+  /// A car (CarTracking.h): the lateral loop's bandwidth per metre travelled, 1/m; 0:
+  /// automatic, min(2 / axle_distance, w / plan top speed).
+  double car_path_bandwidth_1pm = 0.0;
+  /// A car: the damping ratio of its lateral loop.
+  double car_damping = 0.7;
 };
 
 /// The gains `def` gives for `robot` following a plan whose top reference-point speed is
@@ -78,14 +85,18 @@ class TrackingController : public Controller {
 
   void reset(const ControllerSetup& setup) override;
   WheelSpeeds command(const ControllerInput& input) override;
+  /// A car's law (CarTracking.h).
+  std::optional<CarCommand> carCommand(const ControllerInput& input) override;
 
   /// The gains reset() derived.
   const TrackingGains& gains() const { return gains_; }
+  const CarTrackingGains& carGains() const { return car_gains_; }
 
  private:
   TrackingDef def_;
   RobotDef robot_;
   TrackingGains gains_;
+  CarTrackingGains car_gains_;
 };
 
 /// The registry entry of "tracking" (ControllerRegistry.cpp lists it).

@@ -11,6 +11,7 @@
 #include "parksim/core/geometry/Angle.h"
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/model/Ackermann.h"
 #include "parksim/sim/control/TrackingController.h"
 #include "parksim/sim/episode/ContactEvents.h"
 #include "parksim/sim/episode/EpisodeStatistics.h"
@@ -145,6 +146,10 @@ struct Episode::Impl {
   std::vector<ExecutedRow> rows;
   ExecutedRow current;
   std::string controller_error;
+  // A car: the steering target of the steps from the last tick on, and the speed last
+  // commanded (an acceleration command adds to it).
+  double steer_cmd = 0.0;
+  double car_speed_cmd = 0.0;
   // Encoder readings and time at the last control tick (the realism's measured wheel speeds).
   WheelSpeeds tick_encoders;
   double tick_t = 0.0;
@@ -170,6 +175,9 @@ struct Episode::Impl {
     row.wheels = state.wheels;
     row.pos_err_m = positionDistance(row.pose, row.reference);
     row.heading_err_rad = angleDiff(row.pose.theta, row.reference.theta);
+    row.steer_ref_rad = reference.steerAt(planTime(k));
+    row.steer_cmd_rad = world.steerTarget();
+    row.steer_rad = state.steer_rad;
     row.estimate = row.pose;
     row.slip_mps = state.slip_mps;
     row.encoder_rad = state.wheel_angles;
@@ -205,6 +213,7 @@ struct Episode::Impl {
     setup.latency_s = loop ? loop->def.control.latency_s : 0.0;
     setup.estimated_pose = loop && loop->def.estimator.kind != EstimatorKind::kTruth;
     setup.ideal_robot = !loop;
+    setup.time_limit_s = controller.time_limit_s;
     if (controller.trusted) {
       controller.controller->reset(setup);
       return;
@@ -246,6 +255,9 @@ struct Episode::Impl {
     }
     in.reference_twist = reference.twistAt(act_mid);
     in.feedforward = reference.wheelsAt(act_mid);
+    in.steer_rad = state.steer_rad;
+    in.reference_steer_rad = reference.steerTargetAt(act_mid);
+    in.commanded_speed_mps = car_speed_cmd;
     return in;
   }
 
@@ -256,13 +268,20 @@ struct Episode::Impl {
       const long k = world.steps();
       const double mid = loop ? planTime(k) + loop->def.control.latency_s + 0.5 * loop->holdPeriod()
                               : planTime(k) + 0.5 * dt;
+      steer_cmd = reference.steerTargetAt(mid);
       return reference.wheelsAt(mid);
     }
     const ControllerInput in = controllerInput();
+    if (scenario.robot.isCar()) return carCommand(in);
     if (controller.trusted) return controller.controller->command(in);
     WheelSpeeds out;
     guarded([&] { out = controller.controller->command(in); }, "command");
     if (!controller_error.empty()) return {};
+    return checkedWheels(out, in);
+  }
+
+  // A user's wheel speeds, or zero after recording why they are refused.
+  WheelSpeeds checkedWheels(const WheelSpeeds& out, const ControllerInput& in) {
     const double limit = scenario.robot.max_wheel_speed_radps;
     const auto bad = [&](double w) { return !(std::abs(w) <= limit * (1.0 + 1e-9)); };
     if (bad(out.left_radps) || bad(out.right_radps)) {
@@ -274,6 +293,60 @@ struct Episode::Impl {
       return {};
     }
     return out;
+  }
+
+  // A car's command (Controller.h): the controller's own, or its wheel speeds read as the rear
+  // wheels'; a user's checked against the car's limits.
+  WheelSpeeds carCommand(const ControllerInput& in) {
+    std::optional<CarCommand> out;
+    WheelSpeeds wheels;
+    const auto ask = [&] {
+      out = controller.controller->carCommand(in);
+      if (!out) wheels = controller.controller->command(in);
+    };
+    if (controller.trusted) {
+      ask();
+    } else {
+      guarded(ask, "command");
+      if (!controller_error.empty()) return {};
+      if (out && !withinCarLimits(*out, in.t_s)) return {};
+      if (!out) {
+        wheels = checkedWheels(wheels, in);
+        if (!controller_error.empty()) return {};
+      }
+    }
+    return applyCarCommand(out ? *out : carCommandOfWheels(wheels, scenario.robot, in.steer_rad));
+  }
+
+  // Whether a user's car command is finite and within the car's limits; records why not.
+  bool withinCarLimits(const CarCommand& c, double t_s) {
+    const RobotDef& car = scenario.robot;
+    const auto check = [&](double value, double limit, const char* what, const char* field) {
+      if (std::abs(value) <= limit * (1.0 + 1e-9)) return true;
+      fail("returned " + std::string(what) + " " + formatGeneral(value, 6) +
+           " at t = " + formatFixed(t_s, 3) + " s: " +
+           (std::isfinite(value) ? "beyond robot." + std::string(field) + " " + formatGeneral(limit)
+                                 : std::string("not a number")));
+      return false;
+    };
+    const bool by_accel = c.mode == CarCommand::Mode::kAcceleration;
+    return (by_accel ? check(c.accel_mps2, car.max_accel_mps2, "acceleration", "max_accel_mps2")
+                     : check(c.speed_mps, car.max_speed_mps, "speed", "max_speed_mps")) &&
+           check(c.steer_rad, car.max_steer_rad, "steering angle", "max_steer_rad");
+  }
+
+  // The car's command for the steps from this tick on: its steering target, and its rear
+  // wheels at the commanded speed on the curvature its steering has now (an electronic
+  // differential, Ackermann.h's carWheelSpeeds).
+  WheelSpeeds applyCarCommand(const CarCommand& c) {
+    const RobotDef& car = scenario.robot;
+    const double period = loop ? loop->holdPeriod() : dt;
+    const double v = c.mode == CarCommand::Mode::kAcceleration
+                         ? car_speed_cmd + c.accel_mps2 * period
+                         : c.speed_mps;
+    car_speed_cmd = std::clamp(v, -car.max_speed_mps, car.max_speed_mps);
+    steer_cmd = c.steer_rad;
+    return limitWheelSpeeds(carWheelSpeeds(car, car_speed_cmd, world.robot().steer_rad), car);
   }
 
   // Runs a user's controller call; what it throws ends the episode with a controller error.
@@ -301,22 +374,28 @@ struct Episode::Impl {
   // One step, driven by the tracking controller or by `external`: with a realism, `external`
   // replaces the controller's command at the control ticks and goes the same way (latency,
   // wheel-speed loop, motors).
-  void advance(const std::optional<WheelSpeeds>& external) {
+  void advance(const std::optional<WheelSpeeds>& external,
+               const std::optional<CarCommand>& external_car = std::nullopt) {
+    const auto next = [&] {
+      return external_car ? applyCarCommand(*external_car) : external ? *external : command();
+    };
     if (loop) {
       const long k = world.steps();
       if (loop->controlDue(k)) {
-        const WheelSpeeds cmd = external ? *external : command();
+        const WheelSpeeds cmd = next();
         if (endOnControllerError()) return;
         loop->tick(k, cmd);
+        world.setSteerTarget(steer_cmd);
       }
       loop->actuate(k, world);
       world.step();
       loop->sense(world);
       measure(loop->setpoint);
     } else {
-      const WheelSpeeds cmd = external ? *external : command();
+      const WheelSpeeds cmd = next();
       if (endOnControllerError()) return;
       world.setWheelTargets(cmd);
+      world.setSteerTarget(steer_cmd);
       world.step();
       measure(cmd);
     }
@@ -346,10 +425,11 @@ struct Episode::Impl {
     return true;
   }
 
-  void timed(const std::optional<WheelSpeeds>& external) {
+  void timed(const std::optional<WheelSpeeds>& external,
+             const std::optional<CarCommand>& external_car = std::nullopt) {
     if (finished) return;
     const auto start = std::chrono::steady_clock::now();
-    advance(external);
+    advance(external, external_car);
     wall += std::chrono::steady_clock::now() - start;
   }
 };
@@ -366,6 +446,8 @@ Episode::~Episode() = default;
 void Episode::step() { impl_->timed(std::nullopt); }
 
 void Episode::step(const WheelSpeeds& command) { impl_->timed(command); }
+
+void Episode::step(const CarCommand& command) { impl_->timed(std::nullopt, command); }
 
 WheelSpeeds Episode::controllerCommand() { return impl_->command(); }
 

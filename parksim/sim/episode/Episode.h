@@ -52,6 +52,8 @@ struct EpisodeController {
   bool trusted = true;
   /// Told when an untrusted controller's code starts and ends (UserCodeWatch.h); may be null.
   UserCodeWatch* watch = nullptr;
+  /// The run's limit on one command, s (ControllerSetup::time_limit_s; 0: none).
+  double time_limit_s = 0.0;
 };
 
 /// Physics steps the episode of `plan` may take at most: (plan duration + max_stop_time_s) /
@@ -83,6 +85,11 @@ class Episode {
   /// against the plan as usual, and the episode still ends at rest after the plan's end or at
   /// the time limit. Does nothing once finished().
   void step(const WheelSpeeds& command);
+  /// A car's step driven by `command` (Controller.h's CarCommand), as step(WheelSpeeds) is:
+  /// its steering's target and its rear wheels at the commanded speed on the curvature its
+  /// steering has. Not checked against the car's limits: the speed is clamped to
+  /// max_speed_mps, the steering to max_steer_rad and its rate by the car itself.
+  void step(const CarCommand& command);
   /// What the controller commands now, with its input as step() would give it (from its
   /// estimate under a realism). Asks the controller, so a controller with state advances it.
   WheelSpeeds controllerCommand();

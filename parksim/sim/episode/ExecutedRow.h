@@ -14,6 +14,10 @@ struct ExecutedRow {
   WheelSpeeds wheels;            ///< measured wheel joint speeds
   double pos_err_m = 0.0;        ///< |position - reference position|, m
   double heading_err_rad = 0.0;  ///< heading - reference heading, wrapped to [-pi, pi), rad
+  // A car's steering, bicycle angles (written to executed.csv only for a car):
+  double steer_ref_rad = 0.0;  ///< the plan's angle at the same time, rad
+  double steer_cmd_rad = 0.0;  ///< the steering's target during the step that ended here, rad
+  double steer_rad = 0.0;      ///< measured: the front wheels' joint angles' bicycle angle, rad
   // Realism (written to executed.csv only when the realism is not ideal):
   Pose2 estimate;                    ///< the pose the controller believes (the true pose for truth)
   double est_pos_err_m = 0.0;        ///< |estimate - pose| in position, m

@@ -47,4 +47,20 @@ WheelSpeeds ReferenceTrajectory::wheelsAt(double t_s) const {
 
 Twist ReferenceTrajectory::twistAt(double t_s) const { return toTwist(wheelsAt(t_s), robot_); }
 
+double ReferenceTrajectory::steerAt(double t_s) const {
+  const long i = segmentAt(t_s);
+  return plan_.points[static_cast<std::size_t>(std::max(0L, i))].steer_rad;
+}
+
+double ReferenceTrajectory::steerTargetAt(double t_s) const {
+  const long i = std::max(0L, segmentAt(t_s));
+  const auto& pts = plan_.points;
+  const auto next = static_cast<std::size_t>(i) + 1;
+  if (next >= pts.size()) return pts.back().steer_rad;
+  const double change = std::abs(pts[next].steer_rad - pts[next - 1].steer_rad);
+  const double lead =
+      robot_.max_steer_rate_radps > 0.0 ? 0.5 * change / robot_.max_steer_rate_radps : 0.0;
+  return t_s >= pts[next].t_s - lead ? pts[next].steer_rad : pts[next - 1].steer_rad;
+}
+
 }  // namespace parksim

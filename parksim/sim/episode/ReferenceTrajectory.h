@@ -26,6 +26,15 @@ class ReferenceTrajectory {
   WheelSpeeds wheelsAt(double t_s) const;
   /// Body twist held at plan time t_s.
   Twist twistAt(double t_s) const;
+  /// A car's steering angle held at plan time t_s (TrajectoryPoint::steer_rad): the first
+  /// point's before the start, the last point's from its time on, rad.
+  double steerAt(double t_s) const;
+  /// The angle a steering turning at most robot.max_steer_rate_radps aims at, at plan time t_s,
+  /// to follow the plan's held angles with every change centred on the time the new angle is
+  /// held from: the next point's angle from |change| / (2 rate) before that point's time, rad.
+  /// Turning through the change at the rate from there, the steering's curvature integrates to
+  /// the plan's over the change (the path's heading matches once it is done).
+  double steerTargetAt(double t_s) const;
 
   const Trajectory& plan() const { return plan_; }
 

@@ -1,5 +1,6 @@
 #include "parksim/sim/world/DynamicsWorld.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -13,14 +14,11 @@
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 
-#include "parksim/core/ProvenanceConfig.h"
 #include "parksim/core/io/Error.h"
 #include "parksim/core/model/Geometry.h"
 #include "parksim/core/system/ProvenanceConfig.h"
-#include "parksim/sim/bullet/DiscreteMultiBodyWorld.h"
-#include "parksim/sim/bullet/FastMultiBodySolver.h"
-#include "parksim/sim/bullet/MultiBodyInverseMass.h"
 #include "parksim/sim/world/BulletFrames.h"
+#include "parksim/sim/world/CarBody.h"
 #include "parksim/sim/world/ChassisContacts.h"
 #include "parksim/sim/world/CollisionGroups.h"
 #include "parksim/sim/world/GroundSlab.h"
@@ -58,6 +56,7 @@ void validate(const Scenario& scenario, const SimModelDef& model) {
   requirePositive(r.width_m, "robot.width_m");
   requirePositive(r.wheel_radius_m, "robot.wheel_radius_m");
   requirePositive(r.wheel_base_m, "robot.wheel_base_m");
+  requirePositive(model.cold_solver_iterations, "cold_solver_iterations");
   requirePositive(model.support_radius_m, "support_radius_m");
   requirePositive(model.support_mass_kg, "support_mass_kg");
   requirePositive(model.support_deflection_m, "support_clearance_m");
@@ -89,6 +88,16 @@ void validate(const Scenario& scenario, const SimModelDef& model) {
     throw Error("simulation: wheel_axle_inertia_kgm2 and joint_friction_nm must not be negative");
   }
   requirePositive(model.local_frame_grid_m, "local_frame_grid_m");
+  if (r.isCar()) {
+    requirePositive(r.axle_distance_m, "robot.axle_distance_m");
+    requirePositive(r.max_steer_rad, "robot.max_steer_rad");
+    requirePositive(r.max_steer_rate_radps, "robot.max_steer_rate_radps");
+    requirePositive(model.car.tyre_deflection_per_radius, "car tyre_deflection_per_radius");
+    requirePositive(model.car.knuckle_mass_fraction, "car knuckle_mass_fraction");
+    if (!(model.car.steer_position_gain > 0.0 && model.car.steer_position_gain <= 1.0)) {
+      throw Error("simulation: car steer_position_gain must lie in (0, 1]");
+    }
+  }
 }
 
 }  // namespace
@@ -105,11 +114,17 @@ struct DynamicsWorld::Impl {
   Impl(const Scenario& scenario, const Pose2& start, const SimModelDef& m)
       : physics(scenario.physics),
         model(m),
-        origin(originXY(localFrameOrigin(start, m.local_frame_grid_m))) {
+        origin(originXY(localFrameOrigin(start, m.local_frame_grid_m))),
+        car(scenario.robot.isCar()) {
     buildWorld();
     addGround(scenario.lot);
     obstacles.emplace(*world, scenario.obstacles, scenario.robot, physics, model, origin);
-    robot.emplace(*world, scenario.robot, physics, model, start, origin, *kernel);
+    if (scenario.robot.isCar()) {
+      robot = std::make_unique<CarBody>(*world, scenario.robot, physics, model, start, origin);
+    } else {
+      robot = std::make_unique<RobotBody>(*world, scenario.robot, physics, model, start, origin,
+                                          *kernel);
+    }
     state = robot->state();
     obstacles->wakeNear(start);
   }
@@ -117,6 +132,7 @@ struct DynamicsWorld::Impl {
   PhysicsDef physics;
   SimModelDef model;
   Eigen::Vector2d origin;
+  bool car;
 
   // Destroyed in reverse order: the robot and the bodies leave the world before it goes.
   std::unique_ptr<btDefaultCollisionConfiguration> config;
@@ -128,9 +144,10 @@ struct DynamicsWorld::Impl {
   std::unique_ptr<btBoxShape> ground_shape;
   std::unique_ptr<btRigidBody> ground;
   std::optional<ObstacleBodies> obstacles;
-  std::optional<RobotBody> robot;
+  std::unique_ptr<EgoBody> robot;
 
   WheelSpeeds targets;
+  double steer_target = 0.0;
   WheelSpeeds torques;
   RobotState state;
   long step_count = 0;
@@ -151,13 +168,17 @@ struct DynamicsWorld::Impl {
     pools.m_defaultMaxCollisionAlgorithmPoolSize = 64;
     config = std::make_unique<btDefaultCollisionConfiguration>(pools);
     dispatcher = std::make_unique<btCollisionDispatcher>(config.get());
-    kernel.emplace(model, *dispatcher);
+    // A car's friction rows start cold: warm-started, its chassis kept rocking at rest at
+    // 1-6 mm/s (docs/simulation.md, "A car in Bullet").
+    kernel.emplace(model, *dispatcher, /*warm_start_friction=*/!car);
     pair_filter = makeFixedObstaclePairFilter();
     broadphase = std::make_unique<btDbvtBroadphase>();
     broadphase->getOverlappingPairCache()->setOverlapFilterCallback(pair_filter.get());
     world = kernel->makeWorld(*dispatcher, *broadphase, *config);
     world->setGravity(btVector3(0, 0, btScalar(-physics.gravity_mps2)));
-    world->getSolverInfo().m_numIterations = physics.solver_iterations;
+    world->getSolverInfo().m_numIterations = kernel->solverIterations(
+        car ? std::max(physics.solver_iterations, model.car.min_solver_iterations)
+            : physics.solver_iterations);
     world->getSolverInfo().m_leastSquaresResidualThreshold =
         btScalar(model.solver_residual_threshold);
     // Bullet warm-starts rigid bodies' contacts (woken parked robots) at 85 % of their last
@@ -200,6 +221,13 @@ void DynamicsWorld::setWheelTargets(const WheelSpeeds& targets) {
 
 const WheelSpeeds& DynamicsWorld::wheelTargets() const { return impl_->targets; }
 
+void DynamicsWorld::setSteerTarget(double steer_rad) {
+  impl_->steer_target = steer_rad;
+  impl_->robot->setSteerTarget(steer_rad);
+}
+
+double DynamicsWorld::steerTarget() const { return impl_->steer_target; }
+
 void DynamicsWorld::setWheelTorques(const WheelSpeeds& torques_nm) { impl_->torques = torques_nm; }
 
 double DynamicsWorld::leftWheelRadius() const { return impl_->robot->leftRadius(); }
@@ -210,6 +238,7 @@ void DynamicsWorld::step() {
   Impl& d = *impl_;
   const btScalar dt = btScalar(d.physics.time_step_s);
   if (d.model.body.drive == WheelDrive::kTorque) d.robot->addWheelTorques(d.torques);
+  d.robot->beforeStep(d.physics.time_step_s);
   // One internal step of exactly dt: the default arguments would step at 1/60 s and
   // interpolate.
   d.world->stepSimulation(dt, 1, dt);

@@ -18,6 +18,7 @@
 #include "parksim/core/geometry/Pose2.h"
 #include "parksim/core/model/DiffDrive.h"
 #include "parksim/core/model/Scenario.h"
+#include "parksim/sim/world/CarModelDef.h"
 
 namespace parksim {
 
@@ -119,6 +120,13 @@ struct SimModelDef {
   /// parked robots) start from all of theirs (Bullet's warm-starting factor 1, not 0.85).
   /// false: Bullet's own behaviour (kExact is then bit-identical to kBullet).
   bool warm_start = true;
+  /// Where Bullet's own solver stands in for a warm-started kExact or kFast (a build without
+  /// the transcription: effectiveSolverKernel), it runs at least this many iterations a step,
+  /// since its rows start from zero every step. With PhysicsDef's 15 a resting robot drifted
+  /// 0.86 mm in 10 s and an arc's heading settled 0.33 deg off; with 50 (the cap before warm
+  /// starting) a chassis driven into a bollard stayed 1.9 mm inside it; from 60 on it is pushed
+  /// out as with the warm start (docs/simulation.md, "Bullet's internals fenced").
+  int cold_solver_iterations = 100;
   /// The solver stops iterating once no row changed its velocity by more than the square
   /// root of this in the last iteration, (m/s)^2 (Bullet's m_leastSquaresResidualThreshold;
   /// PhysicsDef::solver_iterations stays the maximum). 3e-7 is about 0.5 mm/s: the largest
@@ -127,6 +135,8 @@ struct SimModelDef {
   double solver_residual_threshold = 3e-7;
   /// The robot as built (calibration errors, drive train); defaults: the nominal robot.
   TrueRobotDef body;
+  /// A car's tyres and steering servo (RobotDef::isCar; sim/CarBody.h).
+  CarModelDef car;
   /// Where the robot is expected to drive (e.g. the plan's bounding box, lot frame). The ground
   /// slab under it spans this region plus ground_margin_m, clipped to the lot plus 1 m: sized
   /// for float precision (a slab as large as a 200 m lot rounds contact points by ~1e-5 m),
@@ -170,6 +180,12 @@ struct RobotState {
   /// Slip of each wheel: its rim speed (joint speed x true radius) minus the ground speed of
   /// its contact point along the heading, m/s.
   WheelSpeeds slip_mps;
+  /// A car's steering, the bicycle angle of its front wheels' joint angles (Ackermann.h), rad;
+  /// 0 for a differential drive.
+  double steer_rad = 0.0;
+  /// The rate-limited bicycle angle its steering servos follow, rad (DynamicsWorld::
+  /// setSteerTarget); 0 for a differential drive.
+  double steer_setpoint_rad = 0.0;
   /// False if Bullet put the robot to sleep (it must never happen: sleeping is disabled).
   bool awake = true;
 };
@@ -189,6 +205,12 @@ class DynamicsWorld {
   /// fast as the torque limit (PhysicsDef::max_wheel_torque_nm) and ground friction allow.
   void setWheelTargets(const WheelSpeeds& targets);
   const WheelSpeeds& wheelTargets() const;
+
+  /// A car (RobotDef::isCar): the bicycle angle its steering turns to, rad, held until
+  /// changed. The servos' set-point moves toward it at most robot.max_steer_rate_radps and
+  /// stays within +-robot.max_steer_rad (sim/CarBody.h). A differential drive ignores it.
+  void setSteerTarget(double steer_rad);
+  double steerTarget() const;
 
   /// WheelDrive::kTorque: the torque of each wheel's motor for the next step, N m (positive
   /// drives forward). Ignored with kVelocityMotor.

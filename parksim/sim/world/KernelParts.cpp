@@ -1,5 +1,6 @@
 #include "parksim/sim/world/KernelParts.h"
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 
@@ -33,6 +34,7 @@ SolverKernel effectiveSolverKernel(SolverKernel requested) {
 
 struct KernelParts::Impl {
   SolverKernel kernel = SolverKernel::kBullet;
+  int min_iterations = 0;
   std::optional<SphereBoxContacts> sphere_box;  // registered with the dispatcher
 #if PARKSIM_BULLET_TRANSCRIPTION
   MultiBodyInverseMass inverse_mass;  // outlives the solver and the motors
@@ -40,10 +42,12 @@ struct KernelParts::Impl {
   std::unique_ptr<btMultiBodyConstraintSolver> solver;
 };
 
-KernelParts::KernelParts(const SimModelDef& model, btCollisionDispatcher& dispatcher)
+KernelParts::KernelParts(const SimModelDef& model, btCollisionDispatcher& dispatcher,
+                         bool warm_start_friction)
     : impl_(std::make_unique<Impl>()) {
   Impl& d = *impl_;
   d.kernel = effectiveSolverKernel(model.solver);
+  if (d.kernel != model.solver && model.warm_start) d.min_iterations = model.cold_solver_iterations;
   if (d.kernel == SolverKernel::kBullet) {
     d.solver = std::make_unique<btMultiBodyConstraintSolver>();
     return;
@@ -53,18 +57,24 @@ KernelParts::KernelParts(const SimModelDef& model, btCollisionDispatcher& dispat
   FastSolverDef fast;
   fast.pairwise_dots = d.kernel == SolverKernel::kFast;
   fast.warm_start = model.warm_start;
+  fast.warm_start_friction = warm_start_friction;
   // kFast sets the robot's rows up from its constant mass matrix (rounding differs from
   // Bullet's); kExact keeps Bullet's setup, bit for bit.
   if (d.kernel == SolverKernel::kFast) fast.inverse_mass = &d.inverse_mass;
   d.solver = makeFastMultiBodySolver(fast);
 #else
   (void)dispatcher;
+  (void)warm_start_friction;
 #endif
 }
 
 KernelParts::~KernelParts() = default;
 
 SolverKernel KernelParts::kernel() const { return impl_->kernel; }
+
+int KernelParts::solverIterations(int iterations) const {
+  return std::max(iterations, impl_->min_iterations);
+}
 
 std::unique_ptr<btMultiBodyDynamicsWorld> KernelParts::makeWorld(btCollisionDispatcher& dispatcher,
                                                                  btBroadphaseInterface& broadphase,

@@ -22,8 +22,10 @@ namespace parksim {
 class KernelParts {
  public:
   /// The parts of effectiveSolverKernel(model.solver) for a world of `dispatcher`, which must
-  /// outlive them.
-  KernelParts(const SimModelDef& model, btCollisionDispatcher& dispatcher);
+  /// outlive them. `warm_start_friction`: whether the transcribed solver warm-starts friction
+  /// rows too (FastSolverDef; false for a car).
+  KernelParts(const SimModelDef& model, btCollisionDispatcher& dispatcher,
+              bool warm_start_friction = true);
   ~KernelParts();
 
   KernelParts(const KernelParts&) = delete;
@@ -31,6 +33,11 @@ class KernelParts {
 
   /// The kernel these parts run.
   SolverKernel kernel() const;
+
+  /// The most solver iterations per step for a world whose PhysicsDef asks for `iterations`:
+  /// those, or SimModelDef::cold_solver_iterations if more where Bullet's own solver stands in
+  /// for a warm-started kernel.
+  int solverIterations(int iterations) const;
 
   /// The world that steps with this kernel's solver; it must not outlive these parts.
   std::unique_ptr<btMultiBodyDynamicsWorld> makeWorld(btCollisionDispatcher& dispatcher,

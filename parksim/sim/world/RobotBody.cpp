@@ -14,8 +14,6 @@
 
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/NumberFormat.h"
-#include "parksim/sim/bullet/MultiBodyInverseMass.h"
-#include "parksim/sim/bullet/WheelMotor.h"
 #include "parksim/sim/world/BulletFrames.h"
 #include "parksim/sim/world/CollisionGroups.h"
 #include "parksim/sim/world/KernelParts.h"

@@ -16,6 +16,7 @@
 #include "parksim/core/model/DiffDrive.h"
 #include "parksim/core/model/Scenario.h"
 #include "parksim/sim/world/DynamicsWorld.h"
+#include "parksim/sim/world/EgoBody.h"
 
 class btCollisionObject;
 class btCollisionShape;
@@ -28,7 +29,7 @@ namespace parksim {
 
 class KernelParts;
 
-class RobotBody {
+class RobotBody final : public EgoBody {
  public:
   /// Link indices of the multibody.
   static constexpr int kLeftWheel = 0;
@@ -46,25 +47,25 @@ class RobotBody {
             const SimModelDef& model, const Pose2& start, const Eigen::Vector2d& origin,
             KernelParts& kernel);
   /// Removes the robot from the world.
-  ~RobotBody();
+  ~RobotBody() override;
 
   RobotBody(const RobotBody&) = delete;
   RobotBody& operator=(const RobotBody&) = delete;
 
   /// WheelDrive::kVelocityMotor: the motors' velocity targets, held until changed.
-  void setWheelTargets(const WheelSpeeds& targets);
+  void setWheelTargets(const WheelSpeeds& targets) override;
   /// WheelDrive::kTorque: joint torques for the next step (Bullet clears them after each).
-  void addWheelTorques(const WheelSpeeds& torques_nm);
+  void addWheelTorques(const WheelSpeeds& torques_nm) override;
 
   /// The robot's state now (RobotBodyState.cpp).
-  RobotState state() const;
+  RobotState state() const override;
 
-  const btCollisionObject* chassis() const;
+  const btCollisionObject* chassis() const override;
 
   /// True geometry (TrueRobotDef applied to the nominal robot), m.
-  double leftRadius() const { return left_radius_; }
-  double rightRadius() const { return right_radius_; }
-  double track() const { return track_; }
+  double leftRadius() const override { return left_radius_; }
+  double rightRadius() const override { return right_radius_; }
+  double track() const override { return track_; }
 
  private:
   void addColliders(btCollisionShape* chassis_shape, btCollisionShape* left_shape,

@@ -5,7 +5,7 @@
 #include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/OutcomeFacts.h"
-#include "parksim/results/EpisodeRecord.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 #include "parksim/sweep/spec/EpisodeSetup.h"
 
 namespace parksim {
@@ -48,6 +48,7 @@ nlohmann::ordered_json runSweepEpisode(const SweepEpisode& episode, const Episod
   const Clock::time_point t0 = Clock::now();
   EpisodeRequest request = sweepEpisodeRequest(episode);
   request.watch = watch;
+  request.limits = def.limits;
   applyRecord(def, def.episodes_dir + "/" + episode.id, request);
   const EpisodeOutcome out = runEpisodePipeline(request);
 

@@ -14,7 +14,7 @@
 #include "parksim/core/system/UserCodeWatch.h"
 #include "parksim/pipeline/EpisodeOutcome.h"
 #include "parksim/pipeline/Verdict.h"
-#include "parksim/results/EpisodeRecord.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 #include "parksim/sweep/spec/EpisodeExpansion.h"
 #include "parksim/sweep/spec/SweepSpec.h"
 
@@ -27,6 +27,9 @@ struct EpisodeRunDef {
   /// Serialises filming (one off-screen GL context at a time); required when
   /// record.film_failures is set.
   std::mutex* film_mutex = nullptr;
+  /// The limits on user code (EpisodeRequest::limits): a command planner or controller stops
+  /// its program at them; in worker processes the watch enforces them too (SweepRunner.h).
+  UserCodeLimits limits;
 };
 
 /// The episode's results row, without provenance: its id, its parameters (EpisodeParams.h)

@@ -4,7 +4,7 @@
 #include <set>
 
 #include "parksim/core/io/Error.h"
-#include "parksim/results/RowSeal.h"
+#include "parksim/results/tables/RowSeal.h"
 #include "parksim/sweep/shards/SweepManifest.h"
 #include "parksim/sweep/spec/SweepSpecReader.h"
 

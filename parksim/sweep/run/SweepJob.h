@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "parksim/results/ResultsTable.h"
+#include "parksim/results/tables/ResultsTable.h"
 #include "parksim/sweep/run/SweepRunner.h"
 #include "parksim/sweep/shards/Shard.h"
 #include "parksim/sweep/spec/EpisodeExpansion.h"

@@ -220,6 +220,7 @@ SweepProgress runSweep(const std::vector<SweepEpisode>& episodes, const SweepRun
   if (todo.empty()) return p;
 
   EpisodeRunDef episode_def = def.episode;
+  episode_def.limits = def.limits;
   std::mutex film_mutex;
   episode_def.film_mutex = &film_mutex;
   RowSink sink(def, table, progress, p);

@@ -15,7 +15,7 @@
 #include <functional>
 #include <vector>
 
-#include "parksim/results/ResultsTable.h"
+#include "parksim/results/tables/ResultsTable.h"
 #include "parksim/sweep/run/EpisodeRun.h"
 #include "parksim/sweep/spec/EpisodeExpansion.h"
 #include "parksim/usercode/UserCodeIsolation.h"
@@ -47,7 +47,8 @@ struct SweepRunnerDef {
   int workers = 1;  ///< threads or processes, in [1, kMaxSweepWorkers]
   EpisodeRunDef episode;
   nlohmann::ordered_json provenance = provenanceColumns();  ///< added to every row
-  /// Limits on user code, in worker processes (core/system/UserCodeWatch.h).
+  /// Limits on user code (core/UserCodeWatch.h): in worker processes, and on every episode's
+  /// command planner and controller (EpisodeRunDef::limits, set from here).
   UserCodeLimits limits;
   /// Run around each fork of a worker process (an embedding interpreter's).
   ForkHooks fork_hooks;

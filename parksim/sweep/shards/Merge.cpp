@@ -15,8 +15,8 @@
 #include <set>
 
 #include "parksim/core/io/Error.h"
-#include "parksim/results/ResultsFile.h"
-#include "parksim/results/RowSeal.h"
+#include "parksim/results/tables/ResultsFile.h"
+#include "parksim/results/tables/RowSeal.h"
 #include "parksim/sweep/shards/SweepManifest.h"
 #include "parksim/sweep/spec/EpisodeParams.h"
 

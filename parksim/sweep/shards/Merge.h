@@ -14,7 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/results/TableVerify.h"
+#include "parksim/results/tables/TableVerify.h"
 
 namespace parksim {
 

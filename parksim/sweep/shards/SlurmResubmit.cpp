@@ -8,7 +8,7 @@
 
 #include "parksim/core/io/Error.h"
 #include "parksim/core/system/Process.h"
-#include "parksim/results/ResultsTable.h"
+#include "parksim/results/tables/ResultsTable.h"
 #include "parksim/sweep/shards/Shard.h"
 
 namespace parksim {

@@ -9,7 +9,7 @@
 #include "parksim/core/io/AtomicFile.h"
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/InputFile.h"
-#include "parksim/results/ResultsTable.h"
+#include "parksim/results/tables/ResultsTable.h"
 #include "parksim/sweep/spec/EpisodeParams.h"
 
 namespace parksim {

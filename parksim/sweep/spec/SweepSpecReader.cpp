@@ -20,7 +20,7 @@
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/planner/tree/TreePlanner.h"
 #include "parksim/realism/RealismDef.h"
-#include "parksim/results/EpisodeRecord.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 #include "parksim/scenario/yaml/YamlField.h"
 #include "parksim/sim/episode/ExecutionDef.h"
 #include "parksim/sweep/spec/ComponentChoiceReader.h"

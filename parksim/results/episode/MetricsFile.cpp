@@ -1,13 +1,13 @@
-#include "parksim/results/MetricsFile.h"
+#include "parksim/results/episode/MetricsFile.h"
 
 #include <algorithm>
 
 #include "parksim/core/io/Error.h"
 #include "parksim/core/system/Provenance.h"
 #include "parksim/realism/Distribution.h"
-#include "parksim/results/EpisodeRecord.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/PlanFile.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/PlanFile.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 
 namespace parksim {
 
@@ -110,7 +110,7 @@ void addRealisations(nlohmann::json& j, const std::vector<MetricsDocument::Reali
 
 nlohmann::json metricsDocumentJson(const MetricsDocument& doc) {
   EpisodeFacts facts;
-  facts.metrics = &doc.metrics;
+  facts.metrics = doc.metrics ? &*doc.metrics : nullptr;
   facts.plan_summary = &doc.plan_summary;
   facts.judged = true;
   facts.status = doc.status;

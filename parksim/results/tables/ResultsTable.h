@@ -23,7 +23,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/results/ResultsFile.h"
+#include "parksim/results/tables/ResultsFile.h"
 
 namespace parksim {
 

@@ -1,4 +1,4 @@
-#include "parksim/results/ResultsTable.h"
+#include "parksim/results/tables/ResultsTable.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -15,8 +15,8 @@
 
 #include "parksim/core/io/AtomicFile.h"
 #include "parksim/core/io/Error.h"
-#include "parksim/results/EpisodeRecord.h"
-#include "parksim/results/RowSeal.h"
+#include "parksim/results/tables/EpisodeRecord.h"
+#include "parksim/results/tables/RowSeal.h"
 
 namespace parksim {
 namespace {

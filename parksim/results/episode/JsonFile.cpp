@@ -1,4 +1,4 @@
-#include "parksim/results/JsonFile.h"
+#include "parksim/results/episode/JsonFile.h"
 
 #include <fstream>
 

@@ -1,4 +1,4 @@
-#include "parksim/results/RowSeal.h"
+#include "parksim/results/tables/RowSeal.h"
 
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/Fnv1a.h"

@@ -1,4 +1,4 @@
-#include "parksim/results/ExecutedFile.h"
+#include "parksim/results/episode/ExecutedFile.h"
 
 #include <array>
 #include <iterator>
@@ -30,6 +30,7 @@ constexpr std::array<const char*, 13> kRealismNames = {
     "x_est",       "y_est",        "theta_est",    "est_pos_err",  "est_heading_err",
     "effort_left", "effort_right", "torque_left",  "torque_right", "slip_left",
     "slip_right",  "encoder_left", "encoder_right"};
+constexpr std::array<const char*, 3> kSteerNames = {"steer_ref", "steer_cmd", "steer"};
 constexpr std::array<const char*, 5> kSensorNames = {"t_received", "t_taken", "x", "y", "theta"};
 
 std::array<double, 13> executedValues(const ExecutedRow& r) {
@@ -62,6 +63,10 @@ std::array<double, 13> realismValues(const ExecutedRow& r) {
           r.slip_mps.right_radps,
           r.encoder_rad.left_radps,
           r.encoder_rad.right_radps};
+}
+
+std::array<double, 3> steerValues(const ExecutedRow& r) {
+  return {r.steer_ref_rad, r.steer_cmd_rad, r.steer_rad};
 }
 
 std::array<double, 5> sensorValues(const PoseMeasurement& m, double time_step_s) {
@@ -130,39 +135,44 @@ std::string sensorsFileName(RecordFormat format) {
   return std::string("sensors.") + toString(format);
 }
 
-std::string executedCsv(const std::vector<ExecutedRow>& rows, bool realism_columns) {
+std::string executedCsv(const std::vector<ExecutedRow>& rows, bool realism_columns,
+                        bool steer_columns) {
   std::string out;
   appendHeader(out, kExecutedNames, true);
   if (realism_columns) appendHeader(out, kRealismNames, false);
+  if (steer_columns) appendHeader(out, kSteerNames, false);
   out += '\n';
-  out.reserve(out.size() + rows.size() * (realism_columns ? 600 : 300));
+  out.reserve(out.size() +
+              rows.size() * ((realism_columns ? 600 : 300) + (steer_columns ? 70 : 0)));
   for (const ExecutedRow& r : rows) {
     appendCsvLine(out, executedValues(r), true);
     if (realism_columns) appendCsvLine(out, realismValues(r), false);
+    if (steer_columns) appendCsvLine(out, steerValues(r), false);
     out += '\n';
   }
   return out;
 }
 
 void writeExecutedCsv(const std::string& path, const std::vector<ExecutedRow>& rows,
-                      bool realism_columns) {
-  writeFileAtomically(path, executedCsv(rows, realism_columns));
+                      bool realism_columns, bool steer_columns) {
+  writeFileAtomically(path, executedCsv(rows, realism_columns, steer_columns));
 }
 
-std::vector<DataColumn> executedColumns(const std::vector<ExecutedRow>& rows,
-                                        bool realism_columns) {
+std::vector<DataColumn> executedColumns(const std::vector<ExecutedRow>& rows, bool realism_columns,
+                                        bool steer_columns) {
   std::vector<DataColumn> columns;
   appendColumns(columns, kExecutedNames, rows, executedValues);
   if (realism_columns) appendColumns(columns, kRealismNames, rows, realismValues);
+  if (steer_columns) appendColumns(columns, kSteerNames, rows, steerValues);
   return columns;
 }
 
 void writeExecutedFile(const std::string& path, const std::vector<ExecutedRow>& rows,
-                       bool realism_columns, RecordFormat format) {
+                       bool realism_columns, RecordFormat format, bool steer_columns) {
   if (format == RecordFormat::kNpz) {
-    writeNpzFile(path, executedColumns(rows, realism_columns));
+    writeNpzFile(path, executedColumns(rows, realism_columns, steer_columns));
   } else {
-    writeExecutedCsv(path, rows, realism_columns);
+    writeExecutedCsv(path, rows, realism_columns, steer_columns);
   }
 }
 

@@ -2,6 +2,7 @@
 // An episode's measurements as metrics.json's flat keys, and back.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,8 +25,9 @@ EpisodeMetrics metricsFromJson(const nlohmann::json& json);
 
 /// Everything metrics.json holds about one episode request, as plain data.
 struct MetricsDocument {
-  /// The first (or only) realisation's measurements: metricsToJson's keys.
-  EpisodeMetrics metrics;
+  /// The first (or only) realisation's measurements: metricsToJson's keys; none when nothing
+  /// was driven (the plan failed, was invalid, or the planner failed: the verdict says which).
+  std::optional<EpisodeMetrics> metrics;
   std::string world;     ///< the world file ("world")
   std::string scenario;  ///< its scenario's name ("scenario")
   /// The tolerance judged ("tolerance.<bound>").

@@ -1,4 +1,4 @@
-#include "parksim/results/OmplLog.h"
+#include "parksim/results/reports/OmplLog.h"
 
 #include <algorithm>
 #include <cmath>

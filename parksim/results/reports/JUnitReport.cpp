@@ -1,4 +1,4 @@
-#include "parksim/results/JUnitReport.h"
+#include "parksim/results/reports/JUnitReport.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +9,8 @@
 
 #include "parksim/core/io/AtomicFile.h"
 #include "parksim/core/io/NumberFormat.h"
-#include "parksim/results/EpisodeRecord.h"
-#include "parksim/results/XmlText.h"
+#include "parksim/results/reports/XmlText.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 
 namespace parksim {
 

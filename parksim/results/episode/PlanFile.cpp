@@ -1,4 +1,4 @@
-#include "parksim/results/PlanFile.h"
+#include "parksim/results/episode/PlanFile.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -6,8 +6,8 @@
 #include "parksim/core/geometry/Angle.h"
 #include "parksim/core/io/AtomicFile.h"
 #include "parksim/planner/base/FreeSpaceBound.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 
 namespace parksim {
 
@@ -33,18 +33,12 @@ void addCarKeys(const Scenario& scenario, const Trajectory& plan, nlohmann::json
   j["cusp_times_s"] = cuspTimes(scenario.robot, plan);
 }
 
-}  // namespace
-
-nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
-                           const PlanResult& result) {
-  const PhaseTimes& t = result.stats.times;
-  nlohmann::json j = {
+// The keys of what was asked: the world, the planner and its settings, the build.
+nlohmann::json setupKeys(const Scenario& scenario, const PlanSetup& setup) {
+  return {
       {"provenance", provenanceToJson(buildProvenance())},
       {"world", scenario.source_path},
       {"scenario", scenario.name},
-      {"status", toString(result.status)},
-      {"solved", result.solved()},
-      {"message", result.message},
       {"planner", setup.planner},
       {"planner_params", setup.planner_params},
       {"steering", toString(setup.steering_kind)},
@@ -52,6 +46,22 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
       {"seed", setup.search.seed},
       {"max_iterations", setup.search.max_iterations},
       {"time_limit_s", setup.search.max_time_s},
+      {"motion_check_resolution_m", setup.validation.resolution_m},
+      {"timing", toString(setup.timing)},
+      {"feedback_headroom", setup.feedback_headroom},
+  };
+}
+
+}  // namespace
+
+nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
+                           const PlanResult& result) {
+  const PhaseTimes& t = result.stats.times;
+  nlohmann::json j = setupKeys(scenario, setup);
+  j.update({
+      {"status", toString(result.status)},
+      {"solved", result.solved()},
+      {"message", result.message},
       {"iterations", result.stats.iterations},
       {"tree_size", result.stats.tree_size},
       {"goal_tree_size", result.stats.goal_tree_size},
@@ -60,7 +70,6 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
       {"rewires", result.stats.rewires},
       {"smoothing_shortcuts", result.stats.smoothing_shortcuts},
       {"collision_queries", result.stats.collision_queries},
-      {"motion_check_resolution_m", setup.validation.resolution_m},
       {"planning_time_s", t.total_s},
       {"phase_times_s",
        {{"sampling", t.sampling_s},
@@ -73,9 +82,7 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
         {"smoothing", t.smoothing_s},
         {"heuristic", t.heuristic_s},
         {"timing", t.timing_s}}},
-      {"timing", toString(setup.timing)},
-      {"feedback_headroom", setup.feedback_headroom},
-  };
+  });
   if (result.stats.first_solution_iteration >= 0) {
     j["first_solution_s"] = result.stats.first_solution_s;
     j["first_solution_iteration"] = result.stats.first_solution_iteration;
@@ -139,18 +146,27 @@ nlohmann::json trajectorySummary(const Scenario& scenario, const Trajectory& pla
   return j;
 }
 
-void writePlanFiles(const std::string& dir, const Scenario& scenario, const PlanSetup& setup,
-                    const PlanResult& result) {
+nlohmann::json failedPlanSummary(const Scenario& scenario, const PlanSetup& setup,
+                                 const std::string& status, const std::string& message) {
+  nlohmann::json j = setupKeys(scenario, setup);
+  j["status"] = status;
+  j["solved"] = false;
+  j["message"] = message;
+  return j;
+}
+
+void writePlanFiles(const std::string& dir, const Scenario& scenario, const Trajectory* plan,
+                    const nlohmann::json& summary) {
   ensureDirectory(dir);
   const std::string traj_path = dir + "/trajectory.csv";
-  if (result.solved()) {
-    writeTrajectoryCsv(traj_path, result.trajectory, scenario.robot);
+  if (plan != nullptr) {
+    writeTrajectoryCsv(traj_path, *plan, scenario.robot);
   } else {
     // Never leave an earlier run's trajectory beside this run's plan.json.
     std::error_code ec;
     std::filesystem::remove(traj_path, ec);
   }
-  writeFileAtomically(dir + "/plan.json", jsonText(planSummary(scenario, setup, result)));
+  writeFileAtomically(dir + "/plan.json", jsonText(summary));
 }
 
 void addPlanKeys(nlohmann::json& metrics, const nlohmann::json& summary) {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "parksim/results/NpzFile.h"
+#include "parksim/results/episode/NpzFile.h"
 #include "parksim/sim/episode/Episode.h"
 
 namespace parksim {
@@ -36,20 +36,24 @@ std::string sensorsFileName(RecordFormat format);
 /// x_est,y_est,theta_est,est_pos_err,est_heading_err,effort_left,effort_right,torque_left,
 /// torque_right,slip_left,slip_right,encoder_left,encoder_right (m, rad, effort -1..1, N m,
 /// m/s, rad). Without them the file is exactly what parksim wrote before realism existed.
-std::string executedCsv(const std::vector<ExecutedRow>& rows, bool realism_columns = false);
+/// With `steer_columns` (a car, RobotDef::isCar) 3 more follow last: steer_ref,steer_cmd,steer
+/// (the plan's steering angle, the steering's target, the measured angle: bicycle angles in
+/// rad, ExecutedRow.h); a differential drive's file is what it was before cars.
+std::string executedCsv(const std::vector<ExecutedRow>& rows, bool realism_columns = false,
+                        bool steer_columns = false);
 
-/// Writes executedCsv(rows, realism_columns) to `path`. Throws Error.
+/// Writes executedCsv(rows, realism_columns, steer_columns) to `path`. Throws Error.
 void writeExecutedCsv(const std::string& path, const std::vector<ExecutedRow>& rows,
-                      bool realism_columns = false);
+                      bool realism_columns = false, bool steer_columns = false);
 
 /// executedCsv's columns as data, in its order and with its names.
 std::vector<DataColumn> executedColumns(const std::vector<ExecutedRow>& rows,
-                                        bool realism_columns = false);
+                                        bool realism_columns = false, bool steer_columns = false);
 
 /// Writes the rows to `path` in `format` (the name is the caller's: executedFileName). Throws
 /// Error.
 void writeExecutedFile(const std::string& path, const std::vector<ExecutedRow>& rows,
-                       bool realism_columns, RecordFormat format);
+                       bool realism_columns, RecordFormat format, bool steer_columns = false);
 
 /// sensors.csv's text: the pose measurements the controller received, in arrival order.
 /// Header t_received,t_taken,x,y,theta (s, m, rad; lot frame, with the sensor's noise).

@@ -1,11 +1,11 @@
-#include "parksim/results/TableVerify.h"
+#include "parksim/results/tables/TableVerify.h"
 
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <set>
 
-#include "parksim/results/ResultsFile.h"
+#include "parksim/results/tables/ResultsFile.h"
 
 namespace parksim {
 namespace fs = std::filesystem;

@@ -1,4 +1,4 @@
-#include "parksim/results/XmlText.h"
+#include "parksim/results/reports/XmlText.h"
 
 #include "parksim/core/io/Text.h"
 

@@ -1,4 +1,4 @@
-#include "parksim/results/NpzFile.h"
+#include "parksim/results/episode/NpzFile.h"
 
 #include <zlib.h>
 

@@ -1,4 +1,4 @@
-#include "parksim/results/EpisodeRecord.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 
 #include <algorithm>
 #include <array>
@@ -127,9 +127,12 @@ const std::array kFields = {
           [](const F& f) { return f.judged ? Json(f.failure) : Json(); }, kColumn),
 
     // plan: plan.json's statistics (metrics.json has every key of plan.json as plan_<key>)
-    field("plan_status", "plan_status", G::kPlan, T::kString, "", "the planner's status",
+    field("plan_status", "plan_status", G::kPlan, T::kString, "",
+          "the planner's status (plan_invalid: its plan failed the check; planner_error: it "
+          "failed)",
           [](const F& f) { return fromSummary(f, "status"); }, kColumn),
-    field("plan_solved", "plan_solved", G::kPlan, T::kBoolean, "", "a plan was found",
+    field("plan_solved", "plan_solved", G::kPlan, T::kBoolean, "",
+          "a plan that may be driven was found",
           [](const F& f) { return fromSummary(f, "solved"); }, kColumn),
     field("plan_max_iterations", "plan_max_iterations", G::kPlan, T::kInteger, "",
           "the iteration budget used", [](const F& f) { return fromSummary(f, "max_iterations"); },
