@@ -104,6 +104,7 @@ std::vector<PlanSetup> configurations(const Options& o, const Scenario& scenario
   }
   std::vector<PlanSetup> out;
   for (const std::string& name : builtInPlanners().names()) {
+    if (plannerFor(name, scenario.robot) != name) continue;  // gives way to another planner
     const PlannerInfo& info = builtInPlanners().find(name).info;
     PlanSetup s = base;
     s.planner = name;

@@ -31,6 +31,14 @@ set(PARKSIM_UNITY_SKIP
   # Added after the planner's batches were laid out: alone, it leaves them as they were
   # (TreeSearch.h's and TimeAStarSearch.cpp's Clock would otherwise meet in one batch).
   parksim/planner/search/ReachableBudget.cpp
+  # The same for the car planner's files (docs/planning.md, "Cars").
+  parksim/planner/search/CarAStar.cpp
+  parksim/planner/search/CarAStarPlanner.cpp
+  parksim/planner/motion/CarPath.cpp
+  parksim/planner/motion/CarPlanAlong.cpp
+  parksim/planner/motion/CarTimeCost.cpp
+  parksim/planner/motion/CarTiming.cpp
+  parksim/planner/motion/ClearanceValidator.cpp
   # Not a name: it includes ProvenanceGit.h, which a commit or a first edit rewrites; alone,
   # only this file is compiled again then, not its batch.
   parksim/core/system/Provenance.cpp

@@ -45,10 +45,12 @@ void PlanCliOptions::addTo(CLI::App& sub, const PlannerRegistry& planners) {
   sub.add_option("--seed", seed, "seed of the planner's random number generator")
       ->capture_default_str()
       ->check(unsigned64());
-  sub.add_option("--max-iterations", max_iterations,
-                 "iteration budget (A* planners: node expansions); auto: 200000 per search for "
-                 "time-a-star, else 2000 (tree planners) or 20000 (hybrid-a-star) times "
-                 "max(1, lot area / 2.16 m^2 / (robot size / 85 mm)^2)")
+  sub.add_option(
+         "--max-iterations", max_iterations,
+         "iteration budget (A* planners: node expansions); auto: 200000 per search for "
+         "time-a-star (car-a-star: at least 20000), else 2000 (tree planners; 20000 for a car) or "
+         "20000 (hybrid-a-star) times max(1, lot area / 2.16 m^2 / (robot size / 85 "
+         "mm)^2)")
       ->capture_default_str();
   sub.add_option("--time-limit", time_limit_s,
                  "wall-time budget of the search, s (0: none); the plan then depends on the "

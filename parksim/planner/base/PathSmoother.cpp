@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "parksim/core/io/Error.h"
 #include "parksim/core/model/DiffDrive.h"
+#include "parksim/planner/motion/CarPlanAlong.h"
+#include "parksim/planner/motion/CarTimeCost.h"
 #include "parksim/planner/motion/MotionPrimitives.h"
 #include "parksim/planner/motion/TimeCost.h"
 #include "parksim/planner/steering/BalkcomMason.h"
@@ -142,9 +145,8 @@ class Run {
         validator_(validator),
         limits_(limits),
         path_(start, std::move(pieces), robot),
-        stats_(stats),
-        cost_(limits) {
-    duration_ = timedDuration(path_.pieces(), limits_);
+        stats_(stats) {
+    duration_ = smoother_.duration(path_.pieces());
     stats_.before_s = duration_;
   }
 
@@ -156,17 +158,18 @@ class Run {
     const std::vector<PathPiece>& pieces = path_.pieces();
     const WheelSpeeds before = i > 0 ? pieces[i - 1].direction : WheelSpeeds{};
     const WheelSpeeds after = j < pieces.size() ? pieces[j].direction : WheelSpeeds{};
-    const double old_estimate = stretchEstimate(before,
-                                                {pieces.begin() + static_cast<std::ptrdiff_t>(i),
-                                                 pieces.begin() + static_cast<std::ptrdiff_t>(j)},
-                                                after);
+    const double old_estimate =
+        smoother_.stretchTime(before,
+                              {pieces.begin() + static_cast<std::ptrdiff_t>(i),
+                               pieces.begin() + static_cast<std::ptrdiff_t>(j)},
+                              after);
     struct Candidate {
       double gain;
       std::vector<PathPiece> middle;
     };
     std::vector<Candidate> candidates;
     for (std::vector<PathPiece>& middle : smoother_.connections(path_.pose(i), path_.pose(j))) {
-      const double gain = old_estimate - stretchEstimate(before, middle, after);
+      const double gain = old_estimate - smoother_.stretchTime(before, middle, after);
       if (gain > kImprovementS) candidates.push_back({gain, std::move(middle)});
     }
     std::stable_sort(candidates.begin(), candidates.end(),
@@ -175,7 +178,7 @@ class Run {
       ++stats_.validated;
       if (!validator_.isValid(geometryOf(path_.pose(i), c.middle, robot_))) continue;
       std::vector<PathPiece> candidate = path_.spliced(i, c.middle, j);
-      const double d = timedDuration(candidate, limits_);
+      const double d = smoother_.duration(candidate);
       if (!(d < duration_ - kImprovementS)) continue;
       path_.replace(std::move(candidate));
       duration_ = d;
@@ -183,18 +186,6 @@ class Run {
       return true;
     }
     return false;
-  }
-
-  // The estimated time of `stretch` between pieces of directions `before` and `after`.
-  double stretchEstimate(const WheelSpeeds& before, const std::vector<PathPiece>& stretch,
-                         const WheelSpeeds& after) const {
-    double t = 0.0;
-    WheelSpeeds last = before;
-    for (const PathPiece& p : stretch) {
-      t += cost_.pieceTime(p) + cost_.junctionTime(last, p.direction);
-      last = p.direction;
-    }
-    return t + cost_.junctionTime(last, after);
   }
 
   // From each junction in turn, the farthest shortcut among junctions at halving distances,
@@ -255,7 +246,7 @@ class Run {
             pieceOfMotion({sign * r * std::abs(angle), angle}, robot_),
             pieceOfMotion({b.v_mps - sign * cut, 0.0}, robot_)};
         std::vector<PathPiece> candidate = path_.spliced(i - 1, middle, i + 2);
-        const double d = timedDuration(candidate, limits_);
+        const double d = smoother_.duration(candidate);
         if (!(d < duration_ - kImprovementS)) continue;
         ++stats_.validated;
         const Pose2 arc_start = integrateExact(path_.pose(i - 1), motionOf(middle[0], robot_), 1.0);
@@ -280,7 +271,6 @@ class Run {
   TimingLimits limits_;
   Path path_;
   PathSmoothingStats& stats_;
-  TimeCostModel cost_;
   double duration_ = 0.0;  // exact, as timed
 };
 
@@ -300,12 +290,74 @@ PathSmoother::PathSmoother(const RobotDef& robot, const MotionValidator& validat
   }
 }
 
+PathSmoother::PathSmoother(const CarLimits& limits, const RobotDef& car,
+                           const MotionValidator& validator, const PathSmootherDef& def)
+    : robot_(car), validator_(validator), def_(def), car_(limits) {
+  if (!car.isCar()) throw Error("path smoother: car limits for a robot that is not a car");
+  for (double m : def.car_curve_radii) {
+    if (!(m >= 1.0)) throw Error("path smoother: a car's curve radii must be >= 1 (multiples)");
+    ReedsSheppDef rs;
+    rs.turning_radius_m = m * car.minTurningRadius();
+    curves_.push_back(std::make_unique<ReedsSheppSteering>(car, rs));
+  }
+}
+
 PathSmoother::~PathSmoother() = default;
+
+double PathSmoother::duration(const std::vector<PathPiece>& pieces) const {
+  return car_ ? carPlanDuration(pieces, robot_, *car_) : timedDuration(pieces, limits_);
+}
+
+namespace {
+
+// A car's driving direction (0: at rest) and curvature along a piece, and its length, m.
+struct CarMotion {
+  int direction = 0;
+  double kappa = 0.0;
+  double length = 0.0;
+};
+
+CarMotion carMotionOf(const WheelSpeeds& w, double travel, const RobotDef& car) {
+  const Twist t = toTwist(w, car);
+  if (!(std::abs(t.v_mps) > kTinyMotion)) return {};
+  return {t.v_mps > 0.0 ? 1 : -1, t.omega_radps / t.v_mps, std::abs(t.v_mps) * travel};
+}
+
+}  // namespace
+
+double PathSmoother::stretchTime(const WheelSpeeds& before, const std::vector<PathPiece>& stretch,
+                                 const WheelSpeeds& after) const {
+  if (!car_) {
+    const TimeCostModel cost(limits_);
+    double t = 0.0;
+    WheelSpeeds last = before;
+    for (const PathPiece& p : stretch) {
+      t += cost.pieceTime(p) + cost.junctionTime(last, p.direction);
+      last = p.direction;
+    }
+    return t + cost.junctionTime(last, after);
+  }
+  const CarTimeCost cost(robot_, *car_);
+  double t = 0.0;
+  CarMotion last = carMotionOf(before, 1.0, robot_);
+  double room = std::numeric_limits<double>::infinity();
+  for (const PathPiece& p : stretch) {
+    const CarMotion m = carMotionOf(p.direction, p.travel_rad, robot_);
+    if (m.direction == 0) continue;
+    room = std::min(room, 0.5 * m.length);
+    t += cost.pieceTime(m.length, m.kappa) +
+         cost.junctionTime(last.direction, last.kappa, m.direction, m.kappa, room);
+    last = m;
+    room = 0.5 * m.length;
+  }
+  const CarMotion end = carMotionOf(after, 1.0, robot_);
+  return t + cost.junctionTime(last.direction, last.kappa, end.direction, end.kappa, room);
+}
 
 std::vector<std::vector<PathPiece>> PathSmoother::connections(const Pose2& from,
                                                               const Pose2& to) const {
   std::vector<std::vector<PathPiece>> out;
-  out.push_back(piecesOf(balkcomMasonPath(from, to, 0.5 * robot_.wheel_base_m), robot_));
+  if (!car_) out.push_back(piecesOf(balkcomMasonPath(from, to, 0.5 * robot_.wheel_base_m), robot_));
   for (const auto& curve : curves_) out.push_back(curve->pieces(from, to));
   return out;
 }

@@ -15,13 +15,20 @@
 // Every new stretch is checked by the gap-free MotionValidator before it is kept, so the result
 // is as valid as the input; it starts where the input starts and ends where it ends (up to
 // rounding).
+//
+// A car's smoothing (the constructor with CarLimits) offers only Reeds-Shepp curves at a few
+// multiples of its tightest radius (a car cannot turn in place, so it has no corners to fillet)
+// and scores paths by the duration of the car's plan along them (CarPlanAlong.h), estimated per
+// piece by CarTimeCost.h.
 
 #include <memory>
+#include <optional>
 #include <random>
 #include <vector>
 
 #include "parksim/core/geometry/Pose2.h"
 #include "parksim/core/model/RobotDef.h"
+#include "parksim/planner/motion/CarTiming.h"
 #include "parksim/planner/motion/MotionValidator.h"
 #include "parksim/planner/motion/TimeOptimalTiming.h"
 #include "parksim/planner/steering/ReedsSheppSteering.h"
@@ -34,6 +41,9 @@ struct PathSmootherDef {
   std::vector<double> curve_radii_m{0.05, 0.1, 0.2, 0.4};
   /// Fillet radii tried at each corner, largest first, m (each > 0); empty: no fillets.
   std::vector<double> fillet_radii_m{0.4, 0.25, 0.16, 0.1, 0.06, 0.04, 0.025};
+  /// A car's Reeds-Shepp shortcuts: curves at these multiples (each >= 1) of its minimum
+  /// turning radius.
+  std::vector<double> car_curve_radii{1.0, 1.5, 2.0, 3.0};
 };
 
 struct PathSmoothingStats {
@@ -49,6 +59,9 @@ class PathSmoother {
   /// `limits` time the candidates (the plan's own timing limits).
   PathSmoother(const RobotDef& robot, const MotionValidator& validator, const TimingLimits& limits,
                const PathSmootherDef& def = {});
+  /// A car's smoothing (see the file comment): `limits` time the candidates as car plans.
+  PathSmoother(const CarLimits& limits, const RobotDef& car, const MotionValidator& validator,
+               const PathSmootherDef& def = {});
   ~PathSmoother();
   PathSmoother(const PathSmoother&) = delete;
   PathSmoother& operator=(const PathSmoother&) = delete;
@@ -63,12 +76,20 @@ class PathSmoother {
                                 int random_shortcuts, std::mt19937_64& rng,
                                 PathSmoothingStats* stats = nullptr) const;
 
+  /// The duration of `pieces` as timed (TimeOptimalTiming.h; a car's: CarPlanAlong.h), s.
+  double duration(const std::vector<PathPiece>& pieces) const;
+  /// The estimated time of `stretch` between pieces of directions `before` and `after`
+  /// (PathPiece::direction; zero wheel speeds: rest), s (TimeCost.h; a car's: CarTimeCost.h).
+  double stretchTime(const WheelSpeeds& before, const std::vector<PathPiece>& stretch,
+                     const WheelSpeeds& after) const;
+
  private:
   RobotDef robot_;
   const MotionValidator& validator_;
   TimingLimits limits_;
   PathSmootherDef def_;
   std::vector<std::unique_ptr<ReedsSheppSteering>> curves_;
+  std::optional<CarLimits> car_;  // set for a car
 };
 
 }  // namespace parksim

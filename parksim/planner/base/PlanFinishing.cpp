@@ -2,11 +2,13 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <vector>
 
 #include "parksim/planner/base/PathSmoother.h"
 #include "parksim/planner/base/PlanScenario.h"
+#include "parksim/planner/motion/CarPlanAlong.h"
 #include "parksim/planner/motion/PathCost.h"
 
 namespace parksim {
@@ -42,9 +44,78 @@ void smoothPlan(const PlanningProblem& problem, const TimingLimits& limits, Plan
   result.stats.times.total_s += secondsSince(t0);
 }
 
+// A car's plan: the path's pieces, smoothed as a car's when asked, made a car's plan along them
+// (CarPlanAlong.h); the path as it was found when the smoothed one cannot be. No plan when
+// neither can (the status says why).
+void finishCarPlan(const PlanningProblem& problem, bool smooth_geometry, PlanResult& result) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const RobotDef& car = problem.scenario.robot;
+  const MotionValidator& validator = problem.validator;
+  const long before = validator.queries();
+  const CarLimits limits =
+      carLimits(car, problem.setup.feedback_headroom, problem.setup.timing_period_s);
+  const Pose2 start = result.trajectory.points.front().pose;
+  const std::vector<PathPiece> found = pathPieces(result.trajectory);
+  std::vector<PathPiece> pieces = found;
+  if (smooth_geometry) {
+    // Shortcuts keep the search's clearance (carSearchValidation).
+    const std::unique_ptr<ClearanceValidator> clear = carSearchValidation(problem);
+    const PathSmoother smoother(limits, car, clear->validator(), problem.setup.smoothing);
+    std::mt19937_64 rng(problem.search().seed ^ 0x5e1ec7edULL);
+    PathSmoothingStats stats;
+    pieces = smoother.smooth(start, found, problem.search().smoothing_attempts, rng, &stats);
+    result.stats.smoothing_shortcuts += stats.shortcuts;
+    result.stats.collision_queries += clear->validator().queries();
+    result.stats.times.smoothing_s += secondsSince(t0);
+  }
+  // The plan ends where the path does, to a tenth of the goal's tolerance.
+  const double end_tolerance = 0.1 * problem.scenario.goal.position_tolerance_m;
+  std::optional<Trajectory> plan =
+      carPlanAlong(start, pieces, car, limits, validator, end_tolerance);
+  if (!plan && smooth_geometry) {
+    plan = carPlanAlong(start, found, car, limits, validator, end_tolerance);
+  }
+  result.stats.collision_queries += validator.queries() - before;
+  if (!plan) {
+    result.status = PlanStatus::kIterationLimit;
+    result.message = "the path found could not be made a car's plan that validates";
+    result.trajectory = {};
+    result.cost = 0.0;
+    result.cost_history.clear();
+  } else {
+    result.trajectory = std::move(*plan);
+    const CostWeights w{problem.search().reverse_penalty, problem.search().cusp_penalty_m};
+    result.cost = result.objective == PlanObjective::kDuration
+                      ? result.trajectory.duration()
+                      : trajectoryCost(result.trajectory, car, w);
+    if (result.cost_history.empty()) {
+      result.cost_history.push_back({result.stats.times.total_s, result.stats.iterations, 0.0});
+    }
+    result.cost_history.back().cost = result.cost;
+    if (!result.waypoints.empty()) result.waypoints.back() = result.trajectory.points.back().pose;
+  }
+  result.stats.times.timing_s = secondsSince(t0) - result.stats.times.smoothing_s;
+  result.stats.times.total_s += secondsSince(t0);
+}
+
 }  // namespace
 
+std::unique_ptr<ClearanceValidator> carSearchValidation(const PlanningProblem& problem) {
+  const Scenario& s = problem.scenario;
+  if (!s.robot.isCar()) return nullptr;
+  std::vector<Pose2> spared{s.start, s.goal.pose};
+  if (s.goal.either_heading) {
+    spared.push_back({s.goal.pose.x, s.goal.pose.y, s.goal.pose.theta + kPi});
+  }
+  return std::make_unique<ClearanceValidator>(problem.checker, s.robot, s.lot,
+                                              problem.setup.validation, std::move(spared));
+}
+
 void finishPlan(const PlanningProblem& problem, bool smooth_geometry, PlanResult& result) {
+  if (problem.scenario.robot.isCar()) {
+    finishCarPlan(problem, smooth_geometry, result);
+    return;
+  }
   const RobotDef& robot = problem.scenario.robot;
   const bool time_optimal = problem.setup.timing == TimingKind::kTimeOptimal;
   if (smooth_geometry) {

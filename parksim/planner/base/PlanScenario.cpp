@@ -143,9 +143,17 @@ PlanSetup resolvedPlanSetup(const PlanSetup& setup, const Scenario& scenario,
                             const PlannerRegistry& registry) {
   PlanSetup resolved = setup;
   resolved.validation = resolvedValidation(setup.validation, scenario.robot);
+  resolved.planner = plannerFor(setup.planner, scenario.robot);
+  if (scenario.robot.isCar()) {
+    // A car cannot turn in place: the steering functions that turn in place give way to
+    // Reeds-Shepp curves.
+    if (setup.steering_kind != SteeringKind::kReedsShepp) {
+      resolved.steering_kind = SteeringKind::kReedsShepp;
+    }
+  }
   if (resolved.search.max_iterations == kAutoIterations) {
     resolved.search.max_iterations =
-        defaultIterationBudget(registry.find(setup.planner).info, scenario);
+        defaultIterationBudget(registry.find(resolved.planner).info, scenario);
   }
   return resolved;
 }
@@ -241,8 +249,8 @@ void setBounds(const Scenario& scenario, const TimingLimits& limits, PlanResult&
 PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checker,
                         const PlanSetup& requested, const PlanProgress& progress,
                         const PlannerRegistry& registry, double time_limit_s) {
-  const PlannerEntry& entry = registry.find(requested.planner);
   const PlanSetup setup = resolvedPlanSetup(requested, scenario, registry);
+  const PlannerEntry& entry = registry.find(setup.planner);
   checkPlanningLimits(scenario, setup, registry);
   const std::unique_ptr<SteeringFunction> steering = makeSteering(scenario, setup);
   if (!(setup.feedback_headroom >= 0.0 && setup.feedback_headroom < 1.0)) {

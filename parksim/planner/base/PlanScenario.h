@@ -98,8 +98,11 @@ struct PlanSetup {
 };
 
 /// `setup` with its automatic choices made for `scenario`: a budget of kAutoIterations becomes
-/// the planner's default budget for the lot (PlannerRegistry.h). planScenario plans with this,
-/// and result files record it. Throws Error when `registry` has no such planner.
+/// the planner's default budget for the lot (PlannerRegistry.h); the planner is plannerFor's
+/// (car-a-star for time-a-star when the robot is a car, and the other way round). For a car
+/// (RobotDef::isCar), which cannot turn in place, the steering is Reeds-Shepp, whose arcs are at
+/// least the car's tightest radius (ReedsSheppSteering.h). planScenario plans with this, and result
+/// files record it. Throws Error when `registry` has no such planner.
 PlanSetup resolvedPlanSetup(const PlanSetup& setup, const Scenario& scenario,
                             const PlannerRegistry& registry = builtInPlanners());
 

@@ -14,6 +14,7 @@ namespace parksim {
 std::vector<PlannerEntry> treePlanners();  // TreePlanners.cpp: rrt, rrt-goal-connect, ...
 PlannerEntry hybridAStarPlanner();         // HybridAStarPlanner.cpp
 PlannerEntry timeAStarPlanner();           // TimeAStarPlanner.cpp
+PlannerEntry carAStarPlanner();            // CarAStarPlanner.cpp
 
 const PlannerRegistry& builtInPlanners() {
   static const PlannerRegistry registry = [] {
@@ -21,9 +22,17 @@ const PlannerRegistry& builtInPlanners() {
     for (PlannerEntry& e : treePlanners()) r.add(std::move(e));
     r.add(hybridAStarPlanner());
     r.add(timeAStarPlanner());
+    r.add(carAStarPlanner());
     return r;
   }();
   return registry;
+}
+
+std::string plannerFor(const std::string& planner, const RobotDef& robot) {
+  // time-a-star's moves turn in place; car-a-star is its car counterpart (costed by time too).
+  if (robot.isCar() && planner == "time-a-star") return "car-a-star";
+  if (!robot.isCar() && planner == "car-a-star") return "time-a-star";
+  return planner;
 }
 
 double lotSizeInStudyLots(const Scenario& scenario) {

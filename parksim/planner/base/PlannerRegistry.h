@@ -18,9 +18,16 @@ namespace parksim {
 using PlannerRegistry = ComponentRegistry<PlannerEntry>;
 
 /// parksim's own planners: rrt, rrt-goal-connect, rrt-star, rrt-connect (TreePlanners.cpp),
-/// hybrid-a-star (HybridAStarPlanner.cpp) and time-a-star (TimeAStarPlanner.cpp). Built once,
-/// never changed.
+/// hybrid-a-star (HybridAStarPlanner.cpp), time-a-star (TimeAStarPlanner.cpp) and car-a-star
+/// (CarAStarPlanner.cpp). Built once, never changed.
 const PlannerRegistry& builtInPlanners();
+
+/// The planner that plans for `robot` when `planner` is asked for: itself, except that the
+/// A* planner costed by time is each drive's own: a car (RobotDef::isCar), which cannot turn in
+/// place, is planned by car-a-star when time-a-star (the default planner, whose moves turn in
+/// place) is asked for, and a differential drive by time-a-star when car-a-star is.
+/// resolvedPlanSetup applies it.
+std::string plannerFor(const std::string& planner, const RobotDef& robot);
 
 /// Area of the study's lot (1.8 x 1.2 m), the unit of the default budgets' scaling, m^2.
 inline constexpr double kStudyLotAreaM2 = 1.8 * 1.2;

@@ -324,8 +324,14 @@ Trajectory brakeThenTimePieces(
   Pose2 pose = from;
   WheelSpeeds w = from_wheels;
   while (!(w == WheelSpeeds{})) {
-    w.left_radps -= std::clamp(w.left_radps, -step, step);
-    w.right_radps -= std::clamp(w.right_radps, -step, step);
+    if (robot.isCar()) {
+      // Both wheels slow in proportion: the car keeps its curvature (its steering) braking.
+      const double m = maxAbs(w);
+      w = m > step ? scaled(w, 1.0 - step / m) : WheelSpeeds{};
+    } else {
+      w.left_radps -= std::clamp(w.left_radps, -step, step);
+      w.right_radps -= std::clamp(w.right_radps, -step, step);
+    }
     traj.points.push_back({static_cast<double>(traj.points.size()) * dt, pose, w});
     pose = integrateExact(pose, toTwist(w, robot), dt);
   }

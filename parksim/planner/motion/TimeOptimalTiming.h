@@ -66,7 +66,8 @@ Trajectory timePieces(const Pose2& start, const std::vector<PathPiece>& pieces,
                       const RobotDef& robot, const TimingLimits& limits);
 
 /// What a steering function that plans whole paths from rest drives: from `from` it brakes
-/// `from_wheels` to rest at the acceleration limit (the last braking row stands still), then
+/// `from_wheels` to rest at the acceleration limit (the last braking row stands still; a car's
+/// wheels slow in proportion, so it brakes on its curvature), then
 /// follows `pieces_from(pose at rest)` timed by timePieces, the whole on one clock from t = 0.
 Trajectory brakeThenTimePieces(
     const Pose2& from, const WheelSpeeds& from_wheels, const RobotDef& robot,

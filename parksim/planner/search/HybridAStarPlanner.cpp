@@ -1,5 +1,6 @@
 // hybrid-a-star: Hybrid A* with Reeds-Shepp curves (HybridAStar.h) as a registered Planner,
-// smoothed and timed by PlanFinishing.h.
+// smoothed and timed by PlanFinishing.h (for a car: without the moves a car cannot make, and
+// made a car's plan).
 
 #include <memory>
 
@@ -24,7 +25,20 @@ class HybridAStarPlanner : public Planner {
     // The setup's Reeds-Shepp curves give its primitives' turning radius and its analytic
     // expansion, whatever the setup's steering function.
     const ReedsSheppSteering curves(s.robot, p.setup.reeds_shepp);
-    const HybridAStar planner(s.robot, s.lot, curves, p.validator, p.search(), def_);
+    HybridAStarDef def = def_;
+    if (s.robot.isCar()) {
+      // A car turns neither in place nor tighter than its own radius (the curves' for a car);
+      // the fine zone's lengths, the study robot's, are taken in the car's size.
+      def.tight_turning_radius_m = 0.0;
+      def.turn_in_place_rad = 0.0;
+      def.fine_turn_in_place_rad = 0.0;
+      def.fine_cell_m *= s.robot.sizeScale();
+      def.fine_step_m *= s.robot.sizeScale();
+    }
+    // A car's moves keep the clearance that lets its plan along them validate (PlanFinishing.h).
+    const std::unique_ptr<ClearanceValidator> clear = carSearchValidation(p);
+    const HybridAStar planner(s.robot, s.lot, curves, clear ? clear->validator() : p.validator,
+                              p.search(), def);
     PlanResult result = planner.solve(s.start, s.goal, p.progress);
     // It times its own plan; smoothed under study timing, it keeps that timing's limits.
     if (result.solved()) finishPlan(p, p.search().smooth, result);

@@ -3,6 +3,7 @@
 
 #include <memory>
 
+#include "parksim/core/io/Error.h"
 #include "parksim/core/model/Geometry.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/planner/base/Planner.h"
@@ -19,6 +20,11 @@ class TimeAStarPlanner : public Planner {
 
   PlanResult solve(const PlanningProblem& p) override {
     const Scenario& s = p.scenario;
+    if (s.robot.isCar()) {
+      throw Error(
+          "time-a-star turns in place, which a car cannot: a car is planned by car-a-star "
+          "(planScenario chooses it for time-a-star)");
+    }
     // The obstacles' shapes make the heuristic's grid (FootprintFit.h), a tenth of the cost of
     // footprint queries.
     const TimeAStar planner(s.robot, s.lot, p.validator, p.search(), def_, p.limits,

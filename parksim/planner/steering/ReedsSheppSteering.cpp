@@ -38,6 +38,10 @@ struct ReedsSheppSteering::Curve {
 ReedsSheppSteering::ReedsSheppSteering(const RobotDef& robot, const ReedsSheppDef& def)
     : robot_(robot), def_(def) {
   def_.horizon_s = steeringHorizon(def.horizon_s, robot);
+  // A car's arcs are no tighter than it can steer.
+  if (robot.isCar()) {
+    def_.turning_radius_m = std::max(def.turning_radius_m, robot.minTurningRadius());
+  }
   if (!(def.turning_radius_m > 0.0)) throw Error("reeds-shepp steering: radius must be positive");
   if (!(def.period_s > 0.0) || !(def_.horizon_s > 0.0)) {
     throw Error("reeds-shepp steering: period and horizon must be positive");
@@ -48,7 +52,7 @@ ReedsSheppSteering::ReedsSheppSteering(const RobotDef& robot, const ReedsSheppDe
   if (!(robot.max_wheel_speed_radps > 0.0) || !(robot.max_wheel_accel_radps2 > 0.0)) {
     throw Error("reeds-shepp steering: wheel speed and accel limits must be positive");
   }
-  curve_ = std::make_unique<Curve>(def.turning_radius_m);
+  curve_ = std::make_unique<Curve>(def_.turning_radius_m);
 }
 
 ReedsSheppSteering::~ReedsSheppSteering() = default;

@@ -6,6 +6,9 @@
 // acceleration limits, stopping at every cusp, so the trajectory ends exactly at the target (up
 // to rounding) at rest.
 //
+// A car's arcs are at least its minimum turning radius (RobotDef::minTurningRadius), whatever
+// the Def says.
+//
 // A diff-drive robot could also turn on the spot (radius 0: rotate-translate-rotate does that);
 // Reeds-Shepp curves need a radius > 0. A radius at or above half the wheel base keeps both
 // wheels turning the same way along every arc.

@@ -64,7 +64,11 @@ PlannerEntry treeEntry(const char* name, TreeVariant variant, const char* descri
   info.description = description;
   info.uses_steering = true;
   info.anytime = variant == TreeVariant::kRrtStar;
-  info.default_budget = [](const Scenario& s) { return lotScaledBudget(2000, s); };
+  // A car's Reeds-Shepp edges reach fewer poses than a differential drive's: ten times the
+  // iterations.
+  info.default_budget = [](const Scenario& s) {
+    return lotScaledBudget(s.robot.isCar() ? 20000 : 2000, s);
+  };
   TreePlannerDef def;
   def.variant = variant;
   return plannerEntry<TreePlannerAdapter>(std::move(info), def, &bind);
