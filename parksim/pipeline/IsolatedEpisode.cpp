@@ -158,6 +158,7 @@ class Reader {
   [[noreturn]] static void bad() { throw Error("an episode outcome's bytes are cut short"); }
   void raw(void* data, std::size_t size) {
     if (size > in_.size()) bad();
+    if (size == 0) return;  // an empty vector's data() may be null, which memcpy may not take
     std::memcpy(data, in_.data(), size);
     in_.remove_prefix(size);
   }
