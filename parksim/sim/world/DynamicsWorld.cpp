@@ -25,7 +25,6 @@
 #include "parksim/sim/world/KernelParts.h"
 #include "parksim/sim/world/ObstacleBodies.h"
 #include "parksim/sim/world/RobotBody.h"
-#include "parksim/sim/world/SphereBoxContacts.h"
 
 namespace parksim {
 
