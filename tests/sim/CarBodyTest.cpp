@@ -118,9 +118,13 @@ TEST(CarBodyTest, StraightDrivingDoesNotDrift) {
   EXPECT_NEAR(travelled, speed * 10.0, 1e-3 * speed * 10.0);
   EXPECT_NEAR(world.robot().twist.v_mps, speed, 1e-3 * speed);
   // Open loop, nothing steers it back: off the line by at most 1e-4 of the distance (5 mm
-  // over 50 m; 1.1 mm measured) and 0.1 mrad in heading (0.016 mrad measured).
+  // over 50 m; 1.1 mm measured) and 0.1 mrad in heading (0.016 mrad measured). A build
+  // without the transcription of Bullet's solver starts every row from zero (Bullet's own):
+  // 3.6 mm and 0.144 mrad measured, a bias that more iterations do not remove (the same from
+  // 50 to 400 a step; kExact cold-started gives it too), held to 0.2 mrad.
+  const bool transcription = effectiveSolverKernel(SolverKernel::kFast) == SolverKernel::kFast;
   EXPECT_LT(worst_lateral, 1e-4 * speed * 20.0);
-  EXPECT_LT(worst_heading, 1e-4);
+  EXPECT_LT(worst_heading, transcription ? 1e-4 : 2e-4);
 }
 
 }  // namespace

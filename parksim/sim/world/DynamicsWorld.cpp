@@ -17,15 +17,14 @@
 #include "parksim/core/io/Error.h"
 #include "parksim/core/model/Geometry.h"
 #include "parksim/core/system/ProvenanceConfig.h"
+#include "parksim/sim/contacts/ChassisContacts.h"
+#include "parksim/sim/contacts/CollisionGroups.h"
 #include "parksim/sim/world/BulletFrames.h"
 #include "parksim/sim/world/CarBody.h"
-#include "parksim/sim/world/ChassisContacts.h"
-#include "parksim/sim/world/CollisionGroups.h"
 #include "parksim/sim/world/GroundSlab.h"
 #include "parksim/sim/world/KernelParts.h"
 #include "parksim/sim/world/ObstacleBodies.h"
 #include "parksim/sim/world/RobotBody.h"
-#include "parksim/sim/world/SphereBoxContacts.h"
 
 namespace parksim {
 

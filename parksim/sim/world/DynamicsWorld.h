@@ -38,7 +38,8 @@ enum class SolverKernel {
   /// articulated-body pass per row (sim/bullet/MultiBodyInverseMass.h); the wheels' and slider's
   /// ground
   /// contacts are the exact closest point of the ground instead of GJK's
-  /// (sim/world/SphereBoxContacts.h). Without warm starting, results differ from Bullet's by a few
+  /// (sim/contacts/SphereBoxContacts.h). Without warm starting, results differ from Bullet's by a
+  /// few
   /// micrometres (tested against kBullet).
   kFast,
 };

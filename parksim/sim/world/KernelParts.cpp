@@ -10,7 +10,7 @@
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
 
-#include "parksim/sim/world/SphereBoxContacts.h"
+#include "parksim/sim/contacts/SphereBoxContacts.h"
 
 // Set by parksim/sim/CMakeLists.txt (cmake/BulletSolver.cmake): 1 against Bullet 3.24 unless
 // PARKSIM_BULLET_FAST_SOLVER is off.

@@ -10,8 +10,8 @@
 
 #include "parksim/collision/ObstacleShape.h"
 #include "parksim/core/model/Geometry.h"
+#include "parksim/sim/contacts/CollisionGroups.h"
 #include "parksim/sim/world/BulletFrames.h"
-#include "parksim/sim/world/CollisionGroups.h"
 
 namespace parksim {
 

@@ -14,8 +14,8 @@
 
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/NumberFormat.h"
+#include "parksim/sim/contacts/CollisionGroups.h"
 #include "parksim/sim/world/BulletFrames.h"
-#include "parksim/sim/world/CollisionGroups.h"
 #include "parksim/sim/world/KernelParts.h"
 #include "parksim/sim/world/RobotSupports.h"
 

@@ -1,4 +1,4 @@
-#include "parksim/sim/world/ChassisContacts.h"
+#include "parksim/sim/contacts/ChassisContacts.h"
 
 #include <algorithm>
 
@@ -6,7 +6,7 @@
 #include <BulletCollision/CollisionDispatch/btCollisionObject.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
-#include "parksim/sim/world/CollisionGroups.h"
+#include "parksim/sim/contacts/CollisionGroups.h"
 
 namespace parksim {
 

@@ -1,4 +1,4 @@
-#include "parksim/sim/world/CollisionGroups.h"
+#include "parksim/sim/contacts/CollisionGroups.h"
 
 #include <BulletCollision/BroadphaseCollision/btOverlappingPairCache.h>
 #include <BulletCollision/CollisionDispatch/btCollisionObject.h>

@@ -1,4 +1,4 @@
-#include "parksim/sim/world/SphereBoxContacts.h"
+#include "parksim/sim/contacts/SphereBoxContacts.h"
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
 #include <BulletCollision/CollisionDispatch/btActivatingCollisionAlgorithm.h>
