@@ -234,33 +234,13 @@ void CarBody::beforeStep(double dt_s) {
 }
 
 RobotState CarBody::state() const {
-  const btTransform base = body_->getBaseWorldTransform();
-  const btVector3 ref_local(btScalar(-chassis_dx_), 0,
-                            btScalar(robot_.wheel_radius_m - chassis_z_));
-  const btVector3 ref = base * ref_local;
-  RobotState out;
-  out.local_pose = {double(ref.x()), double(ref.y()), yawOf(base)};
-  out.pose = {out.local_pose.x + origin_.x(), out.local_pose.y + origin_.y(), out.local_pose.theta};
-  out.axle_height_m = double(ref.z());
-  const btVector3 up = base.getBasis().getColumn(2);
-  out.tilt_rad = std::acos(std::clamp(double(up.z()), -1.0, 1.0));
-  const btVector3 omega = body_->getBaseOmega();
-  const btVector3 vel = body_->getBaseVel() + omega.cross(ref - base.getOrigin());
-  out.twist = {
-      double(vel.x()) * std::cos(out.pose.theta) + double(vel.y()) * std::sin(out.pose.theta),
-      double(omega.z())};
-  out.wheels = {double(body_->getJointVel(kRearLeft)), double(body_->getJointVel(kRearRight))};
-  out.wheel_angles = {double(body_->getJointPos(kRearLeft)),
-                      double(body_->getJointPos(kRearRight))};
-  const double yaw_rate = double(omega.z());
-  const double track = geometry_.wheel_base_m;
-  out.slip_mps = {
-      out.wheels.left_radps * left_radius_ - (out.twist.v_mps - 0.5 * track * yaw_rate),
-      out.wheels.right_radps * right_radius_ - (out.twist.v_mps + 0.5 * track * yaw_rate)};
+  RobotState out = readAxleState(*body_,
+                                 {chassis_dx_, chassis_z_, robot_.wheel_radius_m, kRearLeft,
+                                  kRearRight, left_radius_, right_radius_, geometry_.wheel_base_m},
+                                 origin_);
   out.steer_rad = bicycleAngle(geometry_, {double(body_->getJointPos(kLeftKnuckle)),
                                            double(body_->getJointPos(kRightKnuckle))});
   out.steer_setpoint_rad = setpoint_rad_;
-  out.awake = body_->isAwake();
   return out;
 }
 

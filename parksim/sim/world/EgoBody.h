@@ -2,13 +2,34 @@
 // The ego robot's multibody as the dynamics world drives it: a differential drive (RobotBody.h)
 // or a car (CarBody.h). Internal to sim/; Bullet's types are only declared here.
 
+#include <Eigen/Core>
+
 #include "parksim/core/model/DiffDrive.h"
 
 class btCollisionObject;
+class btMultiBody;
 
 namespace parksim {
 
 struct RobotState;
+
+/// Where a body's driven axle is and how its two driven wheels turn (links `left_link` and
+/// `right_link`, radii in m, `track_m` apart): what both bodies read back after a step
+/// (RobotBodyState.cpp). The reference point is `chassis_dx_m` behind and `chassis_z_m` above
+/// the base's origin less the wheel radius `wheel_radius_m`; `origin` is the world frame's
+/// origin in the lot.
+struct DrivenAxle {
+  double chassis_dx_m = 0.0;
+  double chassis_z_m = 0.0;
+  double wheel_radius_m = 0.0;
+  int left_link = 0;
+  int right_link = 1;
+  double left_radius_m = 0.0;
+  double right_radius_m = 0.0;
+  double track_m = 0.0;
+};
+RobotState readAxleState(const btMultiBody& body, const DrivenAxle& axle,
+                         const Eigen::Vector2d& origin);
 
 class EgoBody {
  public:
