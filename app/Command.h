@@ -12,7 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "parksim/cli/Program.h"
-#include "parksim/core/UserCodeWatch.h"
+#include "parksim/core/system/UserCodeWatch.h"
 #include "parksim/pipeline/Verdict.h"
 
 namespace parksim::app {

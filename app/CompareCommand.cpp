@@ -20,7 +20,7 @@
 #include "parksim/compare/ComparisonJson.h"
 #include "parksim/compare/ComparisonReport.h"
 #include "parksim/compare/RowPairing.h"
-#include "parksim/core/AtomicFile.h"
+#include "parksim/core/io/AtomicFile.h"
 #include "parksim/pages/ComparisonPage.h"
 
 namespace parksim::app {

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "parksim/cli/TerminalText.h"
-#include "parksim/pipeline/UserCodeIsolation.h"
+#include "parksim/usercode/UserCodeIsolation.h"
 
 namespace parksim::app {
 

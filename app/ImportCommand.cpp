@@ -12,9 +12,9 @@
 
 #include "app/Command.h"
 #include "parksim/cli/TerminalText.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
-#include "parksim/scenario/MapImport.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/scenario/world/MapImport.h"
 
 namespace parksim::app {
 

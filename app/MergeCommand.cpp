@@ -14,9 +14,9 @@
 
 #include "app/Command.h"
 #include "parksim/cli/TerminalText.h"
-#include "parksim/core/Error.h"
-#include "parksim/results/ResultsTable.h"
-#include "parksim/sweep/Merge.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/results/tables/ResultsTable.h"
+#include "parksim/sweep/shards/Merge.h"
 
 namespace parksim::app {
 

@@ -76,12 +76,13 @@ CommandRunner setupPlanCommand(CLI::App& sub) {
     request.plan = opt->plan.toSetup();
     request.components = opt->plugins.load();
     request.drive = false;
-    checkEpisodeRequest(request, {.limits = opt->user_code.limits, .isolate = true});
+    request.limits = opt->user_code.limits;
+    checkEpisodeRequest(request, {.limits = request.limits, .isolate = true});
     cli::OutputDir out(opt->out);
     request.out_dir = out.path();
     // A user's planner runs in a watched child: its crash or hang is a verdict.
     const std::optional<int> code =
-        runWatched("parksim plan", runsUserCode(request), opt->user_code.limits,
+        runWatched("parksim plan", runsUserCode(request), request.limits,
                    [&](UserCodeWatch* watch) { return planCommand(*opt, request, watch, output); });
     if (code) out.commit();
     return code.value_or(kExitUserCodeFailed);

@@ -14,17 +14,17 @@
 #include "parksim/cli/TerminalText.h"
 #include "parksim/cli/Validators.h"
 #include "parksim/cli/WorldOptions.h"
-#include "parksim/command/CommandPlanner.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/renders/Figures.h"
-#include "parksim/renders/FrameRecorder.h"
-#include "parksim/renders/TrackingPlot.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/renders/plots/Figures.h"
+#include "parksim/renders/plots/TrackingPlot.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
+#include "parksim/usercode/CommandPlanner.h"
 
 namespace parksim::app {
 
@@ -110,7 +110,8 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
       r.plan = options.toSetup();
       r.components = components;
       r.drive = false;
-      checkEpisodeRequest(r, {.limits = opt->user_code.limits, .isolate = true});
+      r.limits = opt->user_code.limits;
+      checkEpisodeRequest(r, {.limits = r.limits, .isolate = true});
       user_code = user_code || runsUserCode(r);
     }
     if (!opt->executed.empty()) inputs.tracking = readTrackingRecord(opt->executed);
@@ -127,10 +128,14 @@ CommandRunner setupRenderCommand(CLI::App& sub) {
           for (std::size_t i = 0; i < planners.size(); ++i) {
             requests[i].watch = watch;
             const EpisodeOutcome outcome = runEpisodePipeline(requests[i]);
-            if (!outcome.plan) {  // a user's planner failed (planner_error): nothing to draw
+            // A user's planner that failed (planner_error) left nothing to draw; a plan that
+            // failed its check (plan_invalid) is not drawn as a plan: the verdict, its exit
+            // status, and nothing written. An unsolved plan is drawn (its tree).
+            const EpisodeStatus status = outcome.verdict.status;
+            if (status == EpisodeStatus::kPlannerError || status == EpisodeStatus::kPlanInvalid) {
               std::fprintf(stderr, "parksim render: %s\n",
                            cli::printable(verdictLine(outcome.verdict)).c_str());
-              return exitCodeFor(outcome.verdict.status);
+              return exitCodeFor(status);
             }
             const std::string json_name = "/plan_" + planners[i] + ".json";
             writeFileAtomically(out.path() + json_name, jsonText(outcome.plan_summary));

@@ -19,16 +19,16 @@
 #include "parksim/cli/OutputDir.h"
 #include "parksim/cli/ReportFileOption.h"
 #include "parksim/cli/TerminalText.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pages/JUnitPageLinks.h"
 #include "parksim/pages/SweepPage.h"
 #include "parksim/pipeline/Verdict.h"
-#include "parksim/results/JUnitReport.h"
-#include "parksim/results/OmplLog.h"
-#include "parksim/results/ResultsTable.h"
-#include "parksim/sweep/Report.h"
-#include "parksim/sweep/SweepManifest.h"
+#include "parksim/report/Report.h"
+#include "parksim/results/reports/JUnitReport.h"
+#include "parksim/results/reports/OmplLog.h"
+#include "parksim/results/tables/ResultsTable.h"
+#include "parksim/sweep/shards/SweepManifest.h"
 
 namespace parksim::app {
 
@@ -121,7 +121,7 @@ std::string writeIndexPage(const std::string& dir, const std::string& out, const
   page.rows = &rows;
   page.axes = parameterColumns(rows);
   for (const EpisodeStatus s : allEpisodeStatuses()) page.statuses.push_back(toString(s));
-  page.episodes_href = relativeHref(out, dir + "/episodes");
+  page.episodes_href = hrefOf(relativeHref(out, dir + "/episodes"));
   page.kept = keptEpisodePages(dir + "/episodes", rows);
   page.warnings = mixes;
   const std::string path = staged + "/index.html";

@@ -27,11 +27,11 @@
 #include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/realism/Distribution.h"
 #include "parksim/realism/RealismDef.h"
-#include "parksim/renders/PngEncoder.h"
-#include "parksim/results/JUnitReport.h"
-#include "parksim/results/TrajectoryFile.h"
-#include "parksim/sweep/EpisodeRun.h"
-#include "parksim/sweep/Report.h"
+#include "parksim/renders/image/PngEncoder.h"
+#include "parksim/report/Report.h"
+#include "parksim/results/episode/TrajectoryFile.h"
+#include "parksim/results/reports/JUnitReport.h"
+#include "parksim/sweep/run/EpisodeRun.h"
 
 namespace parksim::app {
 
@@ -154,7 +154,7 @@ EpisodeRequest toRequest(const RunOptions& o) {
   r.controller = o.controller.name;
   r.controller_params = o.controller.paramMap();
   if (!o.plan_file.empty()) {
-    r.given_plan = readTrajectoryCsv(o.plan_file);
+    r.given_plan = readTrajectoryCsv(o.plan_file, r.world->scenario.robot);
     r.given_plan_source = o.plan_file;
   }
   r.execution.tracking = trackingModeFromString(o.tracking);
@@ -329,12 +329,13 @@ CommandRunner setupRunCommand(CLI::App& sub) {
     EpisodeRequest request = toRequest(*opt);
     // Every input is checked before --out is touched; the outputs go to a staging directory
     // that replaces --out whole at the end (OutputDir), so --out never mixes two runs.
-    checkEpisodeRequest(request, {.limits = opt->user_code.limits, .isolate = true});
+    request.limits = opt->user_code.limits;
+    checkEpisodeRequest(request, {.limits = request.limits, .isolate = true});
     cli::OutputDir out(opt->out);
     request.out_dir = out.path();
     // A user's planner or controller runs in a watched child: its crash or hang is a verdict.
     const std::optional<int> code = runWatched(
-        "parksim run", runsUserCode(request), opt->user_code.limits,
+        "parksim run", runsUserCode(request), request.limits,
         [&](UserCodeWatch* watch) { return runEpisodeCommand(*opt, request, watch, out, output); });
     if (code) out.commit();
     return code.value_or(kExitUserCodeFailed);

@@ -27,21 +27,21 @@
 #include "parksim/cli/Progress.h"
 #include "parksim/cli/ReportFileOption.h"
 #include "parksim/cli/TerminalText.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/ChildProcess.h"
-#include "parksim/core/Error.h"
-#include "parksim/results/JUnitReport.h"
-#include "parksim/results/ResultsTable.h"
-#include "parksim/results/RowSeal.h"
-#include "parksim/sweep/EpisodeExpansion.h"
-#include "parksim/sweep/Report.h"
-#include "parksim/sweep/Shard.h"
-#include "parksim/sweep/SlurmResubmit.h"
-#include "parksim/sweep/SlurmScript.h"
-#include "parksim/sweep/SweepJob.h"
-#include "parksim/sweep/SweepManifest.h"
-#include "parksim/sweep/SweepRunner.h"
-#include "parksim/sweep/SweepSpecReader.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/system/ChildProcess.h"
+#include "parksim/report/Report.h"
+#include "parksim/results/reports/JUnitReport.h"
+#include "parksim/results/tables/ResultsTable.h"
+#include "parksim/results/tables/RowSeal.h"
+#include "parksim/sweep/run/SweepJob.h"
+#include "parksim/sweep/run/SweepRunner.h"
+#include "parksim/sweep/shards/Shard.h"
+#include "parksim/sweep/shards/SlurmResubmit.h"
+#include "parksim/sweep/shards/SlurmScript.h"
+#include "parksim/sweep/shards/SweepManifest.h"
+#include "parksim/sweep/spec/EpisodeExpansion.h"
+#include "parksim/sweep/spec/SweepSpecReader.h"
 
 namespace parksim::app {
 
@@ -69,7 +69,7 @@ struct SweepOptions {
   std::string junit;
   bool list = false;               // print the episodes and run nothing
   cli::PluginOptions plugins;      // besides the spec's plugins:
-  cli::UserCodeOptions user_code;  // the limits on user code in the worker processes
+  cli::UserCodeOptions user_code;  // the limits on user code: workers and commands
 };
 
 std::string duration(double s) {

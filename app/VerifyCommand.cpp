@@ -2,7 +2,7 @@
 // DIR/shards/*) without changing them, and lists every problem with its file and line: rows
 // whose seal does not match their content (changed bytes), lines that are not rows, lines of
 // results.csv that are not the rendering of their results.jsonl row, an episode twice, rows of
-// other world contents or parksim builds (parksim/results/TableVerify.h).
+// other world contents or parksim builds (parksim/results/tables/TableVerify.h).
 // Exit status: 0 when every table is whole, 1 when problems were found, 2 on bad input.
 
 #include <cstdio>
@@ -11,7 +11,7 @@
 
 #include "app/Command.h"
 #include "parksim/cli/TerminalText.h"
-#include "parksim/sweep/Merge.h"
+#include "parksim/sweep/shards/Merge.h"
 
 namespace parksim::app {
 

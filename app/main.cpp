@@ -10,7 +10,7 @@
 
 #include "app/Command.h"
 #include "parksim/cli/TerminalText.h"
-#include "parksim/core/Provenance.h"
+#include "parksim/core/system/Provenance.h"
 
 int main(int argc, char** argv) {
   using namespace parksim::app;

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/core/model/Geometry.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 
 namespace parksim {
 namespace {

@@ -1,4 +1,4 @@
-// A controller that is a process (command/CommandController.h) against the same law built in
+// A controller that is a process (usercode/CommandController.h) against the same law built in
 // (docs/your-code.md, "Speed"). Wall time throughout: the process's time is the point.
 // - BM_ControllerEpisode/<controller>: head_in under `lab` realism (50 Hz control ticks), noise
 //   seed 1, one whole episode per iteration, process start and end included; 0: parksim's
@@ -12,12 +12,12 @@
 #include <benchmark/benchmark.h>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/command/CommandController.h"
-#include "parksim/command/CommandLine.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/realism/RealismDef.h"
-#include "parksim/scenario/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/scenario/world/ScenarioReader.h"
+#include "parksim/sim/episode/Episode.h"
+#include "parksim/usercode/CommandController.h"
+#include "parksim/usercode/CommandLine.h"
 
 namespace parksim {
 namespace {

@@ -26,10 +26,10 @@
 #include <unistd.h>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/GridRectangles.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/scenario/World.h"
-#include "parksim/sim/DynamicsWorld.h"
+#include "parksim/core/geometry/GridRectangles.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/scenario/world/World.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

@@ -33,10 +33,10 @@
 #include <string>
 #include <vector>
 
-#include "parksim/results/TrajectoryFile.h"
-#include "parksim/scenario/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
-#include "parksim/sim/ReferenceTrajectory.h"
+#include "parksim/results/episode/TrajectoryFile.h"
+#include "parksim/scenario/world/ScenarioReader.h"
+#include "parksim/sim/episode/Episode.h"
+#include "parksim/sim/episode/ReferenceTrajectory.h"
 
 namespace parksim {
 namespace {

@@ -22,8 +22,8 @@
 #include "parksim/pages/EpisodePage.h"
 #include "parksim/pages/SweepPage.h"
 #include "parksim/pipeline/EpisodePipeline.h"
-#include "parksim/scenario/World.h"
-#include "parksim/results/ResultsFile.h"
+#include "parksim/results/tables/ResultsFile.h"
+#include "parksim/scenario/world/World.h"
 
 namespace parksim {
 namespace {

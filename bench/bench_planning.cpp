@@ -29,10 +29,10 @@
 #include "bench/planning/BestKnown.h"
 #include "bench/planning/ParksimRuns.h"
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 
 namespace {
 
@@ -104,6 +104,7 @@ std::vector<PlanSetup> configurations(const Options& o, const Scenario& scenario
   }
   std::vector<PlanSetup> out;
   for (const std::string& name : builtInPlanners().names()) {
+    if (plannerFor(name, scenario.robot) != name) continue;  // gives way to another planner
     const PlannerInfo& info = builtInPlanners().find(name).info;
     PlanSetup s = base;
     s.planner = name;

@@ -14,7 +14,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "parksim/sweep/SweepJob.h"
+#include "parksim/sweep/run/SweepJob.h"
 
 int main(int argc, char** argv) {
   using namespace parksim;

@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include "parksim/results/ResultsTable.h"
-#include "parksim/sweep/EpisodeExpansion.h"
-#include "parksim/sweep/SweepRunner.h"
-#include "parksim/sweep/SweepSpecReader.h"
+#include "parksim/results/tables/ResultsTable.h"
+#include "parksim/sweep/run/SweepRunner.h"
+#include "parksim/sweep/spec/EpisodeExpansion.h"
+#include "parksim/sweep/spec/SweepSpecReader.h"
 
 namespace {
 

@@ -33,14 +33,14 @@
 #include "parksim/cli/TerminalText.h"
 #include "parksim/cli/Validators.h"
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/core/Provenance.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/planner/TreePlanner.h"
-#include "parksim/results/OmplLog.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/system/Provenance.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/planner/tree/TreePlanner.h"
+#include "parksim/results/reports/OmplLog.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 
 namespace parksim::bench {
 namespace {
@@ -189,6 +189,11 @@ void runParksimPlanners(const BenchOptions& o, const BenchPlan& b, const Scenari
     for (const std::string& name : b.planners) {
       const PlannerInfo& info = b.components->planners.find(name).info;
       if (!info.uses_steering && si > 0) continue;
+      // A planner that gives way to another for this world's drive (time-a-star and car-a-star,
+      // plannerFor) would run that one again.
+      if (plannerFor(name, scenario.robot) != name) continue;
+      // A car steers with Reeds-Shepp curves whatever is asked (resolvedPlanSetup): once.
+      if (info.uses_steering && scenario.robot.isCar() && si > 0) continue;
       for (bool smooth : b.smoothing) {
         ParksimRunDef def;
         def.setup.steering_kind = b.steerings[si];
@@ -223,8 +228,12 @@ void runOmplPlanners(const BenchOptions& o, const BenchPlan& b, const Scenario& 
       def.space = space;
       def.seed = static_cast<std::uint32_t>(seed);
       def.time_limit_s = o.budget_s;
-      def.turning_radius_m = o.turning_radius_m;
-      def.segment_m = o.segment_m;
+      // A car's curves are no tighter than it steers; lengths tuned for the study's robot are
+      // taken in the robot's size (RobotDef::sizeScale: exactly 1 for the study's robot).
+      def.turning_radius_m = scenario.robot.isCar()
+                                 ? std::max(o.turning_radius_m, scenario.robot.minTurningRadius())
+                                 : o.turning_radius_m;
+      def.segment_m = o.segment_m * scenario.robot.sizeScale();
       all.push_back(runOmpl(scenario, world, def, check));
     }
   }
@@ -293,8 +302,11 @@ int runBench(const BenchOptions& o, const OutputOptions& output) {
   std::vector<BenchRecord> all;
   std::vector<double> world_seconds;
   const std::string start_time = omplLogTimeNow();
-  const PathCheckDef check;  // 0.2 mm, margin 0, with clearance
   for (const Scenario& scenario : plan.scenarios) {
+    // 0.2 mm for the study's robot (in proportion to a larger one's size), margin 0, with
+    // clearance.
+    PathCheckDef check;
+    check.max_step_m *= scenario.robot.sizeScale();
     const BulletCollisionWorld world(scenario);
     const Clock::time_point t0 = Clock::now();
     cli::Progress progress(scenario.name + " seeds", o.seeds,
@@ -360,11 +372,12 @@ void addOptions(CLI::App& sub, BenchOptions* opt, OutputOptions& output) {
       ->capture_default_str()
       ->check(realIn(0.0, 3600.0, true));
   sub.add_option("--turning-radius", opt->turning_radius_m,
-                 "Reeds-Shepp minimum turning radius for OMPL, m")
+                 "Reeds-Shepp minimum turning radius for OMPL, m (a car's: at least its own)")
       ->capture_default_str()
       ->check(realIn(0.0, 1000.0, true));
   sub.add_option("--segment", opt->segment_m,
-                 "longest motion OMPL's motion validator leaves unchecked (state-space distance)")
+                 "longest motion OMPL's motion validator leaves unchecked (state-space "
+                 "distance; times the robot's size over the study robot's 85 mm)")
       ->capture_default_str()
       ->check(realIn(1e-6, 1.0));
   sub.add_option("--out", opt->out, "output directory for bench.csv and summary.md")

@@ -25,7 +25,7 @@ def feedforward(obs):
 
 
 class Tracking:
-    """The tracking law (sim/TrackingController.h) in Python, gains as the built-in derives them
+    """The tracking law (sim/control/TrackingController.h) in Python, gains as the built-in derives them
     at 50 Hz (bandwidth 10 rad/s)."""
 
     def __init__(self, robot, top_speed):

@@ -6,3 +6,9 @@ target_link_libraries(bench_render PRIVATE parksim_render parksim_scenario bench
                                            benchmark::benchmark_main)
 target_compile_definitions(bench_render PRIVATE PARKSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 parksim_target_defaults(bench_render)
+# libspng and libdeflate only for BM_PngLibrary: the PNG libraries measured beside the
+# encoder parksim keeps (docs/rendering.md, "PNG: measured, then decided").
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(PARKSIM_SPNG REQUIRED IMPORTED_TARGET spng)
+target_link_libraries(bench_render PRIVATE PkgConfig::PARKSIM_SPNG PkgConfig::LIBDEFLATE ZLIB::ZLIB
+                                           parksim::stb)

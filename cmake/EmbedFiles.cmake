@@ -1,9 +1,11 @@
 # Writes a C++ source that holds files' bytes (cmake -P, run by parksim/pages/CMakeLists.txt):
 #   cmake -DOUTPUT=<file.cpp> -DNAMESPACE=<ns> -DENTRIES="<name>=<path>|..." -P EmbedFiles.cmake
-# Each file becomes a NUL-terminated unsigned char array, listed with its name and size in
-# `const EmbeddedFile kEmbeddedFiles[]` (struct EmbeddedFile: parksim/pages/PageAssets.h).
+# Each file becomes a NUL-terminated unsigned char array, listed with its name, size and SHA-256
+# in `const EmbeddedFile kEmbeddedFiles[]` (struct EmbeddedFile: parksim/pages/PageAssets.h).
 # A script (.js) must not contain "</script" and a style sheet (.css) not "</style": a page
-# inlines them, and the browser would end the element there.
+# inlines them, and the browser would end the element there. Neither may hold a carriage
+# return: the browser reads CR LF as LF, so the element's text would no longer have the hash
+# the page's Content-Security-Policy allows it by.
 cmake_minimum_required(VERSION 3.22)
 set(arrays "")
 set(table "")
@@ -27,14 +29,20 @@ foreach(entry IN LISTS entries)
       if(NOT at EQUAL -1)
         message(FATAL_ERROR "${path}: contains ${closing} at byte ${at}; a page cannot inline it")
       endif()
+      string(FIND "${text}" "\r" at)
+      if(NOT at EQUAL -1)
+        message(FATAL_ERROR "${path}: holds a carriage return at byte ${at}; a page cannot "
+                            "inline it under its hash (convert the file to LF line ends)")
+      endif()
     endif()
   endforeach()
   file(READ "${path}" hex HEX)
+  file(SHA256 "${path}" sha256)
   string(LENGTH "${hex}" hex_length)
   math(EXPR size "${hex_length} / 2")
   string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," bytes "${hex}")
   string(APPEND arrays "const unsigned char kFile${index}[] = {${bytes}0x00};\n")
-  string(APPEND table "    {\"${name}\", kFile${index}, ${size}},\n")
+  string(APPEND table "    {\"${name}\", kFile${index}, ${size}, \"${sha256}\"},\n")
   math(EXPR index "${index} + 1")
 endforeach()
 file(WRITE "${OUTPUT}.tmp"

@@ -12,7 +12,7 @@ set(PARKSIM_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/parksim)
 # aliases give a project that adds parksim as a subdirectory the same names.
 set(parksim_modules core realism scenario collision planner sim plugin rl results command render
     pages
-    pipeline sweep compare)
+    pipeline sweep report compare)
 foreach(module IN LISTS parksim_modules)
   set_target_properties(parksim_${module} PROPERTIES EXPORT_NAME ${module})
   add_library(parksim::${module} ALIAS parksim_${module})

@@ -1,5 +1,5 @@
 # parksim_add_plugin(<target> SOURCES <file>...): a plugin (a shared library parksim loads with
-# --plugin, parksim/plugin/PluginApi.h) built against parksim::plugin, the plugin API's target:
+# --plugin, parksim/usercode/PluginApi.h) built against parksim::plugin, the plugin API's target:
 #
 #   find_package(parksim REQUIRED)
 #   parksim_add_plugin(my_planners SOURCES my_planner.cpp my_controller.cpp)

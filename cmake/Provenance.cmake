@@ -1,7 +1,7 @@
-# Build provenance for parksim_core (parksim/core/Provenance.h): what is fixed at configure time
-# (version, build type, compiler, Bullet precision) goes into ProvenanceConfig.h; the git commit
-# is captured on every build into ProvenanceGit.h, so a rebuilt binary never reports the commit
-# it was configured at.
+# Build provenance for parksim_core (parksim/core/system/Provenance.h): what is fixed at
+# configure time (version, build type, compiler, Bullet precision) goes into ProvenanceConfig.h;
+# the git commit is captured on every build into ProvenanceGit.h, so a rebuilt binary never
+# reports the commit it was configured at.
 set(PARKSIM_GENERATED_DIR "${PROJECT_BINARY_DIR}/generated")
 
 set(PARKSIM_BUILD_TYPE "${CMAKE_BUILD_TYPE}")
@@ -23,14 +23,14 @@ else()
   set(PARKSIM_BULLET_DOUBLE 0)
   set(PARKSIM_BULLET_PRECISION "float")
 endif()
-configure_file("${PROJECT_SOURCE_DIR}/parksim/core/ProvenanceConfig.h.in"
-               "${PARKSIM_GENERATED_DIR}/parksim/core/ProvenanceConfig.h" @ONLY)
+configure_file("${PROJECT_SOURCE_DIR}/parksim/core/system/ProvenanceConfig.h.in"
+               "${PARKSIM_GENERATED_DIR}/parksim/core/system/ProvenanceConfig.h" @ONLY)
 
 add_custom_target(parksim_git_commit
   COMMAND "${CMAKE_COMMAND}" -DSOURCE_DIR=${PROJECT_SOURCE_DIR}
-          -DOUT=${PARKSIM_GENERATED_DIR}/parksim/core/ProvenanceGit.h
-          -DTEMPLATE=${PROJECT_SOURCE_DIR}/parksim/core/ProvenanceGit.h.in
+          -DOUT=${PARKSIM_GENERATED_DIR}/parksim/core/system/ProvenanceGit.h
+          -DTEMPLATE=${PROJECT_SOURCE_DIR}/parksim/core/system/ProvenanceGit.h.in
           -P "${PROJECT_SOURCE_DIR}/cmake/GitCommit.cmake"
-  BYPRODUCTS "${PARKSIM_GENERATED_DIR}/parksim/core/ProvenanceGit.h"
+  BYPRODUCTS "${PARKSIM_GENERATED_DIR}/parksim/core/system/ProvenanceGit.h"
   COMMENT "Recording the git commit"
   VERBATIM)

@@ -30,14 +30,22 @@ set(PARKSIM_TEST_UNITY_BATCH_SIZE 8 CACHE STRING
 # Sources compiled on their own in a unity build (paths relative to the top folder), each with the
 # reason: mostly a name it shares with another file of its target.
 set(PARKSIM_UNITY_SKIP
-  parksim/planner/ShortcutSmoother.cpp  # kCostEpsilonM, also in TreePlanner.cpp
-  parksim/renders/PngEncoderStb.cpp     # stb_image_write's statics, also in PngEncoder.cpp
+  parksim/planner/tree/ShortcutSmoother.cpp   # kCostEpsilonM, also in TreePlanner.cpp
+  parksim/renders/image/PngEncoderStb.cpp     # stb_image_write's statics, also in PngEncoder.cpp
   # Added after the planner's batches were laid out: alone, it leaves them as they were
   # (TreeSearch.h's and TimeAStarSearch.cpp's Clock would otherwise meet in one batch).
-  parksim/planner/ReachableBudget.cpp
+  parksim/planner/search/ReachableBudget.cpp
+  # The same for the car planner's files (docs/planning.md, "Cars").
+  parksim/planner/search/CarAStar.cpp
+  parksim/planner/search/CarAStarPlanner.cpp
+  parksim/planner/motion/CarPath.cpp
+  parksim/planner/motion/CarPlanAlong.cpp
+  parksim/planner/motion/CarTimeCost.cpp
+  parksim/planner/motion/CarTiming.cpp
+  parksim/planner/motion/ClearanceValidator.cpp
   # Not a name: it includes ProvenanceGit.h, which a commit or a first edit rewrites; alone,
   # only this file is compiled again then, not its batch.
-  parksim/core/Provenance.cpp
+  parksim/core/system/Provenance.cpp
   # Test files: each shares a name with an earlier file of its program (found by compiling each
   # program's files as one batch: so any batch size and order compiles).
   tests/bench/OmplLogTest.cpp                # splitLines, also in BenchCsvTest.cpp

@@ -19,6 +19,8 @@ demo_packages=(
   build-essential cmake pkg-config ninja-build
   libbullet-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libnanoflann-dev libstb-dev zlib1g-dev libompl-dev
+  # The PNG frames' Adler-32 (libdeflate's, 4x parksim's former SSE2 loop: docs/rendering.md).
+  libdeflate-dev
   # SVG maps in world files (`map:`) are parsed by libxml2.
   libxml2-dev
   libegl-dev libgl1-mesa-dri libfontconfig-dev fonts-dejavu-core ffmpeg
@@ -31,6 +33,8 @@ test_packages=(
   # OSMesa: the tests compare its images with EGL's, byte for byte.
   libosmesa6-dev
   libgtest-dev libgmock-dev libbenchmark-dev locales
+  # bench/bench_render's BM_PngLibrary: the PNG libraries measured beside parksim's encoder.
+  libspng-dev
   # The sweep's Slurm path, tested on a one-node cluster (scripts/slurm-local.sh); procps:
   # pkill, which stops a task mid-shard in tests/sweep/slurm_missing_test.sh.
   slurm-wlm munge procps
@@ -48,7 +52,8 @@ test_packages=(
   # scripts/build.sh compiles through it where it is installed: a second build of the same
   # sources on one machine (a test.sh run again, another clone) costs seconds (CI does without).
   ccache
-  # The HTML reports opened from file:// in a real browser (tests/pages/test_pages.py).
+  # The HTML reports opened from file:// in a real browser (tests/pages/test_pages.py and
+  # test_hostile_names.py, which also reads world files with python3-yaml).
   chromium chromium-driver python3-selenium
 )
 

@@ -8,6 +8,7 @@ screenshots use this one session setup:
         b.open("out/run/report.html")          # from file://, waits for data-ready="true"
         b.requests_outside("out/run")          # [] : nothing fetched from outside the folder
         b.console_errors()                     # [] : nothing logged as an error
+        b.dialogs()                            # [] : no alert, confirm or prompt opened
 
 As a program it takes a screenshot of a page once it is drawn:
 
@@ -25,6 +26,7 @@ import tempfile
 import time
 
 from selenium import webdriver
+from selenium.common.exceptions import UnexpectedAlertPresentException
 from selenium.webdriver.chrome.service import Service
 
 CHROMIUM = os.environ.get("PARKSIM_CHROMIUM", "/usr/bin/chromium")
@@ -55,6 +57,7 @@ class PageBrowser:
         self.driver.set_page_load_timeout(60)
         self._requests = []
         self._console = []
+        self._dialogs = []
 
     def __enter__(self):
         return self
@@ -74,6 +77,8 @@ class PageBrowser:
             message = json.loads(entry["message"])["message"]
             if message.get("method") == "Network.requestWillBeSent":
                 self._requests.append(message["params"]["request"]["url"])
+            elif message.get("method") == "Page.javascriptDialogOpening":
+                self._dialogs.append(message["params"].get("message", ""))
         self._console.extend(self.driver.get_log("browser"))
 
     def open(self, path, timeout_s=60.0):
@@ -84,18 +89,23 @@ class PageBrowser:
         self._drain()
         self._requests.clear()
         self._console.clear()
+        self._dialogs.clear()
         self.driver.get(pathlib.Path(path).resolve().as_uri())
         return self.wait_ready(path, timeout_s)
 
     def wait_ready(self, path=None, timeout_s=60.0):
         """Waits until the page at `path` (with None: the page shown) is drawn; returns
-        open()'s seconds. After a click on a link, name the page it leads to."""
+        open()'s seconds. After a click on a link, name the page it leads to. A dialog the page
+        opens meanwhile (chromedriver closes it) does not stop the wait: dialogs() lists it."""
         want = pathlib.Path(path).resolve().as_uri() if path is not None else None
         deadline = time.monotonic() + timeout_s
         while True:
-            url, ready, failed = self.driver.execute_script(
-                "return [location.href, document.body && document.body.dataset.ready,"
-                " document.body && document.body.dataset.failed]")
+            try:
+                url, ready, failed = self.driver.execute_script(
+                    "return [location.href, document.body && document.body.dataset.ready,"
+                    " document.body && document.body.dataset.failed]")
+            except UnexpectedAlertPresentException:
+                url = ready = failed = None
             here = want is None or url == want
             if here and ready == "true":
                 break
@@ -117,8 +127,21 @@ class PageBrowser:
         self._drain()
         return [e for e in self._console if e["level"] == "SEVERE"]
 
+    def dialogs(self):
+        """The messages of the JavaScript dialogs (alert, confirm, prompt) opened since open(),
+        from Chromium's own page events."""
+        self._drain()
+        return list(self._dialogs)
+
     def js(self, code, *args):
-        return self.driver.execute_script(code, *args)
+        """Runs `code` in the page; a dialog the page opened first is closed (dialogs() lists
+        it) and the code run again."""
+        for _ in range(100):
+            try:
+                return self.driver.execute_script(code, *args)
+            except UnexpectedAlertPresentException:
+                pass
+        raise PageError("the page keeps opening dialogs: %s" % self.dialogs()[-3:])
 
     def screenshot(self, png):
         self.driver.save_screenshot(str(png))

@@ -27,9 +27,9 @@
 #include <ompl/util/RandomNumbers.h>
 
 #include "bench/planning/ParksimRuns.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/model/Geometry.h"
 
 namespace parksim::bench {
 

@@ -20,10 +20,10 @@
 
 #include "bench/planning/PathCheck.h"
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/FootprintChecker.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/results/BenchRecord.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/FootprintChecker.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/results/reports/BenchRecord.h"
 
 namespace parksim::bench {
 

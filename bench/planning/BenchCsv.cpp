@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Csv.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Csv.h"
+#include "parksim/core/io/NumberFormat.h"
 
 namespace parksim::bench {
 namespace {

@@ -4,7 +4,7 @@
 //   cpu_total_s,length_m,cusps,duration_s,duration_lower_bound_s,free_space_bound_s,
 //   min_clearance_m,steering_reversals_per_m,cost,iterations,iterations_first,tree_size,
 //   collision_queries
-// then the provenance of the build that ran them (parksim/core/Provenance.h):
+// then the provenance of the build that ran them (parksim/core/system/Provenance.h):
 //   parksim_version,git_commit,git_dirty,build_type,compiler,bullet_precision
 // followed by one `phase_<name>_s` column per planner phase any row reports. Units: s, m.
 // Values a run does not have are left empty; booleans are 0 or 1.
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/Provenance.h"
-#include "parksim/results/BenchRecord.h"
+#include "parksim/core/system/Provenance.h"
+#include "parksim/results/reports/BenchRecord.h"
 
 namespace parksim::bench {
 

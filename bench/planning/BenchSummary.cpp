@@ -1,5 +1,5 @@
 #include "bench/planning/BenchSummary.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/NumberFormat.h"
 
 #include <algorithm>
 #include <cmath>

@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "parksim/results/BenchRecord.h"
+#include "parksim/results/reports/BenchRecord.h"
 
 namespace parksim::bench {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "bench/planning/BenchSummary.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/NumberFormat.h"
 
 namespace parksim::bench {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "parksim/results/BenchRecord.h"
+#include "parksim/results/reports/BenchRecord.h"
 
 namespace parksim::bench {
 

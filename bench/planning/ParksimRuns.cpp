@@ -1,6 +1,6 @@
 #include "bench/planning/ParksimRuns.h"
 #include "bench/planning/PlanShape.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/NumberFormat.h"
 
 #include <time.h>
 
@@ -47,23 +47,26 @@ BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& wor
   const double cpu0 = threadCpuSeconds();
   const PlanResult result = planScenario(scenario, world, def.setup, {}, *def.planners);
   const double cpu = threadCpuSeconds() - cpu0;
+  // As planned: the planner and steering for the world's drive, the budget for its lot.
+  const PlanSetup planned = resolvedPlanSetup(def.setup, scenario, *def.planners);
   BenchRecord r;
   r.library = "parksim";
-  r.planner = def.setup.planner;
+  r.planner = planned.planner;
   if (def.setup.search.smooth) r.planner += "+smooth";
   // The A* planners drive their own motion primitives and analytic curves, whatever the
   // steering.
-  if (def.setup.planner == "hybrid-a-star") {
+  if (planned.planner == "hybrid-a-star") {
     r.space = "primitives+reeds-shepp";
-  } else if (def.setup.planner == "time-a-star") {
+  } else if (planned.planner == "time-a-star") {
     r.space = "primitives+balkcom-mason";
+  } else if (planned.planner == "car-a-star") {
+    r.space = "car-primitives+reeds-shepp";
   } else {
-    r.space = toString(def.setup.steering_kind);
+    r.space = toString(planned.steering_kind);
   }
   r.scenario = scenario.name;
   r.seed = def.setup.search.seed;
-  // The budget as planned: an automatic one resolved for this lot.
-  r.budget = budgetName(resolvedPlanSetup(def.setup, scenario, *def.planners).search);
+  r.budget = budgetName(planned.search);
   r.solved = result.solved();
   r.status = toString(result.status);
   r.time_total_s = result.stats.times.total_s;

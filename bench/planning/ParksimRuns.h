@@ -7,9 +7,9 @@
 
 #include "bench/planning/PathCheck.h"
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/results/BenchRecord.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/results/reports/BenchRecord.h"
 
 namespace parksim::bench {
 

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/Geometry.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Geometry.h"
 
 namespace parksim::bench {
 

@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
 
 namespace parksim::bench {
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "parksim/core/DiffDrive.h"
+#include "parksim/core/model/DiffDrive.h"
 
 namespace parksim::bench {
 

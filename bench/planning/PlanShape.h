@@ -5,8 +5,8 @@
 // periods that turn faster than a threshold (turning in place included), a change counted each
 // time it differs from the previous turning period's.
 
-#include "parksim/core/RobotDef.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/core/model/Trajectory.h"
 
 namespace parksim::bench {
 

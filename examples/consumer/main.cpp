@@ -7,9 +7,9 @@
 
 #include <memory>
 
-#include <parksim/core/Error.h>
+#include <parksim/core/io/Error.h>
 #include <parksim/pipeline/EpisodePipeline.h>
-#include <parksim/scenario/World.h>
+#include <parksim/scenario/world/World.h>
 
 int main(int argc, char** argv) {
   if (argc < 2) {

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include <parksim/plugin/PluginApi.h>
-#include <parksim/sim/TrackingController.h>
+#include <parksim/sim/control/TrackingController.h>
+#include <parksim/usercode/PluginApi.h>
 
 namespace {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The example plugin's two components, each in its own file; ExamplePlugin.cpp registers them.
 
-#include "parksim/plugin/PluginApi.h"
+#include "parksim/usercode/PluginApi.h"
 
 namespace example {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "ExamplePlugins.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/planner/PlanFinishing.h"
+#include "parksim/core/model/Geometry.h"
+#include "parksim/planner/base/PlanFinishing.h"
 
 namespace example {
 

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "ExamplePlugins.h"
-#include "parksim/sim/TrackingController.h"
+#include "parksim/sim/control/TrackingController.h"
 
 namespace example {
 

@@ -7,12 +7,12 @@
 #include <string>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/renders/FrameRecorder.h"
-#include "parksim/scenario/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/scenario/world/ScenarioReader.h"
+#include "parksim/sim/episode/Episode.h"
 
 int main(int argc, char** argv) {
   using namespace parksim;

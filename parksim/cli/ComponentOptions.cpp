@@ -1,12 +1,12 @@
 #include "parksim/cli/ComponentOptions.h"
 
 #include "parksim/cli/Validators.h"
-#include "parksim/command/CommandController.h"
-#include "parksim/command/CommandLine.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/ParamSet.h"
-#include "parksim/core/Text.h"
-#include "parksim/plugin/PluginLoader.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/Text.h"
+#include "parksim/core/params/ParamSet.h"
+#include "parksim/usercode/CommandController.h"
+#include "parksim/usercode/CommandLine.h"
+#include "parksim/usercode/PluginLoader.h"
 
 namespace parksim::cli {
 
@@ -37,11 +37,13 @@ void ControllerOptions::addTo(CLI::App& sub) {
 
 void UserCodeOptions::addTo(CLI::App& sub) {
   sub.add_option("--planner-timeout", limits.planner_s,
-                 "a user's planner (plugin, command) is stopped after this long, s")
+                 "a user's planner (plugin, command) is stopped after this long, s (a command at "
+                 "its own timeout_s when that is shorter)")
       ->capture_default_str()
       ->check(realIn(UserCodeLimits::kMin, UserCodeLimits::kMax));
   sub.add_option("--controller-timeout", limits.controller_tick_s,
-                 "a user's controller is stopped when one command takes longer, s")
+                 "a user's controller (plugin, command) is stopped when one command (its reset "
+                 "included) takes longer, s (a command at its own timeouts when they are shorter)")
       ->capture_default_str()
       ->check(realIn(UserCodeLimits::kMin, UserCodeLimits::kMax));
 }

@@ -10,9 +10,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "parksim/core/ParamMap.h"
-#include "parksim/core/UserCodeWatch.h"
-#include "parksim/plugin/Components.h"
+#include "parksim/core/params/ParamMap.h"
+#include "parksim/core/system/UserCodeWatch.h"
+#include "parksim/usercode/Components.h"
 
 namespace parksim::cli {
 
@@ -29,7 +29,7 @@ struct ControllerOptions {
   std::string name = kDefaultController;
   std::vector<std::string> params;  ///< NAME=VALUE
   /// --controller-command 'CMD ...': sets `name` to the controller `command` with this command
-  /// line as its `command` parameter (command/CommandController.h); excludes --controller.
+  /// line as its `command` parameter (usercode/CommandController.h); excludes --controller.
   std::string command;
 
   void addTo(CLI::App& sub);
@@ -37,8 +37,9 @@ struct ControllerOptions {
   ParamMap paramMap() const;
 };
 
-/// --planner-timeout and --controller-timeout: the limits on user code (UserCodeWatch.h), which
-/// runs in a watched child process.
+/// --planner-timeout and --controller-timeout: the limits on user code (UserCodeWatch.h): a
+/// plugin's runs in a watched child process, a command stops its own program at them
+/// (EpisodeRequest::limits).
 struct UserCodeOptions {
   UserCodeLimits limits;
 

@@ -1,7 +1,7 @@
 #include "parksim/cli/FiguresOption.h"
 
-#include "parksim/core/Error.h"
-#include "parksim/renders/FigureSelection.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/renders/plots/FigureSelection.h"
 
 namespace parksim::cli {
 

@@ -7,7 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "parksim/renders/OffscreenContext.h"
+#include "parksim/renders/gl/OffscreenContext.h"
 
 namespace parksim::cli {
 

@@ -15,8 +15,8 @@
 #include <thread>
 
 #include "parksim/cli/Progress.h"
-#include "parksim/core/ChildProcess.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/system/ChildProcess.h"
 
 namespace parksim::cli {
 
@@ -179,7 +179,7 @@ OutputDir::OutputDir(const std::string& out) : impl_(std::make_unique<Impl>()) {
     // create_directory and leaving it behind.
     m.watcher = std::thread([&m] { m.watch(); });
     // Not before the watcher waits: a process for user code may be forked next
-    // (pipeline/UserCodeIsolation.h), and a thread still starting may hold the allocator's locks
+    // (usercode/UserCodeIsolation.h), and a thread still starting may hold the allocator's locks
     // (AddressSanitizer's allocator, before LLVM 17, takes none around fork), which the forked
     // child then waits for forever.
     while (!m.started.load()) std::this_thread::yield();

@@ -4,12 +4,12 @@
 
 #include "parksim/cli/ComponentOptions.h"
 #include "parksim/cli/Validators.h"
-#include "parksim/command/CommandLine.h"
-#include "parksim/command/CommandPlanner.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/core/ParamSet.h"
-#include "parksim/core/Text.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/io/Text.h"
+#include "parksim/core/params/ParamSet.h"
+#include "parksim/usercode/CommandLine.h"
+#include "parksim/usercode/CommandPlanner.h"
 
 namespace parksim::cli {
 
@@ -45,10 +45,12 @@ void PlanCliOptions::addTo(CLI::App& sub, const PlannerRegistry& planners) {
   sub.add_option("--seed", seed, "seed of the planner's random number generator")
       ->capture_default_str()
       ->check(unsigned64());
-  sub.add_option("--max-iterations", max_iterations,
-                 "iteration budget (A* planners: node expansions); auto: 200000 per search for "
-                 "time-a-star, else 2000 (tree planners) or 20000 (hybrid-a-star) times "
-                 "max(1, lot area / 2.16 m^2 / (robot size / 85 mm)^2)")
+  sub.add_option(
+         "--max-iterations", max_iterations,
+         "iteration budget (A* planners: node expansions); auto: 200000 per search for "
+         "time-a-star (car-a-star: at least 20000), else 2000 (tree planners; 20000 for a car) or "
+         "20000 (hybrid-a-star) times max(1, lot area / 2.16 m^2 / (robot size / 85 "
+         "mm)^2)")
       ->capture_default_str();
   sub.add_option("--time-limit", time_limit_s,
                  "wall-time budget of the search, s (0: none); the plan then depends on the "

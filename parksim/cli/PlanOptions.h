@@ -11,8 +11,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "parksim/core/Scenario.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/planner/base/PlanScenario.h"
 
 namespace parksim::cli {
 
@@ -27,7 +27,7 @@ struct PlanCliOptions {
   /// --planner-param NAME=VALUE, repeatable: the planner's own parameters (ParamMap.h).
   std::vector<std::string> planner_params;
   /// --planner-command 'CMD ... {problem} {out}': the planner `command` with this command line
-  /// as its `command` parameter (command/CommandPlanner.h); excludes --planner.
+  /// as its `command` parameter (usercode/CommandPlanner.h); excludes --planner.
   std::string planner_command;
   std::string steering = toString(PlanSetup{}.steering_kind);
   std::uint64_t seed = PlanSetup{}.search.seed;

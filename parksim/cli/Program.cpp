@@ -7,7 +7,7 @@
 #include <exception>
 
 #include "parksim/cli/TerminalText.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim::cli {
 

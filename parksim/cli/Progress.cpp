@@ -6,7 +6,7 @@
 #include <atomic>
 #include <cstdio>
 
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/NumberFormat.h"
 
 namespace parksim::cli {
 

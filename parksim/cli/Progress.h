@@ -6,7 +6,7 @@
 #include <chrono>
 #include <string>
 
-#include "parksim/planner/PlanResult.h"
+#include "parksim/planner/base/PlanResult.h"
 
 namespace parksim::cli {
 

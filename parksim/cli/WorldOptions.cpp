@@ -1,6 +1,6 @@
 #include "parksim/cli/WorldOptions.h"
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim::cli {
 

@@ -1,7 +1,7 @@
 #pragma once
 // `--start x,y,deg`, `--goal x,y,deg` and `--set path.to.field=value` on the commands that read
 // a world (plan, run, render): the world file with some fields replaced, validated exactly like
-// the file (parksim/scenario/ScenarioOverrides.h).
+// the file (parksim/scenario/world/ScenarioOverrides.h).
 
 #include <memory>
 #include <string>
@@ -9,9 +9,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "parksim/core/Scenario.h"
-#include "parksim/scenario/ScenarioOverrides.h"
-#include "parksim/scenario/World.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/scenario/world/ScenarioOverrides.h"
+#include "parksim/scenario/world/World.h"
 
 namespace parksim::cli {
 
@@ -31,7 +31,8 @@ struct WorldOverrideOptions {
   std::vector<std::string> labels() const;
 };
 
-/// The world file at `path` with the options' overrides applied (scenario/World.h's loadWorld).
+/// The world file at `path` with the options' overrides applied (scenario/world/World.h's
+/// loadWorld).
 std::shared_ptr<const World> loadWorldWith(const std::string& path,
                                            const WorldOverrideOptions& options);
 

@@ -12,8 +12,8 @@
 #include <btBulletCollisionCommon.h>
 
 #include "parksim/collision/ObstacleShape.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/Geometry.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/Geometry.h"
 
 namespace parksim {
 

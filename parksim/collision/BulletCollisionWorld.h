@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/FootprintChecker.h"
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/FootprintChecker.h"
+#include "parksim/core/model/Scenario.h"
 
 namespace parksim {
 

@@ -1,7 +1,7 @@
 #pragma once
 // How an obstacle becomes a Bullet collision shape: one policy for every Bullet world parksim
 // builds, the planner's query world (collision/BulletCollisionWorld.h) and the dynamics world
-// (sim/DynamicsWorld.h). Internal to collision/ and sim/, which keep Bullet a private
+// (sim/world/DynamicsWorld.h). Internal to collision/ and sim/, which keep Bullet a private
 // dependency: Bullet's shape type is only declared here, so the header includes no Bullet
 // header.
 //
@@ -19,7 +19,7 @@
 
 #include <Eigen/Core>
 
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Scenario.h"
 
 class btCollisionShape;
 

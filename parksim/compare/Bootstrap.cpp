@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "parksim/compare/Quantile.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 

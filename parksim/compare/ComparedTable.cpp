@@ -2,9 +2,9 @@
 
 #include <filesystem>
 
-#include "parksim/core/Error.h"
-#include "parksim/results/ResultsFile.h"
-#include "parksim/sweep/SweepManifest.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/results/tables/ResultsFile.h"
+#include "parksim/sweep/shards/SweepManifest.h"
 
 namespace parksim {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parksim/core/NumberFormat.h"
-#include "parksim/core/Text.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/io/Text.h"
 
 namespace parksim {
 

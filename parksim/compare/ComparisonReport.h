@@ -6,7 +6,7 @@
 #include <string>
 
 #include "parksim/compare/TableComparison.h"
-#include "parksim/results/JUnitReport.h"
+#include "parksim/results/reports/JUnitReport.h"
 
 namespace parksim {
 

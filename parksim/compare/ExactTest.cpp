@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 

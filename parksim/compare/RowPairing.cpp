@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <utility>
 
-#include "parksim/core/Error.h"
-#include "parksim/results/EpisodeRecord.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 
 namespace parksim {
 namespace {

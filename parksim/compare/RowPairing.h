@@ -11,8 +11,8 @@
 //     group names anyway;
 //   - rows pair when every other parameter column is equal: the record's parameter fields
 //     (results/EpisodeRecord.h, FieldGroup::kParameter) and the set: columns (isSetKey), but
-//     world_file, which the ids leave out too (sweep/EpisodeParams.h), and the columns compared
-//     across.
+//     world_file, which the ids leave out too (sweep/spec/EpisodeParams.h), and the columns
+//     compared across.
 
 #include <string>
 #include <string_view>
@@ -20,7 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/sweep/Report.h"
+#include "parksim/report/Report.h"
 
 namespace parksim {
 

@@ -13,11 +13,11 @@
 #include "parksim/compare/HolmCorrection.h"
 #include "parksim/compare/Quantile.h"
 #include "parksim/compare/RowPairing.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/core/Text.h"
-#include "parksim/sweep/EpisodeParams.h"
-#include "parksim/sweep/Report.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/io/Text.h"
+#include "parksim/report/Report.h"
+#include "parksim/sweep/spec/EpisodeParams.h"
 
 namespace parksim {
 

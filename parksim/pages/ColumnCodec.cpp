@@ -5,7 +5,7 @@
 #include <cstring>
 #include <limits>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 namespace {

@@ -30,8 +30,8 @@ nlohmann::json comparisonPageData(const ComparisonPage& page, const std::string&
       const fs::path c = episodePage(page.candidate_dir, e.value("candidate_id", id));
       if (b.empty() || c.empty()) continue;
       nlohmann::json item = e;
-      item["baseline_href"] = relativeHref(page_dir, b.string());
-      item["candidate_href"] = relativeHref(page_dir, c.string());
+      item["baseline_href"] = hrefOf(relativeHref(page_dir, b.string()));
+      item["candidate_href"] = hrefOf(relativeHref(page_dir, c.string()));
       linked.push_back(std::move(item));
     }
     group["paired_episodes"] = episodes.size();

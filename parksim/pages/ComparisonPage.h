@@ -24,8 +24,8 @@ struct ComparisonPage {
 
 /// The page's data: the comparison, with each group's "episodes" cut to those whose pages
 /// both sweeps kept (at most max_links_per_group, with "baseline_href" and "candidate_href"
-/// relative to `page_dir`, the folder the page is written to) and "paired_episodes" /
-/// "linked_episodes" counting what was there and what is linked.
+/// relative to `page_dir`, the folder the page is written to, as URL references: hrefOf) and
+/// "paired_episodes" / "linked_episodes" counting what was there and what is linked.
 nlohmann::json comparisonPageData(const ComparisonPage& page, const std::string& page_dir);
 
 /// Writes the page to `path` atomically. Throws Error.

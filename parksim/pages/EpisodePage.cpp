@@ -5,9 +5,9 @@
 #include "parksim/pages/ColumnCodec.h"
 #include "parksim/pages/LotData.h"
 #include "parksim/pages/PageDocument.h"
-#include "parksim/renders/SceneBuilder.h"
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/results/MetricsFile.h"
+#include "parksim/renders/scene/SceneBuilder.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/results/episode/MetricsFile.h"
 
 namespace parksim {
 namespace {
@@ -61,7 +61,7 @@ nlohmann::json planData(const Scenario& scenario, const Trajectory& plan) {
           {"path", {{"x", float64Column(px)}, {"y", float64Column(py)}}}};
 }
 
-nlohmann::json recordData(const EpisodePage& page) {
+nlohmann::json recordData(const EpisodePage& page, bool car) {
   // Every row up to the limit; beyond it every stride-th row and the last, so a page of the
   // longest episode the step limit allows stays one a browser opens (docs/limits.md).
   const std::size_t rows = page.rows.size();
@@ -75,7 +75,8 @@ nlohmann::json recordData(const EpisodePage& page) {
       stride > 1 ? std::span<const ExecutedRow>(kept) : page.rows;
   nlohmann::json columns = nlohmann::json::object();
   nlohmann::json names = nlohmann::json::array();
-  for (const DataColumn& c : executedColumns({shown.begin(), shown.end()}, page.realism_columns)) {
+  for (const DataColumn& c :
+       executedColumns({shown.begin(), shown.end()}, page.realism_columns, car)) {
     names.push_back(c.name);
     columns[c.name] = float64Column(c.values);
   }
@@ -104,7 +105,8 @@ nlohmann::json episodePageData(const Scenario& scenario, const EpisodePage& page
       {"status", page.status}, {"met", page.status == "met"}, {"reason", page.reason}};
   data["realisations"] = {{"count", page.realisations}, {"met", page.realisations_met}};
   if (page.plan != nullptr && !page.plan->empty()) data["plan"] = planData(scenario, *page.plan);
-  if (!page.rows.empty()) data["record"] = recordData(page);
+  // A car's record carries its steering, and the replay turns its front wheels by it.
+  if (!page.rows.empty()) data["record"] = recordData(page, scenario.robot.isCar());
   if (page.tolerance != nullptr) data["tolerance"] = toleranceData(*page.tolerance);
   if (page.metrics != nullptr) {
     nlohmann::json metrics = nlohmann::json::object();

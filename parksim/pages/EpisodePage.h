@@ -16,11 +16,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/Scenario.h"
-#include "parksim/core/TrackingTolerance.h"
-#include "parksim/core/Trajectory.h"
-#include "parksim/sim/EpisodeMetrics.h"
-#include "parksim/sim/ExecutedRow.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/TrackingTolerance.h"
+#include "parksim/core/model/Trajectory.h"
+#include "parksim/sim/episode/EpisodeMetrics.h"
+#include "parksim/sim/episode/ExecutedRow.h"
 
 namespace parksim {
 

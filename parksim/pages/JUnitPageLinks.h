@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "parksim/results/JUnitReport.h"
+#include "parksim/results/reports/JUnitReport.h"
 
 namespace parksim {
 

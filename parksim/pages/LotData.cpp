@@ -34,7 +34,7 @@ nlohmann::json lotData(const Scenario& scenario, const SceneStyle& style) {
   }
   const RobotDef& r = scenario.robot;
   const GoalRegion& g = scenario.goal;
-  return {
+  nlohmann::json data = {
       {"lot",
        {{"x_min", scenario.lot.x_min_m},
         {"y_min", scenario.lot.y_min_m},
@@ -69,6 +69,13 @@ nlohmann::json lotData(const Scenario& scenario, const SceneStyle& style) {
         {"executed", cssColor(style.executed)},
         {"grid_spacing_m", style.grid_spacing_m}}},
   };
+  // A car: the replay draws its front wheels, axle_distance ahead, turned by the record's
+  // steering (a differential drive's page is what it was).
+  if (r.isCar()) {
+    data["robot"]["drive"] = "car";
+    data["robot"]["axle_distance_m"] = r.axle_distance_m;
+  }
+  return data;
 }
 
 }  // namespace parksim

@@ -1,13 +1,13 @@
 #pragma once
 // A scenario as an episode page draws it (web/replay.js): the lot's bounds, every obstacle's
 // outline and colour, the robot's footprint, the start and the goal with its tolerance, and
-// the colours of everything else: the colours are the renderer's (renders/SceneStyle.h), so a
+// the colours of everything else: the colours are the renderer's (renders/scene/SceneStyle.h), so a
 // page and a film of the same episode look alike.
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/Scenario.h"
-#include "parksim/renders/SceneStyle.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/renders/scene/SceneStyle.h"
 
 namespace parksim {
 

@@ -1,10 +1,12 @@
 #include "parksim/pages/PageAssets.h"
 
 #include <array>
+#include <cstdint>
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/pages/ColumnCodec.h"
 
 namespace parksim {
 
@@ -16,12 +18,30 @@ extern const std::size_t kEmbeddedFileCount;
 
 namespace {
 
-std::string_view embedded(std::string_view name) {
+const EmbeddedFile& embeddedFile(std::string_view name) {
   for (std::size_t i = 0; i < page_assets::kEmbeddedFileCount; ++i) {
     const EmbeddedFile& f = page_assets::kEmbeddedFiles[i];
-    if (name == f.name) return {reinterpret_cast<const char*>(f.data), f.size};
+    if (name == f.name) return f;
   }
   throw Error("no page file named " + std::string(name) + " is built in");
+}
+
+std::string_view embedded(std::string_view name) {
+  const EmbeddedFile& f = embeddedFile(name);
+  return {reinterpret_cast<const char*>(f.data), f.size};
+}
+
+int hexDigit(char c) { return c <= '9' ? c - '0' : c - 'a' + 10; }
+
+PageFile pageFile(std::string_view name) {
+  const EmbeddedFile& f = embeddedFile(name);
+  const std::string_view hex = f.sha256;
+  std::array<std::uint8_t, 32> digest{};
+  if (hex.size() != 2 * digest.size()) throw Error(std::string(name) + ": no SHA-256 built in");
+  for (std::size_t i = 0; i < digest.size(); ++i) {
+    digest[i] = static_cast<std::uint8_t>(16 * hexDigit(hex[2 * i]) + hexDigit(hex[2 * i + 1]));
+  }
+  return {{reinterpret_cast<const char*>(f.data), f.size}, base64(digest)};
 }
 
 struct LibraryFiles {
@@ -46,8 +66,8 @@ PageLibrary load(const LibraryFiles& files) {
   lib.version = package.value("version", "");
   lib.license = package.value("license", "");
   lib.homepage = package.value("homepage", "");
-  lib.script = embedded(files.script);
-  lib.style = embedded(files.style);
+  lib.script = pageFile(files.script);
+  lib.style = pageFile(files.style);
   lib.license_text = embedded(dir + "/LICENSE");
   return lib;
 }
@@ -60,7 +80,7 @@ const PageLibrary& pageLibrary(PageLibraryId id) {
   return libraries.at(static_cast<std::size_t>(id));
 }
 
-std::string_view pageSource(std::string_view name) { return embedded("web/" + std::string(name)); }
+PageFile pageSource(std::string_view name) { return pageFile("web/" + std::string(name)); }
 
 std::vector<std::string> embeddedFileNames() {
   std::vector<std::string> names;

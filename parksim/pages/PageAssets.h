@@ -4,7 +4,9 @@
 // embedded by the build from web/node_modules/) and parksim's own scripts and style sheet
 // (web/*.js, web/page.css). All are compiled into this library, so a page is written whole
 // wherever parksim runs, with nothing to find at run time, and it inlines them: one file that
-// opens from file:// with no server and no network (docs/pages.md).
+// opens from file:// with no server and no network (docs/pages.md). Each file carries its
+// SHA-256, computed when it is built in: a page's Content-Security-Policy allows its inline
+// scripts and style sheets by these hashes and runs nothing else (PageDocument.h).
 
 #include <cstddef>
 #include <string>
@@ -18,6 +20,14 @@ struct EmbeddedFile {
   const char* name;           ///< "uplot/dist/uPlot.iife.min.js", "web/common.js"
   const unsigned char* data;  ///< the file's bytes, NUL-terminated
   std::size_t size;           ///< bytes, without the NUL
+  const char* sha256;         ///< the bytes' SHA-256, 64 lowercase hex digits
+};
+
+/// A script or style sheet a page inlines whole as one element, and the hash its
+/// Content-Security-Policy names it by.
+struct PageFile {
+  std::string_view text;      ///< the file's bytes
+  std::string sha256_base64;  ///< SHA-256 of `text` in base64, as a CSP 'sha256-...' holds it
 };
 
 /// A library a page may draw with.
@@ -33,8 +43,8 @@ struct PageLibrary {
   std::string version;            ///< as installed, e.g. "1.6.32"
   std::string license;            ///< SPDX id, e.g. "MIT"
   std::string homepage;           ///< from its package.json
-  std::string_view script;        ///< the minified browser build
-  std::string_view style;         ///< its style sheet
+  PageFile script;                ///< the minified browser build
+  PageFile style;                 ///< its style sheet
   std::string_view license_text;  ///< its LICENSE file, copied into every page that uses it
 };
 
@@ -42,7 +52,7 @@ const PageLibrary& pageLibrary(PageLibraryId id);
 
 /// One of parksim's own page files by name ("common.js", "episode.js", "page.css"). Throws
 /// Error for a name that is not one.
-std::string_view pageSource(std::string_view name);
+PageFile pageSource(std::string_view name);
 
 /// Every embedded file's name, for tests.
 std::vector<std::string> embeddedFileNames();

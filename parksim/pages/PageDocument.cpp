@@ -1,16 +1,11 @@
 #include "parksim/pages/PageDocument.h"
 
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Provenance.h"
-#include "parksim/results/XmlText.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/system/Provenance.h"
+#include "parksim/results/reports/XmlText.h"
 
 namespace parksim {
 namespace {
-
-// Nothing may be fetched: scripts and styles are inline, images are drawn into canvases.
-constexpr const char* kContentSecurityPolicy =
-    "default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; "
-    "img-src data:; form-action 'none'; base-uri 'none'";
 
 std::string text(std::string_view s) { return xmlEscaped(s, XmlContext::kContent); }
 
@@ -45,6 +40,45 @@ void extractBlobs(nlohmann::json& data, std::vector<std::string>& blobs) {
   for (auto& [key, value] : data.items()) extractBlobs(value, blobs);
 }
 
+// The inline scripts and style sheets, each one element holding one file whole.
+struct PageParts {
+  std::vector<PageFile> styles;
+  std::vector<std::string> script_notes;  ///< what each script is, said before its element
+  std::vector<PageFile> scripts;
+};
+
+PageParts partsOf(const PageDocument& page) {
+  PageParts parts;
+  for (const PageLibraryId id : page.libraries) {
+    const PageLibrary& lib = pageLibrary(id);
+    parts.styles.push_back(lib.style);
+    parts.scripts.push_back(lib.script);
+    parts.script_notes.push_back(lib.title + " " + lib.version + " (" + lib.license +
+                                 "; licence text in this page's footer)");
+  }
+  parts.styles.push_back(pageSource("page.css"));
+  parts.scripts.push_back(pageSource("common.js"));
+  parts.script_notes.emplace_back("parksim");
+  for (const std::string& script : page.scripts) {
+    parts.scripts.push_back(pageSource(script));
+    parts.script_notes.emplace_back();
+  }
+  return parts;
+}
+
+// Nothing may be fetched (scripts and styles are inline, images are drawn into canvases), and
+// nothing runs or styles the page but the files it was made with, each allowed by its hash:
+// no inline script or style a name might smuggle in, no event handler attribute, no
+// javascript: link. (The data's <script type="application/json"> and blobs are not run.)
+std::string contentSecurityPolicy(const PageParts& parts) {
+  std::string csp = "default-src 'none'; script-src";
+  for (const PageFile& f : parts.scripts) csp += " 'sha256-" + f.sha256_base64 + "'";
+  csp += "; style-src";
+  for (const PageFile& f : parts.styles) csp += " 'sha256-" + f.sha256_base64 + "'";
+  csp += "; img-src data:; form-action 'none'; base-uri 'none'";
+  return csp;
+}
+
 void appendLicences(std::string& html, const PageDocument& page) {
   html += "<footer><details><summary>Made by " + text(versionLine(buildProvenance())) + " with ";
   for (std::size_t i = 0; i < page.libraries.size(); ++i) {
@@ -64,22 +98,24 @@ void appendLicences(std::string& html, const PageDocument& page) {
 }  // namespace
 
 std::string pageHtml(PageDocument page) {
+  const PageParts parts = partsOf(page);
   std::string html;
   html.reserve(1u << 20);
   html += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   html += "<meta http-equiv=\"Content-Security-Policy\" content=\"";
-  html += kContentSecurityPolicy;
+  html += contentSecurityPolicy(parts);
   html += "\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
   html += "<meta name=\"generator\" content=\"" +
           xmlEscaped(versionLine(buildProvenance()), XmlContext::kAttribute) + "\">\n";
-  html += "<title>" + text(page.title) + "</title>\n<style>\n";
-  for (const PageLibraryId id : page.libraries) {
-    html += pageLibrary(id).style;
-    html += '\n';
+  html += "<title>" + text(page.title) + "</title>\n";
+  // Each element's text is the file's bytes exactly, so that it has the hash the policy names.
+  for (const PageFile& style : parts.styles) {
+    html += "<style>";
+    html += style.text;
+    html += "</style>\n";
   }
-  html += pageSource("page.css");
   html +=
-      "</style>\n</head>\n<body>\n<noscript>This report draws itself with JavaScript; "
+      "</head>\n<body>\n<noscript>This report draws itself with JavaScript; "
       "allow it for this file.</noscript>\n<main id=\"page\"></main>\n";
   appendLicences(html, page);
   std::vector<std::string> blobs;
@@ -93,20 +129,13 @@ std::string pageHtml(PageDocument page) {
     html += blobs[i];
     html += "</script>\n";
   }
-  for (const PageLibraryId id : page.libraries) {
-    const PageLibrary& lib = pageLibrary(id);
-    html += "<script>/*! " + lib.title + " " + lib.version + " (" + lib.license +
-            "; licence text in this page's footer) */\n";
-    html += lib.script;
-    html += "\n</script>\n";
+  for (std::size_t i = 0; i < parts.scripts.size(); ++i) {
+    if (!parts.script_notes[i].empty()) html += "<!-- " + text(parts.script_notes[i]) + " -->\n";
+    html += "<script>";
+    html += parts.scripts[i].text;
+    html += "</script>\n";
   }
-  html += "<script>\n";
-  html += pageSource("common.js");
-  for (const std::string& script : page.scripts) {
-    html += '\n';
-    html += pageSource(script);
-  }
-  html += "\n</script>\n</body>\n</html>\n";
+  html += "</body>\n</html>\n";
   return html;
 }
 

@@ -3,7 +3,12 @@
 // and its data, all inline, so that it opens from file:// inside a CI artifact with no server,
 // no network and nothing beside it. A Content-Security-Policy allows no fetch of any kind (no
 // script, style, image, font or connection from anywhere, the page's own folder included):
-// what is not inline is not loaded. Links to other pages are plain navigation.
+// what is not inline is not loaded. Nor does anything inline run but the page's own files:
+// each library, each of parksim's scripts and each style sheet is one element holding the
+// file's bytes, allowed by the SHA-256 the build computed (PageAssets.h); an inline script,
+// event handler attribute, javascript: link or style attribute from anywhere else (a name
+// written into the page as markup by mistake) is refused by the browser. Links to other pages
+// are plain navigation.
 //
 // The data goes into <script type="application/json" id="parksim-data">, except the base64 text
 // of its packed columns (ColumnCodec.h), which goes into <script type="text/plain"

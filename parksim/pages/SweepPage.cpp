@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <unordered_set>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pages/ColumnCodec.h"
 #include "parksim/pages/PageDocument.h"
 #include "parksim/pages/TableColumns.h"
@@ -57,6 +57,26 @@ std::string relativeHref(const std::string& from, const std::string& to) {
   fs::path rel = b.lexically_relative(a);
   if (rel.empty()) rel = b;
   return rel.generic_string();
+}
+
+std::string hrefOf(std::string_view path) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string href;
+  href.reserve(path.size());
+  for (const char c : path) {
+    const auto byte = static_cast<unsigned char>(c);
+    const bool kept = (byte >= 'A' && byte <= 'Z') || (byte >= 'a' && byte <= 'z') ||
+                      (byte >= '0' && byte <= '9') || c == '-' || c == '.' || c == '_' ||
+                      c == '~' || c == '/';
+    if (kept) {
+      href += c;
+    } else {
+      href += '%';
+      href += kHex[byte >> 4];
+      href += kHex[byte & 15];
+    }
+  }
+  return href;
 }
 
 nlohmann::json sweepPageData(const SweepPage& page) {

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -26,7 +27,8 @@ struct SweepPage {
   /// Every status an episode can have, in judging order (allEpisodeStatuses), so that the page
   /// offers and counts each, none seen included.
   std::vector<std::string> statuses;
-  /// Where the episode folders are, relative to the page ("../episodes"); and for each row
+  /// Where the episode folders are, relative to the page, as a URL reference ("../episodes",
+  /// hrefOf(relativeHref(...))); and for each row
   /// whether its folder holds a page (keptEpisodePages).
   std::string episodes_href;
   std::vector<bool> kept;
@@ -47,8 +49,14 @@ std::vector<bool> keptEpisodePages(const std::string& episodes_dir,
                                    const std::vector<nlohmann::ordered_json>& rows);
 
 /// A path from folder `from` to `to` (both as given; relative ones from the working directory),
-/// with '/' separators: what a page's link holds.
+/// with '/' separators, as it is (JUnit's properties hold it so; a page's link holds hrefOf it).
 std::string relativeHref(const std::string& from, const std::string& to);
+
+/// A '/'-separated path as a URL reference a page's link can hold: every byte but the
+/// unreserved ones (A-Z a-z 0-9 - . _ ~) and '/' percent-encoded, so that a folder named
+/// "javascript:x" is not read as a scheme, nor '?' or '#' as a query or fragment, and '%' and
+/// spaces survive.
+std::string hrefOf(std::string_view path);
 
 /// The page's data: {"page": "sweep", "title", "source", "table": tableColumns(rows), "axes",
 /// "statuses", "episodes": {"href", "kept": codes}, "warnings"}.

@@ -1,10 +1,10 @@
 #include "parksim/pipeline/EpisodeFigures.h"
 
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/planner/MoveToPoseSteering.h"
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/planner/steering/MoveToPoseSteering.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 
 namespace parksim {
 
@@ -84,6 +84,7 @@ FrameInput frameInput(const EpisodeSample& sample) {
   FrameInput in;
   in.t_s = sample.tracking.t_s;
   in.pose = sample.tracking.pose;
+  in.steer_rad = sample.tracking.steer_rad;
   in.reference = sample.tracking.reference;
   in.position_error_m = sample.tracking.pos_err_m;
   in.heading_error_rad = sample.tracking.heading_err_rad;

@@ -8,13 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/Scenario.h"
-#include "parksim/planner/PlanResult.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/renders/Figures.h"
-#include "parksim/renders/FrameRecorder.h"
-#include "parksim/renders/TrackingPlot.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/planner/base/PlanResult.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/renders/plots/Figures.h"
+#include "parksim/renders/plots/TrackingPlot.h"
+#include "parksim/sim/episode/Episode.h"
 
 namespace parksim {
 

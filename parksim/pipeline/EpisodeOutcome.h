@@ -11,15 +11,15 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/TrackingTolerance.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/model/TrackingTolerance.h"
+#include "parksim/core/model/Trajectory.h"
 #include "parksim/pipeline/Verdict.h"
-#include "parksim/planner/PlanResult.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/renders/FrameRecorder.h"
-#include "parksim/scenario/World.h"
-#include "parksim/sim/Episode.h"
-#include "parksim/sim/ExecutionDef.h"
+#include "parksim/planner/base/PlanResult.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/scenario/world/World.h"
+#include "parksim/sim/episode/Episode.h"
+#include "parksim/sim/episode/ExecutionDef.h"
 
 namespace parksim {
 
@@ -38,6 +38,7 @@ struct EpisodeOutcome {
   /// The planner's result; unset when the request gave a plan to drive.
   std::optional<PlanResult> plan;
   /// The plan driven (the planner's trajectory or the given one); empty when planning failed.
+  /// A plan that failed its check (plan_invalid) is here too, never driven.
   Trajectory trajectory;
   /// plan.json's content (planSummary), or a given plan's own statistics (trajectorySummary).
   nlohmann::json plan_summary;
@@ -53,7 +54,8 @@ struct EpisodeOutcome {
   /// when planning failed; met for a solved plan-only request).
   Verdict verdict;
 
-  /// metrics.json's content (empty when nothing was driven).
+  /// metrics.json's content: for a request that drives, whatever its verdict (without
+  /// measurements when nothing was driven); empty for a plan-only request.
   nlohmann::json metrics;
   /// The film, when one was made.
   std::optional<RecordingResult> recording;

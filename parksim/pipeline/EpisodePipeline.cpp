@@ -4,16 +4,16 @@
 #include <memory>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
 #include "parksim/pipeline/EpisodeReport.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/MetricsFile.h"
-#include "parksim/results/PlanFile.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/MetricsFile.h"
+#include "parksim/results/episode/PlanFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 
 namespace parksim {
 
@@ -23,20 +23,21 @@ namespace {
 // first and the last row are recorded.
 constexpr int kFirstAndLastRowOnly = INT_MAX / 2;
 
-// A plan parksim did not make (a file's, a user planner's) is checked before it is driven:
-// one that fails is never driven (plan_invalid).
-void checkForeignPlan(const Scenario& scenario, const BulletCollisionWorld& collision,
-                      const PlanSetup& setup, EpisodeOutcome& out) {
-  if (const std::optional<PlanViolation> v =
-          checkPlan(scenario, collision, out.trajectory, setup.validation)) {
-    out.verdict = planInvalidVerdict(*v);
-  }
+// plan.json's content for a planner that gave no result (out.verdict: its planner_error): what
+// was asked, why it failed, and whose code it was.
+nlohmann::json plannerFailureSummary(const EpisodeRequest& request, const EpisodeOutcome& out) {
+  const Components& components = componentsOf(request);
+  const PlannerInfo& info = components.planners.find(out.plan_setup.planner).info;
+  nlohmann::json j = failedPlanSummary(request.world->scenario, out.plan_setup,
+                                       toString(out.verdict.status), out.verdict.reason);
+  j["planner_origin"] = plannerOrigin(components, info, out.plan_setup.planner_params);
+  return j;
 }
 
 // Plans, or takes the given plan. Sets the trajectory to drive, the plan's summary, and the
 // verdict when there is nothing to drive: plan_failed when the planner found nothing,
 // planner_error when a user's planner failed, plan_invalid when a plan parksim did not make
-// fails its check.
+// fails its check (planScenario checks a planner's, this a given one's: PlanCheck.h).
 void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
   const Scenario& scenario = request.world->scenario;
   const BulletCollisionWorld collision(scenario);
@@ -44,32 +45,36 @@ void planStage(const EpisodeRequest& request, EpisodeOutcome& out) {
     out.trajectory = *request.given_plan;
     out.plan_summary = trajectorySummary(scenario, out.trajectory);
     if (!request.given_plan_source.empty()) out.plan_summary["source"] = request.given_plan_source;
-    checkForeignPlan(scenario, collision, out.plan_setup, out);
+    if (const std::optional<PlanViolation> v =
+            checkPlan(scenario, collision, out.trajectory, out.plan_setup.validation)) {
+      out.verdict = planInvalidVerdict(*v);
+    }
     return;
   }
   const Components& components = componentsOf(request);
   const PlannerInfo& info = components.planners.find(out.plan_setup.planner).info;
   // Where the planner's own code runs, for a watching process (UserCodeIsolation.h); a command
-  // keeps its own time limits.
+  // stops its program at request.limits itself.
   UserCodeWatch* watch = info.trusted || info.own_process ? nullptr : request.watch;
   if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kPlanner, info.name);
   try {
     out.plan = planScenario(scenario, collision, out.plan_setup, request.progress.plan,
-                            components.planners);
+                            components.planners, request.limits.planner_s);
   } catch (const UserCodeError& e) {
     out.verdict = userCodeVerdict(e);
+    out.plan_summary = plannerFailureSummary(request, out);
     return;
   }
   if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kParksim, "");
   out.plan_summary = planSummary(scenario, out.plan_setup, *out.plan);
-  if (!out.plan->solved()) {
-    out.verdict = planFailedVerdict(*out.plan);
-    return;
+  // What made the plan, recorded beside it: nothing else says which code it was.
+  const std::string origin = plannerOrigin(components, info, out.plan_setup.planner_params);
+  if (!origin.empty()) out.plan_summary["planner_origin"] = origin;
+  // A plan that failed its check is kept to be shown (the episode's page), never driven.
+  if (out.plan->solved() || out.plan->status == PlanStatus::kPlanInvalid) {
+    out.trajectory = out.plan->trajectory;
   }
-  out.trajectory = out.plan->trajectory;
-  if (!info.trusted) {
-    checkForeignPlan(scenario, collision, out.plan_setup, out);
-  }
+  if (!out.plan->solved()) out.verdict = planFailedVerdict(*out.plan);
 }
 
 // The controller of one realisation: a fresh one from the registry (closed loop).
@@ -81,7 +86,7 @@ EpisodeController controllerFor(const EpisodeRequest& request) {
   if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kController, info.name);
   std::unique_ptr<Controller> controller = entry.make(request.controller_params);
   if (watch != nullptr) watch->enter(UserCodeWatch::Phase::kParksim, "");
-  return {std::move(controller), info.name, info.trusted, watch};
+  return {std::move(controller), info.name, info.trusted, watch, request.limits.controller_tick_s};
 }
 
 // A recorder filming into the request's directory, with the plan drawn.
@@ -145,7 +150,7 @@ void driveStage(const EpisodeRequest& request, const EpisodeSettings& settings,
 nlohmann::json metricsOf(const EpisodeRequest& request, const EpisodeOutcome& out,
                          const FrameRecorder* recorder) {
   MetricsDocument doc;
-  doc.metrics = out.episode.metrics;
+  if (out.driven()) doc.metrics = out.episode.metrics;
   doc.world = request.world->scenario.source_path;
   doc.scenario = request.world->scenario.name;
   doc.tolerance = out.tolerance;
@@ -172,33 +177,39 @@ bool keepsFiles(const EpisodeRequest& request, const Verdict& verdict) {
   return false;
 }
 
-// trajectory.csv and plan.json (a given plan: trajectory.csv alone), then, when driven,
-// the executed record, the sensors record (with a pose sensor) and metrics.json.
+// plan.json and the plan when it may be driven (a given plan: trajectory.csv alone), then,
+// when driven, the executed record and the sensors record (with a pose sensor), and
+// metrics.json for a request that drives (its verdict alone when nothing was driven).
 void writeFiles(const EpisodeRequest& request, EpisodeOutcome& out) {
   const Scenario& scenario = request.world->scenario;
   const std::string& dir = request.out_dir;
   ensureDirectory(dir);
-  if (out.plan) {
-    writePlanFiles(dir, scenario, out.plan_setup, *out.plan);
-    if (out.plan->solved()) out.files.push_back("trajectory.csv");
+  if (!request.given_plan) {
+    const bool drivable = out.plan && out.plan->solved();
+    writePlanFiles(dir, scenario, drivable ? &out.plan->trajectory : nullptr, out.plan_summary);
+    if (drivable) out.files.push_back("trajectory.csv");
     out.files.push_back("plan.json");
-  } else if (!out.trajectory.empty()) {  // a given plan (a user planner that failed has none)
+  } else {
     writeTrajectoryCsv(dir + "/trajectory.csv", out.trajectory, scenario.robot);
     out.files.push_back("trajectory.csv");
   }
   writeEpisodeReport(dir, out);
-  if (!out.driven()) return;
-  const RecordFormat format = request.record.format;
-  writeExecutedFile(dir + "/" + executedFileName(format), out.episode.rows,
-                    out.execution.realism.active(), format);
-  out.files.push_back(executedFileName(format));
-  if (out.execution.realism.pose_sensor.enabled) {
-    writeSensorsFile(dir + "/" + sensorsFileName(format), out.episode.pose_samples,
-                     out.episode.metrics.time_step_s, format);
-    out.files.push_back(sensorsFileName(format));
+  if (out.driven()) {
+    const RecordFormat format = request.record.format;
+    writeExecutedFile(dir + "/" + executedFileName(format), out.episode.rows,
+                      out.execution.realism.active(), format,
+                      request.world->scenario.robot.isCar());
+    out.files.push_back(executedFileName(format));
+    if (out.execution.realism.pose_sensor.enabled) {
+      writeSensorsFile(dir + "/" + sensorsFileName(format), out.episode.pose_samples,
+                       out.episode.metrics.time_step_s, format);
+      out.files.push_back(sensorsFileName(format));
+    }
   }
-  writeJsonFile(dir + "/metrics.json", out.metrics);
-  out.files.push_back("metrics.json");
+  if (!out.metrics.empty()) {
+    writeJsonFile(dir + "/metrics.json", out.metrics);
+    out.files.push_back("metrics.json");
+  }
 }
 
 // The film of a failed episode: the first realisation driven again with the camera on.
@@ -246,6 +257,24 @@ std::string outDirNeeded(const EpisodeRequest& request) {
 
 }  // namespace
 
+EpisodeOutcome userCodeFailureOutcome(const EpisodeRequest& request, const UserCodeError& error) {
+  const EpisodeSettings settings = resolveSettings(request);
+  EpisodeOutcome out;
+  out.world = request.world;
+  out.plan_setup = settings.plan;
+  out.tolerance = settings.tolerance;
+  out.verdict = userCodeVerdict(error);
+  if (request.given_plan) {
+    out.trajectory = *request.given_plan;
+    out.plan_summary = trajectorySummary(request.world->scenario, out.trajectory);
+    if (!request.given_plan_source.empty()) out.plan_summary["source"] = request.given_plan_source;
+  } else if (error.component() == UserCodeError::Component::kPlanner) {
+    out.plan_summary = plannerFailureSummary(request, out);
+  }
+  if (request.drive) out.metrics = metricsOf(request, out, nullptr);
+  return out;
+}
+
 int EpisodeOutcome::realisationsMet() const {
   int met = 0;
   for (const RealisationOutcome& r : realisations) met += r.verdict.met() ? 1 : 0;
@@ -261,8 +290,11 @@ EpisodeOutcome runEpisodePipeline(const EpisodeRequest& request) {
   EpisodeOutcome out;
   out.world = request.world;
   out.plan_setup = settings.plan;
+  out.tolerance = settings.tolerance;
   planStage(request, out);
   if (!out.verdict.met() || !request.drive) {
+    // A request to drive gets its metrics.json whatever stopped it: the verdict, what planned.
+    if (request.drive) out.metrics = metricsOf(request, out, nullptr);
     if (keepsFiles(request, out.verdict)) writeFiles(request, out);
     return out;
   }

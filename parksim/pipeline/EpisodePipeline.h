@@ -15,11 +15,20 @@
 // input throws parksim::Error before anything is written (checkEpisodeRequest), and a machine
 // without OpenGL throws EnvironmentError when filming or drawing is asked for.
 
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodeOutcome.h"
 #include "parksim/pipeline/EpisodeRequest.h"
 
 namespace parksim {
 
 EpisodeOutcome runEpisodePipeline(const EpisodeRequest& request);
+
+/// The outcome of `request` when its user code failed where the pipeline could not see it end
+/// (it crashed or hung its worker process: UserCodeIsolation.h): `error`'s verdict, the setup,
+/// tolerance and plan summary the pipeline would give (a planner's failure as plan.json records
+/// one, a given plan's statistics), and for a request that drives, metrics.json's content with
+/// the verdict. Nothing is written, nothing was driven; a plan made before a controller failed
+/// is lost with its process.
+EpisodeOutcome userCodeFailureOutcome(const EpisodeRequest& request, const UserCodeError& error);
 
 }  // namespace parksim

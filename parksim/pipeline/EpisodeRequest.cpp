@@ -1,6 +1,6 @@
 #include "parksim/pipeline/EpisodeRequest.h"
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 

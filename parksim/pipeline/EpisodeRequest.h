@@ -16,17 +16,17 @@
 #include <optional>
 #include <string>
 
-#include "parksim/core/ParamMap.h"
-#include "parksim/core/TrackingTolerance.h"
-#include "parksim/core/Trajectory.h"
-#include "parksim/core/UserCodeWatch.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/plugin/Components.h"
-#include "parksim/renders/Figures.h"
-#include "parksim/renders/FrameRecorder.h"
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/scenario/World.h"
-#include "parksim/sim/ExecutionDef.h"
+#include "parksim/core/model/TrackingTolerance.h"
+#include "parksim/core/model/Trajectory.h"
+#include "parksim/core/params/ParamMap.h"
+#include "parksim/core/system/UserCodeWatch.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/renders/plots/Figures.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/scenario/world/World.h"
+#include "parksim/sim/episode/ExecutionDef.h"
+#include "parksim/usercode/Components.h"
 
 namespace parksim {
 
@@ -116,7 +116,7 @@ struct EpisodeRequest {
   std::string given_plan_source;
 
   /// The planners and controllers plan.planner and `controller` are looked up in: parksim's own
-  /// and the plugins a front-end loaded (plugin/Components.h). Null: parksim's own.
+  /// and the plugins a front-end loaded (usercode/Components.h). Null: parksim's own.
   std::shared_ptr<const Components> components;
   /// The controller that drives the plan in closed-loop tracking, by its registered name (a
   /// built-in or a plugin's), and its parameters (ParamMap.h).
@@ -149,6 +149,12 @@ struct EpisodeRequest {
   /// none by default.
   FigureDef figures = noFigures();
 
+  /// Time limits on user code (docs/limits.md): a user's planner per plan, a user's controller
+  /// per command. The process watching a worker (UserCodeIsolation.h; IsolatedEpisode.h)
+  /// enforces them on code in parksim's process; the command planner and controller stop their
+  /// program at them (or at their own timeout parameters, whichever is shorter). Code in the
+  /// caller's process without a watch is not stopped.
+  UserCodeLimits limits;
   /// Set in a process that runs user code under a watch (UserCodeIsolation.h): the episode
   /// says there when it enters and leaves a user's planner or controller. Not owned.
   UserCodeWatch* watch = nullptr;

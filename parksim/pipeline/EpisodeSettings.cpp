@@ -6,13 +6,13 @@
 #include <optional>
 #include <string>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/core/Text.h"
-#include "parksim/planner/PlanCheck.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/io/Text.h"
+#include "parksim/planner/base/PlanCheck.h"
 #include "parksim/realism/RealismDef.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 
 namespace parksim {
 

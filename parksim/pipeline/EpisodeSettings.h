@@ -6,12 +6,12 @@
 
 #include <vector>
 
-#include "parksim/core/TrackingTolerance.h"
-#include "parksim/core/UserCodeWatch.h"
-#include "parksim/pipeline/ComponentCheck.h"
+#include "parksim/core/model/TrackingTolerance.h"
+#include "parksim/core/system/UserCodeWatch.h"
 #include "parksim/pipeline/EpisodeRequest.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/sim/ExecutionDef.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/sim/episode/ExecutionDef.h"
+#include "parksim/usercode/ComponentCheck.h"
 
 namespace parksim {
 

@@ -5,7 +5,7 @@
 #include <cstddef>
 
 #include "parksim/pipeline/EpisodeOutcome.h"
-#include "parksim/results/EpisodeRecord.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 
 namespace parksim {
 

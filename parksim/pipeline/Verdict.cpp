@@ -1,10 +1,10 @@
 #include "parksim/pipeline/Verdict.h"
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/MetricsFile.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/MetricsFile.h"
 
 namespace parksim {
 
@@ -51,6 +51,7 @@ EpisodeStatus episodeStatusFromString(const std::string& name) {
 }
 
 Verdict planFailedVerdict(const PlanResult& plan) {
+  if (plan.status == PlanStatus::kPlanInvalid) return {EpisodeStatus::kPlanInvalid, plan.message};
   return {EpisodeStatus::kPlanFailed,
           std::string("unsolved plan (") + toString(plan.status) + "): " + plan.message};
 }

@@ -13,12 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/TrackingTolerance.h"
-#include "parksim/planner/PlanCheck.h"
-#include "parksim/planner/PlanResult.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/TrackingTolerance.h"
+#include "parksim/planner/base/PlanCheck.h"
+#include "parksim/planner/base/PlanResult.h"
+#include "parksim/sim/episode/Episode.h"
 
 namespace parksim {
 
@@ -26,8 +26,9 @@ namespace parksim {
 enum class EpisodeStatus {
   kMet,         ///< "met": solved, driven, within every bound
   kPlanFailed,  ///< "plan_failed": no plan, so nothing was driven
-  /// "plan_invalid": a plan parksim did not make (a user planner's, a plan file) failed the
-  /// check before driving (collision, lot bounds, speed or acceleration limits); not driven
+  /// "plan_invalid": a plan parksim did not make (a user planner's, a plan file), or any
+  /// car's plan, failed the check before driving (collision, lot bounds, speed or acceleration
+  /// limits, a car's steering: planner/PlanCheck.h); not driven
   kPlanInvalid,
   /// "planner_error": the user's planner threw, returned garbage, crashed or ran out of time
   kPlannerError,
@@ -55,14 +56,15 @@ struct Verdict {
   friend bool operator==(const Verdict&, const Verdict&) = default;
 };
 
-/// The verdict on a plan that was not solved ("unsolved plan (iteration_limit): ...").
+/// The verdict on a plan that was not solved ("unsolved plan (iteration_limit): ..."), or that
+/// failed its check (PlanStatus::kPlanInvalid: plan_invalid with the plan's message).
 Verdict planFailedVerdict(const PlanResult& plan);
 
-/// The verdict on a plan that failed its check before driving (planner/PlanCheck.h):
+/// The verdict on a plan that failed its check before driving (planner/base/PlanCheck.h):
 /// "plan_invalid: at t = 5.210 s (...) the footprint overlaps dropped_box".
 Verdict planInvalidVerdict(const PlanViolation& violation);
 
-/// The verdict on user code that failed (core/Error.h's UserCodeError): planner_error or
+/// The verdict on user code that failed (core/io/Error.h's UserCodeError): planner_error or
 /// controller_error with its message.
 Verdict userCodeVerdict(const UserCodeError& error);
 

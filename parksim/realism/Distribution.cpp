@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 

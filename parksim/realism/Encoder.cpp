@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "parksim/core/Angle.h"
+#include "parksim/core/geometry/Angle.h"
 
 namespace parksim {
 

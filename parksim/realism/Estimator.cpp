@@ -4,8 +4,8 @@
 
 #include <Eigen/LU>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 

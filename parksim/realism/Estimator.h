@@ -12,8 +12,8 @@
 
 #include <Eigen/Core>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/RobotDef.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/RobotDef.h"
 #include "parksim/realism/PoseSensor.h"
 
 namespace parksim {

@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "parksim/core/Pose2.h"
+#include "parksim/core/geometry/Pose2.h"
 
 namespace parksim {
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 

@@ -1,5 +1,5 @@
 // The dynamics fidelity: the task's actions are wheel commands held through Episode's step API
-// (sim/Episode.h), so the robot is the one `parksim run` drives, realism included, and the
+// (sim/episode/Episode.h), so the robot is the one `parksim run` drives, realism included, and the
 // controller's view is the Episode's estimate. The Episode's plan is the start pose held still
 // for longer than the task can last: its tracking measurements mean nothing here, and its end
 // is never reached.
@@ -8,8 +8,9 @@
 #include <climits>
 #include <cmath>
 
+#include "parksim/core/io/Error.h"
 #include "parksim/rl/TaskDrive.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 
 namespace parksim {
 
@@ -46,7 +47,8 @@ class DynamicDrive final : public TaskDrive {
     observe(0.0, out);
   }
 
-  void act(const WheelSpeeds& wheels, long steps, DriveState& out) override {
+  void act(const TaskAction& action, long steps, DriveState& out) override {
+    const WheelSpeeds wheels = taskWheelSpeeds(action, scenario_.robot);
     out.contacts.clear();
     for (long i = 0; i < steps; ++i) {
       episode_->step(wheels);
@@ -100,6 +102,13 @@ class DynamicDrive final : public TaskDrive {
 
 std::unique_ptr<TaskDrive> makeDynamicDrive(const Scenario& scenario, const ParkingTaskDef& def,
                                             long max_actions, long steps) {
+  // The dynamics world has no steered wheels yet: driving a car's footprint as a differential
+  // drive would teach a policy motions the car cannot make.
+  if (scenario.robot.isCar()) {
+    throw Error(
+        "parking task: fidelity dynamics cannot drive a car yet (the Bullet world has no "
+        "steered wheels); use fidelity kinematic");
+  }
   return std::make_unique<DynamicDrive>(scenario, def, max_actions, steps);
 }
 

@@ -5,8 +5,8 @@
 #include <random>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
 #include "parksim/rl/TaskDrive.h"
 #include "parksim/rl/TaskReward.h"
 
@@ -90,11 +90,17 @@ struct ParkingTask::Impl {
   }
 
   void observe() {
-    last.observation = taskObservation(state.estimate, state.twist, scenario.goal.pose, bounds);
+    last.observation =
+        scenario.robot.isCar()
+            ? taskCarObservation(state.estimate, state.twist.v_mps, state.steer_rad,
+                                 scenario.goal.pose, bounds)
+            : taskObservation(state.estimate, state.twist, scenario.goal.pose, bounds);
     TaskInfo& info = last.info;
     info.pose = state.pose;
     info.estimate = state.estimate;
     info.t_s = state.t_s;
+    info.speed_mps = state.twist.v_mps;
+    info.steer_rad = state.steer_rad;
     info.goal_pos_err_m = positionDistance(state.pose, scenario.goal.pose);
     info.goal_heading_err_rad = goalHeadingError(scenario.goal, state.pose.theta);
     info.is_success = info.goal_pos_err_m <= def.success_position_m &&
@@ -178,9 +184,8 @@ const TaskStep& ParkingTask::step(const TaskAction& action) {
                           : "parking task: no episode yet; reset first");
   }
   checkTaskAction(action);
-  const WheelSpeeds wheels = taskWheelSpeeds(action, d.scenario.robot);
   d.running = false;  // a drive that throws (a diverged simulation) leaves no usable episode
-  d.drive->act(wheels, d.steps_per_action, d.state);
+  d.drive->act(action, d.steps_per_action, d.state);
   ++d.steps;
   d.observe();
   d.judge();

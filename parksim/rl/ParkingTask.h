@@ -12,8 +12,8 @@
 #include <memory>
 #include <vector>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/rl/ParkingTaskDef.h"
 #include "parksim/rl/TaskSpaces.h"
 
@@ -21,9 +21,11 @@ namespace parksim {
 
 /// What the last reset or step produced, besides the observation and reward.
 struct TaskInfo {
-  Pose2 pose;        ///< the true pose of the reference point
-  Pose2 estimate;    ///< the pose the controller believes (the true pose for the ideal robot)
-  double t_s = 0.0;  ///< simulated time since the episode's start, s
+  Pose2 pose;              ///< the true pose of the reference point
+  Pose2 estimate;          ///< the pose the controller believes (the true pose for the ideal robot)
+  double t_s = 0.0;        ///< simulated time since the episode's start, s
+  double speed_mps = 0.0;  ///< as the controller observes it, negative in reverse
+  double steer_rad = 0.0;  ///< a car's front-wheel angle, left positive (0 for a differential)
   double goal_pos_err_m = 0.0;
   double goal_heading_err_rad = 0.0;  ///< either heading when the goal allows it
   /// Within the success thresholds with no contact during the step (then terminated).

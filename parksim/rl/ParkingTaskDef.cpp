@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
 
 namespace parksim {
 

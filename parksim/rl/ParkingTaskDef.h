@@ -7,19 +7,19 @@
 #include <cstddef>
 #include <string>
 
-#include "parksim/core/Angle.h"
+#include "parksim/core/geometry/Angle.h"
 #include "parksim/realism/RealismDef.h"
-#include "parksim/sim/DynamicsWorld.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 
 namespace parksim {
 
 /// How an action moves the robot.
 enum class TaskFidelity {
-  /// The Bullet dynamics world (sim/Episode.h), driven by held wheel commands: motors,
+  /// The Bullet dynamics world (sim/episode/Episode.h), driven by held wheel commands: motors,
   /// contacts and pushed parked robots, and the realism's motors, sensors and estimate.
   kDynamics,
   /// Kinematic, for pre-training: the held wheel speeds move the robot along an exact arc
-  /// (core/DiffDrive.h integrateExact), checked against the planner's collision checker
+  /// (core/model/DiffDrive.h integrateExact), checked against the planner's collision checker
   /// (collision/BulletCollisionWorld.h); no Bullet dynamics, no realism, obstacles never move,
   /// and a robot that would penetrate an obstacle stops at the last free pose of the arc.
   kKinematic,

@@ -8,8 +8,8 @@
 #include <thread>
 #include <vector>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
 
 namespace parksim {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <thread>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/rl/StepPool.h"
 
 namespace parksim {

@@ -12,7 +12,7 @@
 #include <span>
 #include <vector>
 
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/rl/ParkingTask.h"
 #include "parksim/rl/ParkingTaskDef.h"
 

@@ -83,6 +83,7 @@ from ._parksim import (  # noqa: F401,E402  (re-exported)
     PlanningProblem,
     PolicyController,
     ControllerInput,
+    CarCommand,
     PlanSetup,
     ReedsSheppDef,
     RobotDef,
@@ -113,7 +114,7 @@ def _plain(value):
 
 
 def episode_fields():
-    """The episode record's fields (parksim/results/EpisodeRecord.h), one dict each: key (its
+    """The episode record's fields (parksim/results/tables/EpisodeRecord.h), one dict each: key (its
     column in a sweep's results table), metrics_key (its key in run().metrics and
     metrics.json), group, type, unit, meaning."""
     return _parksim._episode_fields()
@@ -195,7 +196,8 @@ __all__ = [
     "CollisionChecker", "DynamicsWorld", "Episode", "Error", "ExecutionDef", "FIGURE_NAMES",
     "FrameDef", "FrameRecorder", "MotionValidatorDef", "MoveToPoseDef", "ParkingEnv",
     "ParkingTaskDef", "SearchDef", "PlanResult", "PlanningProblem", "PolicyController",
-    "ControllerInput", "PlanSetup", "ReedsSheppDef", "RobotDef", "RotateTranslateRotateDef",
+    "ControllerInput", "CarCommand", "PlanSetup", "ReedsSheppDef", "RobotDef",
+    "RotateTranslateRotateDef",
     "RunResult", "SimModelDef", "World", "cspace_slice", "encode_png", "episode_fields",
     "load_world", "plan",
     "read_png", "read_record", "read_trajectory", "render_figure", "render_frame", "run", "spaces",

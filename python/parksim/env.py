@@ -47,9 +47,10 @@ def own_step_limit(definition):
 
 def task_spaces(observation_low, observation_high, num_envs=None):
     """(action_space, observation_space) of the parking task (rl/TaskSpaces.h): the action two
-    wheel speed fractions in [-1, 1], the observation 10 values within the task's bounds; with
-    num_envs, the batched spaces of that many. The one definition of both for ParkingEnv,
-    VecParkingEnv, the Stable-Baselines3 adapter and anything that runs their policies."""
+    fractions in [-1, 1] (wheel speeds, or a car's acceleration and steering), the observation
+    10 values within the task's bounds; with num_envs, the batched spaces of that many. The one
+    definition of both for ParkingEnv, VecParkingEnv, the Stable-Baselines3 adapter and
+    anything that runs their policies."""
     low = np.asarray(observation_low, dtype=np.float32)
     high = np.asarray(observation_high, dtype=np.float32)
     action_shape = (2,)
@@ -99,12 +100,16 @@ class ParkingEnv(_Base):
     robot's maximum, held for control_period_s (whole physics steps). Exactly two finite real
     numbers; anything else (another shape, strings, complex numbers, booleans, objects, NaN)
     raises ValueError "action: expected two finite numbers ..., got ...", and values outside
-    [-1, 1] are clipped.
+    [-1, 1] are clipped. A car's world (robot.drive: car; fidelity="kinematic" only) reads
+    the action as [acceleration, steering], parking-v0's: fractions of max_accel_mps2 and of
+    max_steer_rad (the front wheels' target, reached at max_steer_rate), on a kinematic bicycle
+    within max_speed_mps (docs/python.md, "A car").
 
     Observation: Box(low, high, (10,), float32), bounds from the lot and the robot's limits:
         x, y, cos(theta), sin(theta), v, omega, x_goal, y_goal, cos(theta_goal), sin(theta_goal)
-    (m, m/s, rad/s). The robot's part is what its controller knows: the true state for the
-    ideal robot, the realism's estimate (and encoder speeds) otherwise.
+    (m, m/s, rad/s); for a car the sixth value is the steering angle (rad) instead of omega.
+    The robot's part is what its controller knows: the true state for the ideal robot, the
+    realism's estimate (and encoder speeds) otherwise.
 
     Reward (docs/python.md, "Reward"): success_reward (10) on success, contact_reward (-10) on
     a step with a contact, exit_reward (-10) on leaving the lot, nothing per step; plus

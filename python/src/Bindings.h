@@ -10,12 +10,12 @@
 #include <pybind11/pybind11.h>
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/Pose2.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
 #include "parksim/pipeline/EpisodeRequest.h"
-#include "parksim/scenario/World.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/scenario/world/World.h"
+#include "parksim/sim/episode/Episode.h"
 
 namespace parksim::python {
 
@@ -30,8 +30,8 @@ void bindTasks(py::module_& m);     // TaskBindings.cpp: the reinforcement-learn
 void bindUserCode(py::module_& m);  // UserCodeBindings.cpp: Python planners and controllers
 void bindSweep(py::module_& m);     // SweepBindings.cpp: sweep()
 
-/// A loaded world (scenario/World.h): immutable, shared by every plan and episode made from it.
-/// It keeps the text it was read from, so that it pickles as that text and re-reads it.
+/// A loaded world (scenario/world/World.h): immutable, shared by every plan and episode made from
+/// it. It keeps the text it was read from, so that it pickles as that text and re-reads it.
 struct WorldHandle {
   WorldHandle(std::shared_ptr<const World> w, std::string text, std::string name)
       : world(std::move(w)),
@@ -102,8 +102,9 @@ py::object toPython(const nlohmann::json& json);
 /// The plan as a structured array: t, x, y, theta, omega_left, omega_right, v, omega.
 py::array trajectoryArray(const Trajectory& trajectory, const RobotDef& robot);
 /// A trajectory from a PlanResult, a structured array with fields t, x, y, theta, omega_left,
-/// omega_right (others ignored), or a trajectory.csv path.
-Trajectory trajectoryFrom(const py::handle& plan);
+/// omega_right (others ignored), or a trajectory.csv path (read for `robot`: a car's file holds
+/// v and steer_rad, results/TrajectoryFile.h).
+Trajectory trajectoryFrom(const py::handle& plan, const RobotDef& robot = {});
 /// Executed rows as a structured array with executed.csv's columns (its realism columns too
 /// when `realism_columns`, as executedCsv writes them under an active realism).
 py::array executedArray(const std::vector<ExecutedRow>& rows, bool realism_columns);

@@ -5,11 +5,11 @@
 
 #include <pybind11/stl.h>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/core/ParamSet.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/params/ParamSet.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
 
@@ -117,14 +117,16 @@ py::array trajectoryArray(const Trajectory& trajectory, const RobotDef& robot) {
   return out;
 }
 
-Trajectory trajectoryFrom(const py::handle& plan) {
+Trajectory trajectoryFrom(const py::handle& plan, const RobotDef& robot) {
   if (py::isinstance<PlanOutcome>(plan)) {
     const PlanOutcome& outcome = plan.cast<const PlanOutcome&>();
-    if (!outcome.result.solved()) throw Error("the plan is not solved: " + outcome.result.message);
-    return outcome.result.trajectory;
+    if (!outcome.verdict.met()) {
+      throw Error("the plan may not be driven (" + outcome.status() + "): " + outcome.message());
+    }
+    return outcome.result->trajectory;
   }
   if (py::isinstance<py::str>(plan) || py::hasattr(plan, "__fspath__")) {
-    return readTrajectoryCsv(py::str(py::module_::import("os").attr("fspath")(plan)));
+    return readTrajectoryCsv(py::str(py::module_::import("os").attr("fspath")(plan)), robot);
   }
   const py::array array = py::array::ensure(plan);
   if (!array || array.dtype().attr("names").is_none() || array.ndim() != 1) {

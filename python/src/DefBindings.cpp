@@ -5,14 +5,14 @@
 
 #include <pybind11/stl.h>
 
-#include "parksim/core/RobotDef.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/core/model/RobotDef.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "parksim/realism/RealismDef.h"
-#include "parksim/renders/FrameRecorder.h"
-#include "parksim/renders/PngEncoder.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/renders/image/PngEncoder.h"
 #include "parksim/rl/ParkingTaskDef.h"
-#include "parksim/sim/DynamicsWorld.h"
-#include "parksim/sim/ExecutionDef.h"
+#include "parksim/sim/episode/ExecutionDef.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 #include "python/src/Bindings.h"
 
 namespace parksim::python {
@@ -94,7 +94,8 @@ SolverKernel solverFromName(const std::string& name) {
 }
 
 void bindPlanningDefs(py::module_& m) {
-  defClass<RobotDef>(m, "RobotDef", "The differential-drive robot (core/RobotDef.h), SI units.")
+  defClass<RobotDef>(m, "RobotDef",
+                     "The differential-drive robot (core/model/RobotDef.h), SI units.")
       .def_readwrite("length_m", &RobotDef::length_m)
       .def_readwrite("width_m", &RobotDef::width_m)
       .def_readwrite("front_overhang_m", &RobotDef::front_overhang_m)
@@ -106,7 +107,7 @@ void bindPlanningDefs(py::module_& m) {
 
   defClass<SearchDef>(m, "SearchDef",
                       "What every planner's search is given besides its own parameters "
-                      "(planner/SearchDef.h): seed, budget, cost weights, smoothing.")
+                      "(planner/base/SearchDef.h): seed, budget, cost weights, smoothing.")
       .def_readwrite("seed", &SearchDef::seed)
       .def_readwrite("max_iterations", &SearchDef::max_iterations)
       .def_readwrite("max_time_s", &SearchDef::max_time_s)
@@ -117,7 +118,7 @@ void bindPlanningDefs(py::module_& m) {
       .def_readwrite("smoothing_attempts", &SearchDef::smoothing_attempts);
 
   defClass<MoveToPoseDef>(m, "MoveToPoseDef",
-                          "Move-to-pose steering (planner/MoveToPoseSteering.h).")
+                          "Move-to-pose steering (planner/steering/MoveToPoseSteering.h).")
       .def_readwrite("k_rho", &MoveToPoseDef::k_rho)
       .def_readwrite("k_alpha", &MoveToPoseDef::k_alpha)
       .def_readwrite("k_beta", &MoveToPoseDef::k_beta)
@@ -131,25 +132,26 @@ void bindPlanningDefs(py::module_& m) {
 
   defClass<RotateTranslateRotateDef>(m, "RotateTranslateRotateDef",
                                      "Rotate-translate-rotate steering "
-                                     "(planner/RotateTranslateRotateSteering.h).")
+                                     "(planner/steering/RotateTranslateRotateSteering.h).")
       .def_readwrite("period_s", &RotateTranslateRotateDef::period_s)
       .def_readwrite("horizon_s", &RotateTranslateRotateDef::horizon_s)
       .def_readwrite("speed_fraction", &RotateTranslateRotateDef::speed_fraction)
       .def_readwrite("accel_fraction", &RotateTranslateRotateDef::accel_fraction);
 
   defClass<MotionValidatorDef>(m, "MotionValidatorDef",
-                               "Motion validation (planner/MotionValidator.h).")
+                               "Motion validation (planner/motion/MotionValidator.h).")
       .def_readwrite("resolution_m", &MotionValidatorDef::resolution_m);
 
   defClass<ReedsSheppDef>(m, "ReedsSheppDef",
-                          "Reeds-Shepp steering (planner/ReedsSheppSteering.h).")
+                          "Reeds-Shepp steering (planner/steering/ReedsSheppSteering.h).")
       .def_readwrite("turning_radius_m", &ReedsSheppDef::turning_radius_m)
       .def_readwrite("period_s", &ReedsSheppDef::period_s)
       .def_readwrite("horizon_s", &ReedsSheppDef::horizon_s)
       .def_readwrite("speed_fraction", &ReedsSheppDef::speed_fraction);
 
   // plan()'s options besides SearchDef's: `steering` is the kind, as on the command line.
-  defClass<PlanSetup>(m, "PlanSetup", "Everything planScenario takes (planner/PlanScenario.h).")
+  defClass<PlanSetup>(m, "PlanSetup",
+                      "Everything planScenario takes (planner/base/PlanScenario.h).")
       .def_readwrite("planner", &PlanSetup::planner)
       .def_readwrite("planner_params", &PlanSetup::planner_params)
       .def_readwrite("search", &PlanSetup::search)
@@ -170,7 +172,8 @@ void bindPlanningDefs(py::module_& m) {
 }
 
 void bindEpisodeDefs(py::module_& m) {
-  defClass<ExecutionDef>(m, "ExecutionDef", "How an episode drives a plan (sim/ExecutionDef.h).")
+  defClass<ExecutionDef>(m, "ExecutionDef",
+                         "How an episode drives a plan (sim/episode/ExecutionDef.h).")
       .def_property(
           "tracking", [](const ExecutionDef& d) { return std::string(toString(d.tracking)); },
           [](ExecutionDef& d, const std::string& s) { d.tracking = trackingModeFromString(s); })
@@ -188,7 +191,7 @@ void bindEpisodeDefs(py::module_& m) {
 
   defClass<SimModelDef>(m, "SimModelDef",
                         "Simulation model parts the world file does not describe "
-                        "(sim/DynamicsWorld.h).")
+                        "(sim/world/DynamicsWorld.h).")
       .def_readwrite("support_radius_m", &SimModelDef::support_radius_m)
       .def_readwrite("support_inset_m", &SimModelDef::support_inset_m)
       .def_readwrite("support_deflection_m", &SimModelDef::support_deflection_m)
@@ -204,7 +207,7 @@ void bindEpisodeDefs(py::module_& m) {
       .def_readwrite("ground_margin_m", &SimModelDef::ground_margin_m)
       .def_readwrite("local_frame_grid_m", &SimModelDef::local_frame_grid_m);
 
-  defClass<FrameDef>(m, "FrameDef", "Filming an episode (renders/FrameRecorder.h).")
+  defClass<FrameDef>(m, "FrameDef", "Filming an episode (renders/film/FrameRecorder.h).")
       .def_readwrite("fps", &FrameDef::fps)
       .def_readwrite("width_px", &FrameDef::width_px)
       .def_readwrite("height_px", &FrameDef::height_px)

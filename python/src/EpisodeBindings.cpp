@@ -6,12 +6,12 @@
 
 #include <pybind11/stl.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/results/EpisodeRecord.h"
-#include "parksim/results/MetricsFile.h"
-#include "parksim/sim/DynamicsWorld.h"
+#include "parksim/results/episode/MetricsFile.h"
+#include "parksim/results/tables/EpisodeRecord.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
 #include "python/src/UserCode.h"
@@ -37,7 +37,7 @@ py::dict verdictDict(const Verdict& v) {
 // run()'s plan argument as the request's plan to drive (None: the pipeline plans).
 void takePlan(const py::object& plan, EpisodeRequest& request) {
   if (plan.is_none()) return;
-  request.given_plan = trajectoryFrom(plan);
+  request.given_plan = trajectoryFrom(plan, request.world->scenario.robot);
   if (py::isinstance<py::str>(plan) || py::hasattr(plan, "__fspath__")) {
     request.given_plan_source = py::str(py::module_::import("os").attr("fspath")(plan));
   }
@@ -46,8 +46,10 @@ void takePlan(const py::object& plan, EpisodeRequest& request) {
 RunOutcome runWorld(const WorldHandle& world, const py::object& plan, const py::object& film,
                     const py::object& out, py::dict& options) {
   EpisodeRequest request = requestFrom(world, options, plan.is_none());
+  const IsolationOptions isolation = takeIsolation(options);
   rejectUnknownOptions(options, "run");
   takePlan(plan, request);
+  const bool isolate = isolation.applyTo(request);
   if (!out.is_none()) {
     request.out_dir = py::str(py::module_::import("os").attr("fspath")(out));
     request.record.files = FilesPolicy::kAll;
@@ -59,13 +61,11 @@ RunOutcome runWorld(const WorldHandle& world, const py::object& plan, const py::
   }
   RunOutcome r;
   r.scenario = world.scenario;
-  {
-    py::gil_scoped_release release;
-    r.outcome = runEpisodePipeline(request);
-  }
-  if (r.outcome.plan) {
-    r.plan =
-        PlanOutcome{world.scenario, r.outcome.plan_setup, *r.outcome.plan, r.outcome.plan_summary};
+  r.outcome = runRequest(request, isolate);
+  // The plan, when it was made here or the planner failed (a plan made in a worker whose
+  // controller then crashed is lost with it).
+  if (!request.given_plan && (r.outcome.plan || !r.outcome.plan_summary.is_null())) {
+    r.plan = planOutcomeOf(world.scenario, r.outcome);
   }
   return r;
 }
@@ -208,14 +208,17 @@ void bindRunResult(py::module_& m) {
             if (!r.plan) return py::none();
             return py::cast(*r.plan);
           },
-          "The PlanResult when run() planned; None when a plan was given.")
+          "The PlanResult when run() planned (its status planner_error when the planner failed); "
+          "None when a plan was given.")
       .def_property_readonly(
           "solved", [](const RunOutcome& r) { return r.outcome.driven(); },
-          "False when planning failed (then nothing ran: executed is empty, metrics {}).")
+          "False when there was nothing to drive (then executed is empty and metrics holds the "
+          "verdict without measurements).")
       .def_property_readonly(
           "status", [](const RunOutcome& r) { return toString(r.outcome.verdict.status); },
-          "The verdict: met, plan_failed, contact, goal_missed or tolerance_missed (as the "
-          "command line's exit status and a sweep row's status).")
+          "The verdict: met, plan_failed, plan_invalid, planner_error, controller_error, "
+          "contact, goal_missed or tolerance_missed (as the command line's exit status and a "
+          "sweep row's status).")
       .def_property_readonly(
           "met", [](const RunOutcome& r) { return r.outcome.verdict.met(); },
           "True when the episode met its tolerance (status == 'met').")
@@ -248,11 +251,9 @@ void bindRunResult(py::module_& m) {
           },
           "Structured array with executed.csv's columns.")
       .def_property_readonly(
-          "metrics",
-          [](const RunOutcome& r) {
-            return r.outcome.driven() ? toPython(r.outcome.metrics) : py::object(py::dict());
-          },
-          "metrics.json's content as a dict.")
+          "metrics", [](const RunOutcome& r) { return toPython(r.outcome.metrics); },
+          "metrics.json's content as a dict: the measurements and the verdict; the verdict, "
+          "the plan's keys and the tolerance alone when nothing was driven.")
       .def_property_readonly(
           "files", [](const RunOutcome& r) { return r.outcome.files; },
           "Files written (paths under out), when out was given.")
@@ -293,7 +294,12 @@ Options: realism ("world": the world's realism: section, else ideal; or "ideal",
 film: None, or a FrameDef / dict of its fields (out_dir, fps, video, ...) to write frames.
 out: None, or a directory for trajectory.csv, plan.json, executed.csv and metrics.json.
 The result's status, met and reason are the verdict. Results are bit-identical to
-`parksim run` for the same options. Releases the GIL while planning and simulating.)");
+`parksim run` for the same options. Releases the GIL while planning and simulating.
+isolate=True runs the episode in a worker process, as parksim.sweep's workers run: a Python
+  object or a plugin that crashes, plans longer than planner_timeout (s, default 600) or takes
+  longer than controller_timeout (s, default 10) for one command gives planner_error or
+  controller_error instead of ending the interpreter; the result is otherwise the same.
+  The timeouts also stop a command planner's or controller's program (without isolate too).)");
 }
 
 void bindEpisodeHandle(py::module_& m) {
@@ -306,7 +312,7 @@ void bindEpisodeHandle(py::module_& m) {
              py::dict options = optionsDict(kwargs);
              EpisodeRequest request = requestFrom(world, options, false);
              rejectUnknownOptions(options, "Episode");
-             request.given_plan = trajectoryFrom(plan);
+             request.given_plan = trajectoryFrom(plan, world.scenario->robot);
              checkEpisodeRequest(request);
              const SimModelDef sim_model =
                  model.is_none() ? SimModelDef{} : defFrom<SimModelDef>(model, "model");

@@ -1,7 +1,7 @@
 // parksim._parksim: the compiled part of the Python package `parksim` (python/parksim/ holds
 // the rest). parksim::Error becomes parksim.Error, a ValueError with the same one-line message.
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "python/src/Bindings.h"
 
 PYBIND11_MODULE(_parksim, m) {

@@ -7,13 +7,13 @@
 
 #include <pybind11/stl.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodeFigures.h"
-#include "parksim/renders/Figures.h"
-#include "parksim/renders/FrameRecorder.h"
-#include "parksim/renders/PngEncoder.h"
-#include "parksim/renders/Renderer.h"
-#include "parksim/renders/SceneBuilder.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/renders/gl/Renderer.h"
+#include "parksim/renders/image/PngEncoder.h"
+#include "parksim/renders/plots/Figures.h"
+#include "parksim/renders/scene/SceneBuilder.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
 
@@ -93,10 +93,12 @@ PlanFigure planFigureFrom(const py::handle& plan) {
     const PlanOutcome& p = plan.cast<const PlanOutcome&>();
     figure.name = p.setup.planner;
     figure.caption = std::string(p.setup.planner) + ", seed " +
-                     std::to_string(p.setup.search.seed) + ": " + p.result.message;
-    figure.trajectory = p.result.trajectory;
-    figure.waypoints = p.result.waypoints;
-    figure.tree_edges = p.result.tree_edges;
+                     std::to_string(p.setup.search.seed) + ": " + p.message();
+    if (p.result) {
+      figure.trajectory = p.result->trajectory;
+      figure.waypoints = p.result->waypoints;
+      figure.tree_edges = p.result->tree_edges;
+    }
   } else {
     figure.trajectory = trajectoryFrom(plan);
   }
@@ -246,7 +248,11 @@ void bindFigures(py::module_& m) {
         auto add = [&](const py::handle& p) {
           if (py::isinstance<PlanOutcome>(p)) {
             const PlanOutcome& outcome = p.cast<const PlanOutcome&>();
-            inputs.plans.push_back(planFigure(scenario, outcome.setup, outcome.result));
+            if (!outcome.result) {
+              throw Error("write_figures: a plan whose planner failed has nothing to draw (" +
+                          outcome.status() + ": " + outcome.message() + ")");
+            }
+            inputs.plans.push_back(planFigure(scenario, outcome.setup, *outcome.result));
           } else {
             inputs.plans.push_back(planFigureFrom(p));
           }
@@ -300,7 +306,7 @@ whose input is missing is skipped; an unknown name raises parksim.Error.)");
 void bindFrameRecorder(py::module_& m) {
   py::class_<FrameRecorder>(m, "FrameRecorder",
                             "Films an episode into OUT/frames/*.png, and episode.mp4 / .gif with "
-                            "ffmpeg (renders/FrameRecorder.h). Options: FrameDef fields.")
+                            "ffmpeg (renders/film/FrameRecorder.h). Options: FrameDef fields.")
       .def(py::init([](const WorldHandle& world, const py::kwargs& kwargs) {
              py::dict options = optionsDict(kwargs);
              const FrameDef def = takeOptions(FrameDef{}, options);

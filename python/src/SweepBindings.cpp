@@ -1,12 +1,12 @@
 // parksim.sweep(): a sweep spec run from Python with Python planners and controllers beside the
-// spec's own (sweep/SweepJob.h, the library call `parksim sweep` makes). The Python objects run
+// spec's own (sweep/run/SweepJob.h, the library call `parksim sweep` makes). The Python objects run
 // in worker processes forked from the calling thread, so a crash or a hang in one is that
 // episode's planner_error or controller_error and the sweep goes on.
 
 #include <Python.h>
 
-#include "parksim/plugin/PluginLoader.h"
-#include "parksim/sweep/SweepJob.h"
+#include "parksim/sweep/run/SweepJob.h"
+#include "parksim/usercode/PluginLoader.h"
 #include "python/src/Bindings.h"
 #include "python/src/UserCode.h"
 

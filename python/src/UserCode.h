@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "parksim/plugin/Components.h"
+#include "parksim/usercode/Components.h"
 #include "python/src/Bindings.h"
 
 namespace parksim::python {

@@ -1,6 +1,6 @@
 // Python objects as parksim planners and controllers (docs/your-code.md): plan(planner=obj) and
 // run(planner=..., controller=...) register them for that call beside parksim's own and the
-// plugins' (plugin/Components.h), as untrusted user code: their plans are checked before they
+// plugins' (usercode/Components.h), as untrusted user code: their plans are checked before they
 // are driven, and what they raise or get wrong is a planner_error or controller_error.
 //
 //   class Straight:                      # a planner: solve(problem) -> trajectory or None
@@ -17,12 +17,12 @@
 
 #include <pybind11/stl.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/planner/Planner.h"
-#include "parksim/plugin/PluginLoader.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/planner/base/Planner.h"
 #include "parksim/rl/TaskSpaces.h"
-#include "parksim/sim/Controller.h"
+#include "parksim/sim/control/Controller.h"
+#include "parksim/usercode/PluginLoader.h"
 #include "python/src/Bindings.h"
 #include "python/src/Conversions.h"
 #include "python/src/UserCode.h"
@@ -90,6 +90,7 @@ class PyController : public Controller {
 
   void reset(const ControllerSetup& setup) override {
     py::gil_scoped_acquire gil;
+    robot_ = setup.scenario.robot;
     try {
       const py::object& c = controller_->object;
       callable_ = !py::hasattr(c, "command");
@@ -124,6 +125,22 @@ class PyController : public Controller {
     }
   }
 
+  // A car: a parksim.CarCommand, or two wheel speeds read as its rear wheels'.
+  std::optional<CarCommand> carCommand(const ControllerInput& in) override {
+    py::gil_scoped_acquire gil;
+    try {
+      const py::object& c = controller_->object;
+      const py::object out = callable_ ? c(py::cast(in)) : c.attr("command")(py::cast(in));
+      if (py::isinstance<CarCommand>(out)) return out.cast<CarCommand>();
+      return carCommandOfWheels(wheelsFrom(out), robot_, in.steer_rad);
+    } catch (py::error_already_set& e) {
+      rethrowAsUserCodeFailure(e);
+    } catch (const py::cast_error&) {
+      throw std::runtime_error(
+          "returned something that is not a parksim.CarCommand or two numbers (left, right)");
+    }
+  }
+
  private:
   static WheelSpeeds wheelsFrom(const py::handle& out) {
     // A tuple, list or array of two real numbers; strings and complex numbers are not.
@@ -144,6 +161,7 @@ class PyController : public Controller {
 
   std::shared_ptr<Held> controller_;
   bool callable_ = true;
+  RobotDef robot_;
 };
 
 // A policy trained on the parking task (ParkingEnv: rl/TaskSpaces.h's observation and action)
@@ -236,6 +254,14 @@ std::string componentName(const py::handle& obj, const char* what) {
   return name;
 }
 
+// "Python object MODULE.QUALNAME" of a function, a class or (by its class) an instance: where
+// results say the code came from.
+std::string pythonOrigin(const py::object& object) {
+  const py::object of = py::hasattr(object, "__qualname__") ? object : py::type::of(object);
+  const std::string module = py::str(py::getattr(of, "__module__", py::str("?")));
+  return "Python object " + module + "." + std::string(py::str(of.attr("__qualname__")));
+}
+
 }  // namespace
 
 void takeComponents(py::dict& options, EpisodeRequest& request) {
@@ -277,6 +303,7 @@ std::string addPythonPlanner(Components& components, const py::object& planner,
   PlannerEntry entry;
   entry.info.name = name.empty() ? componentName(planner, "planner") : name;
   entry.info.description = "a Python object";
+  entry.info.origin = pythonOrigin(planner);
   entry.info.runs_user_code = true;
   entry.info.uses_steering = true;
   auto held = std::make_shared<Held>(planner);
@@ -334,8 +361,9 @@ void bindUserCode(py::module_& m) {
           },
           py::arg("observation"));
 
-  py::class_<ControllerInput>(m, "ControllerInput",
-                              "What a controller knows at one control tick (sim/Controller.h).")
+  py::class_<ControllerInput>(
+      m, "ControllerInput",
+      "What a controller knows at one control tick (sim/control/Controller.h).")
       .def_readonly("tick", &ControllerInput::tick)
       .def_readonly("t", &ControllerInput::t_s, "episode time, s")
       .def_property_readonly(
@@ -375,10 +403,45 @@ void bindUserCode(py::module_& m) {
             return py::make_tuple(in.feedforward.left_radps, in.feedforward.right_radps);
           },
           "the plan's wheel speeds (left, right) over that interval, rad/s")
-      .def_readonly("plan_ended", &ControllerInput::plan_ended);
+      .def_readonly("plan_ended", &ControllerInput::plan_ended)
+      .def_readonly("steer", &ControllerInput::steer_rad,
+                    "a car's measured steering angle (bicycle model), rad; 0 otherwise")
+      .def_readonly("reference_steer", &ControllerInput::reference_steer_rad,
+                    "a car's feed-forward steering angle from the plan, rad; 0 otherwise")
+      .def_readonly("commanded_speed", &ControllerInput::commanded_speed_mps,
+                    "a car's speed commanded at the last tick, m/s");
+
+  py::class_<CarCommand>(m, "CarCommand",
+                         "A car's command (sim/Controller.h): a speed of its rear axle's middle "
+                         "(or an acceleration) and a steering angle. A controller of a car may "
+                         "return one instead of two wheel speeds.")
+      .def(py::init([](std::optional<double> speed, std::optional<double> accel, double steer) {
+             if (speed.has_value() == accel.has_value()) {
+               throw py::value_error("give one of speed (m/s) or accel (m/s^2)");
+             }
+             CarCommand c;
+             c.mode = speed ? CarCommand::Mode::kSpeed : CarCommand::Mode::kAcceleration;
+             c.speed_mps = speed.value_or(0.0);
+             c.accel_mps2 = accel.value_or(0.0);
+             c.steer_rad = steer;
+             return c;
+           }),
+           py::kw_only(), py::arg("speed") = py::none(), py::arg("accel") = py::none(),
+           py::arg("steer") = 0.0)
+      .def_property_readonly("speed",
+                             [](const CarCommand& c) -> py::object {
+                               if (c.mode != CarCommand::Mode::kSpeed) return py::none();
+                               return py::float_(c.speed_mps);
+                             })
+      .def_property_readonly("accel",
+                             [](const CarCommand& c) -> py::object {
+                               if (c.mode != CarCommand::Mode::kAcceleration) return py::none();
+                               return py::float_(c.accel_mps2);
+                             })
+      .def_readonly("steer", &CarCommand::steer_rad);
 
   py::class_<PyProblem>(m, "PlanningProblem",
-                        "What a Python planner's solve() is given (planner/Planner.h); valid "
+                        "What a Python planner's solve() is given (planner/base/Planner.h); valid "
                         "during that call.")
       .def_property_readonly("start",
                              [](const PyProblem& p) { return poseTuple(p.p->scenario.start); })

@@ -5,11 +5,11 @@
 #include <pybind11/stl.h>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/core/InputFile.h"
-#include "parksim/renders/CSpace.h"
-#include "parksim/scenario/ScenarioReader.h"
-#include "parksim/scenario/World.h"
+#include "parksim/core/io/InputFile.h"
+#include "parksim/core/model/Geometry.h"
+#include "parksim/renders/plots/CSpace.h"
+#include "parksim/scenario/world/ScenarioReader.h"
+#include "parksim/scenario/world/World.h"
 #include "python/src/Bindings.h"
 
 namespace parksim::python {

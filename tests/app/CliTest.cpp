@@ -14,15 +14,15 @@
 
 #include "tests/support/RunParksim.h"
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/core/Provenance.h"
-#include "parksim/core/Trajectory.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/renders/FigureSelection.h"
-#include "parksim/renders/PngEncoder.h"
-#include "parksim/results/TrajectoryFile.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Geometry.h"
+#include "parksim/core/model/Trajectory.h"
+#include "parksim/core/system/Provenance.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/renders/image/PngEncoder.h"
+#include "parksim/renders/plots/FigureSelection.h"
+#include "parksim/results/episode/TrajectoryFile.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

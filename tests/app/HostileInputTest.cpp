@@ -372,11 +372,12 @@ TEST_F(HostileInput, AnUnsolvedPlanIsAResultAndReplacesTheEarlierOutputWhole) {
   const Outcome r =
       run("run " + vars_["{W}"] + " --planner rrt --max-iterations 1 --out " + out.string());
   EXPECT_EQ(r.exit_code, 1) << r.out;
-  // The new outputs (plan.json of the unsolved plan) and none of the earlier run's.
+  // The new outputs (plan.json of the unsolved plan, metrics.json of its verdict) and none of
+  // the earlier run's.
   EXPECT_TRUE(fs::exists(out / "plan.json"));
   EXPECT_FALSE(fs::exists(out / "executed.csv"));
   EXPECT_FALSE(fs::exists(out / "trajectory.csv"));
-  EXPECT_FALSE(fs::exists(out / "metrics.json"));
+  EXPECT_EQ(nlohmann::json::parse(slurp(out / "metrics.json"))["status"], "plan_failed");
 }
 
 }  // namespace

@@ -89,7 +89,7 @@ TEST_F(RunCommand, ExecutesAGivenPlanOpenLoopAndReportsTheMiss) {
   EXPECT_EQ(m["plan_source"], out("plan") + "/trajectory.csv");
 }
 
-TEST_F(RunCommand, AnUnsolvedPlanWritesNoEpisodeFiles) {
+TEST_F(RunCommand, AnUnsolvedPlanWritesItsVerdictAndNoEpisodeFiles) {
   // Stale files of an earlier run must not survive beside the failed one.
   ASSERT_EQ(parksim("run " + world("head_in") + " --out " + out("x")).exit_code, 0);
   const CliRun r =
@@ -97,9 +97,12 @@ TEST_F(RunCommand, AnUnsolvedPlanWritesNoEpisodeFiles) {
   EXPECT_EQ(r.exit_code, 1);  // unsolved, distinct from "tolerance not met"
   EXPECT_NE(r.out.find("parksim run: unsolved plan"), std::string::npos) << r.out;
   EXPECT_FALSE(fs::exists(dir_ / "x" / "executed.csv"));
-  EXPECT_FALSE(fs::exists(dir_ / "x" / "metrics.json"));
   EXPECT_FALSE(fs::exists(dir_ / "x" / "trajectory.csv"));
   EXPECT_TRUE(fs::exists(dir_ / "x" / "plan.json"));
+  // metrics.json is this run's verdict, with nothing measured.
+  const nlohmann::json m = nlohmann::json::parse(slurp(dir_ / "x" / "metrics.json"));
+  EXPECT_EQ(m["status"], "plan_failed");
+  EXPECT_FALSE(m.contains("max_pos_err_m"));
 }
 
 TEST_F(RunCommand, BadInputIsOneLineWithExitTwo) {

@@ -9,6 +9,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "tests/support/RunParksim.h"
 #include "tests/support/TestPaths.h"
@@ -20,6 +21,7 @@ namespace fs = std::filesystem;
 using testing::CliRun;
 using ::testing::HasSubstr;
 using ::testing::MatchesRegex;
+using ::testing::Not;
 
 class UserCodeCli : public ::testing::Test {
  protected:
@@ -63,12 +65,45 @@ TEST_F(UserCodeCli, ACollidingPlanFileIsInvalidAndNotDriven) {
                                   "m, y [0-9.]+ m, -?[0-9.]+ deg\\) the footprint overlaps "
                                   "dropped_box\n"));
   EXPECT_FALSE(fs::exists(dir_ / "run" / "executed.csv"));
+  // Its metrics.json holds the verdict and the file's name.
+  std::ifstream in(dir_ / "run" / "metrics.json");
+  const nlohmann::json m = nlohmann::json::parse(in);
+  EXPECT_EQ(m["status"], "plan_invalid");
+  EXPECT_NE(m["plan_source"].get<std::string>().find("trajectory.csv"), std::string::npos);
   // Over the world's wheel-speed limit: the limit is named.
   r = testing::runParksim("run " + world("head_in") + " --plan " + out("plan") +
                           "/trajectory.csv --set robot.max_wheel_speed_radps=5 --out " +
                           out("slow"));
   EXPECT_EQ(r.exit_code, 5) << r.out;
   EXPECT_THAT(r.out, HasSubstr("exceed robot.max_wheel_speed_radps 5"));
+}
+
+// One check for every command: a plugin's plan through a wall is plan_invalid from plan, run and
+// render alike (exit 5); none says "solved", writes the plan as one to drive, or draws it.
+TEST_F(UserCodeCli, APlanThroughAWallIsInvalidFromEveryCommand) {
+  for (const std::string command : {"plan", "run", "render"}) {
+    SCOPED_TRACE(command);
+    const CliRun r =
+        testing::runParksim(command + " " + world("head_in") + " --plugin " + faulty() +
+                            " --planner through-walls --out " + out(command));
+    EXPECT_EQ(r.exit_code, 5) << r.out;
+    EXPECT_THAT(r.out, MatchesRegex("(.|\n)*parksim " + command +
+                                    ": plan_invalid: at t = [0-9.]+ s \\(x [0-9.]+ m, y [0-9.]+ "
+                                    "m, -?[0-9.]+ deg\\) the footprint overlaps [a-z_0-9, ]+\n"));
+    EXPECT_THAT(r.out, Not(HasSubstr("solved")));
+    EXPECT_FALSE(fs::exists(dir_ / command / "trajectory.csv"));
+    EXPECT_FALSE(fs::exists(dir_ / command / "figures"));
+  }
+  // plan and run record the verdict and whose code it was; run its metrics.json too.
+  for (const std::string command : {"plan", "run"}) {
+    std::ifstream in(dir_ / command / "plan.json");
+    const nlohmann::json plan = nlohmann::json::parse(in);
+    EXPECT_EQ(plan["status"], "plan_invalid");
+    EXPECT_THAT(plan["planner_origin"].get<std::string>(),
+                HasSubstr("plugin parksim-faults 0.1 ("));
+  }
+  std::ifstream in(dir_ / "run" / "metrics.json");
+  EXPECT_EQ(nlohmann::json::parse(in)["status"], "plan_invalid");
 }
 
 TEST_F(UserCodeCli, CrashesAndHangsOfPluginCodeAreVerdictsWithNothingWritten) {

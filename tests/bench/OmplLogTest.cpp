@@ -1,8 +1,8 @@
 // OMPL's benchmark log format: the header lines ompl_benchmark_statistics.py reads, one
 // planner block per group, every run line with one value per property.
 
-#include "parksim/core/Provenance.h"
-#include "parksim/results/OmplLog.h"
+#include "parksim/core/system/Provenance.h"
+#include "parksim/results/reports/OmplLog.h"
 
 #include <gtest/gtest.h>
 

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Error.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim::bench {

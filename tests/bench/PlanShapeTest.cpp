@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/DiffDrive.h"
+#include "parksim/core/model/DiffDrive.h"
 
 namespace parksim::bench {
 namespace {

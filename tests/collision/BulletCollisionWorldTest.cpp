@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/Geometry.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/Geometry.h"
 #include "tests/support/StudyLot.h"
 
 namespace parksim {

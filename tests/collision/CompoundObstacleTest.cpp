@@ -11,9 +11,9 @@
 
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/collision/ObstacleShape.h"
-#include "parksim/core/ConvexPartition.h"
-#include "parksim/core/GridRectangles.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/ConvexPartition.h"
+#include "parksim/core/geometry/GridRectangles.h"
+#include "parksim/core/model/Scenario.h"
 #include "tests/support/PolygonOracle.h"
 #include "tests/support/Sanitizers.h"
 

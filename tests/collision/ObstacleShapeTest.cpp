@@ -13,7 +13,7 @@
 #include <cmath>
 #include <vector>
 
-#include "parksim/core/Angle.h"
+#include "parksim/core/geometry/Angle.h"
 
 namespace parksim {
 namespace {

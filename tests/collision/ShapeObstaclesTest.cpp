@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Geometry.h"
+#include "parksim/core/model/Geometry.h"
 #include "tests/support/ExactShapes.h"
 #include "tests/support/StudyLot.h"
 

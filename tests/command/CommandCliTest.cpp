@@ -49,6 +49,43 @@ TEST(CommandCliTest, APlannerThatHangsIsKilledAtItsLimit) {
       "within timeout_s = 0.2 s and was killed\n");
 }
 
+// --planner-timeout and --controller-timeout hold for commands too: the program is stopped at the
+// shorter of its own timeout and the run's limit, and the verdict names the limit that struck.
+// Under `timeout 25`, so that a limit that does nothing fails here (exit 124) instead of
+// waiting out the command's own 600 s (planner) or 30 s and 5 s (controller).
+TEST(CommandCliTest, TheRunsTimeLimitsHoldForCommands) {
+  const std::string bounded = "timeout 25 " + parksim::testing::parksimExe();
+  const std::string faulty = "python3 " + sourceDir() + "/tests/command/faulty_controller.py";
+  parksim::testing::CliRun run = parksim::testing::runProgram(
+      bounded, "plan " + headIn() + " --out " + outDir("slow_plan") +
+                   " --planner-command \"sh -c 'sleep 60' sh {out}\" --planner-timeout 1");
+  EXPECT_EQ(run.exit_code, 6) << run.out;
+  EXPECT_EQ(run.out,
+            "parksim plan: planner_error: planner command `sh -c 'sleep 60' sh {out}` gave no "
+            "answer within the planner time limit of 1 s and was killed\n");
+  // The shorter limit strikes: the command's own here.
+  run = parksim::testing::runProgram(
+      bounded, "plan " + headIn() + " --out " + outDir("own_limit") +
+                   " --planner-command \"sh -c 'sleep 60' sh {out}\" --planner-param "
+                   "timeout_s=0.5 --planner-timeout 20");
+  EXPECT_EQ(run.exit_code, 6) << run.out;
+  EXPECT_NE(run.out.find("within timeout_s = 0.5 s and was killed"), std::string::npos) << run.out;
+  for (const auto& [fault, message] :
+       {std::pair<std::string, std::string>{
+            "slowstart", "was not ready within the controller time limit of 1 s"},
+        {"hang", "gave no answer at tick 5 within the controller time limit of 1 s"}}) {
+    SCOPED_TRACE(fault);
+    run = parksim::testing::runProgram(bounded, "run " + headIn() + " --out " + outDir(fault) +
+                                                    " --controller-command '" + faulty + " " +
+                                                    fault + "' --controller-timeout 1");
+    EXPECT_EQ(run.exit_code, 6) << run.out;
+    EXPECT_NE(run.out.find("parksim run: controller_error: controller command threw in "),
+              std::string::npos)
+        << run.out;
+    EXPECT_NE(run.out.find(message), std::string::npos) << run.out;
+  }
+}
+
 TEST(CommandCliTest, ACommandAndANameForOneComponentAreRefused) {
   const parksim::testing::CliRun planner =
       runParksim("plan " + headIn() + " --planner rrt --planner-command 'x {out}'");

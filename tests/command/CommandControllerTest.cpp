@@ -3,7 +3,7 @@
 // does; processes that die, answer NaN or garbage, or never answer end their episode with
 // controller_error, the record kept; every process ends with its episode.
 
-#include "parksim/command/CommandController.h"
+#include "parksim/usercode/CommandController.h"
 
 #include <signal.h>
 
@@ -18,11 +18,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/command/CommandLine.h"
-#include "parksim/command/CommandPlanner.h"
-#include "parksim/core/AtomicFile.h"
+#include "parksim/core/io/AtomicFile.h"
 #include "parksim/pipeline/EpisodePipeline.h"
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/World.h"
+#include "parksim/usercode/CommandLine.h"
+#include "parksim/usercode/CommandPlanner.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

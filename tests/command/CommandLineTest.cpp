@@ -1,11 +1,11 @@
 // A command as one line of text: split as a shell splits words (no expansions), canonical text,
 // placeholders, and the command parameter's checks.
 
-#include "parksim/command/CommandLine.h"
+#include "parksim/usercode/CommandLine.h"
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 namespace {

@@ -2,7 +2,7 @@
 // front-end runs it. A Python planner solves the study's head-in world; commands that fail,
 // write garbage, hang or plan through a wall get their own verdicts, naming the command.
 
-#include "parksim/command/CommandPlanner.h"
+#include "parksim/usercode/CommandPlanner.h"
 
 #include <signal.h>
 #include <sys/prctl.h>
@@ -17,13 +17,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/command/CommandLine.h"
-#include "parksim/command/ProblemFile.h"
-#include "parksim/core/AtomicFile.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/World.h"
+#include "parksim/usercode/CommandLine.h"
+#include "parksim/usercode/ProblemFile.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

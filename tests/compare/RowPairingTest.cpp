@@ -8,8 +8,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/sweep/EpisodeParams.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/sweep/spec/EpisodeParams.h"
 
 namespace parksim {
 namespace {

@@ -21,9 +21,9 @@
 #include <gtest/gtest.h>
 
 #include "parksim/compare/ComparedTable.h"
-#include "parksim/core/Error.h"
-#include "parksim/results/ResultsTable.h"
-#include "parksim/sweep/EpisodeParams.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/results/tables/ResultsTable.h"
+#include "parksim/sweep/spec/EpisodeParams.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

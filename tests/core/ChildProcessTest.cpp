@@ -1,7 +1,7 @@
 // A program parksim starts and talks to: lines both ways, deadlines, a bounded standard error,
 // no SIGPIPE, and no process of its group (or zombie) left behind.
 
-#include "parksim/core/ChildProcess.h"
+#include "parksim/core/system/ChildProcess.h"
 
 #include <signal.h>
 #include <sys/prctl.h>
@@ -16,7 +16,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 namespace {

@@ -1,4 +1,4 @@
-#include "parksim/core/ConvexPartition.h"
+#include "parksim/core/geometry/ConvexPartition.h"
 
 #include <cmath>
 #include <random>
@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/ExactOrientation.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/ExactOrientation.h"
+#include "parksim/core/model/Scenario.h"
 #include "tests/support/PolygonOracle.h"
 
 namespace parksim {

@@ -1,4 +1,4 @@
-#include "parksim/core/DiffDrive.h"
+#include "parksim/core/model/DiffDrive.h"
 
 #include <cmath>
 #include <random>

@@ -1,4 +1,4 @@
-#include "parksim/core/Fnv1a.h"
+#include "parksim/core/io/Fnv1a.h"
 
 #include <gtest/gtest.h>
 

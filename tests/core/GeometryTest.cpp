@@ -1,4 +1,4 @@
-#include "parksim/core/Geometry.h"
+#include "parksim/core/model/Geometry.h"
 
 #include <cmath>
 #include <random>
@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Text.h"
+#include "parksim/core/io/Text.h"
+#include "parksim/core/model/Scenario.h"
 #include "tests/support/ExactShapes.h"
 
 namespace parksim {

@@ -1,4 +1,4 @@
-#include "parksim/core/GridRectangles.h"
+#include "parksim/core/geometry/GridRectangles.h"
 
 #include <random>
 #include <vector>

@@ -1,6 +1,6 @@
 // Number text and the CSV reader: exact round trips and located errors.
 
-#include "parksim/core/NumberFormat.h"
+#include "parksim/core/io/NumberFormat.h"
 
 #include <cmath>
 #include <cstdio>
@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Csv.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Csv.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 namespace {

@@ -1,4 +1,4 @@
-#include "parksim/core/PolygonRegion.h"
+#include "parksim/core/geometry/PolygonRegion.h"
 
 #include <cmath>
 #include <random>
@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/ExactOrientation.h"
+#include "parksim/core/geometry/ExactOrientation.h"
 
 namespace parksim {
 namespace {

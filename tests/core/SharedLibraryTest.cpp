@@ -1,10 +1,10 @@
-#include "parksim/core/SharedLibrary.h"
+#include "parksim/core/system/SharedLibrary.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 namespace {

@@ -1,4 +1,4 @@
-#include "parksim/core/Text.h"
+#include "parksim/core/io/Text.h"
 
 #include <gtest/gtest.h>
 

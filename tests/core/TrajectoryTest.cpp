@@ -1,4 +1,4 @@
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/model/Trajectory.h"
 
 #include <gtest/gtest.h>
 

@@ -1,14 +1,14 @@
 // libFuzzer harness for the plan-file reader (parseTrajectoryCsv in
-// parksim/results/TrajectoryFile.h): any bytes must give a Trajectory within PlanFileLimits or a
-// parksim::Error. Built and run by scripts/fuzz.sh (docs/limits.md explains the campaigns).
+// parksim/results/episode/TrajectoryFile.h): any bytes must give a Trajectory within PlanFileLimits
+// or a parksim::Error. Built and run by scripts/fuzz.sh (docs/limits.md explains the campaigns).
 
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <string_view>
 
-#include "parksim/core/Error.h"
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using L = parksim::PlanFileLimits;

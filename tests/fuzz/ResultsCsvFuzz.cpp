@@ -1,8 +1,8 @@
-// libFuzzer harness for the results.csv reader (CsvFollower in parksim/results/ResultsFile.h,
-// through verifyResults in TableVerify.h, which `parksim verify` and a resumed sweep use): a
-// valid results.jsonl beside a results.csv of any bytes must give a verdict listing problems,
-// never a crash, a sanitizer report or a hang; results.csv as the writer renders it must pass.
-// Built and run by scripts/fuzz.sh.
+// libFuzzer harness for the results.csv reader (CsvFollower in
+// parksim/results/tables/ResultsFile.h, through verifyResults in TableVerify.h, which `parksim
+// verify` and a resumed sweep use): a valid results.jsonl beside a results.csv of any bytes must
+// give a verdict listing problems, never a crash, a sanitizer report or a hang; results.csv as the
+// writer renders it must pass. Built and run by scripts/fuzz.sh.
 
 #include <cstddef>
 #include <cstdint>
@@ -10,10 +10,10 @@
 #include <string>
 #include <string_view>
 
-#include "parksim/core/Error.h"
-#include "parksim/results/ResultsFile.h"
-#include "parksim/results/TableVerify.h"
-#include "parksim/sweep/Merge.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/results/tables/ResultsFile.h"
+#include "parksim/results/tables/TableVerify.h"
+#include "parksim/sweep/shards/Merge.h"
 #include "tests/fuzz/FuzzSupport.h"
 
 namespace {

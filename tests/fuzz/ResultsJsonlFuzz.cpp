@@ -1,6 +1,6 @@
 // libFuzzer harness for the results.jsonl reader (scanResultsJsonl in
-// parksim/results/ResultsFile.h, which sweep, merge, report and verify use): any bytes must give
-// checked rows or a parksim::Error naming a line, never a crash, a sanitizer report or a hang.
+// parksim/results/tables/ResultsFile.h, which sweep, merge, report and verify use): any bytes must
+// give checked rows or a parksim::Error naming a line, never a crash, a sanitizer report or a hang.
 // The rows it accepts are rendered as the writer would (CSV, origins), and a scan that goes on
 // past problems (verify's) must see the same rows. Built and run by scripts/fuzz.sh.
 
@@ -11,9 +11,9 @@
 #include <string>
 #include <string_view>
 
-#include "parksim/core/Error.h"
-#include "parksim/results/ResultsFile.h"
-#include "parksim/results/RowSeal.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/results/tables/ResultsFile.h"
+#include "parksim/results/tables/RowSeal.h"
 #include "tests/fuzz/FuzzSupport.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

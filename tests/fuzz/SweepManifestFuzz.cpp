@@ -1,16 +1,16 @@
 // libFuzzer harness for the sweep.json reader (parseSweepManifest in
-// parksim/sweep/SweepManifest.h, read by sweep, merge, report and --slurm --missing): any bytes
-// must give a manifest or a parksim::Error, never a JSON type error, an overflowing conversion,
-// a crash or a hang; a manifest it accepts writes and reads back the same. Built and run by
-// scripts/fuzz.sh.
+// parksim/sweep/shards/SweepManifest.h, read by sweep, merge, report and --slurm --missing): any
+// bytes must give a manifest or a parksim::Error, never a JSON type error, an overflowing
+// conversion, a crash or a hang; a manifest it accepts writes and reads back the same. Built and
+// run by scripts/fuzz.sh.
 
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <string_view>
 
-#include "parksim/core/Error.h"
-#include "parksim/sweep/SweepManifest.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/sweep/shards/SweepManifest.h"
 #include "tests/fuzz/FuzzSupport.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

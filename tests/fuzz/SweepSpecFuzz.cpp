@@ -1,5 +1,5 @@
 // libFuzzer harness for the sweep-spec reader (parseSweepSpec in
-// parksim/sweep/SweepSpecReader.h): any bytes must give a spec or a parksim::Error, never a
+// parksim/sweep/spec/SweepSpecReader.h): any bytes must give a spec or a parksim::Error, never a
 // crash, a sanitizer report, a hang or unbounded memory. World paths resolve against a scratch
 // directory holding w.yaml and v.yaml. Built and run by scripts/fuzz.sh.
 
@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "parksim/core/Error.h"
-#include "parksim/sweep/SweepSpecReader.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/sweep/spec/SweepSpecReader.h"
 #include "tests/fuzz/FuzzSupport.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -12,8 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/Error.h"
-#include "parksim/scenario/World.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/scenario/world/World.h"
 
 namespace {
 

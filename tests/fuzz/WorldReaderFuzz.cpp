@@ -1,4 +1,4 @@
-// libFuzzer harness for the world-file reader (parksim/scenario/ScenarioReader.h): any bytes
+// libFuzzer harness for the world-file reader (parksim/scenario/world/ScenarioReader.h): any bytes
 // must give a Scenario or a parksim::Error, never a crash, a sanitizer report, a hang or
 // unbounded memory. Built and run by scripts/fuzz.sh (docs/limits.md explains the campaigns).
 
@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "parksim/core/Error.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {

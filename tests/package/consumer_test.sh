@@ -9,7 +9,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 cmake --install "$build" --prefix "$tmp/prefix" >/dev/null
-test -f "$tmp/prefix/include/parksim/sim/Episode.h"
+test -f "$tmp/prefix/include/parksim/sim/episode/Episode.h"
 test -x "$tmp/prefix/bin/parksim"
 ls "$tmp"/prefix/lib*/cmake/parksim/parksimConfigVersion.cmake >/dev/null
 # The OMPL plugin, which the consumer's default plan loads (its smoothing uses Reeds-Shepp

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "tests/pages/PageTestSupport.h"
 
 namespace parksim {

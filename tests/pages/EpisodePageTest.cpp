@@ -13,8 +13,8 @@
 #include <gtest/gtest.h>
 
 #include "parksim/pipeline/EpisodePipeline.h"
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/scenario/World.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/scenario/world/World.h"
 #include "tests/pages/PageTestSupport.h"
 #include "tests/support/TestPaths.h"
 

@@ -9,7 +9,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pages/JUnitPageLinks.h"
 #include "tests/pages/PageTestSupport.h"
 #include "tests/support/TestPaths.h"
@@ -71,6 +71,16 @@ TEST_F(SweepPageTest, LinksAreRelativeToThePage) {
   EXPECT_EQ(relativeHref("ci", "out/study/episodes/aaa/report.html"),
             "../out/study/episodes/aaa/report.html");
   EXPECT_EQ(relativeHref(".", "a/b"), "a/b");
+}
+
+TEST_F(SweepPageTest, ALinkIsAPathWhateverItsFoldersAreNamed) {
+  EXPECT_EQ(hrefOf("../episodes"), "../episodes");
+  EXPECT_EQ(hrefOf("Az09-._~/x"), "Az09-._~/x");
+  // Not a scheme, a query, a fragment, an escape or a space.
+  EXPECT_EQ(hrefOf("javascript:alert(1)/episodes"), "javascript%3Aalert%281%29/episodes");
+  EXPECT_EQ(hrefOf("../a b/c?d#e%f/r.html"), "../a%20b/c%3Fd%23e%25f/r.html");
+  EXPECT_EQ(hrefOf("\"<x>'"), "%22%3Cx%3E%27");
+  EXPECT_EQ(hrefOf("caf\xC3\xA9"), "caf%C3%A9");
 }
 
 TEST_F(SweepPageTest, TheDataHoldsTheTableTheAxesAndTheKeptFlags) {

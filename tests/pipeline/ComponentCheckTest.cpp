@@ -2,14 +2,14 @@
 // crashes or hangs is a one-line refusal naming it, in this process's stead; parksim's own and
 // the plugin's sound components are made as before.
 
-#include "parksim/pipeline/ComponentCheck.h"
+#include "parksim/usercode/ComponentCheck.h"
 
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "parksim/plugin/PluginLoader.h"
+#include "parksim/usercode/PluginLoader.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

@@ -2,7 +2,9 @@
 // its plan keeps the footprint off every occupied and unknown cell of the image (checked here
 // over the image itself, with its own geometry, not through parksim's collision code); an SVG
 // lot with non-convex shapes and transforms plans and runs, and its obstacles are drawn where
-// the SVG draws them; the Moving AI warehouse plans with the default setup.
+// the SVG draws them; a floor plan whose walls are drawn as lines (two-point paths and
+// polylines, a closed path on one line, a line) plans around every wall, checked against the
+// lines themselves; the Moving AI warehouse plans with the default setup.
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
@@ -14,8 +16,9 @@
 #include <vector>
 
 #include "parksim/pipeline/EpisodePipeline.h"
-#include "parksim/renders/SceneBuilder.h"
-#include "parksim/scenario/World.h"
+#include "parksim/renders/scene/SceneBuilder.h"
+#include "parksim/scenario/world/World.h"
+#include "tests/support/MapFiles.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
@@ -191,6 +194,130 @@ TEST(MapWorlds, TheSvgLotPlansRunsAndDrawsItsObstaclesWhereTheSvgDoes) {
       {lot(60, 1800), false, "the Notes layer's page frame (not selected)"},
   };
   for (const Probe& p : probes) EXPECT_EQ(drawnAt(scene, p.at), p.drawn) << p.what;
+}
+
+// --- A floor plan drawn with walls as lines, and its geometry computed here. ---
+struct LineWall {
+  std::string element;   // how it is drawn: path, polyline, closed (a closed path), line
+  Eigen::Vector2d a, b;  // page mm, y down
+};
+
+std::string svgElement(const LineWall& w) {
+  const auto xy = [](const Eigen::Vector2d& p) {
+    return std::to_string(p.x()) + "," + std::to_string(p.y());
+  };
+  if (w.element == "path") return "<path d=\"M " + xy(w.a) + " L " + xy(w.b) + "\"/>";
+  if (w.element == "polyline") return "<polyline points=\"" + xy(w.a) + " " + xy(w.b) + "\"/>";
+  if (w.element == "closed") {
+    // There, back past the middle, and closed: a closed path on one line.
+    return "<path d=\"M " + xy(w.a) + " L " + xy(w.b) + " L " + xy(0.5 * (w.a + w.b)) + " Z\"/>";
+  }
+  return "<line x1=\"" + std::to_string(w.a.x()) + "\" y1=\"" + std::to_string(w.a.y()) +
+         "\" x2=\"" + std::to_string(w.b.x()) + "\" y2=\"" + std::to_string(w.b.y()) + "\"/>";
+}
+
+// Distance from the rectangle (centre c, half sizes hl x hw, heading yaw) to the segment pq:
+// 0 when they meet.
+double rectSegmentDistance(const Eigen::Vector2d& c, double hl, double hw, double yaw,
+                           const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
+  const Eigen::Vector2d u(std::cos(yaw), std::sin(yaw));
+  const Eigen::Vector2d v(-u.y(), u.x());
+  const auto toRect = [&](const Eigen::Vector2d& x) {
+    const Eigen::Vector2d d = x - c;
+    return std::hypot(std::max(0.0, std::abs(d.dot(u)) - hl),
+                      std::max(0.0, std::abs(d.dot(v)) - hw));
+  };
+  const auto toSegment = [&](const Eigen::Vector2d& x) {
+    const Eigen::Vector2d e = q - p;
+    const double t = std::clamp((x - p).dot(e) / e.squaredNorm(), 0.0, 1.0);
+    return (p + t * e - x).norm();
+  };
+  const auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() * b.y() - a.y() * b.x();
+  };
+  const Eigen::Vector2d corners[] = {c + hl * u + hw * v, c - hl * u + hw * v, c - hl * u - hw * v,
+                                     c + hl * u - hw * v};
+  double best = std::min(toRect(p), toRect(q));
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector2d& r = corners[k];
+    const Eigen::Vector2d& s = corners[(k + 1) % 4];
+    best = std::min(best, toSegment(r));
+    const bool crosses = cross(s - r, p - r) * cross(s - r, q - r) < 0.0 &&
+                         cross(q - p, r - p) * cross(q - p, s - p) < 0.0;
+    if (crosses) best = 0.0;
+  }
+  return best;
+}
+
+TEST(MapWorlds, AFloorPlanDrawnWithLinesPlansAroundEveryWall) {
+  // 1300 x 800 mm: outer walls, a partition, and a U-shaped alcove (open to the east) holding
+  // the goal, straight east of the start: the way in is round the alcove, not through it.
+  const double width_mm = 20.0;
+  const std::vector<LineWall> walls = {
+      {"path", {10, 10}, {1290, 10}},        {"path", {1290, 10}, {1290, 790}},
+      {"path", {1290, 790}, {10, 790}},      {"path", {10, 790}, {10, 10}},
+      {"line", {400, 10}, {400, 300}},       {"path", {800, 250}, {800, 550}},
+      {"polyline", {800, 250}, {1050, 250}}, {"closed", {800, 550}, {1050, 550}},
+  };
+  std::string svg =
+      "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"1300mm\" "
+      "height=\"800mm\" viewBox=\"0 0 1300 800\">\n"
+      "<g id=\"walls\" style=\"fill:none;stroke:#000;stroke-width:" +
+      std::to_string(width_mm) + "\">\n";
+  for (const LineWall& w : walls) svg += svgElement(w) + "\n";
+  svg +=
+      "</g>\n<rect id=\"table\" x=\"150\" y=\"600\" width=\"150\" height=\"100\"/>\n"
+      "<circle id=\"pillar\" cx=\"600\" cy=\"150\" r=\"30\"/>\n</svg>\n";
+  const fs::path dir = testing::freshDir("map_worlds_floor_plan");
+  testing::writeText(dir / "plan.svg", svg);
+  testing::writeText(dir / "floor_plan.yaml",
+                     "format: parksim-world/1\nname: floor_plan\n"
+                     "lot: {x_min: 0.0, y_min: 0.0, x_max: 1.3, y_max: 0.8}\n"
+                     "map:\n  - {svg: plan.svg, name: plan, height: 0.1}\n"
+                     "start: [0.2, 0.4, 0]\n"
+                     "goal: {pose: [0.95, 0.4, 180], position_tolerance: 0.002, "
+                     "heading_tolerance_deg: 1}\n");
+  EpisodeRequest request;
+  request.world = std::make_shared<const World>(loadWorld((dir / "floor_plan.yaml").string()));
+  // Every wall and both pieces of furniture: nothing drawn is dropped.
+  EXPECT_EQ(request.world->scenario.obstacles.size(), walls.size() + 2);
+  request.drive = false;
+  const EpisodeOutcome outcome = runEpisodePipeline(request);
+  ASSERT_TRUE(outcome.plan && outcome.plan->solved()) << outcome.verdict.reason;
+
+  // Every pose of the plan, 0.5 mm and 0.005 rad apart, keeps the footprint more than half a
+  // wall's width from each wall's line (in the lot: x = u / 1000, y = 0.8 - v / 1000).
+  const RobotDef& robot = request.world->scenario.robot;
+  const double hl = 0.5 * robot.length_m;
+  const double hw = 0.5 * robot.width_m;
+  const double ahead = robot.front_overhang_m - hl;
+  const auto lot = [](const Eigen::Vector2d& page) {
+    return Eigen::Vector2d(page.x() / 1000.0, 0.8 - page.y() / 1000.0);
+  };
+  const auto& points = outcome.plan->trajectory.points;
+  ASSERT_GT(points.size(), 10u);
+  double closest = 1e300;
+  for (std::size_t n = 0; n + 1 < points.size(); ++n) {
+    const Pose2 a = points[n].pose;
+    const Pose2 b = points[n + 1].pose;
+    const int steps = 1 + static_cast<int>(std::hypot(b.x - a.x, b.y - a.y) / 0.0005 +
+                                           std::abs(b.theta - a.theta) / 0.005);
+    for (int s = 0; s < steps; ++s) {
+      const double t = double(s) / steps;
+      const double yaw = a.theta + t * (b.theta - a.theta);
+      const Eigen::Vector2d c(a.x + t * (b.x - a.x) + ahead * std::cos(yaw),
+                              a.y + t * (b.y - a.y) + ahead * std::sin(yaw));
+      for (const LineWall& w : walls) {
+        const double gap = rectSegmentDistance(c, hl, hw, yaw, lot(w.a), lot(w.b));
+        ASSERT_GT(gap, 0.5 * width_mm / 1000.0)
+            << "the footprint at " << c.transpose() << ", " << yaw << " meets the " << w.element
+            << " wall from " << w.a.transpose() << " to " << w.b.transpose() << " (page mm)";
+        closest = std::min(closest, gap - 0.5 * width_mm / 1000.0);
+      }
+    }
+  }
+  // Round the alcove and into it: the plan comes within a few centimetres of its walls.
+  EXPECT_LT(closest, 0.05);
 }
 
 TEST(MapWorlds, TheWarehousePlansWithTheDefaults) {

@@ -1,7 +1,7 @@
 // User code that crashes or hangs ends its child process, not the caller, and becomes the
 // failure of the component it was in (UserCodeIsolation.h).
 
-#include "parksim/pipeline/UserCodeIsolation.h"
+#include "parksim/usercode/UserCodeIsolation.h"
 
 #include <signal.h>
 #include <unistd.h>
@@ -15,8 +15,8 @@
 #include <gtest/gtest.h>
 
 #include "parksim/pipeline/EpisodePipeline.h"
-#include "parksim/plugin/PluginLoader.h"
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/World.h"
+#include "parksim/usercode/PluginLoader.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

@@ -8,12 +8,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/plugin/PluginLoader.h"
-#include "parksim/results/TrajectoryFile.h"
-#include "parksim/scenario/World.h"
+#include "parksim/results/episode/TrajectoryFile.h"
+#include "parksim/scenario/world/World.h"
+#include "parksim/usercode/PluginLoader.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

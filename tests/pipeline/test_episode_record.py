@@ -1,4 +1,4 @@
-"""One episode record (parksim/results/EpisodeRecord.h) everywhere: one episode of the head-in
+"""One episode record (parksim/results/tables/EpisodeRecord.h) everywhere: one episode of the head-in
 world under the `lab` realism, through `parksim run` (metrics.json), a sweep (its results.jsonl
 and results.csv row, and the episode's own metrics.json) and Python's run().metrics. Every
 field of the record agrees across them, and no field of the row is empty that metrics.json

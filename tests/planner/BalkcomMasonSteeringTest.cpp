@@ -1,12 +1,12 @@
-#include "parksim/planner/BalkcomMasonSteering.h"
+#include "parksim/planner/steering/BalkcomMasonSteering.h"
 
 #include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/planner/BalkcomMason.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/planner/steering/BalkcomMason.h"
 #include "tests/support/PlanChecks.h"
 
 namespace parksim {

@@ -1,4 +1,4 @@
-#include "parksim/planner/BalkcomMason.h"
+#include "parksim/planner/steering/BalkcomMason.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/DiffDrive.h"
 
 namespace parksim {
 namespace {

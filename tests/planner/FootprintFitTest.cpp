@@ -1,4 +1,4 @@
-#include "parksim/planner/FootprintFit.h"
+#include "parksim/planner/search/FootprintFit.h"
 
 #include <random>
 

@@ -1,10 +1,10 @@
-#include "parksim/planner/FreeSpaceBound.h"
+#include "parksim/planner/base/FreeSpaceBound.h"
 
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "parksim/planner/BalkcomMasonSteering.h"
+#include "parksim/planner/steering/BalkcomMasonSteering.h"
 
 namespace parksim {
 namespace {
@@ -39,6 +39,23 @@ TEST(FreeSpaceBound, NoTimedPathIsFaster) {
       EXPECT_GE(bound, 0.5 * timed);
     }
   }
+}
+
+// A car's bound: its shortest path, the Reeds-Shepp curve at its tightest radius, from rest to
+// rest in 0.1 s rows at 2.5 m/s and 1 m/s^2 (speeds 0.1 k m/s, full speed from the 25th row).
+TEST(FreeSpaceBound, ACarsIsItsShortestPathAtItsLimits) {
+  const RobotDef car = midSizeCar();
+  // Straight ahead 20.1 m: n rows of a full trapezoid cover (2 x 0.1 x (1 + ... + 24) +
+  // 2.5 (n - 48)) x 0.1 = 0.25 n - 6 m >= 20.1 at n = 105.
+  EXPECT_NEAR(carFreeSpaceDurationBound({0, 0, 0}, {20.1, 0, 0}, car, 0.1), 10.5, 1e-9);
+  // A quarter turn on the tightest circle: pi R / 2 = 4.72 m, too short to reach full speed;
+  // n = 2m + 1 rows of a triangle cover 0.01 (m + 1)^2 m: 4.84 at n = 43, 4.41 at n = 41, and
+  // 4.62 (0.01 m (m + 1), m = 21) at n = 42.
+  const double r = car.minTurningRadius();
+  ASSERT_LT(0.01 * 21 * 22, 0.5 * kPi * r);
+  ASSERT_GE(0.01 * 22 * 22, 0.5 * kPi * r);
+  EXPECT_NEAR(carFreeSpaceDurationBound({0, 0, 0}, {r, r, 0.5 * kPi}, car, 0.1), 4.3, 1e-9);
+  EXPECT_EQ(carFreeSpaceDurationBound({3, 2, 1}, {3, 2, 1}, car, 0.1), 0.0);
 }
 
 }  // namespace

@@ -8,10 +8,10 @@
 #include <gtest/gtest.h>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/planner/ReachableBudget.h"
-#include "parksim/planner/TimeOptimalTiming.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/planner/motion/TimeOptimalTiming.h"
+#include "parksim/planner/search/ReachableBudget.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 #include "tests/support/PlanChecks.h"
 #include "tests/support/TestPaths.h"
 

@@ -1,4 +1,4 @@
-#include "parksim/planner/MotionValidator.h"
+#include "parksim/planner/motion/MotionValidator.h"
 
 #include <random>
 

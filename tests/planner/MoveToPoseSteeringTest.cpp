@@ -1,11 +1,11 @@
-#include "parksim/planner/MoveToPoseSteering.h"
+#include "parksim/planner/steering/MoveToPoseSteering.h"
 
 #include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "tests/support/PlanChecks.h"
 
 namespace parksim {

@@ -1,4 +1,4 @@
-#include "parksim/planner/NearestNeighbors.h"
+#include "parksim/planner/tree/NearestNeighbors.h"
 
 #include <limits>
 #include <random>

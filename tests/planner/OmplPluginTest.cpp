@@ -1,12 +1,12 @@
-#include "parksim/planner/OmplPlugin.h"
+#include "parksim/planner/steering/OmplPlugin.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "parksim/core/Angle.h"
-#include "parksim/planner/ReedsSheppSteering.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/planner/steering/ReedsSheppSteering.h"
 #include "tests/support/LoadedLibraries.h"
 
 namespace parksim {

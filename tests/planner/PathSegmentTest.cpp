@@ -1,11 +1,11 @@
-#include "parksim/planner/PathSegment.h"
+#include "parksim/planner/tree/PathSegment.h"
 
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "parksim/planner/PathCost.h"
-#include "parksim/planner/RotateTranslateRotateSteering.h"
+#include "parksim/planner/motion/PathCost.h"
+#include "parksim/planner/steering/RotateTranslateRotateSteering.h"
 #include "tests/support/PlanChecks.h"
 
 namespace parksim {

@@ -1,14 +1,14 @@
-#include "parksim/planner/PathSmoother.h"
+#include "parksim/planner/base/PathSmoother.h"
 
 #include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Error.h"
-#include "parksim/planner/BalkcomMason.h"
-#include "parksim/planner/MotionPrimitives.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/planner/motion/MotionPrimitives.h"
+#include "parksim/planner/steering/BalkcomMason.h"
 #include "tests/support/StudyLot.h"
 
 namespace parksim {

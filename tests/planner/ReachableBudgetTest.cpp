@@ -1,13 +1,13 @@
 // The default budget from the free area a search can reach: an empty lot's is its area, a room
 // walled off from the rest is the room's, and only the A* planners follow it.
 
-#include "parksim/planner/ReachableBudget.h"
+#include "parksim/planner/search/ReachableBudget.h"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "parksim/planner/PlannerRegistry.h"
+#include "parksim/planner/base/PlannerRegistry.h"
 
 namespace parksim {
 namespace {
@@ -35,13 +35,11 @@ TEST(ReachableBudget, AnEmptyLotIsAllReachableAndTimeAStarGetsEightExpansionsPer
   const Scenario s = emptyLot(4.0);
   EXPECT_NEAR(reachableFreeArea(s), 16.0, 1e-9);
   const double cell = 0.25 * footprintRadius(s.robot);
-  EXPECT_EQ(budget("time-a-star", s),
-            static_cast<int>(std::ceil(8.0 * 16.0 / (cell * cell))));
+  EXPECT_EQ(budget("time-a-star", s), static_cast<int>(std::ceil(8.0 * 16.0 / (cell * cell))));
   EXPECT_EQ(budget("hybrid-a-star", s),
             static_cast<int>(std::ceil(20000.0 * 16.0 / kStudyLotAreaM2)));
   // The tree planners sample the whole lot: the lot's budget.
-  EXPECT_EQ(budget("rrt-connect", s),
-            lotScaledBudget(2000, s));
+  EXPECT_EQ(budget("rrt-connect", s), lotScaledBudget(2000, s));
 }
 
 TEST(ReachableBudget, AWalledRoomIsAllTheSearchCanReach) {
@@ -53,13 +51,11 @@ TEST(ReachableBudget, AWalledRoomIsAllTheSearchCanReach) {
   EXPECT_GT(room, 0.5);
   EXPECT_LT(room, 1.3);
   // Far below the open lot's: the lot's own budget is the floor.
-  EXPECT_EQ(budget("time-a-star", s),
-            200000);
+  EXPECT_EQ(budget("time-a-star", s), 200000);
   // Open a door: the rest of the lot joins.
   s.obstacles[3] = wall("e", 1.05, 0.0, 1.1, 0.4);
   EXPECT_GT(reachableFreeArea(s), 14.0);
-  EXPECT_GT(budget("time-a-star", s),
-            200000);
+  EXPECT_GT(budget("time-a-star", s), 200000);
 }
 
 TEST(ReachableBudget, IsCappedAtTheLargestIterationBudget) {

@@ -1,11 +1,11 @@
-#include "parksim/planner/ReedsSheppSteering.h"
+#include "parksim/planner/steering/ReedsSheppSteering.h"
 
 #include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "tests/support/PlanChecks.h"
 
 namespace parksim {

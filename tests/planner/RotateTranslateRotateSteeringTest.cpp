@@ -1,11 +1,11 @@
-#include "parksim/planner/RotateTranslateRotateSteering.h"
+#include "parksim/planner/steering/RotateTranslateRotateSteering.h"
 
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "tests/support/PlanChecks.h"
 
 namespace parksim {

@@ -1,11 +1,11 @@
-#include "parksim/planner/SearchCells.h"
+#include "parksim/planner/search/SearchCells.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <set>
 
-#include "parksim/core/Angle.h"
+#include "parksim/core/geometry/Angle.h"
 
 namespace parksim {
 namespace {

@@ -1,4 +1,4 @@
-#include "parksim/planner/SearchWindow.h"
+#include "parksim/planner/search/SearchWindow.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
-#include "parksim/planner/ShortcutSmoother.h"
+#include "parksim/planner/tree/ShortcutSmoother.h"
 
 #include <gtest/gtest.h>
 
-#include "parksim/planner/MoveToPoseSteering.h"
-#include "parksim/planner/RotateTranslateRotateSteering.h"
+#include "parksim/planner/steering/MoveToPoseSteering.h"
+#include "parksim/planner/steering/RotateTranslateRotateSteering.h"
 #include "tests/support/PlanChecks.h"
 
 namespace parksim {

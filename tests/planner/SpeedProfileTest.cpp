@@ -1,4 +1,4 @@
-#include "parksim/planner/SpeedProfile.h"
+#include "parksim/planner/motion/SpeedProfile.h"
 
 #include <cmath>
 #include <numeric>
@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 namespace {

@@ -1,10 +1,10 @@
-#include "parksim/planner/TimeAStar.h"
+#include "parksim/planner/search/TimeAStar.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/planner/base/PlanScenario.h"
 #include "tests/support/PlanChecks.h"
 #include "tests/support/StudyLot.h"
 

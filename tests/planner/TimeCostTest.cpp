@@ -1,11 +1,11 @@
-#include "parksim/planner/TimeCost.h"
+#include "parksim/planner/motion/TimeCost.h"
 
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/planner/BalkcomMason.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/planner/steering/BalkcomMason.h"
 
 namespace parksim {
 namespace {

@@ -1,12 +1,12 @@
-#include "parksim/planner/TimeOptimalTiming.h"
+#include "parksim/planner/motion/TimeOptimalTiming.h"
 
 #include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "parksim/planner/ReedsSheppSteering.h"
-#include "parksim/planner/RotateTranslateRotateSteering.h"
+#include "parksim/planner/steering/ReedsSheppSteering.h"
+#include "parksim/planner/steering/RotateTranslateRotateSteering.h"
 #include "tests/support/PlanChecks.h"
 
 namespace parksim {

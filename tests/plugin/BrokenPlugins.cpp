@@ -3,7 +3,7 @@
 
 #include <cstdint>
 
-#include "parksim/plugin/PluginApi.h"
+#include "parksim/usercode/PluginApi.h"
 
 namespace {
 

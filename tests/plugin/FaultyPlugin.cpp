@@ -8,8 +8,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "parksim/plugin/PluginApi.h"
-#include "parksim/sim/TrackingController.h"
+#include "parksim/sim/control/TrackingController.h"
+#include "parksim/usercode/PluginApi.h"
 
 namespace {
 

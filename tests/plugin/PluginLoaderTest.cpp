@@ -1,12 +1,12 @@
-#include "parksim/plugin/PluginLoader.h"
+#include "parksim/usercode/PluginLoader.h"
 
 #include <string>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/plugin/PluginApi.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/usercode/PluginApi.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

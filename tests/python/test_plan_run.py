@@ -110,7 +110,9 @@ def test_an_unsolved_plan_is_a_status_and_run_does_not_drive(head_in):
     assert len(p.trajectory) == 0
     r = parksim.run(head_in, seed=1, max_iterations=1)
     assert not r.solved and r.plan.status == "iteration_limit"
-    assert len(r.executed) == 0 and r.metrics == {}
+    # Nothing driven: metrics.json holds the verdict and the plan's keys, no measurement.
+    assert len(r.executed) == 0 and r.metrics["status"] == "plan_failed"
+    assert r.metrics["plan_status"] == "iteration_limit" and "max_pos_err_m" not in r.metrics
 
 
 def test_episodes_run_in_parallel_threads_with_the_same_results(head_in, head_in_plan):

@@ -40,7 +40,7 @@ class Replay:
 
 class Tracking:
     """parksim's tracking law in Python, with the gains its built-in derives for the head-in plan
-    at 240 Hz (sim/TrackingController.h)."""
+    at 240 Hz (sim/control/TrackingController.h)."""
 
     def __init__(self, robot, top_speed):
         self.robot = robot
@@ -69,15 +69,26 @@ class Tracking:
         return left / scale, right / scale
 
 
-def test_a_python_planner_plans_and_its_plan_is_checked(head_in):
+def test_a_python_planner_plans_and_its_plan_is_checked(head_in, tmp_path):
     planner = Straight(check=False)
+    # Straight through the lot: planning alone, the one check finds what it hits, as run does.
     p = parksim.plan(head_in, planner=planner)
-    assert p.solved and p.stats["planner"] == "straight"
+    assert not p.solved and p.status == "plan_invalid" and p.stats["planner"] == "straight"
+    assert "the footprint overlaps" in p.message and p.verdict["status"] == "plan_invalid"
+    assert p.stats["planner_origin"] == "Python object test_user_code.Straight"
+    assert len(p.trajectory) > 0  # kept to be looked at
     assert planner.problems[0][0] == head_in.start
-    # Straight through the lot: the check before driving finds what it hits.
-    r = parksim.run(head_in, planner=Straight(check=False))
-    assert r.status == "plan_invalid" and "the footprint overlaps" in r.reason
+    with pytest.raises(parksim.Error, match="may not be driven \\(plan_invalid\\)"):
+        parksim.run(head_in, plan=p)
+    r = parksim.run(head_in, planner=Straight(check=False), out=tmp_path)
+    assert r.status == "plan_invalid" and r.reason == p.message
+    assert r.plan.status == "plan_invalid"
     assert r.executed is None or len(r.executed) == 0
+    # Its metrics.json holds the verdict and whose code it was, and no measurement.
+    assert r.metrics["status"] == "plan_invalid" and r.metrics["failure"] == r.reason
+    assert r.metrics["plan_planner_origin"] == "Python object test_user_code.Straight"
+    assert "max_pos_err_m" not in r.metrics
+    assert (tmp_path / "metrics.json").exists() and not (tmp_path / "trajectory.csv").exists()
     # Checking its own plans, it reports that it found none.
     r = parksim.run(head_in, planner=Straight(check=True))
     assert r.status == "plan_failed" and "found no plan" in r.reason
@@ -132,6 +143,8 @@ def test_a_python_controllers_failures_are_controller_errors(head_in, answer, re
     r = parksim.run(head_in, controller=faulty)
     assert r.status == "controller_error"
     assert r.reason.startswith("controller faulty ") and reason in r.reason
+    # The plan was fine: its own verdict is met.
+    assert r.plan.solved and r.plan.status == "solved" and r.plan.verdict["met"]
     assert r.executed["t"][-1] == pytest.approx(0.5, abs=0.005)
 
 
@@ -247,3 +260,24 @@ def test_a_sweep_runs_python_components_in_workers_and_resumes(head_in, tmp_path
     assert cli["episode_id"] == ours["episode_id"]
     for key in ("max_pos_err_m", "final_x_m", "final_y_m", "final_theta_rad", "steps"):
         assert cli[key] == ours[key], key
+
+
+def test_a_car_command_holds_a_speed_or_an_acceleration_and_a_steering_angle():
+    c = parksim.CarCommand(speed=1.5, steer=-0.25)
+    assert (c.speed, c.accel, c.steer) == (1.5, None, -0.25)
+    a = parksim.CarCommand(accel=-0.5, steer=0.1)
+    assert (a.speed, a.accel, a.steer) == (None, -0.5, 0.1)
+    for bad in ({}, {"speed": 1.0, "accel": 1.0}):
+        with pytest.raises(ValueError):
+            parksim.CarCommand(**bad)
+
+
+def test_a_differential_robots_observation_has_no_steering(head_in):
+    seen = []
+
+    def feedforward(obs):
+        seen.append((obs.steer, obs.reference_steer, obs.commanded_speed))
+        return obs.feedforward
+
+    assert parksim.run(head_in, controller=feedforward).status == "met"
+    assert seen and all(s == (0.0, 0.0, 0.0) for s in seen)

@@ -1,12 +1,12 @@
-#include "parksim/renders/CSpace.h"
+#include "parksim/renders/plots/CSpace.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/model/Geometry.h"
+#include "parksim/core/model/Scenario.h"
 #include "tests/support/ExactShapes.h"
 
 namespace parksim {

@@ -1,4 +1,4 @@
-#include "parksim/renders/Camera.h"
+#include "parksim/renders/scene/Camera.h"
 
 #include <gtest/gtest.h>
 

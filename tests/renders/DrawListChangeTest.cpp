@@ -1,4 +1,4 @@
-#include "parksim/renders/DrawListChange.h"
+#include "parksim/renders/scene/DrawListChange.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "parksim/renders/DrawList.h"
+#include "parksim/renders/scene/DrawList.h"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
-#include "parksim/renders/FigureSelection.h"
+#include "parksim/renders/plots/FigureSelection.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "RenderTestUtil.h"
-#include "parksim/core/Error.h"
-#include "parksim/renders/Figures.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/renders/plots/Figures.h"
 
 namespace parksim {
 namespace {

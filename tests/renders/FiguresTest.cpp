@@ -1,16 +1,16 @@
-#include "parksim/renders/Figures.h"
+#include "parksim/renders/plots/Figures.h"
 
 #include <gtest/gtest.h>
 
 #include <set>
 
 #include "RenderTestUtil.h"
-#include "parksim/renders/CSpace.h"
-#include "parksim/renders/PngEncoder.h"
-#include "parksim/renders/Renderer.h"
-#include "parksim/renders/SceneBuilder.h"
-#include "parksim/renders/SceneClip.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/renders/gl/Renderer.h"
+#include "parksim/renders/image/PngEncoder.h"
+#include "parksim/renders/plots/CSpace.h"
+#include "parksim/renders/scene/SceneBuilder.h"
+#include "parksim/renders/scene/SceneClip.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 
 namespace parksim {
 namespace {

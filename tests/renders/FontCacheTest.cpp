@@ -1,9 +1,9 @@
-#include "parksim/renders/FontCache.h"
+#include "parksim/renders/text/FontCache.h"
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/renders/FontLookup.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/renders/text/FontLookup.h"
 
 namespace parksim {
 namespace {

@@ -1,12 +1,12 @@
-#include "parksim/renders/FontLookup.h"
+#include "parksim/renders/text/FontLookup.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>
 
-#include "parksim/core/Error.h"
-#include "parksim/renders/Font.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/renders/text/Font.h"
 
 namespace parksim {
 namespace {

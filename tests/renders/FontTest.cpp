@@ -1,9 +1,9 @@
-#include "parksim/renders/Font.h"
+#include "parksim/renders/text/Font.h"
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/renders/FontLookup.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/renders/text/FontLookup.h"
 
 namespace parksim {
 namespace {

@@ -1,4 +1,4 @@
-#include "parksim/renders/FrameRecorder.h"
+#include "parksim/renders/film/FrameRecorder.h"
 
 #include <gtest/gtest.h>
 
@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "RenderTestUtil.h"
-#include "parksim/core/Error.h"
-#include "parksim/renders/PngEncoder.h"
-#include "parksim/renders/Process.h"
-#include "parksim/renders/SceneBuilder.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/system/Process.h"
+#include "parksim/renders/image/PngEncoder.h"
+#include "parksim/renders/scene/SceneBuilder.h"
 
 namespace parksim {
 namespace {

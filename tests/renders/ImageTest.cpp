@@ -1,11 +1,11 @@
-#include "parksim/renders/Image.h"
+#include "parksim/renders/image/Image.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <vector>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 namespace {

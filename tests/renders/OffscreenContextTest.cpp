@@ -1,4 +1,4 @@
-#include "parksim/renders/OffscreenContext.h"
+#include "parksim/renders/gl/OffscreenContext.h"
 
 #include <gtest/gtest.h>
 
@@ -9,14 +9,14 @@
 #include <thread>
 
 #include "RenderTestUtil.h"
-#include "parksim/core/Error.h"
-#include "parksim/renders/Figures.h"
-#include "parksim/renders/FontLookup.h"
-#include "parksim/renders/FrameRecorder.h"
-#include "parksim/renders/GlFunctions.h"
-#include "parksim/renders/Renderer.h"
-#include "parksim/renders/SceneBuilder.h"
-#include "parksim/renders/SceneTessellator.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/renders/gl/GlFunctions.h"
+#include "parksim/renders/gl/Renderer.h"
+#include "parksim/renders/plots/Figures.h"
+#include "parksim/renders/scene/SceneBuilder.h"
+#include "parksim/renders/scene/SceneTessellator.h"
+#include "parksim/renders/text/FontLookup.h"
 #include "tests/support/LoadedLibraries.h"
 
 namespace parksim {

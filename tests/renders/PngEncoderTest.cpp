@@ -1,4 +1,4 @@
-#include "parksim/renders/PngEncoder.h"
+#include "parksim/renders/image/PngEncoder.h"
 
 #include <gtest/gtest.h>
 #include <zlib.h>
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "RenderTestUtil.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 namespace {

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/renders/SceneBuilder.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/model/Geometry.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/renders/scene/SceneBuilder.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim::rendertest {
@@ -72,8 +72,8 @@ inline std::string outputDir(const std::string& name) {
 
 #include <vector>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Trajectory.h"
 
 namespace parksim::rendertest {
 

@@ -1,4 +1,4 @@
-#include "parksim/renders/Renderer.h"
+#include "parksim/renders/gl/Renderer.h"
 
 #include <gtest/gtest.h>
 
@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "RenderTestUtil.h"
-#include "parksim/core/Error.h"
-#include "parksim/renders/FrameRecorder.h"
-#include "parksim/renders/PngEncoder.h"
-#include "parksim/renders/SceneBuilder.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/renders/film/FrameRecorder.h"
+#include "parksim/renders/image/PngEncoder.h"
+#include "parksim/renders/scene/SceneBuilder.h"
 
 namespace parksim {
 namespace {

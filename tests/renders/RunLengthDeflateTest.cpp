@@ -1,4 +1,4 @@
-#include "parksim/renders/RunLengthDeflate.h"
+#include "parksim/renders/image/RunLengthDeflate.h"
 
 #include <gtest/gtest.h>
 #include <zlib.h>

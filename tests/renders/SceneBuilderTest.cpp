@@ -1,7 +1,8 @@
-#include "parksim/renders/SceneBuilder.h"
+#include "parksim/renders/scene/SceneBuilder.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "RenderTestUtil.h"
@@ -79,6 +80,35 @@ TEST(SceneBuilderTest, ViewStateAddsRobotPathsAndOverlay) {
   EXPECT_NE(scene.texts[0].text.find("t =   2.50 s"), std::string::npos) << scene.texts[0].text;
   EXPECT_NE(scene.texts[1].text.find("4.00 mm"), std::string::npos) << scene.texts[1].text;
   EXPECT_FALSE(scene.texts[0].world);
+}
+
+// A car (issue 38): four wheels, the front pair axle_distance ahead and turned by their
+// Ackermann angles of the steering: both axles' normals meet at the turn's centre.
+TEST(SceneBuilderTest, ACarsFrontWheelsAreDrawnTurned) {
+  Scenario s = testLot();
+  s.robot = midSizeCar();
+  s.lot = {0.0, 0.0, 50.0, 50.0};
+  const SceneStyle style;
+  ViewState view;
+  view.robot = Pose2{20.0, 20.0, 0.3};
+  view.robot_steer_rad = 0.5;
+  const Scene lot = buildLotScene(s, style);
+  const Scene scene = buildScene(s, view, style);
+  ASSERT_EQ(scene.boxes.size(), lot.boxes.size() + 5);  // body and four wheels
+  const double turn_radius = s.robot.axle_distance_m / std::tan(0.5);
+  const Eigen::Vector2d centre(20.0 - turn_radius * std::sin(0.3),
+                               20.0 + turn_radius * std::cos(0.3));
+  for (std::size_t i = lot.boxes.size() + 1; i < scene.boxes.size(); ++i) {
+    const OrientedBox& wheel = scene.boxes[i].footprint;
+    EXPECT_EQ(scene.boxes[i].color, style.wheel);
+    // Each wheel's axle (its lateral axis) points at the centre.
+    const Eigen::Vector2d to_centre = (centre - wheel.center).normalized();
+    const Eigen::Vector2d heading(std::cos(wheel.yaw), std::sin(wheel.yaw));
+    EXPECT_NEAR(heading.dot(to_centre), 0.0, 1e-12) << i;
+  }
+  // The front wheels turned, the rear ones not.
+  EXPECT_DOUBLE_EQ(scene.boxes[lot.boxes.size() + 1].footprint.yaw, 0.3);
+  EXPECT_GT(scene.boxes[lot.boxes.size() + 3].footprint.yaw, 0.3 + 0.4);
 }
 
 // A film keeps the back layer while the robot drives: it must change with the obstacles and

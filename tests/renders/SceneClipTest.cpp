@@ -1,10 +1,10 @@
-#include "parksim/renders/SceneClip.h"
+#include "parksim/renders/scene/SceneClip.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "parksim/core/Angle.h"
+#include "parksim/core/geometry/Angle.h"
 
 namespace parksim {
 namespace {

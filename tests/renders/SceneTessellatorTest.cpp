@@ -1,11 +1,11 @@
-#include "parksim/renders/SceneTessellator.h"
+#include "parksim/renders/scene/SceneTessellator.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
 
-#include "parksim/renders/FontLookup.h"
+#include "parksim/renders/text/FontLookup.h"
 
 namespace parksim {
 namespace {

@@ -1,4 +1,4 @@
-#include "parksim/renders/Scene.h"
+#include "parksim/renders/scene/Scene.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
-#include "parksim/renders/TrackingPlot.h"
+#include "parksim/renders/plots/TrackingPlot.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 
 #include "RenderTestUtil.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 namespace {

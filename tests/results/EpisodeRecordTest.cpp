@@ -2,7 +2,7 @@
 // table's columns and the docs' column table from it. The agreement of run, a sweep and
 // Python on one real episode is tests/pipeline/test_episode_record.py.
 
-#include "parksim/results/EpisodeRecord.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 
 #include <cstdlib>
 #include <fstream>
@@ -12,8 +12,8 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/results/MetricsFile.h"
-#include "parksim/results/ResultsFile.h"
+#include "parksim/results/episode/MetricsFile.h"
+#include "parksim/results/tables/ResultsFile.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
@@ -119,7 +119,7 @@ TEST(EpisodeRecord, TheDocsColumnTableIsTheRecords) {
   std::ifstream in(path);
   std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string begin =
-      "<!-- columns: recordColumnsMarkdown() (parksim/results/EpisodeRecord.cpp); "
+      "<!-- columns: recordColumnsMarkdown() (parksim/results/tables/EpisodeRecord.cpp); "
       "tests/results/EpisodeRecordTest.cpp checks it -->\n";
   const std::string end = "<!-- end of columns -->";
   const std::size_t b = doc.find(begin);

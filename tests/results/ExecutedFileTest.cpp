@@ -1,7 +1,7 @@
 // The executed record: executed.csv's header and exact numbers; executed.npz with the same
 // columns, exact, at most a third of the CSV's bytes for a 240 Hz episode (issue 20).
 
-#include "parksim/results/ExecutedFile.h"
+#include "parksim/results/episode/ExecutedFile.h"
 
 #include <bit>
 #include <filesystem>
@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodePipeline.h"
 #include "tests/support/RunParksim.h"
 #include "tests/support/TestPaths.h"

@@ -1,7 +1,7 @@
 // The JUnit writer: counts, structure, durations, escaping. The schema check and a real
 // consumer (junitparser) are in tests/sweep/test_junit_reports.py.
 
-#include "parksim/results/JUnitReport.h"
+#include "parksim/results/reports/JUnitReport.h"
 
 #include <cmath>
 #include <cstdint>

@@ -15,17 +15,17 @@
 
 #include "bench/planning/BenchCsv.h"
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Csv.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/io/Csv.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/model/Trajectory.h"
 #include "parksim/pipeline/Verdict.h"
-#include "parksim/renders/TrackingPlot.h"
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/MetricsFile.h"
-#include "parksim/results/PlanFile.h"
-#include "parksim/results/TrajectoryFile.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/renders/plots/TrackingPlot.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/MetricsFile.h"
+#include "parksim/results/episode/PlanFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
@@ -56,7 +56,8 @@ Written writeEverything(const fs::path& dir) {
   w.setup.search.seed = 1;
   const BulletCollisionWorld collision(w.scenario);
   w.plan = planScenario(w.scenario, collision, w.setup);
-  writePlanFiles(dir.string(), w.scenario, w.setup, w.plan);
+  writePlanFiles(dir.string(), w.scenario, &w.plan.trajectory,
+                 planSummary(w.scenario, w.setup, w.plan));
   w.episode = runEpisode(w.scenario, w.plan.trajectory);
   writeExecutedCsv((dir / "executed.csv").string(), w.episode.rows);
   w.metrics = metricsToJson(w.episode.metrics);

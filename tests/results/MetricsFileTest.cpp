@@ -1,6 +1,6 @@
 // metrics.json's flat keys, read back.
 
-#include "parksim/results/MetricsFile.h"
+#include "parksim/results/episode/MetricsFile.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // damaged archives refused with one line. NumPy itself reads the files in
 // tests/results/test_records_numpy.py.
 
-#include "parksim/results/NpzFile.h"
+#include "parksim/results/episode/NpzFile.h"
 
 #include <bit>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 
 namespace parksim {
 namespace {

@@ -1,4 +1,4 @@
-#include "parksim/results/TrajectoryFile.h"
+#include "parksim/results/episode/TrajectoryFile.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -10,8 +10,8 @@
 
 #include "tests/support/SampleTrajectory.h"
 
-#include "parksim/core/Error.h"
-#include "parksim/core/InputFile.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/InputFile.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

@@ -1,7 +1,7 @@
 // Text from user files escaped for XML: markup, forbidden control characters, bytes that are
 // not UTF-8.
 
-#include "parksim/results/XmlText.h"
+#include "parksim/results/reports/XmlText.h"
 
 #include <gtest/gtest.h>
 

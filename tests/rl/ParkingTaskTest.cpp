@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/realism/RealismDef.h"
 #include "tests/sim/SimTestSupport.h"
 #include "tests/support/StudyLot.h"

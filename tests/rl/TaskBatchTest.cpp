@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "tests/support/StudyLot.h"
 
 namespace parksim {

@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/rl/ParkingTask.h"
 #include "tests/sim/SimTestSupport.h"
 

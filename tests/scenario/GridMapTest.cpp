@@ -1,7 +1,7 @@
 // A grid map's cells as one compound obstacle: occupied and unknown cells, the inflation, the
 // merged rectangles.
 
-#include "parksim/scenario/GridMap.h"
+#include "parksim/scenario/maps/GridMap.h"
 
 #include <random>
 

@@ -1,13 +1,13 @@
 // A map as a world file to edit: the map: reference or its obstacles written out, a lot from
 // its extent, free placeholders for start and goal; a world that loads, or nothing.
 
-#include "parksim/scenario/MapImport.h"
+#include "parksim/scenario/world/MapImport.h"
 
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "tests/support/MapFiles.h"
 
 namespace parksim {

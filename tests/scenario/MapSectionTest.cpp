@@ -1,12 +1,12 @@
 // A world's `map:` section: maps beside the world, next to hand-written obstacles, the lot from
 // the maps' extent, names, the content hash, overrides of map fields and located refusals.
 
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/World.h"
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 #include "tests/support/MapFiles.h"
 
 namespace parksim {

@@ -1,10 +1,10 @@
 // Moving AI benchmark grids: header, terrain letters, rows from the top, and what is refused.
 
-#include "parksim/scenario/MovingAiMap.h"
+#include "parksim/scenario/maps/MovingAiMap.h"
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "tests/support/MapFiles.h"
 
 namespace parksim {

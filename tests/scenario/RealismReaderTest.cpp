@@ -1,14 +1,14 @@
-#include "parksim/scenario/RealismReader.h"
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/RealismReader.h"
+#include "parksim/scenario/world/World.h"
 
 #include <string>
 #include <string_view>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 
 namespace parksim {
 namespace {
@@ -36,6 +36,35 @@ TEST(RealismReader, AbsentSectionsLeaveTheDefaults) {
   EXPECT_FALSE(w.has_realism);
   EXPECT_FALSE(w.has_tolerance);
   EXPECT_FALSE(w.realism.active());
+}
+
+TEST(RealismReader, DefaultToleranceScalesWithTheRobotsSize) {
+  // The study's robot keeps today's numbers exactly.
+  const TrackingTolerance study = parseWorld(kWorld, "t.yaml").sections.tolerance;
+  EXPECT_EQ(study.max_pos_err_m, 0.005);
+  EXPECT_EQ(study.goal_pos_err_m, 0.003);
+  EXPECT_EQ(study.goal_heading_err_deg, 1.5);
+  EXPECT_EQ(study.max_contacts, 0);
+  EXPECT_EQ(study.max_parked_displacement_m, 1e-4);
+  // A 4.25 m robot is 50 study robots (85 mm) long: 250 mm, 150 mm and 5 mm, the same degrees.
+  const std::string big = std::string(kWorld) +
+                          "robot: {length: 4.25, width: 2.43, front_overhang: 2.125, "
+                          "wheel_base: 2.2, wheel_radius: 0.3, max_wheel_accel_radps2: 1}\n";
+  const TrackingTolerance t = parseWorld(big, "t.yaml").sections.tolerance;
+  EXPECT_NEAR(t.max_pos_err_m, 0.25, 1e-12);
+  EXPECT_NEAR(t.goal_pos_err_m, 0.15, 1e-12);
+  EXPECT_NEAR(t.max_parked_displacement_m, 0.005, 1e-12);
+  EXPECT_EQ(t.goal_heading_err_deg, 1.5);
+  EXPECT_EQ(t.max_contacts, 0);
+  // A section's bound replaces one default; the others stay scaled.
+  const TrackingTolerance mixed =
+      parseWorld(big + "tolerance: {max_pos_err_m: 0.02}\n", "t.yaml").sections.tolerance;
+  EXPECT_EQ(mixed.max_pos_err_m, 0.02);
+  EXPECT_NEAR(mixed.goal_pos_err_m, 0.15, 1e-12);
+  // The mid-size car: its 4.689 m length over 85 mm.
+  const TrackingTolerance car =
+      parseWorld(std::string(kWorld) + "robot: {drive: car}\n", "t.yaml").sections.tolerance;
+  EXPECT_NEAR(car.max_pos_err_m, 0.005 * 4.689 / 0.085, 1e-12);
 }
 
 TEST(RealismReader, APresetWithOverridesAndATolerance) {

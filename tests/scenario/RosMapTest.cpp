@@ -1,14 +1,14 @@
 // ROS map server maps as nav2's map_io reads them: the YAML's fields, PGM and PNG images, the
 // three modes, negation, thresholds, the origin with its yaw, and the maps it refuses.
 
-#include "parksim/scenario/RosMap.h"
+#include "parksim/scenario/maps/RosMap.h"
 
 #include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "tests/support/MapFiles.h"
 
 namespace parksim {

@@ -1,14 +1,14 @@
 // Overrides replace fields of the parsed document and are then validated like the file.
 
-#include "parksim/scenario/ScenarioOverrides.h"
+#include "parksim/scenario/world/ScenarioOverrides.h"
 
 #include <string>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

@@ -1,4 +1,4 @@
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 
 #include <filesystem>
 #include <fstream>
@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
-#include "parksim/core/Geometry.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/Geometry.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
@@ -604,9 +604,9 @@ const BadCase kBadCases[] = {
     {"UnknownLotField", "format: parksim-world/1\nname: t\nlot: {x_min: 0, y_min: 0, z_max: 1}\n",
      "t.yaml:3: lot.z_max: unknown field; expected one of: x_min, y_min, x_max, y_max"},
     {"UnknownRobotField", valid("robot:\n  length: 0.08\n  lenght: 0.09\n"),
-     "t.yaml:8: robot.lenght: unknown field; expected one of: length, width, front_overhang, "
-     "wheel_base, wheel_radius, max_wheel_speed_radps, max_wheel_accel_radps2, height, "
-     "ground_clearance"},
+     "t.yaml:8: robot.lenght: unknown field; expected one of: drive, length, width, "
+     "front_overhang, wheel_base, wheel_radius, max_wheel_speed_radps, max_wheel_accel_radps2, "
+     "height, ground_clearance"},
     {"UnknownPhysicsFieldWithoutUnitSuffix", valid("physics: {time_step: 0.01}\n"),
      "t.yaml:6: physics.time_step: unknown field; expected one of: time_step_s, "
      "solver_iterations, gravity_mps2, chassis_mass_kg, wheel_mass_kg, wheel_friction, "

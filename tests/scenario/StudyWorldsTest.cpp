@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/model/Geometry.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

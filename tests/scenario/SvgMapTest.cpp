@@ -1,13 +1,14 @@
 // SVG drawings as obstacles: shapes, transforms, holes by fill rule, the page's placement and
 // scale, ids and layers, and what is refused.
 
-#include "parksim/scenario/SvgMap.h"
+#include "parksim/scenario/maps/SvgMap.h"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/Geometry.h"
 #include "tests/support/MapFiles.h"
 
 namespace parksim {
@@ -144,6 +145,86 @@ TEST(SvgMap, IdsAndLayersSelectTheObstaclesAndHiddenOrUndrawnElementsAreSkipped)
   EXPECT_EQ(r.ids_found, (std::vector<bool>{true}));
 }
 
+// The rectangle a wall drawn as a line covers, predicted from the drawing's numbers: the line
+// from (x0, y0) to (x1, y1) on the page (mm, y down, a 50 mm high page), `w` mm wide, its ends
+// out by w / 2.
+void expectWall(const Obstacle& o, double x0, double y0, double x1, double y1, double w) {
+  ASSERT_EQ(o.shape, ObstacleShape::kBox) << o.name;
+  const Eigen::Vector2d a(x0 / 1000.0, (50.0 - y0) / 1000.0);
+  const Eigen::Vector2d b(x1 / 1000.0, (50.0 - y1) / 1000.0);
+  EXPECT_TRUE(o.box.center.isApprox(0.5 * (a + b), 1e-12)) << o.name;
+  EXPECT_NEAR(o.box.half_extents.x(), 0.5 * (b - a).norm() + 0.5 * w / 1000.0, 1e-12) << o.name;
+  EXPECT_NEAR(o.box.half_extents.y(), 0.5 * w / 1000.0, 1e-12) << o.name;
+  // Its length along the line (either way round).
+  const double along = std::atan2(b.y() - a.y(), b.x() - a.x());
+  EXPECT_NEAR(std::remainder(o.box.yaw - along, 3.14159265358979323846), 0.0, 1e-12) << o.name;
+}
+
+TEST(SvgMap, WallsDrawnAsLinesAreAsThickAsTheirStroke) {
+  const fs::path dir = testing::freshDir("svg_line_walls");
+  // A floor plan's walls: two-point paths and polylines, a closed path on one line and a line,
+  // stroke-width from the element, its style, its group or (none given) SVG's initial 1.
+  const SvgMapResult r =
+      read(dir, svgDoc("<g style=\"fill:none;stroke:#000;stroke-width:6\">"
+                       "<path id=\"p\" d=\"M 10 10 L 40 10\" stroke-width=\"4\"/>"
+                       "<polyline id=\"pl\" points=\"60,5 60,45\" style=\"stroke-width:2\"/>"
+                       "<path id=\"closed\" d=\"M 10 30 L 50 30 L 20 30 Z\"/>"
+                       "</g>"
+                       "<line id=\"ln\" x1=\"70\" y1=\"10\" x2=\"90\" y2=\"30\"/>"
+                       "<path id=\"h\" d=\"m 70 40 h 20\" style=\"stroke-width:inherit\"/>"
+                       "<path id=\"dot\" d=\"M 5 5\"/>"));
+  // Nothing with length is dropped; the lone point draws nothing.
+  ASSERT_EQ(r.obstacles.size(), 5u);
+  expectWall(named(r, "d/p"), 10, 10, 40, 10, 4);
+  expectWall(named(r, "d/pl"), 60, 5, 60, 45, 2);
+  expectWall(named(r, "d/closed"), 10, 30, 50, 30, 6);
+  expectWall(named(r, "d/ln"), 70, 10, 90, 30, 1);
+  expectWall(named(r, "d/h"), 70, 40, 90, 40, 1);
+  EXPECT_EQ(r.parts, 5u);
+}
+
+TEST(SvgMap, LineWallsJoinOutlinesAndFollowTheirTransform) {
+  const fs::path dir = testing::freshDir("svg_line_walls_mixed");
+  const SvgMapResult r = read(
+      dir, svgDoc("<path id=\"mix\" stroke-width=\"2\" d=\"M 0 0 H 10 V 10 H 0 Z M 20 5 L 40 5\"/>"
+                  "<path id=\"corner\" stroke-width=\"2\" d=\"M 50 10 H 80 M 80 10 V 40\"/>"
+                  "<path id=\"skewed\" stroke-width=\"2\" d=\"M 10 40 L 40 40\" "
+                  "transform=\"skewX(30)\"/>"));
+  const auto area = [](const std::vector<Eigen::Vector2d>& ring) {
+    return 0.5 * signedDoubleArea(ring);
+  };
+  // An outline with area and a line: the square, and the 22 x 2 mm wall beside it.
+  const Obstacle& mix = named(r, "d/mix");
+  ASSERT_EQ(mix.shape, ObstacleShape::kCompound);
+  ASSERT_EQ(mix.compound->parts.size(), 2u);
+  EXPECT_NEAR(area(mix.compound->parts[0]), 100e-6, 1e-15);
+  EXPECT_NEAR(area(mix.compound->parts[1]), 22 * 2e-6, 1e-15);
+  // Two walls meeting at a corner: each 32 x 2 mm, overlapping there, the corner closed.
+  const Obstacle& corner = named(r, "d/corner");
+  ASSERT_EQ(corner.shape, ObstacleShape::kCompound);
+  ASSERT_EQ(corner.compound->parts.size(), 2u);
+  for (const auto& part : corner.compound->parts) {
+    EXPECT_TRUE(isStrictlyConvexCcw(part));
+    EXPECT_NEAR(area(part), 32 * 2e-6, 1e-15);
+  }
+  EXPECT_EQ(corner.compound->rings.size(), 2u);
+  // Under a shear the wall is a parallelogram of the same area (skewX keeps areas).
+  const Obstacle& skewed = named(r, "d/skewed");
+  ASSERT_EQ(skewed.shape, ObstacleShape::kPolygon);
+  ASSERT_EQ(skewed.vertices.size(), 4u);
+  EXPECT_TRUE(isStrictlyConvexCcw(skewed.vertices));
+  EXPECT_NEAR(area(skewed.vertices), 32 * 2e-6, 1e-15);
+}
+
+TEST(SvgMap, AStrokeWidthInUnitsRefusesOnlyAWallThatNeedsIt) {
+  const fs::path dir = testing::freshDir("svg_stroke_units");
+  // Shapes with area do not read their stroke.
+  EXPECT_EQ(read(dir, svgDoc("<g style=\"stroke-width:0.5mm\"><rect width=\"5\" height=\"5\"/>"
+                             "<path d=\"M 10 10 H 20 V 20 Z\"/></g>"))
+                .obstacles.size(),
+            2u);
+}
+
 TEST(SvgMap, RefusesWhatItCannotHonourInOneLocatedLine) {
   const fs::path dir = testing::freshDir("svg_bad");
   const std::string f = (dir / "d.svg").string();
@@ -153,8 +234,17 @@ TEST(SvgMap, RefusesWhatItCannotHonourInOneLocatedLine) {
   EXPECT_EQ(errorOf(dir, svgDoc("<path id=\"bow\" d=\"M 0 0 L 10 10 L 10 0 L 0 20 Z\"/>")),
             f + ":3: path#bow: subpath 0 crosses or touches itself (edges from vertex 0 and "
                 "vertex 2): a polygon must be simple");
-  EXPECT_EQ(errorOf(dir, svgDoc("<line x1=\"0\" y1=\"0\" x2=\"5\" y2=\"5\"/>")),
-            f + ":3: line: a line has no area; draw walls as rectangles or closed paths");
+  EXPECT_EQ(errorOf(dir, svgDoc("<path id=\"w\" d=\"M 0 0 L 5 5\" stroke-width=\"0\"/>")),
+            f + ":3: path#w: stroke-width=\"0\": a wall drawn as a line (it has no area) is as "
+                "thick as its stroke, which must be wider than 0");
+  EXPECT_EQ(errorOf(dir, svgDoc("<g style=\"stroke-width:0.5mm\">\n<polyline points=\"0,0 5,0\"/>"
+                                "</g>")),
+            f + ":4: polyline: stroke-width=\"0.5mm\": a length in user units (a number, or px) "
+                "is expected; other units and percentages are not supported");
+  EXPECT_EQ(errorOf(dir, svgDoc("<line id=\"l\" x1=\"0\" y1=\"0\" x2=\"5\" y2=\"0\" "
+                                "transform=\"matrix(1 0 0 1 0 0) scale(1,0)\"/>")),
+            f + ":3: line#l: a wall drawn as a line has no area in the lot (its transform "
+                "flattens it)");
   EXPECT_EQ(errorOf(dir, svgDoc("<use href=\"#a\"/>")),
             f + ":3: use: use elements are not supported; unlink the clone (Inkscape: Edit > "
                 "Clone > Unlink Clone)");

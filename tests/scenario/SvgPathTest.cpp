@@ -1,7 +1,7 @@
 // SVG path data and transform lists: the grammar as SVG 1.1 defines it, curves within their
 // tolerance, and the refusals.
 
-#include "parksim/scenario/SvgPath.h"
+#include "parksim/scenario/maps/SvgPath.h"
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 // A world file read once, whole: the scenario and its realism: and tolerance: sections, with
 // overrides applied to every part of the file.
 
-#include "parksim/scenario/World.h"
+#include "parksim/scenario/world/World.h"
 
 #include <string>
 #include <string_view>
@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/scenario/ScenarioReader.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/scenario/world/ScenarioReader.h"
 
 namespace parksim {
 namespace {

@@ -1,6 +1,6 @@
 // Contact events from per-step touches: flicker within the merge time is one event.
 
-#include "parksim/sim/ContactEvents.h"
+#include "parksim/sim/episode/ContactEvents.h"
 
 #include <gtest/gtest.h>
 

@@ -1,14 +1,14 @@
 // The simulated robot against ideal unicycle kinematics, and at rest.
 
-#include "parksim/sim/DynamicsWorld.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 
 #include <cmath>
 #include <cstdio>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/DiffDrive.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/model/DiffDrive.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

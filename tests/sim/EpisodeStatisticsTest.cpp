@@ -1,12 +1,12 @@
 // Running maxima and RMS values of an episode's measured instants.
 
-#include "parksim/sim/EpisodeStatistics.h"
+#include "parksim/sim/episode/EpisodeStatistics.h"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
+#include "parksim/core/geometry/Angle.h"
 
 namespace parksim {
 namespace {

@@ -1,18 +1,18 @@
 // Episodes on plans built in code: tracking, contacts, determinism, the observer.
 
-#include "parksim/sim/Episode.h"
+#include "parksim/sim/episode/Episode.h"
 
 #include <cmath>
 #include <cstdio>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/Error.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/Verdict.h"
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/MetricsFile.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/MetricsFile.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

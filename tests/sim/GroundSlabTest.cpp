@@ -1,6 +1,6 @@
 // The ground slab's size: the lot plus a metre, or in a large lot the region the robot drives in.
 
-#include "parksim/sim/GroundSlab.h"
+#include "parksim/sim/world/GroundSlab.h"
 
 #include <gtest/gtest.h>
 

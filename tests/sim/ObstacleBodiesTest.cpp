@@ -1,12 +1,12 @@
 // Obstacles as bodies of the dynamics world: a compound obstacle is solid where its parts are
 // and open where the polygon is, not its convex hull.
 
-#include "parksim/sim/ObstacleBodies.h"
+#include "parksim/sim/world/ObstacleBodies.h"
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/ConvexPartition.h"
-#include "parksim/sim/DynamicsWorld.h"
+#include "parksim/core/geometry/ConvexPartition.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

@@ -1,6 +1,6 @@
 // How far parked robots were pushed: only those given mass are read, and a push is measured.
 
-#include "parksim/sim/ParkedDisplacements.h"
+#include "parksim/sim/episode/ParkedDisplacements.h"
 
 #include <cstdio>
 

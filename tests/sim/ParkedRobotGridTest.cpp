@@ -1,6 +1,6 @@
 // The grid that finds parked robots near the robot in worlds with too many to keep in Bullet.
 
-#include "parksim/sim/ParkedRobotGrid.h"
+#include "parksim/sim/world/ParkedRobotGrid.h"
 
 #include <gtest/gtest.h>
 

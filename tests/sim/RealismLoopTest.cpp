@@ -1,7 +1,7 @@
 // The realism loop's own behaviour: the robot as built per noise seed, the control ticks and
 // the latency of set-points. Its physics (motors, slip, odometry) is RealismPhysicsTest's.
 
-#include "parksim/sim/RealismLoop.h"
+#include "parksim/sim/episode/RealismLoop.h"
 
 #include <algorithm>
 

@@ -9,17 +9,17 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Error.h"
-#include "parksim/sim/DynamicsWorld.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/DiffDrive.h"
 #include "parksim/realism/Encoder.h"
-#include "parksim/sim/Episode.h"
 #include "parksim/realism/Estimator.h"
 #include "parksim/realism/MotorModel.h"
 #include "parksim/realism/PoseSensor.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/realism/WheelSpeedLoop.h"
+#include "parksim/sim/episode/Episode.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

@@ -10,12 +10,12 @@
 #include <gtest/gtest.h>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/results/JsonFile.h"
-#include "parksim/results/MetricsFile.h"
-#include "parksim/scenario/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/results/episode/JsonFile.h"
+#include "parksim/results/episode/MetricsFile.h"
+#include "parksim/scenario/world/ScenarioReader.h"
+#include "parksim/sim/episode/Episode.h"
 #include "tests/sim/SimTestSupport.h"
 #include "tests/support/TestPaths.h"
 

@@ -1,4 +1,4 @@
-#include "parksim/sim/ReferenceTrajectory.h"
+#include "parksim/sim/episode/ReferenceTrajectory.h"
 
 #include <gtest/gtest.h>
 

@@ -3,9 +3,9 @@
 // cars (worlds/car_lot.yaml) follow their default plans closed loop without contact, to within
 // the error the tracking loop predicts, and park.
 //
-// The bound. The tracking controller (sim/TrackingController.h) corrects the along-track error
-// at the rate w = k_x and has the cross-track/heading loop at the same bandwidth at the plan's
-// speed, so the error dynamics are the same for every robot size and speed. What it corrects
+// The bound. The tracking controller (sim/control/TrackingController.h) corrects the along-track
+// error at the rate w = k_x and has the cross-track/heading loop at the same bandwidth at the
+// plan's speed, so the error dynamics are the same for every robot size and speed. What it corrects
 // is the drive's lag: a velocity motor reaches its target one physics step dt after it is set,
 // so while the plan accelerates at a the robot's speed falls short of the plan's by a dt, which
 // the loop holds at an error of e = a dt / w. The plan accelerates at most at the robot's wheel
@@ -15,7 +15,7 @@
 // prediction (the heading loop adds its own share in the turns). The error is thus independent
 // of the robot's size and of its top speed, and in proportion to its acceleration: relative to
 // the size, a car's is 1.4 mm in 4.25 m, against the 0.5 mm x size / 85 mm clearance its plans
-// keep (the motion checks' margin, core/Scenario.h).
+// keep (the motion checks' margin, core/model/Scenario.h).
 
 #include <algorithm>
 #include <cmath>
@@ -25,13 +25,13 @@
 #include <gtest/gtest.h>
 
 #include "parksim/collision/BulletCollisionWorld.h"
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Error.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/scenario/ScenarioReader.h"
-#include "parksim/sim/DynamicsWorld.h"
-#include "parksim/sim/Episode.h"
-#include "parksim/sim/TrackingController.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/scenario/world/ScenarioReader.h"
+#include "parksim/sim/control/TrackingController.h"
+#include "parksim/sim/episode/Episode.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {

@@ -1,9 +1,9 @@
-// Where the simulated robot rests besides its wheels (sim/RobotSupports.h): the study's robot
+// Where the simulated robot rests besides its wheels (sim/world/RobotSupports.h): the study's robot
 // keeps its one rigid rear slider exactly; a robot whose axle lies behind its middle (which, on
 // the rear slider alone, pitches over) gets a rigid front one, and the car-sized robot with its
 // axle under its middle sprung sliders at both ends; both stay upright under full torque.
 
-#include "parksim/sim/RobotSupports.h"
+#include "parksim/sim/world/RobotSupports.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,8 +11,8 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
-#include "parksim/sim/DynamicsWorld.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/sim/world/DynamicsWorld.h"
 #include "tests/sim/SimTestSupport.h"
 
 namespace parksim {

@@ -13,9 +13,9 @@
 
 #include "parksim/collision/BulletCollisionWorld.h"
 #include "parksim/pipeline/Verdict.h"
-#include "parksim/planner/PlanScenario.h"
-#include "parksim/scenario/ScenarioReader.h"
-#include "parksim/sim/Episode.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/scenario/world/ScenarioReader.h"
+#include "parksim/sim/episode/Episode.h"
 #include "tests/sim/SimTestSupport.h"
 #include "tests/support/ExactShapes.h"
 #include "tests/support/PlanChecks.h"

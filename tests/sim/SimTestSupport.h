@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
 
 namespace parksim::testing {
 

@@ -1,7 +1,7 @@
-// Sphere-box contacts (sim/SphereBoxContacts.h): the point, normal and distance Bullet's
+// Sphere-box contacts (sim/contacts/SphereBoxContacts.h): the point, normal and distance Bullet's
 // manifold receives are the exact closest point of the box, the way a wheel rests on the ground.
 
-#include "parksim/sim/SphereBoxContacts.h"
+#include "parksim/sim/contacts/SphereBoxContacts.h"
 
 #include <btBulletCollisionCommon.h>
 #include <gtest/gtest.h>

@@ -1,11 +1,11 @@
-#include "parksim/sim/TrackingController.h"
+#include "parksim/sim/control/TrackingController.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Angle.h"
+#include "parksim/core/geometry/Angle.h"
 
 namespace parksim {
 namespace {

@@ -12,8 +12,8 @@
 
 #include <Eigen/Core>
 
-#include "parksim/core/Geometry.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/Geometry.h"
+#include "parksim/core/model/Scenario.h"
 
 namespace parksim::testing {
 

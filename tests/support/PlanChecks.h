@@ -7,12 +7,12 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Scenario.h"
-#include "parksim/core/Trajectory.h"
-#include "parksim/planner/MotionValidator.h"
-#include "parksim/planner/PathCost.h"
-#include "parksim/planner/PlanScenario.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Scenario.h"
+#include "parksim/core/model/Trajectory.h"
+#include "parksim/planner/base/PlanScenario.h"
+#include "parksim/planner/motion/MotionValidator.h"
+#include "parksim/planner/motion/PathCost.h"
 #include "tests/support/StudyLot.h"
 
 namespace parksim::testing {

@@ -12,8 +12,8 @@
 
 #include <Eigen/Core>
 
-#include "parksim/core/Geometry.h"
-#include "parksim/core/PolygonRegion.h"
+#include "parksim/core/geometry/PolygonRegion.h"
+#include "parksim/core/model/Geometry.h"
 
 namespace parksim::testing {
 

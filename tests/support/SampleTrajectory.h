@@ -2,9 +2,9 @@
 // Test support: a short trajectory of arcs with varied wheel speeds, exactly integrated, that
 // ends at rest (the core's and the result files' tests share it).
 
-#include "parksim/core/Angle.h"
-#include "parksim/core/DiffDrive.h"
-#include "parksim/core/Trajectory.h"
+#include "parksim/core/geometry/Angle.h"
+#include "parksim/core/model/DiffDrive.h"
+#include "parksim/core/model/Trajectory.h"
 
 namespace parksim::testing {
 

@@ -7,9 +7,9 @@
 #include <utility>
 #include <vector>
 
-#include "parksim/core/FootprintChecker.h"
-#include "parksim/core/Geometry.h"
-#include "parksim/core/Scenario.h"
+#include "parksim/core/model/FootprintChecker.h"
+#include "parksim/core/model/Geometry.h"
+#include "parksim/core/model/Scenario.h"
 #include "tests/support/ExactShapes.h"
 
 namespace parksim::testing {

@@ -1,4 +1,4 @@
-"""Results rows written by a test, sealed as parksim seals them (parksim/results/RowSeal.h):
+"""Results rows written by a test, sealed as parksim seals them (parksim/results/tables/RowSeal.h):
 the row's JSON object, then the key row_checksum with 16 hex digits of the 64-bit FNV-1a hash
 of the object's text without that key. Tests that plant a change in a table (errors made
 larger, a better baseline) write their rows through this, so the tables stay ones parksim

@@ -1,17 +1,17 @@
-#include "parksim/sweep/EpisodeParams.h"
+#include "parksim/sweep/spec/EpisodeParams.h"
 
 #include <cmath>
 #include <set>
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pipeline/EpisodeSettings.h"
-#include "parksim/results/EpisodeRecord.h"
-#include "parksim/scenario/World.h"
-#include "parksim/sweep/EpisodeExpansion.h"
-#include "parksim/sweep/EpisodeSetup.h"
-#include "parksim/sweep/SweepSpecReader.h"
+#include "parksim/results/tables/EpisodeRecord.h"
+#include "parksim/scenario/world/World.h"
+#include "parksim/sweep/spec/EpisodeExpansion.h"
+#include "parksim/sweep/spec/EpisodeSetup.h"
+#include "parksim/sweep/spec/SweepSpecReader.h"
 #include "tests/support/TestPaths.h"
 #include "tests/sweep/SweepTestSupport.h"
 

@@ -14,7 +14,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/sweep/Report.h"
+#include "parksim/report/Report.h"
 #include "tests/sweep/SweepTestSupport.h"
 
 namespace parksim {

@@ -10,11 +10,11 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/results/ResultsTable.h"
-#include "parksim/results/RowSeal.h"
-#include "parksim/results/TableVerify.h"
-#include "parksim/sweep/Merge.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/results/tables/ResultsTable.h"
+#include "parksim/results/tables/RowSeal.h"
+#include "parksim/results/tables/TableVerify.h"
+#include "parksim/sweep/shards/Merge.h"
 #include "tests/support/RunParksim.h"
 #include "tests/sweep/SweepTestSupport.h"
 

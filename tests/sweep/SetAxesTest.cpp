@@ -11,13 +11,13 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/core/Fnv1a.h"
-#include "parksim/core/NumberFormat.h"
-#include "parksim/sweep/EpisodeExpansion.h"
-#include "parksim/sweep/EpisodeSetup.h"
-#include "parksim/sweep/SetValues.h"
-#include "parksim/sweep/SweepSpecReader.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/Fnv1a.h"
+#include "parksim/core/io/NumberFormat.h"
+#include "parksim/sweep/spec/EpisodeExpansion.h"
+#include "parksim/sweep/spec/EpisodeSetup.h"
+#include "parksim/sweep/spec/SetValues.h"
+#include "parksim/sweep/spec/SweepSpecReader.h"
 #include "tests/sweep/SweepTestSupport.h"
 
 namespace parksim {

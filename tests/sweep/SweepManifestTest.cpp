@@ -1,8 +1,8 @@
-// DIR/sweep.json (parksim/sweep/SweepManifest.h): what a Slurm sweep asked of each task is
+// DIR/sweep.json (parksim/sweep/shards/SweepManifest.h): what a Slurm sweep asked of each task is
 // written and read back, so that `--slurm --missing` asks for the same; a changed request of
 // the wrong type or out of range is refused as not a manifest.
 
-#include "parksim/sweep/SweepManifest.h"
+#include "parksim/sweep/shards/SweepManifest.h"
 
 #include <fstream>
 #include <sstream>
@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "tests/sweep/SweepTestSupport.h"
 
 namespace parksim {

@@ -1,7 +1,7 @@
 // Runs small real sweeps (head-in world, goal-connect RRT: ~0.1 s per episode) through the
 // library: worker counts, resuming after a kill, shards and merging.
 
-#include "parksim/sweep/SweepRunner.h"
+#include "parksim/sweep/run/SweepRunner.h"
 
 #include <filesystem>
 #include <fstream>
@@ -13,13 +13,13 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
-#include "parksim/results/ExecutedFile.h"
-#include "parksim/results/RowSeal.h"
-#include "parksim/sweep/Merge.h"
-#include "parksim/sweep/Shard.h"
-#include "parksim/sweep/SweepManifest.h"
-#include "parksim/sweep/SweepSpecReader.h"
+#include "parksim/core/io/Error.h"
+#include "parksim/results/episode/ExecutedFile.h"
+#include "parksim/results/tables/RowSeal.h"
+#include "parksim/sweep/shards/Merge.h"
+#include "parksim/sweep/shards/Shard.h"
+#include "parksim/sweep/shards/SweepManifest.h"
+#include "parksim/sweep/spec/SweepSpecReader.h"
 #include "tests/support/TestPaths.h"
 #include "tests/sweep/SweepTestSupport.h"
 

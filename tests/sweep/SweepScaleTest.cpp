@@ -16,12 +16,12 @@
 
 #include <gtest/gtest.h>
 
-#include "parksim/results/ResultsTable.h"
-#include "parksim/results/TableVerify.h"
-#include "parksim/sweep/EpisodeExpansion.h"
-#include "parksim/sweep/Merge.h"
-#include "parksim/sweep/SweepRunner.h"
-#include "parksim/sweep/SweepSpecReader.h"
+#include "parksim/results/tables/ResultsTable.h"
+#include "parksim/results/tables/TableVerify.h"
+#include "parksim/sweep/run/SweepRunner.h"
+#include "parksim/sweep/shards/Merge.h"
+#include "parksim/sweep/spec/EpisodeExpansion.h"
+#include "parksim/sweep/spec/SweepSpecReader.h"
 #include "tests/sweep/SweepTestSupport.h"
 
 namespace {

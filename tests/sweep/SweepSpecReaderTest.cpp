@@ -1,9 +1,9 @@
-#include "parksim/sweep/SweepSpecReader.h"
+#include "parksim/sweep/spec/SweepSpecReader.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "parksim/core/Error.h"
+#include "parksim/core/io/Error.h"
 #include "tests/support/TestPaths.h"
 #include "tests/sweep/SweepTestSupport.h"
 

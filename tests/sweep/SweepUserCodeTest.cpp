@@ -1,7 +1,7 @@
 // Sweeps of user code end to end (docs/your-code.md): a plugin's planner and controller beside
 // parksim's own, sharded and merged to the same rows; a faulty controller that crashes its
 // process in one episode of a hundred, killed in the middle and resumed; a rebuilt plugin
-// refused on resume; a planner that is a command in another language.
+// refused on resume; a planner that is a command in another language, and its time limit.
 
 #include <signal.h>
 #include <sys/wait.h>
@@ -199,6 +199,47 @@ TEST(SweepUserCode, APlannerInAnotherLanguageSweepsAsACommand) {
   EXPECT_EQ(bad.exit_code, 2) << bad.out;
   EXPECT_NE(bad.out.find("bad.yaml:5: planners[0]: "), std::string::npos) << bad.out;
   EXPECT_FALSE(fs::exists(dir + "/bad"));
+}
+
+// The one plan check in a sweep: a plugin's plan through a wall is the row's plan_invalid, its
+// plan's status too, and the episode's files say so and name the plugin.
+TEST(SweepUserCode, APlanThroughAWallIsInvalidInItsRowAndItsFiles) {
+  const std::string dir = scratchDir();
+  writeText(dir + "/spec.yaml",
+            "format: parksim-sweep/1\nname: wall\nworlds: [" + world("head_in") + "]\nplugins: [" +
+                faulty() + "]\nplanners: [through-walls]\nrecord: {executed_csv: failures}\n");
+  const auto r = runParksim("sweep " + dir + "/spec.yaml --out " + dir + "/out");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  const std::vector<nlohmann::json> all = rows(dir + "/out/results.jsonl");
+  ASSERT_EQ(all.size(), 1u) << r.out;
+  EXPECT_EQ(all[0]["status"], "plan_invalid");
+  EXPECT_EQ(all[0]["plan_status"], "plan_invalid");
+  EXPECT_EQ(all[0]["plan_solved"], false);
+  const std::string episode = dir + "/out/episodes/" + all[0]["episode_id"].get<std::string>();
+  const nlohmann::json plan = nlohmann::json::parse(slurp(episode + "/plan.json"));
+  EXPECT_NE(plan["planner_origin"].get<std::string>().find("plugin parksim-faults 0.1 ("),
+            std::string::npos);
+  EXPECT_EQ(nlohmann::json::parse(slurp(episode + "/metrics.json"))["status"], "plan_invalid");
+  EXPECT_FALSE(fs::exists(episode + "/trajectory.csv"));
+}
+
+// A sweep's --planner-timeout stops a command planner's program too: that episode's
+// planner_error names the limit (under `timeout 25`: a limit that does nothing fails here).
+TEST(SweepUserCode, ThePlannerTimeLimitStopsACommand) {
+  const std::string dir = scratchDir();
+  writeText(dir + "/spec.yaml",
+            "format: parksim-sweep/1\nname: slow\nworlds: [" + world("head_in") +
+                "]\nplanners: [{command: [sh, -c, 'sleep 60', sh, '{out}']}]\n");
+  const auto r =
+      testing::runProgram("timeout 25 " + testing::parksimExe(),
+                          "sweep " + dir + "/spec.yaml --planner-timeout 1 --out " + dir + "/out");
+  EXPECT_EQ(r.exit_code, 1) << r.out;  // an episode failed
+  const std::vector<nlohmann::json> all = rows(dir + "/out/results.jsonl");
+  ASSERT_EQ(all.size(), 1u) << r.out;
+  EXPECT_EQ(all[0]["status"], "planner_error");
+  EXPECT_EQ(all[0]["failure"],
+            "planner command `sh -c 'sleep 60' sh {out}` gave no answer within the planner time "
+            "limit of 1 s and was killed");
 }
 
 // The spec's components are made to check their parameters: a plugin's constructor that crashes

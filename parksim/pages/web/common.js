@@ -96,6 +96,13 @@ const parksim = {};
     return e;
   };
 
+  // A value as a text node: what a table cell, a column title or a list item returns, so that
+  // a name from an input file is shown as the text it is, never read as markup (Tabulator
+  // takes a string a formatter returns as HTML).
+  P.text = function (v) {
+    return document.createTextNode(v === null || v === undefined ? '' : String(v));
+  };
+
   // A status as a coloured badge.
   P.badge = function (status) {
     const b = P.el('span', { class: 'badge', text: status });

@@ -107,22 +107,24 @@
     root.append(el('section', { class: 'table' }, el('h2', { text: 'Every group and test, regressions first' }), tableBox));
     const verdictCell = (cell) => {
       const v = cell.getValue();
-      return v === 'regression' ? P.badge('regression') : v;
+      return v === 'regression' ? P.badge('regression') : P.text(v);
     };
     const tab = new Tabulator(tableBox, {
       data: rows,
       layout: 'fitDataStretch',
+      // Cells as text nodes (P.text): a group's name holds world names.
+      columnDefaults: { formatter: (c) => P.text(c.getValue()) },
       groupBy: 'group',
       groupHeader: (value, count, data) => el('span', {},
         data.some((r) => r.verdict === 'regression') ? P.badge('regression') : null, ' ', value,
         ' ', el('small', { text: '(' + data[0].pairing + ', ' + count + ' tests)' })),
       columns: [
-        { title: 'metric', field: 'metric', headerFilter: 'input', tooltip: (e, cell) => cell.getRow().getData().line },
+        { title: 'metric', field: 'metric', headerFilter: 'input', tooltip: (e, cell) => el('span', { text: cell.getRow().getData().line }) },
         { title: 'baseline', field: 'baseline' },
         { title: 'candidate', field: 'candidate' },
         { title: 'change (interval)', field: 'change' },
-        { title: 'p', field: 'p', sorter: 'number', formatter: (c) => pText(c.getValue()), hozAlign: 'right' },
-        { title: 'p, Holm-adjusted', field: 'p_adjusted', sorter: 'number', formatter: (c) => pText(c.getValue()), hozAlign: 'right' },
+        { title: 'p', field: 'p', sorter: 'number', formatter: (c) => P.text(pText(c.getValue())), hozAlign: 'right' },
+        { title: 'p, Holm-adjusted', field: 'p_adjusted', sorter: 'number', formatter: (c) => P.text(pText(c.getValue())), hozAlign: 'right' },
         { title: 'verdict', field: 'verdict', formatter: verdictCell, headerFilter: 'input' },
       ],
     });

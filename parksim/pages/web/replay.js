@@ -21,7 +21,7 @@
     if (data.record) {
       return columnsOf(data.record.columns, {
         t: 't', x: 'x', y: 'y', theta: 'theta', xr: 'x_ref', yr: 'y_ref', thr: 'theta_ref',
-        xe: 'x_est', ye: 'y_est', the: 'theta_est',
+        xe: 'x_est', ye: 'y_est', the: 'theta_est', steer: 'steer',
       });
     }
     if (data.plan) return columnsOf(data.plan, { t: 't', x: 'x', y: 'y', theta: 'theta' });
@@ -317,7 +317,24 @@
       ctx.stroke();
     }
 
-    drawRobot(ctx, x, y, theta) {
+    // A wheel: a dark bar of half length `len` and half width `hw` centred at (u, w) in the
+    // robot's frame, turned by `turn` from its heading.
+    drawWheel(ctx, x, y, theta, u, w, len, hw, turn) {
+      const c = Math.cos(theta);
+      const s = Math.sin(theta);
+      const cw = Math.cos(turn);
+      const sw = Math.sin(turn);
+      const pts = [];
+      for (const [a, b] of [[len, hw], [-len, hw], [-len, -hw], [len, -hw]]) {
+        const pu = u + cw * a - sw * b;
+        const pw = w + sw * a + cw * b;
+        pts.push(x + c * pu - s * pw, y + s * pu + c * pw);
+      }
+      this.polygon(ctx, pts);
+      ctx.fill();
+    }
+
+    drawRobot(ctx, x, y, theta, steer) {
       const st = this.style;
       const r = this.data.robot;
       ctx.fillStyle = st.robot;
@@ -330,15 +347,21 @@
       const c = Math.cos(theta);
       const s = Math.sin(theta);
       ctx.fillStyle = st.wheel;
+      // A car's wheels are a tenth of its track wide; the study robot's 8 mm.
+      const car = r.drive === 'car';
+      const hw = car ? 0.05 * r.wheel_base_m : 0.004;
       for (const side of [1, -1]) {
-        const wy = side * r.wheel_base_m / 2;
-        const pts = [];
-        for (const [u, w] of [[r.wheel_radius_m, wy + 0.004], [-r.wheel_radius_m, wy + 0.004],
-          [-r.wheel_radius_m, wy - 0.004], [r.wheel_radius_m, wy - 0.004]]) {
-          pts.push(x + c * u - s * w, y + s * u + c * w);
-        }
-        this.polygon(ctx, pts);
-        ctx.fill();
+        this.drawWheel(ctx, x, y, theta, 0, side * r.wheel_base_m / 2, r.wheel_radius_m, hw, 0);
+      }
+      if (car) {
+        // The front wheels at their Ackermann angles of the steering (core/model/Ackermann.h).
+        const l = r.axle_distance_m;
+        const k = l * Math.tan(steer || 0);
+        const half = r.wheel_base_m / 2;
+        const left = Math.atan2(k, l - half * Math.tan(steer || 0));
+        const right = Math.atan2(k, l + half * Math.tan(steer || 0));
+        this.drawWheel(ctx, x, y, theta, l, half, r.wheel_radius_m, hw, left);
+        this.drawWheel(ctx, x, y, theta, l, -half, r.wheel_radius_m, hw, right);
       }
       const tip = r.front_overhang_m * 0.8;
       const baseU = -0.25 * r.length_m;
@@ -394,7 +417,7 @@
         this.polygon(ctx, this.footprint(tr.xr[i], tr.yr[i], tr.thr[i]));
         ctx.stroke();
       }
-      this.drawRobot(ctx, tr.x[i], tr.y[i], tr.theta[i]);
+      this.drawRobot(ctx, tr.x[i], tr.y[i], tr.theta[i], tr.steer ? tr.steer[i] : 0);
       if (tr.xe) {
         ctx.strokeStyle = '#0b7285';
         ctx.lineWidth = 1.2;

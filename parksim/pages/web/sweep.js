@@ -60,7 +60,10 @@
     if (col.encoding === 'levels' && col.kind !== 'number') {
       for (const v of col.levels.slice(0, 500)) chars = Math.max(chars, Math.min(40, String(v).length));
     }
-    const def = { title: name, field, headerSortTristate: true, width: Math.min(380, 34 + 8.5 * chars) };
+    // Every title, cell and list item is a text node (P.text): names from input files are
+    // column titles (parked_displacement_m.<robot>) and values (world), shown as text.
+    const def = { title: name, field, headerSortTristate: true, width: Math.min(380, 34 + 8.5 * chars),
+      titleFormatter: () => P.text(name) };
     if (name === 'status') {
       const rank = statusRank(state.statuses);
       def.sorter = (a, b) => rank(a) - rank(b);
@@ -69,20 +72,17 @@
       def.sorter = 'number';
       def.sorterParams = { alignEmptyValues: 'bottom' };
       def.hozAlign = 'right';
-      def.formatter = (cell) => P.fmt(cell.getValue(), 4);
+      def.formatter = (cell) => P.text(P.fmt(cell.getValue(), 4));
     } else {
       def.sorter = (a, b) => String(a).localeCompare(String(b), undefined, { numeric: true });
-      def.formatter = (cell) => {
-        const v = cell.getValue();
-        return v === null || v === undefined ? '' : String(v);
-      };
+      def.formatter = (cell) => P.text(cell.getValue());
     }
     if (name === 'episode_id') {
       def.frozen = true;
       def.formatter = (cell) => {
         const row = cell.getRow().getData();
         const id = String(cell.getValue());
-        if (!state.kept[row._i]) return id;
+        if (!state.kept[row._i]) return P.text(id);
         return el('a', { href: state.href + '/' + encodeURIComponent(id) + '/report.html', text: id });
       };
     }
@@ -91,7 +91,8 @@
       def.headerFilter = 'list';
       const labels = {};
       for (const v of col.levels) labels[String(v)] = v === null ? '(none)' : String(v);
-      def.headerFilterParams = { values: labels, clearable: true };
+      def.headerFilterParams = { values: labels, clearable: true,
+        itemFormatter: (label) => el('span', { text: label }) };
       def.headerFilterFunc = (wanted, value) => wanted === '' || wanted === undefined || String(value) === wanted;
     } else if (col.kind === 'number') {
       def.headerFilter = 'input';

@@ -1,0 +1,64 @@
+#include "parksim/core/io/InputFile.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include "parksim/core/io/Error.h"
+
+namespace parksim {
+
+namespace {
+
+// Closes the descriptor on every way out.
+struct Fd {
+  int fd;
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+}  // namespace
+
+std::string readInputFile(const std::string& path, std::uintmax_t max_bytes, const char* what) {
+  // O_NONBLOCK: opening a FIFO without a writer must not wait forever.
+  Fd f{::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY)};
+  if (f.fd < 0) {
+    throw Error(path + ": cannot open " + what + ": " + std::strerror(errno));
+  }
+  struct stat st {};
+  if (::fstat(f.fd, &st) != 0) {
+    throw Error(path + ": cannot read " + what + ": " + std::strerror(errno));
+  }
+  if (S_ISDIR(st.st_mode)) throw Error(path + ": is a directory, not a " + what);
+  if (!S_ISREG(st.st_mode)) {
+    throw Error(path + ": is not a regular file (a device, pipe or socket), not a " + what);
+  }
+  const auto too_big = [&](std::uintmax_t size) {
+    return Error(path + ": " + what + " is " + std::to_string(size) +
+                 " bytes, more than the limit of " + std::to_string(max_bytes) +
+                 " (docs/limits.md)");
+  };
+  if (static_cast<std::uintmax_t>(st.st_size) > max_bytes) throw too_big(st.st_size);
+  std::string bytes(static_cast<std::size_t>(st.st_size), '\0');
+  std::size_t got = 0;
+  while (true) {
+    if (got == bytes.size()) {
+      // The file may have grown since fstat: read on, one byte past the limit at most.
+      if (bytes.size() > max_bytes) throw too_big(bytes.size());
+      bytes.resize(std::min<std::uintmax_t>(max_bytes + 1, bytes.size() + 65536));
+    }
+    const ssize_t n = ::read(f.fd, bytes.data() + got, bytes.size() - got);
+    if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+    if (n < 0) throw Error(path + ": cannot read " + what + ": " + std::strerror(errno));
+    if (n == 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  bytes.resize(got);
+  return bytes;
+}
+
+}  // namespace parksim

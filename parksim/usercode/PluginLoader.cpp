@@ -1,0 +1,136 @@
+#include "parksim/usercode/PluginLoader.h"
+
+#include <filesystem>
+#include <fstream>
+#include <utility>
+
+#include "parksim/core/io/Error.h"
+#include "parksim/core/io/Fnv1a.h"
+#include "parksim/core/io/Text.h"
+#include "parksim/core/system/SharedLibrary.h"
+#include "parksim/usercode/PluginApi.h"
+
+namespace parksim {
+
+std::shared_ptr<const Components> builtInComponents() {
+  static const std::shared_ptr<const Components> components = std::make_shared<Components>();
+  return components;
+}
+
+std::string fileHash(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path + ": cannot be read");
+  std::uint64_t h = kFnv1a64Offset;
+  char buffer[1 << 16];
+  while (in) {
+    in.read(buffer, sizeof buffer);
+    h = fnv1a64(std::string_view(buffer, static_cast<std::size_t>(in.gcount())), h);
+  }
+  if (in.bad()) throw Error(path + ": cannot be read");
+  return hex16(h);
+}
+
+namespace {
+
+// Registers into a staged copy of the components, so that a plugin that fails halfway leaves
+// nothing of itself behind.
+class StagingRegistrar : public PluginRegistrar {
+ public:
+  StagingRegistrar(Components& staged, PluginRecord& record) : staged_(staged), record_(record) {}
+
+  void addPlanner(PlannerEntry entry) override {
+    const std::string name = entry.info.name;
+    staged_.planners.add(std::move(entry), record_.name);
+    record_.planners.push_back(name);
+  }
+  void addController(ControllerEntry entry) override {
+    const std::string name = entry.info.name;
+    staged_.controllers.add(std::move(entry), record_.name);
+    record_.controllers.push_back(name);
+  }
+
+ private:
+  Components& staged_;
+  PluginRecord& record_;
+};
+
+std::string text(const char* s, const std::string& what, const std::string& file) {
+  if (s == nullptr || !isPrintableUtf8(s) || std::string(s).empty() || std::string(s).size() > 64) {
+    throw Error(file + ": the plugin's " + what + " is not 1 to 64 printable characters");
+  }
+  return s;
+}
+
+}  // namespace
+
+const PluginRecord& loadPlugin(Components& components, const std::string& path) {
+  std::error_code ec;
+  const std::string file = std::filesystem::absolute(path, ec).lexically_normal().string();
+  if (ec || !std::filesystem::is_regular_file(file, ec)) {
+    throw Error(path + ": no such plugin file");
+  }
+  for (const PluginRecord& r : components.plugins) {
+    if (r.path == file) throw Error(path + ": plugin loaded twice");
+  }
+  PluginRecord record;
+  record.path = file;
+  record.hash = fileHash(file);
+  void* entry = nullptr;
+  try {
+    const SharedLibrary library(file, "plugin", "");
+    entry = library.find(kPluginEntryPoint);
+  } catch (const EnvironmentError& e) {
+    // The user's file, not the machine: bad input.
+    throw Error(e.what());
+  }
+  if (entry == nullptr) {
+    throw Error(path + ": not a parksim plugin (no " + kPluginEntryPoint +
+                " entry point; define one with PARKSIM_PLUGIN, parksim/usercode/PluginApi.h)");
+  }
+  // The library stays loaded (RTLD_NODELETE), so its functions outlive the handle.
+  using EntryPoint = const PluginDescriptor* (*)();
+  const PluginDescriptor* d = reinterpret_cast<EntryPoint>(entry)();
+  if (d == nullptr) throw Error(path + ": the plugin's entry point returned nothing");
+  if (d->api_version != PARKSIM_PLUGIN_API_VERSION) {
+    throw Error(path + ": built against plugin API " + std::to_string(d->api_version) +
+                ", this parksim has " + std::to_string(PARKSIM_PLUGIN_API_VERSION) +
+                "; rebuild the plugin against this parksim");
+  }
+  if (d->abi_fingerprint != pluginAbiFingerprint()) {
+    throw Error(path +
+                ": built against parksim headers whose types differ from this parksim's "
+                "(another build or compiler); rebuild the plugin against this parksim");
+  }
+  record.name = text(d->name, "name", path);
+  record.version = text(d->version, "version", path);
+  for (const PluginRecord& r : components.plugins) {
+    if (r.name == record.name) {
+      throw Error(path + ": a plugin named " + record.name + " is already loaded from " + r.path);
+    }
+  }
+  if (d->register_components == nullptr) throw Error(path + ": the plugin registers nothing");
+  Components staged = components;
+  StagingRegistrar registrar(staged, record);
+  try {
+    d->register_components(registrar);
+  } catch (const std::exception& e) {
+    throw Error(path + ": plugin " + record.name + " failed to register: " + e.what());
+  } catch (...) {
+    throw Error(path + ": plugin " + record.name + " failed to register");
+  }
+  if (record.planners.empty() && record.controllers.empty()) {
+    throw Error(path + ": plugin " + record.name + " registered no planner or controller");
+  }
+  staged.plugins.push_back(std::move(record));
+  components = std::move(staged);
+  return components.plugins.back();
+}
+
+std::shared_ptr<const Components> loadComponents(const std::vector<std::string>& paths) {
+  if (paths.empty()) return builtInComponents();
+  auto components = std::make_shared<Components>();
+  for (const std::string& path : paths) loadPlugin(*components, path);
+  return components;
+}
+
+}  // namespace parksim
