@@ -52,12 +52,20 @@ set(PARKSIM_UNITY_SKIP
   tests/bench/PathCheckTest.cpp              # headIn, also in OmplPlannersTest.cpp
   tests/collision/ShapeObstaclesTest.cpp     # kSweepDivisor, kMargins: BulletCollisionWorldTest.cpp
   tests/command/CommandPlannerTest.cpp       # headIn, testDir: CommandCliTest, CommandControllerTest
+  tests/pipeline/OnePlanCheckTest.cpp        # headIn, plugins, also in IsolatedEpisodeTest.cpp
+  tests/pipeline/UserCodeTest.cpp            # headIn, plugins, also in IsolatedEpisodeTest.cpp
   tests/pipeline/UserCodeIsolationTest.cpp   # kShort, also in UserCodeTest.cpp
+  # joined, Case: each car planning file has its own (CarPlanAlongTest.cpp is batched).
+  tests/planner/CarPlanCheckerTest.cpp
+  tests/planner/CarPlannersTest.cpp
+  tests/planner/CarWorldsPlanningTest.cpp
   tests/planner/TimeCostTest.cpp             # piece, also in PathSmootherTest.cpp
   tests/renders/OffscreenContextTest.cpp     # distinctColours, also in FiguresTest.cpp
   tests/results/TrajectoryFileTest.cpp       # sample, also in NpzFileTest.cpp
-  # errorOf (in 9 files, each its own) and kWorld (in 3): the rest of the program is batched.
+  tests/rl/ParkingTaskTest.cpp               # kinematic, also in CarTaskTest.cpp
+  # errorOf (in 11 files, each its own) and kWorld (in 3): the rest of the program is batched.
   tests/scenario/MovingAiMapTest.cpp
+  tests/scenario/PhysicalRangesTest.cpp      # and world, also in CarRobotReaderTest.cpp
   tests/scenario/RealismReaderTest.cpp
   tests/scenario/RosMapTest.cpp
   tests/scenario/ScenarioOverridesTest.cpp
