@@ -89,6 +89,15 @@ if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPARKSIM_SANITIZE=ON -DPARKSIM_BUILD_BENCH=OFF \
     -DPARKSIM_PYTHON=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
     -DPARKSIM_TEST_UNITY_BATCH_SIZE=0 --target parksim_tests
+  # The longest tests first, in a fresh clone too: ctest starts tests by the durations it
+  # recorded (Testing/Temporary/CTestCostData.txt), and without a record in test-number order, so
+  # a 20-second test could start last and run alone at the end. tests/sanitizer_costs.txt seeds
+  # the record with the tests that took 3 s or more (docs/building.md says how to renew it).
+  costs=build-sanitize/Testing/Temporary/CTestCostData.txt
+  if [ ! -f "$costs" ]; then
+    mkdir -p "$(dirname "$costs")"
+    { cat tests/sanitizer_costs.txt; echo ---; } > "$costs"
+  fi
   # Leaks are checked; tests/lsan.supp names the third-party allocations that live until exit
   # by design (Mesa's OSMesa).
   # intercept_tls_get_addr=0: up to LLVM 16 and GCC 13 the runtime's __tls_get_addr interceptor
