@@ -21,7 +21,11 @@ from . import _parksim
 try:  # pragma: no cover - depends on what is installed
     import gymnasium as _gym
     from gymnasium.spaces import Box as _Box
-    from gymnasium.spaces import Dict as _Dict
+
+    try:
+        from gymnasium.spaces import Dict as _Dict
+    except ImportError:  # a stand-in gymnasium with Box alone
+        from .spaces import Dict as _Dict
 
     _Base = _gym.Env
 except ImportError:
