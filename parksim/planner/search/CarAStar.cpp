@@ -212,27 +212,12 @@ PlanResult CarAStar::solve(const Pose2& start, const GoalRegion& goal,
   const std::vector<Pose2> targets = backward ? std::vector<Pose2>{start} : roots;
   double margin = firstMargin(search_.window, start, goal.pose);
   PlanStats& st = result.stats;
-  CellSearchOutcome out;
-  while (true) {
-    config.window = searchWindow(lot_, start, goal.pose, margin);
-    config.progress_offset = st.iterations;
-    config.max_expansions = def_.max_iterations - st.iterations;
-    CarModel model(car_, search_, cost, curves, targets);
-    out = detail::runCellSearch(config, model, sources, targets, backward);
-    st.iterations += static_cast<int>(out.expansions);
-    st.tree_size += static_cast<int>(out.nodes);
-    st.goal_attempts += static_cast<int>(out.analytic_attempts);
-    st.times.heuristic_s += out.heuristic_s;
-    st.times.goal_check_s += out.analytic_s;
-    st.times.collision_s += out.collision_s;
-    if (out.status != CellSearchOutcome::Status::kExhausted) break;
-    if (coversLot(config.window, lot_)) {
-      if (!config.trust_grid) break;
-      config.trust_grid = false;  // a passage may have hidden from the grid: look there too
-      continue;
-    }
-    margin *= 2.0;  // hemmed in by the window: look wider
-  }
+  const CellSearchOutcome out =
+      detail::searchWidening(config, lot_, start, goal.pose, margin, st, [&] {
+        config.max_expansions = def_.max_iterations - st.iterations;
+        CarModel model(car_, search_, cost, curves, targets);
+        return detail::runCellSearch(config, model, sources, targets, backward);
+      });
   st.goal_tree_size = static_cast<int>(roots.size());
   if (out.status != CellSearchOutcome::Status::kFound) {
     if (def_.cancelled()) {

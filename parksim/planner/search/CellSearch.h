@@ -30,6 +30,7 @@
 #include "parksim/planner/search/FootprintFit.h"
 #include "parksim/planner/search/ObstacleHeuristic.h"
 #include "parksim/planner/search/SearchCells.h"
+#include "parksim/planner/search/SearchWindow.h"
 
 namespace parksim::detail {
 
@@ -339,6 +340,33 @@ CellSearchOutcome runCellSearch(const CellSearchConfig& config, Model& model,
   const CellSearchLayout l = model.layout(config.window);
   CellSearch<Model> search(config, model, l.coarse, l.fine_zone_m, sources, targets);
   return search.run(backward, l.grid_cell_m, l.analytic_near_s, l.analytic_interval);
+}
+
+/// Searches (`run(config)`, e.g. runCellSearch) in a window around `start` and `goal` with
+/// margin `margin_m`, twice as wide each time a search expands every reachable cell of its
+/// window, up to the lot; once the lot is searched, once more without trusting the heuristic's
+/// grid. Adds each search's counts and times to `stats`; `margin_m` ends at the last margin.
+template <class Run>
+CellSearchOutcome searchWidening(CellSearchConfig& config, const LotBounds& lot, const Pose2& start,
+                                 const Pose2& goal, double& margin_m, PlanStats& stats, Run run) {
+  while (true) {
+    config.window = searchWindow(lot, start, goal, margin_m);
+    config.progress_offset = stats.iterations;
+    CellSearchOutcome out = run();
+    stats.iterations += static_cast<int>(out.expansions);
+    stats.tree_size += static_cast<int>(out.nodes);
+    stats.goal_attempts += static_cast<int>(out.analytic_attempts);
+    stats.times.heuristic_s += out.heuristic_s;
+    stats.times.goal_check_s += out.analytic_s;
+    stats.times.collision_s += out.collision_s;
+    if (out.status != CellSearchOutcome::Status::kExhausted) return out;
+    if (coversLot(config.window, lot)) {
+      if (!config.trust_grid) return out;
+      config.trust_grid = false;  // a passage may have hidden from the grid: look there too
+      continue;
+    }
+    margin_m *= 2.0;  // hemmed in by the window: look wider
+  }
 }
 
 }  // namespace parksim::detail
