@@ -280,6 +280,13 @@ class ParkingEnv(_Base):
         n = int(np.prod(shape))
         if len(infos) != n:
             raise ValueError(f"compute_reward: {len(infos)} infos for {n} goals")
+        if any(not isinstance(i, dict) or "previous_achieved_goal" not in i or "contacts" not in i
+               for i in infos):
+            raise ValueError(
+                "compute_reward: info must be the step's info (previous_achieved_goal, "
+                "contacts): the reward's shaping starts at the previous pose; with "
+                "Stable-Baselines3's HerReplayBuffer pass "
+                "replay_buffer_kwargs=dict(copy_info_dict=True)")
         before = np.stack([np.asarray(i["previous_achieved_goal"], dtype=np.float64)
                            for i in infos])
         contact = np.array([bool(np.any(i["contacts"])) for i in infos])

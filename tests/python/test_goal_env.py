@@ -123,3 +123,11 @@ def test_the_array_observation_stays_the_default(head_in):
     assert obs.shape == (10,)
     with pytest.raises(ValueError, match="observation must be one of"):
         parksim.ParkingEnv(head_in, observation="dict")
+
+
+def test_compute_reward_without_the_steps_info_names_what_it_needs(car_world):
+    # Stable-Baselines3's HerReplayBuffer passes empty dicts unless copy_info_dict=True.
+    env = parksim.ParkingEnv(car_world, fidelity="kinematic", observation="goal_dict")
+    obs, _ = env.reset(seed=0)
+    with pytest.raises(ValueError, match=r"copy_info_dict=True"):
+        env.compute_reward(obs["achieved_goal"][None], obs["desired_goal"][None], np.array([{}]))
