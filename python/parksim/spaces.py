@@ -1,5 +1,5 @@
-"""Minimal stand-ins for gymnasium.spaces.Box and Dict, used when gymnasium is not installed (Debian does
-not ship it). Same attributes and methods as far as ParkingEnv's users need them."""
+"""Minimal stand-ins for gymnasium.spaces.Box and Dict, used when gymnasium is not installed
+(Debian does not ship it). Same attributes and methods as far as ParkingEnv's users need them."""
 
 import numpy as np
 
