@@ -22,10 +22,16 @@ try:  # pragma: no cover - depends on what is installed
     import gymnasium as _gym
     from gymnasium.spaces import Box as _Box
 
+    try:
+        from gymnasium.spaces import Dict as _Dict
+    except ImportError:  # a stand-in gymnasium with Box alone
+        from .spaces import Dict as _Dict
+
     _Base = _gym.Env
 except ImportError:
     _gym = None
     from .spaces import Box as _Box
+    from .spaces import Dict as _Dict
 
     _Base = object
 
@@ -59,6 +65,39 @@ def task_spaces(observation_low, observation_high, num_envs=None):
         action_shape = (num_envs, 2)
     return (_Box(-1.0, 1.0, shape=action_shape, dtype=np.float32),
             _Box(low, high, dtype=np.float32))
+
+
+OBSERVATIONS = ("array", "goal_dict")
+ROBOT_PART = 6  # the observation's robot values: x, y, cos, sin, v, omega (a car's: steer)
+
+
+def goal_dict_space(observation_space):
+    """The goal-conditioned observation space of highway-env's parking-v0 (GoalEnv): the robot's
+    part of the observation, and its pose and the goal as (x, y, cos theta, sin theta), in
+    float64 so that compute_reward on them is the step's reward to rounding."""
+    low, high = observation_space.low, observation_space.high
+    goal_low = low[ROBOT_PART:].astype(np.float64)
+    goal_high = high[ROBOT_PART:].astype(np.float64)
+    return _Dict({
+        "observation": _Box(low[:ROBOT_PART], high[:ROBOT_PART], dtype=np.float32),
+        "achieved_goal": _Box(np.minimum(low[:4], goal_low), np.maximum(high[:4], goal_high),
+                              dtype=np.float64),
+        "desired_goal": _Box(goal_low, goal_high, dtype=np.float64),
+    })
+
+
+def pose_goal(pose):
+    """(x, y, theta) poses, shape (..., 3), as goals (x, y, cos theta, sin theta)."""
+    pose = np.asarray(pose, dtype=np.float64)
+    return np.stack([pose[..., 0], pose[..., 1], np.cos(pose[..., 2]), np.sin(pose[..., 2])],
+                    axis=-1)
+
+
+def goal_pose(goal):
+    """Goals (x, y, cos theta, sin theta), shape (..., 4), as (x, y, theta) poses."""
+    goal = np.asarray(goal, dtype=np.float64)
+    return np.stack([goal[..., 0], goal[..., 1], np.arctan2(goal[..., 3], goal[..., 2])],
+                    axis=-1)
 
 
 def world_from(world):
@@ -129,13 +168,26 @@ class ParkingEnv(_Base):
     episode k after seed s starts from a start drawn from (s, k), as sub-environment i of
     VecParkingEnv(seed=s - i) does. reset(options={"start": (x, y, theta)}) starts there.
     The environment pickles and deep-copies, an episode in progress included (it is replayed).
+
+    observation="goal_dict" makes it a goal-conditioned environment as highway-env's parking-v0
+    is, for hindsight experience replay (Stable-Baselines3's HerReplayBuffer), either drive:
+    the observation is a dict of "observation" (the robot's six values above), "achieved_goal"
+    (the true pose, which the reward judges, as x, y, cos theta, sin theta) and "desired_goal"
+    (the goal's, the same way); info adds "previous_achieved_goal" (before the step) and
+    compute_reward(achieved_goal, desired_goal, info) gives the step's reward for any goal,
+    vectorised over leading axes (info a dict or a sequence of them): for the goal the step had,
+    exactly the reward step() returned (docs/python.md, "Goal-conditioned observations").
     """
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 10}
 
-    def __init__(self, world=None, *, render_mode=None, realism=None, model=None, **options):
+    def __init__(self, world=None, *, render_mode=None, realism=None, model=None,
+                 observation="array", **options):
         if render_mode not in (None, "rgb_array"):
             raise ValueError(f"render_mode must be None or 'rgb_array', got {render_mode!r}")
+        if observation not in OBSERVATIONS:
+            raise ValueError(f"observation must be one of {OBSERVATIONS}, got {observation!r}")
+        self.observation = observation
         self.world = world_from(world)
         self._options = task_options(dict(options, realism=realism, model=model))
         self._task = _parksim._ParkingTask(self.world, **self._options)
@@ -149,6 +201,11 @@ class ParkingEnv(_Base):
         self.metadata = dict(type(self).metadata, render_fps=1.0 / self.control_period_s)
         self.action_space, self.observation_space = task_spaces(self._task.observation_low,
                                                                 self._task.observation_high)
+        if observation == "goal_dict":
+            self.observation_space = goal_dict_space(self.observation_space)
+        goal = self.world.goal["pose"]
+        self._desired_goal = pose_goal(goal)
+        self._achieved_goal = None  # the last observation's, for the next step's info
         self._seeded = False
         self._actions = []  # this episode's actions, to replay it when unpickled
 
@@ -184,17 +241,59 @@ class ParkingEnv(_Base):
         if start is None:
             if noise_seed is not None:
                 raise ValueError("reset: options noise_seed needs start")
-            return self._task.reset()
-        return self._task.reset_at(start, checked_seed(noise_seed or 0, "noise_seed"))
+            obs, info = self._task.reset()
+        else:
+            obs, info = self._task.reset_at(start, checked_seed(noise_seed or 0, "noise_seed"))
+        return self._observed(obs, info), info
 
     def step(self, action):
         if not self._task.running:
             raise RuntimeError(
                 "ParkingEnv.step: the episode has ended (terminated or truncated); call reset()"
                 if self._seeded else "ParkingEnv.step: call reset() before step()")
-        result = self._task.step(action)  # ValueError on anything but two finite numbers
+        # ValueError on anything but two finite numbers
+        obs, reward, terminated, truncated, info = self._task.step(action)
         self._actions.append(np.asarray(action, dtype=np.float64).reshape(2))
-        return result
+        if self.observation == "goal_dict":
+            info["previous_achieved_goal"] = self._achieved_goal
+        return self._observed(obs, info), reward, terminated, truncated, info
+
+    def _observed(self, obs, info):
+        """The task's observation as this environment gives it (observation=...)."""
+        if self.observation == "array":
+            return obs
+        self._achieved_goal = pose_goal(info["pose"])
+        return {"observation": obs[:ROBOT_PART], "achieved_goal": self._achieved_goal.copy(),
+                "desired_goal": self._desired_goal.copy()}
+
+    def compute_reward(self, achieved_goal, desired_goal, info):
+        """The reward of the steps that reached achieved_goal, had desired_goal been the goal
+        (observation="goal_dict"): goals (x, y, cos theta, sin theta), shape (..., 4); info the
+        steps' info, a dict or a sequence (or array) of them, with previous_achieved_goal and
+        contacts. The task's own reward (rl/TaskReward.h's taskTransitionReward): success within
+        the success thresholds without a contact, contact, leaving the lot, and the shaping from
+        the previous to the achieved pose; an array of the leading shape (a float for one)."""
+        achieved = np.asarray(achieved_goal, dtype=np.float64)
+        desired = np.asarray(desired_goal, dtype=np.float64)
+        infos = [info] if isinstance(info, dict) else list(np.asarray(info, dtype=object).ravel())
+        shape = np.broadcast_shapes(achieved.shape[:-1], desired.shape[:-1])
+        n = int(np.prod(shape))
+        if len(infos) != n:
+            raise ValueError(f"compute_reward: {len(infos)} infos for {n} goals")
+        if any(not isinstance(i, dict) or "previous_achieved_goal" not in i or "contacts" not in i
+               for i in infos):
+            raise ValueError(
+                "compute_reward: info must be the step's info (previous_achieved_goal, "
+                "contacts): the reward's shaping starts at the previous pose; with "
+                "Stable-Baselines3's HerReplayBuffer pass "
+                "replay_buffer_kwargs=dict(copy_info_dict=True)")
+        before = np.stack([np.asarray(i["previous_achieved_goal"], dtype=np.float64)
+                           for i in infos])
+        contact = np.array([bool(np.any(i["contacts"])) for i in infos])
+        rewards = self._task.transition_rewards(
+            goal_pose(before), goal_pose(np.broadcast_to(achieved, shape + (4,)).reshape(n, 4)),
+            goal_pose(np.broadcast_to(desired, shape + (4,)).reshape(n, 4)), contact)
+        return float(rewards[0]) if shape == () else rewards.reshape(shape)
 
     def render(self):
         if self.render_mode != "rgb_array" or not self._seeded:

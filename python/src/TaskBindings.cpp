@@ -12,6 +12,7 @@
 #include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/rl/ParkingTask.h"
 #include "parksim/rl/TaskBatch.h"
+#include "parksim/rl/TaskReward.h"
 #include "python/src/Bindings.h"
 
 namespace parksim::python {
@@ -211,8 +212,39 @@ void bindTask(py::module_& m) {
                              [](const TaskHandle& h) { return poseArray(h.task.last().info.pose); })
       .def_property_readonly("contacts",
                              [](const TaskHandle& h) { return h.task.last().info.contacts; })
-      .def("obstacle_poses",
-           [](const TaskHandle& h) { return posesArray(h.task.obstaclePoses()); });
+      .def("obstacle_poses", [](const TaskHandle& h) { return posesArray(h.task.obstaclePoses()); })
+      .def(
+          "transition_rewards",
+          [](const TaskHandle& h,
+             const py::array_t<double, py::array::c_style | py::array::forcecast>& before,
+             const py::array_t<double, py::array::c_style | py::array::forcecast>& after,
+             const py::array_t<double, py::array::c_style | py::array::forcecast>& goals,
+             const py::array_t<bool, py::array::c_style | py::array::forcecast>& contact) {
+            const py::ssize_t n = contact.size();
+            for (const auto* a : {&before, &after, &goals}) {
+              if (a->ndim() != 2 || a->shape(0) != n || a->shape(1) != 3) {
+                throw py::value_error("transition_rewards: poses must be (n, 3) arrays for n = " +
+                                      std::to_string(n) + " contact flags");
+              }
+            }
+            py::array_t<double> out(n);
+            auto r = out.mutable_unchecked<1>();
+            const auto b = before.unchecked<2>(), a = after.unchecked<2>(),
+                       g = goals.unchecked<2>();
+            const auto c = contact.unchecked<1>();
+            GoalRegion goal = h.scenario->goal;
+            for (py::ssize_t i = 0; i < n; ++i) {
+              goal.pose = {g(i, 0), g(i, 1), g(i, 2)};
+              r(i) = taskTransitionReward(h.task.def(), goal, h.scenario->lot,
+                                          {b(i, 0), b(i, 1), b(i, 2)}, {a(i, 0), a(i, 1), a(i, 2)},
+                                          c(i));
+            }
+            return out;
+          },
+          py::arg("before"), py::arg("after"), py::arg("goals"), py::arg("contact"),
+          "The reward of n steps of the true pose from before[i] to after[i] (x, y, theta) "
+          "towards goals[i], with or without a contact: the task's own (taskTransitionReward, "
+          "rl/TaskReward.h), for ParkingEnv.compute_reward.");
 }
 
 // A batch's results as Gymnasium's vector API returns them: observations (n, d) float32,
