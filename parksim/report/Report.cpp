@@ -10,6 +10,7 @@
 
 #include "parksim/core/io/AtomicFile.h"
 #include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/stats/Quantile.h"
 #include "parksim/renders/gl/Renderer.h"
 #include "parksim/renders/image/PngEncoder.h"
 #include "parksim/report/BoxPlot.h"
@@ -46,7 +47,7 @@ std::string medianP95(const std::vector<double>& v, const char* format) {
   std::vector<double> s = v;
   std::sort(s.begin(), s.end());
   char buf[64];
-  std::snprintf(buf, sizeof buf, format, quantileSorted(s, 0.5), quantileSorted(s, 0.95));
+  std::snprintf(buf, sizeof buf, format, quantileSorted7(s, 0.5), quantileSorted7(s, 0.95));
   return buf;
 }
 
@@ -55,7 +56,7 @@ std::string median(const std::vector<double>& v, const char* format) {
   std::vector<double> s = v;
   std::sort(s.begin(), s.end());
   char buf[64];
-  std::snprintf(buf, sizeof buf, format, quantileSorted(s, 0.5));
+  std::snprintf(buf, sizeof buf, format, quantileSorted7(s, 0.5));
   return buf;
 }
 
@@ -69,7 +70,7 @@ std::string csvNumber(const std::vector<double>& v, double q) {
   if (v.empty()) return "";
   std::vector<double> s = v;
   std::sort(s.begin(), s.end());
-  return nlohmann::json(quantileSorted(s, q)).dump();
+  return nlohmann::json(quantileSorted7(s, q)).dump();
 }
 
 std::string groupName(const ReportGroup& g, bool with_realism) {
@@ -427,7 +428,7 @@ std::optional<double> quantileOf(const std::vector<double>& v, double q) {
   if (v.empty()) return std::nullopt;
   std::vector<double> sorted = v;
   std::sort(sorted.begin(), sorted.end());
-  return quantileSorted(sorted, q);
+  return quantileSorted7(sorted, q);
 }
 
 }  // namespace

@@ -11,6 +11,11 @@
 // start) plus gamma^(T-1) times its outcome, or plus gamma^T phi(s_T) <= 0 for a time-out:
 // every successful park beats every crash, exit and time-out, in either fidelity and under
 // every realism (the reward judges the true pose).
+//
+// Why gamma is 1 by default: the return episode statistics log is undiscounted. With gamma <
+// 1 a robot standing far from the goal collects (1 - gamma) * D a step of it, without bound
+// (issue 39); with gamma 1 it collects nothing, and a learner discounting by its own gamma
+// sees an added cost (1 - gamma) * phi(s') <= 0 a step, 0 at the goal: a prompt park wins both.
 
 #include "parksim/core/geometry/Pose2.h"
 #include "parksim/core/model/Scenario.h"

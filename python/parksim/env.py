@@ -39,9 +39,11 @@ _MAX_SEED = 2**64 - 1
 
 
 def task_options(options):
-    """ParkingTaskDef options as the compiled task takes them: max_episode_steps=None (no limit
-    of the environment's own) is 0."""
-    if "max_episode_steps" in options and options["max_episode_steps"] is None:
+    """ParkingTaskDef options as the compiled task takes them: max_episode_steps=None or -1
+    (Gymnasium's "no limit", which make_vec passes to a vector entry point) is 0, no limit of
+    the environment's own."""
+    steps = options.get("max_episode_steps", 0)
+    if steps is None or (not isinstance(steps, bool) and steps == -1):
         options = dict(options, max_episode_steps=0)
     return options
 
@@ -131,9 +133,9 @@ class ParkingEnv(_Base):
     robot), or a preset ("ideal", "lab", "odometry"); it needs fidelity="dynamics".
     Other options are parksim.ParkingTaskDef's fields (help(parksim.ParkingTaskDef)):
     fidelity ("dynamics": Bullet; "kinematic": exact arcs against the collision checker, no
-    dynamics, for pre-training), control_period_s, max_episode_steps (None: no limit of the
-    environment's own), start noise, success thresholds, reward (discount: set it to your
-    learner's), terminate_on_contact, model (a SimModelDef or dict).
+    dynamics, for pre-training), control_period_s, max_episode_steps (None or -1: no limit of
+    the environment's own), start noise, success thresholds, reward (discount: the shaping's, 1
+    by default), terminate_on_contact, model (a SimModelDef or dict).
 
     Action: Box(-1, 1, (2,), float32), the left and right wheel speeds as fractions of the
     robot's maximum, held for control_period_s (whole physics steps). Exactly two finite real
@@ -154,8 +156,10 @@ class ParkingEnv(_Base):
     a step with a contact, exit_reward (-10) on leaving the lot, nothing per step; plus
     potential-based shaping discount * phi(s') - phi(s), phi = -shaping_weight * D (0 once
     terminated), D = sqrt(d / distance_scale_m + heading_weight * e / pi) of the true distance
-    d and heading error e to the goal. For a learner discounting by `discount` (0.99), every
-    successful park returns more than every crash, exit and time-out from the same start.
+    d and heading error e to the goal. Discounted by `discount` (1 by default: the undiscounted
+    return that episode statistics log), every successful park returns more than every crash,
+    exit and time-out from the same start; a learner's gamma < 1 still ranks a prompt park
+    above idling.
 
     terminated: success (no contact during the step), leaving the lot, or a contact when
     terminate_on_contact. truncated: max_episode_steps actions, as Gymnasium's TimeLimit (also
@@ -196,7 +200,7 @@ class ParkingEnv(_Base):
         self.fidelity = definition.fidelity
         self.control_period_s = self._task.control_period_s
         self.max_episode_steps = own_step_limit(definition)
-        self.discount = definition.discount  # the reward's: a learner's gamma should be it
+        self.discount = definition.discount  # the shaping's gamma (docs/python.md, "Reward")
         # Per instance: the class's metadata describes the default period only.
         self.metadata = dict(type(self).metadata, render_fps=1.0 / self.control_period_s)
         self.action_space, self.observation_space = task_spaces(self._task.observation_low,

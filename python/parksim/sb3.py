@@ -5,7 +5,7 @@ DummyVecEnv, nor one process each in a SubprocVecEnv).
     from parksim.sb3 import SB3VecEnv
     from stable_baselines3 import SAC
     env = SB3VecEnv(8, fidelity="kinematic")        # VecParkingEnv's arguments
-    model = SAC("MlpPolicy", env, gamma=env.get_attr("discount")[0]).learn(100_000)
+    model = SAC("MlpPolicy", env).learn(100_000)  # any gamma (docs/python.md, "Reward")
 
 SB3's VecEnv contract (stable_baselines3.common.vec_env.VecEnv, its documentation "Vectorized
 Environments"), as DummyVecEnv keeps it:

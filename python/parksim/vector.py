@@ -51,8 +51,8 @@ class VecParkingEnv(_Base):
     autoreset_mode: "next_step" (Gymnasium's default) or "same_step" (the sub-environment is
     reset within the step that ended its episode; infos["final_obs"] and infos["final_info"]
     hold the last step's, as Gymnasium's SyncVectorEnv gives them); an AutoresetMode too.
-    max_episode_steps: as ParkingEnv's (300; None: no limit of the environment's own), and
-    what gymnasium.make_vec's max_episode_steps sets.
+    max_episode_steps: as ParkingEnv's (300; None or -1: no limit of the environment's own),
+    and what gymnasium.make_vec's max_episode_steps sets.
     world, realism, model and the ParkingTaskDef options: as ParkingEnv's; in particular
     fidelity="kinematic" (exact arcs against the collision checker, no Bullet dynamics: the
     pre-training fidelity) or "dynamics" (the default).
@@ -84,7 +84,7 @@ class VecParkingEnv(_Base):
         self.fidelity = definition.fidelity
         self.control_period_s = self._batch.control_period_s
         self.max_episode_steps = own_step_limit(definition)
-        self.discount = definition.discount  # the reward's: a learner's gamma should be it
+        self.discount = definition.discount  # the shaping's gamma (docs/python.md, "Reward")
         self.metadata = dict(type(self).metadata, render_fps=1.0 / self.control_period_s,
                              autoreset_mode=mode)
         low, high = self._batch.observation_low, self._batch.observation_high

@@ -76,7 +76,16 @@ Pose2 startFrom(const py::handle& start) { return poseFrom(start); }
 // What a refused action was, for the message: its kind of values or its shape.
 std::string describeAction(const py::handle& action, const py::array& a) {
   if (!a) {
-    std::string text = py::repr(action).cast<std::string>();
+    // One line: a list of arrays has a repr of many lines; each run of white space is a space.
+    std::string text;
+    for (const char c : py::repr(action).cast<std::string>()) {
+      const bool space = c == ' ' || c == '\n' || c == '\r' || c == '\t' || c == '\v' || c == '\f';
+      if (!space) {
+        text += c;
+      } else if (!text.empty() && text.back() != ' ') {
+        text += ' ';
+      }
+    }
     if (text.size() > 60) text = text.substr(0, 57) + "...";
     return text;
   }

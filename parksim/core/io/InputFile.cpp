@@ -24,6 +24,7 @@ struct Fd {
 }  // namespace
 
 std::string readInputFile(const std::string& path, std::uintmax_t max_bytes, const char* what) {
+  if (path.empty()) throw Error(std::string("cannot open ") + what + ": the path is empty");
   // O_NONBLOCK: opening a FIFO without a writer must not wait forever.
   Fd f{::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY)};
   if (f.fd < 0) {

@@ -11,8 +11,8 @@ namespace parksim {
 
 /// The bytes of the regular file at `path`, at most `max_bytes` of them. Throws Error with one
 /// line "<path>: <what> ..." when the file cannot be opened, is not a regular file, or is
-/// larger than `max_bytes` (the message states the limit). `what` names the kind of file
-/// ("plan file", "world file").
+/// larger than `max_bytes` (the message states the limit), or "cannot open <what>: the path is
+/// empty". `what` names the kind of file ("plan file", "world file").
 std::string readInputFile(const std::string& path, std::uintmax_t max_bytes, const char* what);
 
 }  // namespace parksim
