@@ -63,6 +63,8 @@ std::uint32_t filteredRowAdler(std::uint32_t adler, const unsigned char* row,
 
 constexpr unsigned char kSignature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
 constexpr std::size_t kIdatStart = 8 + 12 + 13 + 8;  // signature, IHDR chunk, IDAT length and tag
+// After the deflate data: its Adler-32, the IDAT chunk's CRC and the IEND chunk.
+constexpr std::size_t kTrailerBytes = 4 + 4 + 12;
 
 constexpr int kZlibLevel = 1;  // PngCompression::kDefault
 // kDefault and kFast compress bands of this many rows, each on its own (encodeBands). Smaller
@@ -131,9 +133,6 @@ struct PngEncoder::Impl {
   void finish(std::size_t deflated);
   std::vector<unsigned char>& out() { return outs[current]; }
 };
-
-// The Adler-32, IDAT CRC and IEND after the data: 4 + 4 + 12 bytes.
-constexpr std::size_t kTrailerBytes = 20;
 
 void PngEncoder::Impl::reserveOut(std::size_t bytes) {
   const std::size_t need = bytes + kTrailerBytes;
