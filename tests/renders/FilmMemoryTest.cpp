@@ -68,7 +68,7 @@ TEST(FilmBuffersTest, FramesInFlightAreFewerAsFramesGrow) {
 TEST(FilmBuffersTest, TheLargestFilmFitsInTwoGigabytes) {
   // The largest film the options allow, as `run --frames --size 8192x8192 --view both` makes
   // it, and the largest top view: framebuffers and frames within 2 GB less 300 MB for the rest
-  // of the process (parksim with its libraries measured ~105 MB).
+  // of the process (parksim run measured 110 to 160 MB besides them).
   for (FrameView view : {FrameView::kBoth, FrameView::kTop}) {
     FrameDef def;
     def.width_px = def.height_px = 8192;
