@@ -216,6 +216,7 @@ void bindEpisodeDefs(py::module_& m) {
       .def_readwrite("msaa_samples", &FrameDef::msaa_samples)
       .def_readwrite("encode_threads", &FrameDef::encode_threads)
       .def_readwrite("queue_depth", &FrameDef::queue_depth)
+      .def_readwrite("frame_memory_bytes", &FrameDef::frame_memory_bytes)
       .def_property(
           "gl_backend", [](const FrameDef& d) { return std::string(toString(d.context.backend)); },
           [](FrameDef& d, const std::string& s) {
