@@ -1,7 +1,8 @@
 // parksim report DIR: summary tables and figures of a sweep's results table (DIR/results.jsonl)
 // in DIR/report/ (or --out): summary.md and summary.csv per world x planner x realism preset,
 // box plots and a success matrix drawn by parksim's renderer, and one OMPL benchmark log per
-// world (ompl_<world>.log, with the cost-over-time progress) for Planner Arena.
+// world (ompl_<world>.log, with the cost-over-time progress) for Planner Arena; a file named
+// after a world or a parameter takes its name through fileStemOf (core/io/FileName.h).
 // DIR/report/index.html (or --out) is the same as a page (pages/SweepPage.h): every episode in a
 // table that sorts and filters, per-axis summaries, kept episodes linked to their own pages.
 // Every row's seal is checked (a changed row stops the report, naming its file and line); rows
@@ -21,6 +22,7 @@
 #include "parksim/cli/TerminalText.h"
 #include "parksim/core/io/AtomicFile.h"
 #include "parksim/core/io/Error.h"
+#include "parksim/core/io/FileName.h"
 #include "parksim/pages/JUnitPageLinks.h"
 #include "parksim/pages/SweepPage.h"
 #include "parksim/pipeline/Verdict.h"
@@ -103,7 +105,7 @@ std::vector<std::string> writeOmplLogs(const std::vector<Json>& rows, const std:
     info.time_limit_s = longest;
     info.runs_per_planner = runs_per_planner;
     info.total_s = total_s[world];
-    const std::string path = out + "/ompl_" + world + ".log";
+    const std::string path = out + "/ompl_" + fileStemOf(world) + ".log";
     writeFileAtomically(path, bench::omplBenchmarkLog(info, records));
     written.push_back(path);
   }
