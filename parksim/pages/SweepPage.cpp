@@ -5,6 +5,7 @@
 
 #include "parksim/core/io/Error.h"
 #include "parksim/pages/ColumnCodec.h"
+#include "parksim/pages/EpisodeFolderCheck.h"
 #include "parksim/pages/PageDocument.h"
 #include "parksim/pages/TableColumns.h"
 
@@ -25,9 +26,8 @@ std::filesystem::path keptEpisodePage(const std::string& episodes_dir, const std
   if (id.empty() || id == "." || id == ".." || id.find_first_of("/\\") != std::string::npos) {
     return {};
   }
-  std::error_code ec;
   const fs::path page = fs::path(episodes_dir) / id / "report.html";
-  return fs::is_regular_file(page, ec) ? page : fs::path();
+  return isWholePage(page) ? page : fs::path();
 }
 
 std::vector<bool> keptEpisodePages(const std::string& episodes_dir,

@@ -40,8 +40,9 @@ struct SweepPage {
 /// that order (the layout sweep rows are written in: id, parameters, outcome, measurements).
 std::vector<std::string> parameterColumns(const std::vector<nlohmann::ordered_json>& rows);
 
-/// `episodes_dir`/<id>/report.html when it is a file, else an empty path (also for an id that
-/// is not a folder name: empty, ".", "..", or holding a separator).
+/// `episodes_dir`/<id>/report.html when it is a whole page (isWholePage, EpisodeFolderCheck.h),
+/// else an empty path (also for an id that is not a folder name: empty, ".", "..", or holding
+/// a separator): a page cut short is not linked.
 std::filesystem::path keptEpisodePage(const std::string& episodes_dir, const std::string& id);
 
 /// For each row, whether its episode has a page (keptEpisodePage of its episode_id).

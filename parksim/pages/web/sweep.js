@@ -221,6 +221,8 @@
       el('p', { class: 'lead', text: n + ' episodes in ' + data.source + ': ' + met + ' met their tolerance (' +
         (100 * met / n).toFixed(1) + ' %, 95 % interval ' + (100 * low).toFixed(1) + ' .. ' + (100 * high).toFixed(1) +
         ' %); ' + kept + ' kept their files, linked from their ids.' }),
+      data.warnings.length ? el('p', { class: 'warning', id: 'warning-count',
+        text: data.warnings.length + (data.warnings.length === 1 ? ' warning' : ' warnings') + ':' }) : null,
       data.warnings.map((w) => el('p', { class: 'warning', text: w }))));
     const shownCount = el('span', { id: 'shown' });
     const chooser = el('details', { class: 'chooser' }, el('summary', { text: 'Columns' }));
