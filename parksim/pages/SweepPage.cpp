@@ -8,6 +8,7 @@
 #include "parksim/pages/EpisodeFolderCheck.h"
 #include "parksim/pages/PageDocument.h"
 #include "parksim/pages/TableColumns.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 
 namespace parksim {
 
@@ -16,7 +17,7 @@ std::vector<std::string> parameterColumns(const std::vector<nlohmann::ordered_js
   if (rows.empty()) return axes;
   for (const auto& [key, value] : rows.front().items()) {
     if (key == "status") break;
-    if (key != "episode_id") axes.push_back(key);
+    if (key != "episode_id" && !isReplicateKey(key)) axes.push_back(key);
   }
   return axes;
 }

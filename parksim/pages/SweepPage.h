@@ -37,7 +37,8 @@ struct SweepPage {
 };
 
 /// The parameters of a results table: the keys a row lists between episode_id and status, in
-/// that order (the layout sweep rows are written in: id, parameters, outcome, measurements).
+/// that order (the layout sweep rows are written in: id, parameters, outcome, measurements),
+/// but the replicates (isReplicateKey: seed, noise_seed, sample), which are no axis.
 std::vector<std::string> parameterColumns(const std::vector<nlohmann::ordered_json>& rows);
 
 /// `episodes_dir`/<id>/report.html when it is a whole page (isWholePage, EpisodeFolderCheck.h),

@@ -223,10 +223,10 @@ std::pair<double, double> wilson(int k, int n) {
   return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
 }
 
-// Parameters whose variation is replication, not a question asked: not studied.
+// Parameters whose variation is replication (isReplicateKey), not a question asked, and
+// world_file (world names it): not studied.
 bool studied(std::string_view key) {
-  return key != "episode_id" && key != "world_file" && key != "seed" && key != "noise_seed" &&
-         key != "sample";
+  return key != "episode_id" && key != "world_file" && !isReplicateKey(key);
 }
 
 // The candidate columns: the record's parameter fields and the set: columns of the rows.
