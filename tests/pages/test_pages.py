@@ -259,6 +259,37 @@ def test_sorting_and_filtering_change_what_is_shown(browser, out):
     assert float(first_shown()) == min(r["plan_iterations"] for r in rows)
 
 
+def test_few_valued_numbers_filter_by_comparison_and_a_third_click_restores_failures_first(browser, out):
+    # Eight episodes: each number column has at most eight values, which were offered as a
+    # list of raw floats, so ">0.0001" matched nothing (issue 39, point 6).
+    report = out / "held" / "report"
+    open_clean(browser, report / "index.html", report)
+    rows = rows_of(out / "held")
+    statuses = browser.js("return [...document.querySelectorAll('#status-filter .chip')].map(c => c.dataset.status)")
+    rank = {s: (len(statuses) + 1 if s == "met" else k + 1) for k, s in enumerate(statuses)}
+    failures_first = sorted(range(len(rows)), key=lambda i: (rank[rows[i]["status"]], i))
+    assert failures_first != list(range(len(rows)))  # the file's order is not the failures-first one
+    order = "return parksimTable.getRows('active').map(r => r.getData()._i)"
+    assert browser.js(order) == failures_first
+    field = column_field(browser, "max_pos_err_m")
+    title = browser.driver.find_element(
+        By.CSS_SELECTOR, '.tabulator-col[tabulator-field="%s"] .tabulator-col-title' % field)
+    browser.driver.execute_script("arguments[0].scrollIntoView({block: 'center', inline: 'center'})", title)
+    for _ in range(3):
+        ActionChains(browser.driver).move_to_element(title).click().perform()
+    assert browser.js(order) == failures_first
+    errors = [r["max_pos_err_m"] for r in rows if "max_pos_err_m" in r]
+    for query, keep in ((">0.0001", lambda e: e > 0.0001), ("<=0.01", lambda e: e <= 0.01),
+                        ("0..0.001", lambda e: 0 <= e <= 0.001)):
+        box = browser.driver.find_element(By.CSS_SELECTOR, '.tabulator-col[tabulator-field="%s"] input' % field)
+        assert box.get_attribute("readonly") is None
+        box.send_keys(Keys.CONTROL, "a")
+        box.send_keys(query)
+        expected = sum(1 for e in errors if keep(e))
+        wait_for(browser, "return document.body.dataset.shown", str(expected))
+    assert 0 < sum(1 for e in errors if e > 0.0001) < len(rows)
+
+
 def wait_for(browser, script, value, tries=200):
     for _ in range(tries):
         got = browser.js(script)

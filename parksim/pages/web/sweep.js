@@ -86,7 +86,9 @@
         return el('a', { href: state.href + '/' + encodeURIComponent(id) + '/report.html', text: id });
       };
     }
-    const few = col.encoding === 'levels' && col.levels.length <= 64;
+    // A list of values for text and booleans with few; numbers, however few their values, get
+    // the typed filter (a list of raw floats is no way to ask for ">0.0001").
+    const few = col.encoding === 'levels' && col.levels.length <= 64 && col.kind !== 'number';
     if (few && name !== 'episode_id') {
       def.headerFilter = 'list';
       const labels = {};
@@ -213,6 +215,11 @@
     const counts = new Map();
     for (const r of rows) counts.set(r[statusField], (counts.get(r[statusField]) || 0) + 1);
     for (const s of counts.keys()) if (!state.statuses.includes(s)) state.statuses.push(s);
+    // The failures first (by status in judging order, met last; file order within a status) as
+    // the table's own order, not a sort: what a third click on a header, which clears the
+    // sort, comes back to.
+    const rank = statusRank(state.statuses);
+    rows.sort((a, b) => rank(a[statusField]) - rank(b[statusField]) || a._i - b._i);
     const met = rows.filter((r) => r.met).length;
     const [low, high] = P.wilson(met, n);
     const kept = state.kept.reduce((a, b) => a + b, 0);
@@ -227,7 +234,7 @@
     const shownCount = el('span', { id: 'shown' });
     const chooser = el('details', { class: 'chooser' }, el('summary', { text: 'Columns' }));
     const tableBox = el('div', { id: 'episodes' });
-    const help = el('p', { class: 'note', text: 'Click a header to sort (again to reverse, a third time to undo). ' +
+    const help = el('p', { class: 'note', text: 'Click a header to sort (again to reverse, a third time back to failures first). ' +
       'Filters under the headers: a value from the list, text to look for, or for numbers ">0.001", "<=5", "1..3". ' +
       'Numbers show 4 significant digits; results.jsonl has them exact.' });
     const chips = statusChips(state, counts, () => tab.refreshFilter());
@@ -281,7 +288,6 @@
       // Only the columns shown: each column costs start-up time whether shown or not; the
       // others are added when chosen.
       columns: cols.filter((c) => state.shown.has(c.name)).map((c) => columnDef(c, field.get(c.name), state)),
-      initialSort: [{ column: statusField, dir: 'asc' }],
     });
     window.parksimTable = tab;
     document.body.dataset.rows = String(n);
