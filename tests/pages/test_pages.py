@@ -165,10 +165,24 @@ def test_episode_page_replays_the_record(browser, out):
 def test_episode_page_under_a_realism_plots_the_estimate(browser, out):
     lab = out / "lab"
     open_clean(browser, lab / "report.html", lab)
+    record = record_of(lab)
     assert browser.js("return document.querySelectorAll('.plots .uplot').length") == 4
     titles = browser.js("return [...document.querySelectorAll('.u-title')].map(e => e.textContent)")
     assert any("Estimate against the truth" in t for t in titles)
-    record = record_of(lab)
+    # Every y axis is labelled with its one unit; the estimate's plot has one axis per unit.
+    labels = browser.js("return parksimPlots.map(u => u.axes.slice(1).map(a => a.label))")
+    assert labels == [["error (mm)"], ["error (deg)"], ["speed (rad/s)"],
+                      ["position error (mm)", "heading error (deg)"]]
+    # The hover legend shows significant digits with the unit, not 0.00029 mm rounded to "0";
+    # the position error's legend shows the record's value, not the log plot's floor.
+    i = int(np.argmax(record["pos_err"]))
+    legend = browser.js("const u = parksimPlots[0], e = parksimPlots[3];"
+                        "return [u.series[1].value(u, 0.00029, 1, null), u.series[1].value(u, 1e-4, 1, arguments[0]),"
+                        " e.series[2].value(e, 0.0123, 2, null)]", i)
+    assert legend[0] == "0.00029 mm"
+    assert legend[1].endswith(" mm")
+    assert float(legend[1][:-3]) == pytest.approx(1e3 * record["pos_err"][i], rel=5e-3)
+    assert legend[2] == "0.0123 deg"
     state_index = check_replay_at(browser, record, 4.0)
     estimate = browser.js("const r = parksimReplay, i = r.index;"
                           "return [r.track.xe[i], r.track.ye[i], r.track.the[i]]")
