@@ -226,8 +226,9 @@ def test_sorting_and_filtering_change_what_is_shown(browser, out):
     report = out / "study" / "report"
     open_clean(browser, report / "index.html", report)
     rows = rows_of(out / "study")
-    errors = sorted(r["max_pos_err_m"] for r in rows if "max_pos_err_m" in r)
-    field = column_field(browser, "max_pos_err_m")
+    # Lengths in mm, as on the episode pages: the column max_pos_err_m is titled "_mm".
+    errors = sorted(1e3 * r["max_pos_err_m"] for r in rows if "max_pos_err_m" in r)
+    field = column_field(browser, "max_pos_err_mm")
 
     def click_header():
         title = browser.driver.find_element(
@@ -245,10 +246,10 @@ def test_sorting_and_filtering_change_what_is_shown(browser, out):
     assert float(first_shown()) == pytest.approx(errors[-1], rel=1e-3)
     # A number filter under the header: only the episodes above 0.1 mm stay.
     box = browser.driver.find_element(By.CSS_SELECTOR, '.tabulator-col[tabulator-field="%s"] input' % field)
-    box.send_keys(">0.0001")
-    expected = sum(1 for e in errors if e > 0.0001)
+    box.send_keys(">0.1")
+    expected = sum(1 for e in errors if e > 0.1)
     wait_for(browser, "return document.body.dataset.shown", str(expected))
-    assert all(v > 0.0001 for v in shown_values(browser, field))
+    assert all(v > 0.1 for v in shown_values(browser, field))
     # The per-axis summaries follow the filter.
     shown_total = sum(int(td) for td in browser.js(
         "return [...document.querySelectorAll('[data-axis=\"world\"] tbody tr td:nth-child(2)')].map(e => e.textContent)"))
@@ -285,23 +286,23 @@ def test_few_valued_numbers_filter_by_comparison_and_a_third_click_restores_fail
     assert failures_first != list(range(len(rows)))  # the file's order is not the failures-first one
     order = "return parksimTable.getRows('active').map(r => r.getData()._i)"
     assert browser.js(order) == failures_first
-    field = column_field(browser, "max_pos_err_m")
+    field = column_field(browser, "max_pos_err_mm")
     title = browser.driver.find_element(
         By.CSS_SELECTOR, '.tabulator-col[tabulator-field="%s"] .tabulator-col-title' % field)
     browser.driver.execute_script("arguments[0].scrollIntoView({block: 'center', inline: 'center'})", title)
     for _ in range(3):
         ActionChains(browser.driver).move_to_element(title).click().perform()
     assert browser.js(order) == failures_first
-    errors = [r["max_pos_err_m"] for r in rows if "max_pos_err_m" in r]
-    for query, keep in ((">0.0001", lambda e: e > 0.0001), ("<=0.01", lambda e: e <= 0.01),
-                        ("0..0.001", lambda e: 0 <= e <= 0.001)):
+    errors = [1e3 * r["max_pos_err_m"] for r in rows if "max_pos_err_m" in r]  # mm
+    for query, keep in ((">0.1", lambda e: e > 0.1), ("<=10", lambda e: e <= 10),
+                        ("0..1", lambda e: 0 <= e <= 1)):
         box = browser.driver.find_element(By.CSS_SELECTOR, '.tabulator-col[tabulator-field="%s"] input' % field)
         assert box.get_attribute("readonly") is None
         box.send_keys(Keys.CONTROL, "a")
         box.send_keys(query)
         expected = sum(1 for e in errors if keep(e))
         wait_for(browser, "return document.body.dataset.shown", str(expected))
-    assert 0 < sum(1 for e in errors if e > 0.0001) < len(rows)
+    assert 0 < sum(1 for e in errors if e > 0.1) < len(rows)
 
 
 def wait_for(browser, script, value, tries=200):

@@ -15,16 +15,26 @@
   const maxValues = 24;
   const bins = 10;
 
-  // A column's values as a plain array: numbers, text, booleans, or null where a row has none
-  // (which the table sorts last).
+  // Lengths are shown in mm, as on the episode and comparison pages: a number column whose key
+  // names metres (its unit suffix "_m", at the end or before a name: max_pos_err_m,
+  // parked_displacement_m.robot_5, set.robot.width_m) is shown times 1000 and titled "_mm".
+  const metres = /_m(?=$|\.)/;
+  const isLength = (col) => col.kind === 'number' && metres.test(col.name);
+  const shownName = (col) => (isLength(col) ? col.name.replace(metres, '_mm') : col.name);
+
+  // A column's values as a plain array (lengths in mm): numbers, text, booleans, or null where a
+  // row has none (which the table sorts last).
   function values(col, n) {
-    if (col.encoding === 'const') return new Array(n).fill(col.value);
+    const k = isLength(col) ? 1e3 : 1;
+    const scale = (v) => (typeof v === 'number' ? v * k : v);
+    if (col.encoding === 'const') return new Array(n).fill(scale(col.value));
     if (col.encoding === 'levels') {
       const codes = P.column(col);
-      return Array.from(codes, (c) => col.levels[c]);
+      const levels = col.levels.map(scale);
+      return Array.from(codes, (c) => levels[c]);
     }
     const a = P.column(col);
-    return a.length === n ? Array.from(a, (x) => (isNaN(x) ? null : x)) : new Array(n).fill(null);
+    return a.length === n ? Array.from(a, (x) => (isNaN(x) ? null : x * k)) : new Array(n).fill(null);
   }
 
   // A header filter for numbers: "0.002", ">0.001", "<= 5", "!=0", "1..3" (inclusive).
@@ -55,7 +65,7 @@
   // A column of the table. Its width is set from its name's length rather than measured from
   // its cells, which took most of a 120-row page's start-up.
   function columnDef(col, field, state) {
-    const name = col.name;
+    const name = shownName(col);
     let chars = Math.max(name.length, col.kind === 'number' ? 8 : 12);
     if (col.encoding === 'levels' && col.kind !== 'number') {
       for (const v of col.levels.slice(0, 500)) chars = Math.max(chars, Math.min(40, String(v).length));
@@ -64,7 +74,7 @@
     // column titles (parked_displacement_m.<robot>) and values (world), shown as text.
     const def = { title: name, field, headerSortTristate: true, width: Math.min(380, 34 + 8.5 * chars),
       titleFormatter: () => P.text(name) };
-    if (name === 'status') {
+    if (col.name === 'status') {
       const rank = statusRank(state.statuses);
       def.sorter = (a, b) => rank(a) - rank(b);
       def.formatter = (cell) => P.badge(String(cell.getValue()));
@@ -77,7 +87,7 @@
       def.sorter = (a, b) => String(a).localeCompare(String(b), undefined, { numeric: true });
       def.formatter = (cell) => P.text(cell.getValue());
     }
-    if (name === 'episode_id') {
+    if (col.name === 'episode_id') {
       def.frozen = true;
       def.formatter = (cell) => {
         const row = cell.getRow().getData();
@@ -89,7 +99,7 @@
     // A list of values for text and booleans with few; numbers, however few their values, get
     // the typed filter (a list of raw floats is no way to ask for ">0.0001").
     const few = col.encoding === 'levels' && col.levels.length <= 64 && col.kind !== 'number';
-    if (few && name !== 'episode_id') {
+    if (few && col.name !== 'episode_id') {
       def.headerFilter = 'list';
       const labels = {};
       for (const v of col.levels) labels[String(v)] = v === null ? '(none)' : String(v);
@@ -151,7 +161,7 @@
     const head = el('tr', {}, el('th', { text: name }), el('th', { text: 'episodes' }),
       el('th', { text: 'met' }), el('th', { text: 'met fraction (95 % interval)' }),
       el('th', { text: 'max tracking error median / p95 / max' }), el('th', { text: 'goal error median / p95' }));
-    const mm = (x) => (isNaN(x) ? '-' : (1e3 * x).toFixed(3));
+    const mm = (x) => (isNaN(x) ? '-' : x.toFixed(3));  // the table's lengths are in mm
     const body = summary.map((s) => {
       const te = s[errorFields[0]] || {};
       const ge = s[errorFields[1]] || {};
@@ -169,7 +179,7 @@
     if (!groups.numeric || points.length < 3) return;
     const x = points.map((s) => (groups.centre ? groups.centre(s.value) : Number(s.value)));
     const pct = (f) => points.map((s) => 100 * s[f]);
-    const err = points.map((s) => (s[errorField] ? 1e3 * s[errorField].p95 : NaN));
+    const err = points.map((s) => (s[errorField] ? s[errorField].p95 : NaN));
     new uPlot({
       title: 'Met fraction (95 % interval) and p95 of the max tracking error against ' + name,
       width: Math.min(720, Math.max(320, box.clientWidth - 8)),
@@ -236,7 +246,7 @@
     const tableBox = el('div', { id: 'episodes' });
     const help = el('p', { class: 'note', text: 'Click a header to sort (again to reverse, a third time back to failures first). ' +
       'Filters under the headers: a value from the list, text to look for, or for numbers ">0.001", "<=5", "1..3". ' +
-      'Numbers show 4 significant digits; results.jsonl has them exact.' });
+      'Numbers show 4 significant digits, lengths in mm (a column "_mm"; results.jsonl has them exact, in m).' });
     const chips = statusChips(state, counts, () => tab.refreshFilter());
     root.append(el('section', { class: 'table' }, el('h2', { text: 'Episodes' }),
       el('div', { class: 'toolbar' }, chips, shownCount, chooser), help, tableBox));
@@ -245,8 +255,8 @@
     if (constants.length) {
       root.append(el('details', { class: 'constants' },
         el('summary', { text: 'The same in every episode (' + constants.length + ' columns)' }),
-        el('table', {}, el('tbody', {}, constants.map((c) => el('tr', {}, el('th', { text: c.name }),
-          el('td', { text: c.value === null ? '(none)' : P.fmt(c.value, 8) })))))));
+        el('table', {}, el('tbody', {}, constants.map((c) => el('tr', {}, el('th', { text: shownName(c) }),
+          el('td', { text: c.value === null ? '(none)' : P.fmt(values(c, 1)[0], 8) })))))));
     }
     if (table.omitted.length) {
       root.append(el('p', { class: 'note', text: 'Lists of lists, in results.jsonl only: ' + table.omitted.join(', ') }));
@@ -272,10 +282,11 @@
       for (const a of summarised) {
         const g = groups.get(a);
         const summary = P.summarise(shown, g.key, g.order, errorFields.filter(Boolean));
-        const box = el('div', { class: 'axis', 'data-axis': a }, el('h3', { text: a }));
+        const title = shownName(cols.find((c) => c.name === a));
+        const box = el('div', { class: 'axis', 'data-axis': a }, el('h3', { text: title }));
         axesBox.append(box);
-        box.append(summaryTable(a, g, summary, errorFields));
-        summaryPlot(a, g, summary, errorFields[0], box);
+        box.append(summaryTable(title, g, summary, errorFields));
+        summaryPlot(title, g, summary, errorFields[0], box);
       }
     };
     const tab = new Tabulator(tableBox, {
@@ -321,7 +332,7 @@
         chooser.append(el('div', { class: 'choices' }, cols.map((c) => el('label', {},
           el('input', { type: 'checkbox', checked: state.shown.has(c.name),
             onchange: (e) => showColumn(c, e.target.checked) }),
-          ' ' + c.name))));
+          ' ' + shownName(c)))));
         tab.on('dataFiltered', onFiltered);
         const shown = tab.getData('active');
         shownCount.textContent = shown.length + ' of ' + n + ' shown';
