@@ -143,8 +143,8 @@ def test_episode_pages_show_names_as_text(browser, out):
         assert any(d.endswith(FILE_A) for d in facts), facts
         if folder == "run":
             names = texts(browser, ".metrics th")
-            for parked in (PARKED_A, PARKED_B):
-                assert "parked_displacement_m." + parked in names
+            for parked in (PARKED_A, PARKED_B):  # lengths in mm: "_mm"
+                assert "parked_displacement_mm." + parked in names
         else:
             verdict = browser.js("return document.getElementById('verdict').textContent")
             assert verdict.endswith("the footprint overlaps " + ISLAND), verdict

@@ -140,6 +140,13 @@ def test_episode_page_replays_the_record(browser, out):
     assert browser.js("return document.getElementById('verdict').textContent") == "met its tolerance"
     record = record_of(run)
     assert browser.js("return parksimReplay.rows") == len(record["t"])
+    # One length unit, mm, as on the sweep's table: metrics.json's metres shown under "_mm".
+    metrics = json.loads((run / "metrics.json").read_text())
+    shown = dict(browser.js("return [...document.querySelectorAll('.metrics tr')]"
+                            ".map(tr => [tr.children[0].textContent, tr.children[1].textContent])"))
+    assert not [k for k in shown if k.endswith("_m")]
+    assert float(shown["max_pos_err_mm"]) == pytest.approx(1e3 * metrics["max_pos_err_m"], rel=1e-5)
+    assert float(shown["final_x_mm"]) == pytest.approx(1e3 * metrics["final_x_m"], rel=1e-5)
     # Three plots over time: position error with its tolerance, heading error, wheel speeds.
     assert browser.js("return document.querySelectorAll('.plots .uplot').length") == 3
     for t in (0.0, 3.3, 6.0, 11.75, 1e9):

@@ -33,7 +33,7 @@
     if (ps) {
       fact('plan', [ps.planner, ps.steering, 'seed ' + ps.seed, ps.status,
         ps.duration_s !== undefined ? P.fmt(ps.duration_s, 4) + ' s' : null,
-        ps.path_length_m !== undefined ? P.fmt(ps.path_length_m, 4) + ' m' : null,
+        ps.path_length_m !== undefined ? P.fmt(1e3 * ps.path_length_m, 4) + ' mm' : null,
         ps.cusps !== undefined ? ps.cusps + ' cusps' : null].filter((s) => s !== null && s !== undefined).join(', '));
     }
     if (data.realisations && data.realisations.count > 1) {
@@ -218,11 +218,16 @@
           't = ' + c.t_s.toFixed(3) + ' s'), ': ' + c.body))));
   }
 
+  // Every measurement, lengths in mm under "_mm" keys (P.mmKey) as on the sweep's table.
   function metricsTable(data) {
     if (!data.metrics) return null;
-    return el('details', { class: 'metrics' }, el('summary', { text: 'Every measurement (metrics.json)' }),
-      el('table', {}, el('tbody', {}, Object.entries(data.metrics).map(([k, v]) =>
-        el('tr', {}, el('th', { text: k }), el('td', { text: Array.isArray(v) ? v.join(', ') : P.fmt(v, 6) }))))));
+    const row = ([k, v]) => {
+      const mm = typeof v === 'number' && P.isMetresKey(k);
+      return el('tr', {}, el('th', { text: mm ? P.mmKey(k) : k }),
+        el('td', { text: Array.isArray(v) ? v.join(', ') : P.fmt(mm ? 1e3 * v : v, 6) }));
+    };
+    return el('details', { class: 'metrics' }, el('summary', { text: 'Every measurement (metrics.json; lengths in mm)' }),
+      el('table', {}, el('tbody', {}, Object.entries(data.metrics).map(row))));
   }
 
   function main(data, root) {

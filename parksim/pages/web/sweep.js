@@ -15,12 +15,10 @@
   const maxValues = 24;
   const bins = 10;
 
-  // Lengths are shown in mm, as on the episode and comparison pages: a number column whose key
-  // names metres (its unit suffix "_m", at the end or before a name: max_pos_err_m,
-  // parked_displacement_m.robot_5, set.robot.width_m) is shown times 1000 and titled "_mm".
-  const metres = /_m(?=$|\.)/;
-  const isLength = (col) => col.kind === 'number' && metres.test(col.name);
-  const shownName = (col) => (isLength(col) ? col.name.replace(metres, '_mm') : col.name);
+  // Lengths in mm, as on every page (P.mmKey): a number column whose key names metres is
+  // shown times 1000 and titled with "_mm".
+  const isLength = (col) => col.kind === 'number' && P.isMetresKey(col.name);
+  const shownName = (col) => (isLength(col) ? P.mmKey(col.name) : col.name);
 
   // A column's values as a plain array (lengths in mm): numbers, text, booleans, or null where a
   // row has none (which the table sorts last).
