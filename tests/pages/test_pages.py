@@ -151,6 +151,32 @@ def test_episode_page_replays_the_record(browser, out):
     assert browser.js("return document.querySelectorAll('.plots .uplot').length") == 3
     for t in (0.0, 3.3, 6.0, 11.75, 1e9):
         check_replay_at(browser, record, t)
+    # A legend says what each colour of the replay means, in the colours it draws with.
+    legend = browser.js("return [...document.querySelectorAll('#replay-legend li')]"
+                        ".map(li => [li.dataset.key, li.dataset.color, li.textContent])")
+    style = browser.js("return parksimReplay.style")
+    assert [k for k, _, _ in legend] == ["planned", "executed", "robot", "reference", "start",
+                                         "goal", "contact"]
+    assert all(color == style[key] and text for key, color, text in legend)
+    # A scale bar in mm: a 1, 2 or 5 x 10^k length at most 120 px wide, drawn where it says,
+    # and shorter after zooming in.
+    def scale_bar():
+        bar, scale = browser.js("const r = parksimReplay; return [r.scaleBar(), r.view.scale]")
+        assert bar["px"] == pytest.approx(bar["mm"] / 1000 * scale)
+        assert 48 <= bar["px"] <= 120
+        assert bar["mm"] / 10 ** math.floor(math.log10(bar["mm"]) + 1e-9) in (1, 2, 5)
+        assert bar["label"] == "%g mm" % bar["mm"]
+        dark = browser.js("""
+            const r = parksimReplay, b = r.scaleBar(), d = r.view.dpr;
+            const p = r.canvas.getContext('2d').getImageData(Math.round((12 + b.px / 2) * d),
+                Math.round((r.view.h - 14) * d), 1, 1).data;
+            return p[0] + p[1] + p[2] < 200;""")
+        assert dark
+        return bar["mm"]
+    before = scale_bar()
+    browser.js("parksimReplay.view.scale *= 4; parksimReplay.view.dirty = true; parksimReplay.draw()")
+    assert scale_bar() < before
+    browser.js("parksimReplay.fit()")
     # A click on a plot moves the replay to the time under the pointer.
     plot = browser.driver.find_elements(By.CSS_SELECTOR, ".plots .u-over")[0]
     browser.driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", plot)
@@ -174,6 +200,7 @@ def test_episode_page_under_a_realism_plots_the_estimate(browser, out):
     open_clean(browser, lab / "report.html", lab)
     record = record_of(lab)
     assert browser.js("return document.querySelectorAll('.plots .uplot').length") == 4
+    assert "estimate" in browser.js("return [...document.querySelectorAll('#replay-legend li')].map(li => li.dataset.key)")
     titles = browser.js("return [...document.querySelectorAll('.u-title')].map(e => e.textContent)")
     assert any("Estimate against the truth" in t for t in titles)
     # Every y axis is labelled with its one unit; the estimate's plot has one axis per unit.

@@ -251,7 +251,7 @@
       }
     };
     const ctl = controls(replay, onTime);
-    stage.append(ctl.box);
+    stage.append(ctl.box, P.replayLegend(replay));
     if (!data.record) {
       stage.append(el('p', { class: 'note', text: 'Not driven: the replay shows the plan.' }));
     } else if (data.record.stride > 1) {
