@@ -286,7 +286,7 @@ def test_sorting_and_filtering_change_what_is_shown(browser, out):
     assert all(v > 0.1 for v in shown_values(browser, field))
     # The per-axis summaries follow the filter.
     shown_total = sum(int(td) for td in browser.js(
-        "return [...document.querySelectorAll('[data-axis=\"world\"] tbody tr td:nth-child(2)')].map(e => e.textContent)"))
+        "return [...document.querySelectorAll('[data-axis=\"world\"] table.summary tbody tr td:nth-child(2)')].map(e => e.textContent)"))
     assert shown_total == expected
     box.clear()
     box.send_keys("\b")
@@ -359,7 +359,7 @@ def test_axis_summaries_agree_with_the_table(browser, out):
     report = out / "study" / "report"
     open_clean(browser, report / "index.html", report)
     rows = rows_of(out / "study")
-    cells = browser.js("return [...document.querySelectorAll('[data-axis=\"planner\"] tbody tr')]"
+    cells = browser.js("return [...document.querySelectorAll('[data-axis=\"planner\"] table.summary tbody tr')]"
                        ".map(tr => [...tr.children].map(td => td.textContent))")
     planners = sorted({r["planner"] for r in rows})
     assert [c[0] for c in cells] == planners
@@ -376,6 +376,32 @@ def test_axis_summaries_agree_with_the_table(browser, out):
         errors = np.array([r["max_pos_err_m"] for r in group if "max_pos_err_m" in r])
         assert cell[4] == "%.3f / %.3f / %.3f mm" % (1e3 * np.quantile(errors, 0.5),
                                                     1e3 * np.quantile(errors, 0.95), 1e3 * errors.max())
+
+
+def test_max_error_histograms_per_group(browser, out):
+    report = out / "study" / "report"
+    open_clean(browser, report / "index.html", report)
+    rows = rows_of(out / "study")
+    hist = browser.js("return parksimHistograms.planner")
+    encoding = browser.js("return parksim.data().table.columns.find(c => c.name === 'max_pos_err_m').encoding")
+    # The page's values: float32 when packed as numbers (ColumnCodec), shown in mm.
+    def mm(x):
+        return 1e3 * (float(np.float32(x)) if encoding == "number" else x)
+    errors = [mm(r["max_pos_err_m"]) for r in rows if "max_pos_err_m" in r]
+    edges = np.array(hist["edges"])
+    # 12 bins spaced evenly in log10 from the smallest error to the largest.
+    assert len(edges) == 13
+    assert edges[0] == min(errors) and edges[-1] == max(errors)
+    steps = np.diff(np.log10(edges))
+    assert np.allclose(steps, steps[0], rtol=1e-9)
+    # Each planner's counts are NumPy's histogram of its errors over those edges.
+    planners = sorted({r["planner"] for r in rows})
+    assert sorted(g["label"] for g in hist["groups"]) == planners
+    for g in hist["groups"]:
+        mine = [mm(r["max_pos_err_m"]) for r in rows if r["planner"] == g["label"] and "max_pos_err_m" in r]
+        assert g["counts"] == np.histogram(mine, edges)[0].tolist(), g["label"]
+    titles = browser.js("return [...document.querySelectorAll('[data-axis=\"planner\"] .u-title')].map(e => e.textContent)")
+    assert any(t.startswith("Max tracking error per planner") for t in titles), titles
 
 
 def test_failed_kept_episodes_of_a_held_out_sweep_are_reachable_and_replay(browser, out):

@@ -193,6 +193,42 @@
     }, [x, pct('fraction'), pct('low'), pct('high'), err], box);
   }
 
+  // The distribution of the max tracking error in each group of an axis: counts in 12 bins
+  // spaced evenly in log10 over the errors shown (a step line per group, at most 12 groups,
+  // the largest); what parksimHistograms[axis] holds for tests and readers of the page.
+  function errorHistogram(name, axis, groups, rows, errorField, box) {
+    const all = rows.map((r) => r[errorField]);
+    const edges = P.logEdges(all, 12);
+    window.parksimHistograms[axis] = null;
+    if (!edges || edges.length < 3) return;
+    const members = new Map();
+    for (const r of rows) {
+      const v = r[groups.key];
+      if (!members.has(v)) members.set(v, []);
+      members.get(v).push(r[errorField]);
+    }
+    const order = groups.order.filter((v) => members.has(v));
+    for (const v of members.keys()) if (!order.includes(v)) order.push(v);
+    const shown = order.map((v) => ({ value: v, label: groups.label(v), counts: P.histogram(members.get(v), edges) }))
+      .sort((a, b) => b.counts.reduce((x, y) => x + y, 0) - a.counts.reduce((x, y) => x + y, 0))
+      .slice(0, 12);
+    window.parksimHistograms[axis] = { edges, groups: shown };
+    const centres = edges.slice(0, -1).map((e, k) => Math.sqrt(e * edges[k + 1]));
+    const colors = ['#0969da', '#cf222e', '#1a7f37', '#8250df', '#d4610b', '#0b7285', '#b08800',
+      '#a40e26', '#6e4aa8', '#57606a', '#1f6feb', '#c2185b'];
+    new uPlot({
+      title: 'Max tracking error per ' + name + ': episodes per bin (log-spaced)',
+      width: Math.min(720, Math.max(320, box.clientWidth - 8)),
+      height: 200,
+      scales: { x: { time: false, distr: 3 } },
+      axes: [{ label: 'max tracking error (mm)', values: (u, splits) => splits.map((v) => P.fmt(v, 3)) },
+        { label: 'episodes' }],
+      series: [{ label: 'error (mm)', value: (u, v) => (v === null || v === undefined ? '--' : P.fmt(v, 3) + ' mm') },
+        ...shown.map((g, k) => ({ label: g.label, stroke: colors[k % colors.length], width: 1.5,
+          points: { show: true } }))],
+    }, [centres, ...shown.map((g) => g.counts)], box);
+  }
+
   function main(data, root) {
     const table = data.table;
     const n = table.rows;
@@ -274,6 +310,7 @@
       return [a, axisGroups(col, rows, field.get(a))];
     }));
     const errorFields = errorKeys.map((k) => field.get(k));
+    window.parksimHistograms = {};
     const drawAxes = (shown) => {
       axesBox.replaceChildren(axesBox.firstChild);
       if (summarised.length === 0) axesBox.append(el('p', { class: 'note', text: 'No axis varies in this table.' }));
@@ -285,6 +322,7 @@
         axesBox.append(box);
         box.append(summaryTable(title, g, summary, errorFields));
         summaryPlot(title, g, summary, errorFields[0], box);
+        if (errorFields[0]) errorHistogram(title, a, g, shown, errorFields[0], box);
       }
     };
     const tab = new Tabulator(tableBox, {
