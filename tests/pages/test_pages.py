@@ -449,6 +449,11 @@ def test_comparison_page_links_the_regressed_groups_episodes(browser, out):
     page = out / "ci" / "compare.html"
     open_clean(browser, page, out / "ci")
     assert browser.js("return document.getElementById('verdict').textContent") == "1 of 5 tests found a regression"
+    # What differs between the two configurations: the candidate's spec adds a tolerance; the
+    # rows' parameters, build and worlds are the same.
+    differences = browser.js("return [...document.querySelectorAll('#differences tbody tr')]"
+                             ".map(tr => [...tr.children].map(td => td.textContent))")
+    assert differences == [["spec", "", "tolerance: {max_pos_err_m: 0.0011}"]]
     groups = browser.js("return [...document.querySelectorAll('#pairs .pairs')].map(g => g.dataset.group)")
     assert groups[0].startswith("head_in /")
     assert browser.js("return document.body.dataset.rows") == "5"
