@@ -75,8 +75,8 @@ TEST(ReportCli, DamagedEpisodeFoldersAreWarnedOfAndNotLinked) {
   ASSERT_EQ(id.size(), 5u);
   const std::string episodes = out + "/episodes/";
   // Cut short (a full disk), deleted, garbage, emptied; the last one left whole.
-  const std::string page = slurp(episodes + id[0] + "/report.html");
-  writeText(episodes + id[0] + "/report.html", page.substr(0, page.size() / 2));
+  const std::string whole = slurp(episodes + id[0] + "/report.html");
+  writeText(episodes + id[0] + "/report.html", whole.substr(0, whole.size() / 2));
   fs::remove(episodes + id[1] + "/report.html");
   writeText(episodes + id[2] + "/metrics.json", "\x7f\x45garbage");
   const std::string csv = slurp(episodes + id[3] + "/trajectory.csv");
@@ -92,9 +92,11 @@ TEST(ReportCli, DamagedEpisodeFoldersAreWarnedOfAndNotLinked) {
       episodes + id[3] +
           ": executed.npz is cut short or not a zip archive; trajectory.csv is "
           "cut short"};
+  const std::string page = slurp(out + "/report/index.html");
   for (const std::string& line : expected) {
     EXPECT_NE(report.out.find("warning: " + line + "\n"), std::string::npos) << report.out;
     EXPECT_NE(slurp(out + "/report/summary.md").find("- " + line + "\n"), std::string::npos);
+    EXPECT_NE(page.find("\"" + line + "\""), std::string::npos) << line;  // the page's warnings
   }
   EXPECT_EQ(report.out.find("warning: " + episodes + id[4]), std::string::npos) << report.out;
   EXPECT_NE(report.out.find("\n4 warnings\n"), std::string::npos) << report.out;
