@@ -1,7 +1,6 @@
 #include "parksim/report/Report.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -9,6 +8,7 @@
 #include <tuple>
 
 #include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/FileName.h"
 #include "parksim/core/io/NumberFormat.h"
 #include "parksim/core/stats/Quantile.h"
 #include "parksim/renders/gl/Renderer.h"
@@ -224,10 +224,10 @@ std::pair<double, double> wilson(int k, int n) {
   return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
 }
 
-// Parameters whose variation is replication, not a question asked: not studied.
+// Parameters whose variation is replication (isReplicateKey), not a question asked, and
+// world_file (world names it): not studied.
 bool studied(std::string_view key) {
-  return key != "episode_id" && key != "world_file" && key != "seed" && key != "noise_seed" &&
-         key != "sample";
+  return key != "episode_id" && key != "world_file" && !isReplicateKey(key);
 }
 
 // The candidate columns: the record's parameter fields and the set: columns of the rows.
@@ -412,16 +412,10 @@ std::string parametersCsv(const std::vector<ParameterStudy>& studies) {
 
 namespace {
 
-// The file name of a parameter's plot: its column with every other character than letters,
-// digits, '.', '_' and '-' as '_'.
+// The file name of a parameter's plot: parameter_<column>.png, the column made safe and apart
+// from the others (fileStemOf).
 std::string plotFile(const std::string& parameter) {
-  std::string name = "parameter_";
-  for (const char c : parameter) {
-    name += std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '.' || c == '_' || c == '-'
-                ? c
-                : '_';
-  }
-  return name + ".png";
+  return "parameter_" + fileStemOf(parameter) + ".png";
 }
 
 std::optional<double> quantileOf(const std::vector<double>& v, double q) {

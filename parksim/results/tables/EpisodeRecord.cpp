@@ -382,6 +382,10 @@ const EpisodeField* findField(std::string_view key) {
 
 bool isSetKey(std::string_view key) { return !key.empty() && findField(key) == nullptr; }
 
+bool isReplicateKey(std::string_view key) {
+  return key == "seed" || key == "noise_seed" || key == "sample";
+}
+
 void appendRecord(const EpisodeFacts& facts, nlohmann::ordered_json& row) {
   for (const EpisodeField& f : kFields) {
     if (f.key.empty() || f.read == nullptr || f.group == FieldGroup::kParameter) continue;
