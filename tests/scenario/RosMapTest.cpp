@@ -125,6 +125,31 @@ TEST(RosMap, TheOriginsYawTurnsTheMapAboutItsCorner) {
   EXPECT_NEAR(far.y(), 2.0, 1e-12);
 }
 
+// Regression (issue 39): keys map_server does not read were refused; it ignores them, and so
+// does parksim, with a warning line naming the file, line and key.
+TEST(RosMap, KeysMapServerIgnoresAreWarnedAboutAndIgnored) {
+  const fs::path dir = freshDir("ros_map_extra_keys");
+  const std::string d = dir.string() + "/";
+  writePgm(dir / "m.pgm", {{0, 254}});
+  writeText(dir / "m.yaml",
+            "image: m.pgm\nresolution: 0.5\ncenterline: [[0, 0], [1, 0]]\norigin: [0, 0, 0]\n"
+            "free_thresh: 0.196\nsaved_by: slam_toolbox\n");
+  std::vector<std::string> warnings;
+  const auto g = readRosMap(d + "m.yaml", 100, &warnings);
+  EXPECT_EQ(rowsOf(*g), (std::vector<std::vector<int>>{{kO, kF}}));
+  const std::string known =
+      " (image, resolution, origin, negate, occupied_thresh, free_thresh, mode); ignored as it "
+      "ignores it";
+  EXPECT_EQ(warnings, (std::vector<std::string>{
+                          d + "m.yaml:3: centerline: not a key nav2's map_server reads" + known,
+                          d + "m.yaml:6: saved_by: not a key nav2's map_server reads" + known}));
+  // A known key's bad value is still refused.
+  writeText(dir / "bad.yaml",
+            "image: m.pgm\nresolution: 0.5\ncenterline: 1\norigin: [0, 0, 0]\nnegate: 2\n");
+  EXPECT_EQ(errorOf(d + "bad.yaml").rfind(d + "bad.yaml:5: negate: ", 0), 0u)
+      << errorOf(d + "bad.yaml");
+}
+
 TEST(RosMap, BadMapsAreRefusedInOneLineNamingTheFile) {
   const fs::path dir = freshDir("ros_map_bad");
   const std::string d = dir.string() + "/";

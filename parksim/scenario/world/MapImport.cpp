@@ -196,6 +196,7 @@ MapImport importMap(const MapImportDef& def) {
   t += "goal:\n  pose: [" + num(goal.x) + ", " + num(goal.y) + ", " + num(radToDeg(goal.theta)) +
        "]\n";
   out.world = parseWorld(t, def.world);
+  out.warnings = maps.warnings;
   return out;
 }
 

@@ -107,11 +107,13 @@ void readRosEntry(MapSection& out, const YamlField& entry, const std::string& wo
     }
     def.unknown_blocks = s == "occupied";
   }
-  auto grid = located(file_field, [&] { return readRosMap(file, lethal); });
+  std::vector<std::string> warnings;
+  auto grid = located(file_field, [&] { return readRosMap(file, lethal, &warnings); });
   // The image's name comes from the YAML, which the reader has just checked.
   const YAML::Node yaml = YAML::Load(readInputFile(file, kMaxMapYamlBytes, "ROS map YAML"));
   const std::string image = besideWorld(file, yaml["image"].as<std::string>());
   addGrid(out, file_field, std::move(grid), def, hashFiles({file, image}, kMaxMapFileBytes));
+  out.warnings.insert(out.warnings.end(), warnings.begin(), warnings.end());
 }
 
 void readMovingAiEntry(MapSection& out, const YamlField& entry, const std::string& world) {
