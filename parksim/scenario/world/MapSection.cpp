@@ -126,10 +126,12 @@ void readMovingAiEntry(MapSection& out, const YamlField& entry, const std::strin
   const double cell = cell_field.inRange(1e-4, 100.0, " m");
   const Eigen::Vector2d origin = readOrigin(m.optional("origin"));
   const GridMapDef def{common.name, file, common.kind, common.height_m, true, readInflation(m)};
+  std::vector<std::string> warnings;
   auto grid = located(file_field, [&] {
-    return readMovingAiMap(file, cell, Pose2{origin.x(), origin.y(), 0.0});
+    return readMovingAiMap(file, cell, Pose2{origin.x(), origin.y(), 0.0}, &warnings);
   });
   addGrid(out, file_field, std::move(grid), def, hashFiles({file}, kMaxMapFileBytes));
+  out.warnings.insert(out.warnings.end(), warnings.begin(), warnings.end());
 }
 
 void readSvgEntry(MapSection& out, const YamlField& entry, const std::string& world) {

@@ -22,7 +22,8 @@ struct MapSection {
   std::vector<MapLayer> layers;
   /// All maps' extent in the lot (the lot's bounds when the world leaves them out), m.
   Eigen::AlignedBox2d extent;
-  /// What the maps' readers ignored, one line each naming the file, line and key (RosMap.h).
+  /// What the maps' readers ignored, one line each naming the file and line (RosMap.h,
+  /// MovingAiMap.h).
   std::vector<std::string> warnings;
 };
 
