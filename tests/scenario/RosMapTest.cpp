@@ -150,6 +150,35 @@ TEST(RosMap, KeysMapServerIgnoresAreWarnedAboutAndIgnored) {
       << errorOf(d + "bad.yaml");
 }
 
+// Regression (issue 39): an image beyond the limits was read whole before its header refused
+// it. Sparse files of 1 GiB, four times the file limit, whose headers declare too many pixels:
+// refused by the pixel limit, so the header was read, and nothing after it.
+TEST(RosMap, AnImageBeyondTheLimitsIsRefusedFromItsHeaderAlone) {
+  const fs::path dir = freshDir("ros_map_huge");
+  const std::string d = dir.string() + "/";
+  const std::string yaml = "resolution: 0.05\norigin: [0, 0, 0]\n";
+  writeText(dir / "huge.pgm", "P5\n# a comment\n30000 30000\n255\n");
+  writePng(dir / "huge.png", 1, 1, 1, {0});
+  {
+    // The 1 x 1 PNG's IHDR says 100000 x 100000 (bytes 16..23, big-endian).
+    std::fstream png(dir / "huge.png", std::ios::in | std::ios::out | std::ios::binary);
+    png.seekp(16);
+    const char size[8] = {0, 1, static_cast<char>(0x86), static_cast<char>(0xa0),
+                          0, 1, static_cast<char>(0x86), static_cast<char>(0xa0)};
+    png.write(size, 8);
+  }
+  for (const char* image : {"huge.pgm", "huge.png"}) {
+    fs::resize_file(dir / image, std::uintmax_t{1} << 30);
+    writeText(dir / (std::string(image) + ".yaml"), "image: " + std::string(image) + "\n" + yaml);
+  }
+  EXPECT_EQ(errorOf(d + "huge.pgm.yaml"),
+            d + "huge.pgm: the image is 30000 x 30000 pixels, more than the limit of 20000 a "
+                "side and 25000000 in all for a map (docs/limits.md)");
+  EXPECT_EQ(errorOf(d + "huge.png.yaml"),
+            d + "huge.png: the image is 100000 x 100000 pixels, more than the limit of 20000 a "
+                "side and 25000000 in all for a map (docs/limits.md)");
+}
+
 TEST(RosMap, BadMapsAreRefusedInOneLineNamingTheFile) {
   const fs::path dir = freshDir("ros_map_bad");
   const std::string d = dir.string() + "/";
