@@ -13,17 +13,21 @@ namespace parksim {
 
 namespace {
 
-// Closes the descriptor on every way out.
+// Closes the descriptor on every way out; moved, not copied.
 struct Fd {
   int fd;
+  explicit Fd(int f) : fd(f) {}
+  Fd(Fd&& o) noexcept : fd(o.fd) { o.fd = -1; }
+  Fd(const Fd&) = delete;
+  Fd& operator=(const Fd&) = delete;
+  Fd& operator=(Fd&&) = delete;
   ~Fd() {
     if (fd >= 0) ::close(fd);
   }
 };
 
-}  // namespace
-
-std::string readInputFile(const std::string& path, std::uintmax_t max_bytes, const char* what) {
+// The regular file at `path`, opened for reading, and its size.
+Fd openRegular(const std::string& path, const char* what, std::uintmax_t& size) {
   if (path.empty()) throw Error(std::string("cannot open ") + what + ": the path is empty");
   // O_NONBLOCK: opening a FIFO without a writer must not wait forever.
   Fd f{::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY)};
@@ -38,13 +42,38 @@ std::string readInputFile(const std::string& path, std::uintmax_t max_bytes, con
   if (!S_ISREG(st.st_mode)) {
     throw Error(path + ": is not a regular file (a device, pipe or socket), not a " + what);
   }
+  size = static_cast<std::uintmax_t>(st.st_size);
+  return f;
+}
+
+}  // namespace
+
+std::string readInputFileHead(const std::string& path, std::size_t head_bytes, const char* what) {
+  std::uintmax_t size = 0;
+  const Fd f = openRegular(path, what, size);
+  std::string bytes(head_bytes, '\0');
+  std::size_t got = 0;
+  while (got < bytes.size()) {
+    const ssize_t n = ::read(f.fd, bytes.data() + got, bytes.size() - got);
+    if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+    if (n < 0) throw Error(path + ": cannot read " + what + ": " + std::strerror(errno));
+    if (n == 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  bytes.resize(got);
+  return bytes;
+}
+
+std::string readInputFile(const std::string& path, std::uintmax_t max_bytes, const char* what) {
+  std::uintmax_t size = 0;
+  const Fd f = openRegular(path, what, size);
   const auto too_big = [&](std::uintmax_t size) {
     return Error(path + ": " + what + " is " + std::to_string(size) +
                  " bytes, more than the limit of " + std::to_string(max_bytes) +
                  " (docs/limits.md)");
   };
-  if (static_cast<std::uintmax_t>(st.st_size) > max_bytes) throw too_big(st.st_size);
-  std::string bytes(static_cast<std::size_t>(st.st_size), '\0');
+  if (size > max_bytes) throw too_big(size);
+  std::string bytes(static_cast<std::size_t>(size), '\0');
   std::size_t got = 0;
   while (true) {
     if (got == bytes.size()) {

@@ -421,6 +421,7 @@ World readWorldDocument(const YAML::Node& document, const std::string& source_na
   if (const std::optional<YamlField> list = top.optional("map")) {
     maps = readMapSection(*list, source_name);
     s.maps = std::move(maps->layers);
+    world.warnings = std::move(maps->warnings);
   }
   if (top.optional("lot") || !maps || maps->extent.isEmpty()) {
     s.lot = readLot(top.required("lot"));
