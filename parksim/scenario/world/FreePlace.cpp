@@ -97,8 +97,8 @@ std::optional<Pose2> findFreePlace(const Scenario& s, const FreePlaceQuery& q) {
     if (!placementProblem(s, p, room) && (!q.accept || q.accept(p))) return p;
     if (sq.half.maxCoeff() < smallest) continue;
     const Eigen::Vector2d h = 0.5 * sq.half;
-    for (const Eigen::Vector2d d : {Eigen::Vector2d(-1, -1), Eigen::Vector2d(1, -1),
-                                    Eigen::Vector2d(-1, 1), Eigen::Vector2d(1, 1)}) {
+    for (const Eigen::Vector2d& d : {Eigen::Vector2d(-1, -1), Eigen::Vector2d(1, -1),
+                                     Eigen::Vector2d(-1, 1), Eigen::Vector2d(1, 1)}) {
       push(sq.center + d.cwiseProduct(h), h);
     }
   }
