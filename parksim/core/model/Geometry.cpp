@@ -11,14 +11,6 @@ namespace {
 Eigen::Vector2d axisX(double yaw) { return {std::cos(yaw), std::sin(yaw)}; }
 Eigen::Vector2d axisY(double yaw) { return {-std::sin(yaw), std::cos(yaw)}; }
 
-// A box's own unit axes, computed once per test: the search heuristic's grid asks for millions
-// of separations, and the sines and cosines were most of their time.
-struct BoxAxes {
-  Eigen::Vector2d x;
-  Eigen::Vector2d y;
-};
-BoxAxes axesOf(const OrientedBox& b) { return {axisX(b.yaw), axisY(b.yaw)}; }
-
 // Half-length of the box's projection onto a unit axis.
 double projectedRadius(const OrientedBox& b, const BoxAxes& own, const Eigen::Vector2d& axis) {
   return b.half_extents.x() * std::abs(own.x.dot(axis)) +
@@ -55,6 +47,9 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 
 }  // namespace
 
+BoxAxes axesOf(double yaw) { return {axisX(yaw), axisY(yaw)}; }
+BoxAxes axesOf(const OrientedBox& b) { return axesOf(b.yaw); }
+
 std::array<Eigen::Vector2d, 4> OrientedBox::corners() const {
   const Eigen::Vector2d ex = axisX(yaw) * half_extents.x();
   const Eigen::Vector2d ey = axisY(yaw) * half_extents.y();
@@ -62,8 +57,11 @@ std::array<Eigen::Vector2d, 4> OrientedBox::corners() const {
 }
 
 double separationAlongAxes(const OrientedBox& a, const OrientedBox& b) {
-  const BoxAxes own_a = axesOf(a);
-  const BoxAxes own_b = axesOf(b);
+  return separationAlongAxes(a, axesOf(a), b, axesOf(b));
+}
+
+double separationAlongAxes(const OrientedBox& a, const BoxAxes& own_a, const OrientedBox& b,
+                           const BoxAxes& own_b) {
   const std::array<Eigen::Vector2d, 4> axes = {own_a.x, own_a.y, own_b.x, own_b.y};
   const Eigen::Vector2d d = b.center - a.center;
   double best = -std::numeric_limits<double>::infinity();
@@ -91,8 +89,12 @@ double separation(const OrientedBox& a, const Circle& c) {
 }
 
 double separationAlongAxes(const OrientedBox& a, const std::vector<Eigen::Vector2d>& polygon) {
+  return separationAlongAxes(a, axesOf(a), polygon);
+}
+
+double separationAlongAxes(const OrientedBox& a, const BoxAxes& own,
+                           const std::vector<Eigen::Vector2d>& polygon) {
   const std::size_t n = polygon.size();
-  const BoxAxes own = axesOf(a);
   double best = -std::numeric_limits<double>::infinity();
   const auto gapAlong = [&](const Eigen::Vector2d& axis) {
     double lo = std::numeric_limits<double>::infinity();
