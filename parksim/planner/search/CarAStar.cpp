@@ -99,6 +99,7 @@ class CarModel {
     for (const Pose2& t : targets_) curve = std::min(curve, curves_.distance(p, t));
     return std::max(curve, grid) / speed_;
   }
+  double gridHeuristic(double grid) const { return grid / speed_; }
 
   std::vector<PathPiece> curve(const Pose2& from, const Pose2& target) const {
     return curves_.pieces(from, target);

@@ -4,9 +4,12 @@
 // pose; a cell is closed once a node in it is expanded; each expansion may end the search with
 // an analytic curve to a target; an obstacle grid bounds the heuristic. Coarse first; when that
 // expands every reachable cell of the window, once more with the fine zone around the poses it
-// grows from, and once more finer. What differs between a differential drive and a car (the
-// moves, what a junction between two moves costs, the heuristic's free-space term, the analytic
-// curve, the cell sizes) is the Model's (runCellSearch).
+// grows from, and once more finer. A node waits keyed by the grid's bound until it comes first;
+// only then is its model heuristic (a Reeds-Shepp or Balkcom-Mason optimum, most of a search's
+// time) computed and the node queued again if that raises its key: the nodes expand in the
+// same order as with every heuristic computed on arrival, for fewer heuristics. What differs
+// between a differential drive and a car (the moves, what a junction between two moves costs, the
+// heuristic's free-space term, the analytic curve, the cell sizes) is the Model's (runCellSearch).
 
 #include <algorithm>
 #include <atomic>
@@ -101,6 +104,7 @@ struct CellSearchLayout {
 //   Arrival arrival(const Move& move) const;
 //   double heuristic(const Pose2& p, double grid_m) const: seconds to the nearest target, with
 //     the obstacle grid's distance (at least 0);
+//   double gridHeuristic(double grid_m) const: a cheap bound, never above heuristic(p, grid_m);
 //   std::vector<PathPiece> curve(const Pose2& from, const Pose2& target) const.
 template <class Model>
 class CellSearch {
@@ -128,6 +132,8 @@ class CellSearch {
     int move = -1;
     bool fine_move = false;
     Arrival arrival{};  // of the move into the node
+    double grid = 0.0;  // gridDistance of its pose
+    bool exact = true;  // queued with its model heuristic (else with gridHeuristic's bound)
   };
   struct Cell {
     double g = std::numeric_limits<double>::infinity();  // best node waiting or expanded
@@ -135,7 +141,7 @@ class CellSearch {
   };
   using Item = std::pair<double, int>;  // f, node; ties by node id (deterministic)
 
-  double heuristic(const Pose2& p) const;
+  double gridDistance(const Pose2& p) const;
   void reset();
   bool expandNext();
   bool tryAnalytic(int id, double h);
@@ -165,17 +171,14 @@ class CellSearch {
   CellSearchOutcome out_;
 };
 
-// Seconds to the nearest target: the model's, from the grid distance around obstacles less one
-// cell diagonal (the grid's own slack). Infinite where the grid sees no way, unless it is not
-// trusted (CellSearchConfig::trust_grid): then the model's free-space term alone.
+// The grid distance around obstacles less one cell diagonal (the grid's own slack), for the
+// model's heuristic. Infinite where the grid sees no way, unless it is not trusted
+// (CellSearchConfig::trust_grid): then 0, and the model's free-space term alone counts.
 template <class Model>
-double CellSearch<Model>::heuristic(const Pose2& p) const {
-  double grid = grid_->distance(p.x, p.y) - grid_slack_m_;
-  if (!std::isfinite(grid)) {
-    if (c_.trust_grid) return grid;
-    grid = 0.0;
-  }
-  return model_.heuristic(p, grid);
+double CellSearch<Model>::gridDistance(const Pose2& p) const {
+  const double grid = grid_->distance(p.x, p.y) - grid_slack_m_;
+  if (!std::isfinite(grid) && !c_.trust_grid) return 0.0;
+  return grid;
 }
 
 template <class Model>
@@ -186,11 +189,11 @@ void CellSearch<Model>::reset() {
   for (const Pose2& p : cell_keys_.sources()) {
     const std::int64_t k = cell_keys_.key(p);
     if (cells_.count(k)) continue;
-    const double h = heuristic(p);
-    if (!std::isfinite(h)) continue;
+    const double grid = gridDistance(p);
+    if (!std::isfinite(grid)) continue;
     cells_[k].g = 0.0;
-    open_.push({c_.weight * h, static_cast<int>(nodes_.size())});
-    nodes_.push_back({p, 0.0, -1, -1, false, Arrival{}});
+    open_.push({c_.weight * model_.heuristic(p, grid), static_cast<int>(nodes_.size())});
+    nodes_.push_back({p, 0.0, -1, -1, false, Arrival{}, grid, true});
   }
 }
 
@@ -239,11 +242,11 @@ void CellSearch<Model>::pushChildren(int id) {
     if (it != cells_.end() && it->second.closed) continue;
     const double g = n.g + move.time_s + model_.junction(n.arrival, move);
     if (it != cells_.end() && it->second.g <= g) continue;
-    const double h = heuristic(next);
-    if (!std::isfinite(h)) continue;
+    const double grid = gridDistance(next);
+    if (!std::isfinite(grid)) continue;
     cells_[k].g = g;
-    open_.push({g + c_.weight * h, static_cast<int>(nodes_.size())});
-    nodes_.push_back({next, g, id, m, fine, model_.arrival(move)});
+    open_.push({g + c_.weight * model_.gridHeuristic(grid), static_cast<int>(nodes_.size())});
+    nodes_.push_back({next, g, id, m, fine, model_.arrival(move), grid, false});
   }
 }
 
@@ -253,9 +256,20 @@ bool CellSearch<Model>::expandNext() {
   while (!open_.empty()) {
     const auto [f, id] = open_.top();
     open_.pop();
-    const Node& n = nodes_[id];
+    Node& n = nodes_[id];
     Cell& cell = cells_[cell_keys_.key(n.pose)];
-    if (cell.closed || n.g > cell.g) continue;
+    if (cell.closed) continue;
+    if (!n.exact) {
+      // First in the queue by the grid's bound: its own key now. A node worse than its cell's
+      // best waits too (the best may fail its edge check and give the cell back).
+      n.exact = true;
+      const double exact = n.g + c_.weight * model_.heuristic(n.pose, n.grid);
+      if (exact > f) {
+        open_.push({exact, id});
+        continue;
+      }
+    }
+    if (n.g > cell.g) continue;
     if (!edgeValid(n)) {
       cell.g = std::numeric_limits<double>::infinity();  // others may reach the cell after all
       continue;

@@ -81,6 +81,7 @@ class TimeModel {
     }
     return std::max(free_space, grid) / speed_mps_;
   }
+  double gridHeuristic(double grid) const { return grid / speed_mps_; }
 
   std::vector<PathPiece> curve(const Pose2& from, const Pose2& target) const {
     return piecesOf(balkcomMasonPath(from, target, half_base_), c_.robot);
