@@ -46,13 +46,9 @@ Fd openRegular(const std::string& path, const char* what, std::uintmax_t& size) 
   return f;
 }
 
-}  // namespace
-
-std::string readInputFileHead(const std::string& path, std::size_t head_bytes, const char* what) {
-  std::uintmax_t size = 0;
-  const Fd f = openRegular(path, what, size);
-  std::string bytes(head_bytes, '\0');
-  std::size_t got = 0;
+// Reads into bytes[got, bytes.size()) until it is full or the file ends; returns the new count.
+std::size_t readInto(const Fd& f, std::string& bytes, std::size_t got, const std::string& path,
+                     const char* what) {
   while (got < bytes.size()) {
     const ssize_t n = ::read(f.fd, bytes.data() + got, bytes.size() - got);
     if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
@@ -60,7 +56,16 @@ std::string readInputFileHead(const std::string& path, std::size_t head_bytes, c
     if (n == 0) break;
     got += static_cast<std::size_t>(n);
   }
-  bytes.resize(got);
+  return got;
+}
+
+}  // namespace
+
+std::string readInputFileHead(const std::string& path, std::size_t head_bytes, const char* what) {
+  std::uintmax_t size = 0;
+  const Fd f = openRegular(path, what, size);
+  std::string bytes(head_bytes, '\0');
+  bytes.resize(readInto(f, bytes, 0, path, what));
   return bytes;
 }
 
@@ -74,18 +79,12 @@ std::string readInputFile(const std::string& path, std::uintmax_t max_bytes, con
   };
   if (size > max_bytes) throw too_big(size);
   std::string bytes(static_cast<std::size_t>(size), '\0');
-  std::size_t got = 0;
-  while (true) {
-    if (got == bytes.size()) {
-      // The file may have grown since fstat: read on, one byte past the limit at most.
-      if (bytes.size() > max_bytes) throw too_big(bytes.size());
-      bytes.resize(std::min<std::uintmax_t>(max_bytes + 1, bytes.size() + 65536));
-    }
-    const ssize_t n = ::read(f.fd, bytes.data() + got, bytes.size() - got);
-    if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
-    if (n < 0) throw Error(path + ": cannot read " + what + ": " + std::strerror(errno));
-    if (n == 0) break;
-    got += static_cast<std::size_t>(n);
+  std::size_t got = readInto(f, bytes, 0, path, what);
+  // The file may have grown since fstat: read on, one byte past the limit at most.
+  while (got == bytes.size()) {
+    if (bytes.size() > max_bytes) throw too_big(bytes.size());
+    bytes.resize(std::min<std::uintmax_t>(max_bytes + 1, bytes.size() + 65536));
+    got = readInto(f, bytes, got, path, what);
   }
   bytes.resize(got);
   return bytes;
