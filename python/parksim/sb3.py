@@ -10,8 +10,9 @@ DummyVecEnv, nor one process each in a SubprocVecEnv).
 SB3's VecEnv contract (stable_baselines3.common.vec_env.VecEnv, its documentation "Vectorized
 Environments"), as DummyVecEnv keeps it:
   reset() -> observations (num_envs, 10) (observation="goal_dict": VecParkingEnv's dict of
-      batched arrays, terminal_observation a dict, compute_reward through env_method); seeds set by seed() and options by set_options() are
-      used by this reset only; reset_infos[i] holds sub-environment i's reset info.
+      batched arrays, terminal_observation a dict, compute_reward through env_method); seeds
+      set by seed() and options by set_options() are used by this reset only; reset_infos[i]
+      holds sub-environment i's reset info.
   step_async(actions); step_wait() -> (observations, rewards float32, dones bool, infos), infos a
       list of dicts, one per sub-environment (ParkingEnv's info). A sub-environment whose episode
       ended is reset within the step: observations holds its new episode's first observation,
