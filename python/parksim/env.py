@@ -187,10 +187,10 @@ class ParkingEnv(_Base):
     robot's maximum, held for control_period_s (whole physics steps). Exactly two finite real
     numbers; anything else (another shape, strings, complex numbers, booleans, objects, NaN)
     raises ValueError "action: expected two finite numbers ..., got ...", and values outside
-    [-1, 1] are clipped. A car's world (robot.drive: car; fidelity="kinematic" only) reads
-    the action as [acceleration, steering], parking-v0's: fractions of max_accel_mps2 and of
-    max_steer_rad (the front wheels' target, reached at max_steer_rate), on a kinematic bicycle
-    within max_speed_mps (docs/python.md, "A car").
+    [-1, 1] are clipped. A car's world (robot.drive: car) reads the action as
+    [acceleration, steering], parking-v0's: fractions of max_accel_mps2 and of max_steer_rad
+    (the front wheels' target, reached at max_steer_rate), within max_speed_mps, on a kinematic
+    bicycle (fidelity="kinematic") or the car's body in Bullet (docs/python.md, "A car").
 
     Observation: Box(low, high, (10,), float32), bounds from the lot and the robot's limits:
         x, y, cos(theta), sin(theta), v, omega, x_goal, y_goal, cos(theta_goal), sin(theta_goal)
