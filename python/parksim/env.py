@@ -14,6 +14,8 @@ max_episode_steps, and VecParkingEnv as its vector entry point); otherwise the s
 parksim.spaces.Box, with the same attributes.
 """
 
+import math
+
 import numpy as np
 
 from . import _parksim
@@ -76,23 +78,67 @@ ROBOT_PART = 6  # the observation's robot values: x, y, cos, sin, v, omega (a ca
 def goal_dict_space(observation_space):
     """The goal-conditioned observation space of highway-env's parking-v0 (GoalEnv): the robot's
     part of the observation, and its pose and the goal as (x, y, cos theta, sin theta), in
-    float64 so that compute_reward on them is the step's reward to rounding."""
+    float64 so that compute_reward on them is the step's reward to rounding. From task_spaces'
+    observation space, single or batched (each entry then has the leading num_envs axis)."""
     low, high = observation_space.low, observation_space.high
-    goal_low = low[ROBOT_PART:].astype(np.float64)
-    goal_high = high[ROBOT_PART:].astype(np.float64)
+    goal_low = low[..., ROBOT_PART:].astype(np.float64)
+    goal_high = high[..., ROBOT_PART:].astype(np.float64)
     return _Dict({
-        "observation": _Box(low[:ROBOT_PART], high[:ROBOT_PART], dtype=np.float32),
-        "achieved_goal": _Box(np.minimum(low[:4], goal_low), np.maximum(high[:4], goal_high),
-                              dtype=np.float64),
+        "observation": _Box(low[..., :ROBOT_PART], high[..., :ROBOT_PART], dtype=np.float32),
+        "achieved_goal": _Box(np.minimum(low[..., :4], goal_low),
+                              np.maximum(high[..., :4], goal_high), dtype=np.float64),
         "desired_goal": _Box(goal_low, goal_high, dtype=np.float64),
     })
 
 
+def goal_observation(obs, pose, desired_goal):
+    """The goal_dict observation of flat observations obs (..., 10) whose true poses are pose
+    (..., 3), towards desired_goal (4,): the one layout of ParkingEnv, VecParkingEnv and
+    SB3VecEnv (batched, each entry has the leading num_envs axis)."""
+    achieved = pose_goal(pose)
+    return {"observation": np.array(obs[..., :ROBOT_PART], dtype=np.float32),
+            "achieved_goal": achieved,
+            "desired_goal": np.broadcast_to(desired_goal, achieved.shape).copy()}
+
+
+def goal_rewards(task, achieved_goal, desired_goal, info):
+    """compute_reward of ParkingEnv, VecParkingEnv and SB3VecEnv (ParkingEnv.compute_reward's
+    documentation); `task` is the compiled task or batch, whose transition_rewards is the C++
+    task's own reward (rl/TaskReward.h)."""
+    achieved = np.asarray(achieved_goal, dtype=np.float64)
+    desired = np.asarray(desired_goal, dtype=np.float64)
+    infos = [info] if isinstance(info, dict) else list(np.asarray(info, dtype=object).ravel())
+    shape = np.broadcast_shapes(achieved.shape[:-1], desired.shape[:-1])
+    n = int(np.prod(shape))
+    if len(infos) != n:
+        raise ValueError(f"compute_reward: {len(infos)} infos for {n} goals")
+    if any(not isinstance(i, dict) or "previous_achieved_goal" not in i or "contacts" not in i
+           for i in infos):
+        raise ValueError(
+            "compute_reward: info must be the step's info (previous_achieved_goal, "
+            "contacts): the reward's shaping starts at the previous pose; with "
+            "Stable-Baselines3's HerReplayBuffer pass "
+            "replay_buffer_kwargs=dict(copy_info_dict=True)")
+    before = np.stack([np.asarray(i["previous_achieved_goal"], dtype=np.float64)
+                       for i in infos])
+    contact = np.array([bool(np.any(i["contacts"])) for i in infos])
+    rewards = task.transition_rewards(
+        goal_pose(before), goal_pose(np.broadcast_to(achieved, shape + (4,)).reshape(n, 4)),
+        goal_pose(np.broadcast_to(desired, shape + (4,)).reshape(n, 4)), contact)
+    return float(rewards[0]) if shape == () else rewards.reshape(shape)
+
+
 def pose_goal(pose):
-    """(x, y, theta) poses, shape (..., 3), as goals (x, y, cos theta, sin theta)."""
+    """(x, y, theta) poses, shape (..., 3), as goals (x, y, cos theta, sin theta). The cosine
+    and sine are math's, one pose at a time: NumPy's vectorised ones may differ in the last bit
+    with the array's length and alignment, and a batch's goals must be a single pose's."""
     pose = np.asarray(pose, dtype=np.float64)
-    return np.stack([pose[..., 0], pose[..., 1], np.cos(pose[..., 2]), np.sin(pose[..., 2])],
-                    axis=-1)
+    goal = np.empty(pose.shape[:-1] + (4,))
+    goal[..., :2] = pose[..., :2]
+    flat_goal, theta = goal.reshape(-1, 4), pose[..., 2].ravel()
+    for i, t in enumerate(theta.tolist()):
+        flat_goal[i, 2], flat_goal[i, 3] = math.cos(t), math.sin(t)
+    return goal
 
 
 def goal_pose(goal):
@@ -141,10 +187,10 @@ class ParkingEnv(_Base):
     robot's maximum, held for control_period_s (whole physics steps). Exactly two finite real
     numbers; anything else (another shape, strings, complex numbers, booleans, objects, NaN)
     raises ValueError "action: expected two finite numbers ..., got ...", and values outside
-    [-1, 1] are clipped. A car's world (robot.drive: car; fidelity="kinematic" only) reads
-    the action as [acceleration, steering], parking-v0's: fractions of max_accel_mps2 and of
-    max_steer_rad (the front wheels' target, reached at max_steer_rate), on a kinematic bicycle
-    within max_speed_mps (docs/python.md, "A car").
+    [-1, 1] are clipped. A car's world (robot.drive: car) reads the action as
+    [acceleration, steering], parking-v0's: fractions of max_accel_mps2 and of max_steer_rad
+    (the front wheels' target, reached at max_steer_rate), within max_speed_mps, on a kinematic
+    bicycle (fidelity="kinematic") or the car's body in Bullet (docs/python.md, "A car").
 
     Observation: Box(low, high, (10,), float32), bounds from the lot and the robot's limits:
         x, y, cos(theta), sin(theta), v, omega, x_goal, y_goal, cos(theta_goal), sin(theta_goal)
@@ -266,9 +312,9 @@ class ParkingEnv(_Base):
         """The task's observation as this environment gives it (observation=...)."""
         if self.observation == "array":
             return obs
-        self._achieved_goal = pose_goal(info["pose"])
-        return {"observation": obs[:ROBOT_PART], "achieved_goal": self._achieved_goal.copy(),
-                "desired_goal": self._desired_goal.copy()}
+        observed = goal_observation(obs, info["pose"], self._desired_goal)
+        self._achieved_goal = observed["achieved_goal"].copy()
+        return observed
 
     def compute_reward(self, achieved_goal, desired_goal, info):
         """The reward of the steps that reached achieved_goal, had desired_goal been the goal
@@ -277,27 +323,7 @@ class ParkingEnv(_Base):
         contacts. The task's own reward (rl/TaskReward.h's taskTransitionReward): success within
         the success thresholds without a contact, contact, leaving the lot, and the shaping from
         the previous to the achieved pose; an array of the leading shape (a float for one)."""
-        achieved = np.asarray(achieved_goal, dtype=np.float64)
-        desired = np.asarray(desired_goal, dtype=np.float64)
-        infos = [info] if isinstance(info, dict) else list(np.asarray(info, dtype=object).ravel())
-        shape = np.broadcast_shapes(achieved.shape[:-1], desired.shape[:-1])
-        n = int(np.prod(shape))
-        if len(infos) != n:
-            raise ValueError(f"compute_reward: {len(infos)} infos for {n} goals")
-        if any(not isinstance(i, dict) or "previous_achieved_goal" not in i or "contacts" not in i
-               for i in infos):
-            raise ValueError(
-                "compute_reward: info must be the step's info (previous_achieved_goal, "
-                "contacts): the reward's shaping starts at the previous pose; with "
-                "Stable-Baselines3's HerReplayBuffer pass "
-                "replay_buffer_kwargs=dict(copy_info_dict=True)")
-        before = np.stack([np.asarray(i["previous_achieved_goal"], dtype=np.float64)
-                           for i in infos])
-        contact = np.array([bool(np.any(i["contacts"])) for i in infos])
-        rewards = self._task.transition_rewards(
-            goal_pose(before), goal_pose(np.broadcast_to(achieved, shape + (4,)).reshape(n, 4)),
-            goal_pose(np.broadcast_to(desired, shape + (4,)).reshape(n, 4)), contact)
-        return float(rewards[0]) if shape == () else rewards.reshape(shape)
+        return goal_rewards(self._task, achieved_goal, desired_goal, info)
 
     def render(self):
         if self.render_mode != "rgb_array" or not self._seeded:

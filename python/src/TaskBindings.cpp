@@ -36,6 +36,39 @@ ParkingTaskDef taskDefFrom(const WorldHandle& world, py::dict& options, const ch
   return def;
 }
 
+using PoseRows = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using FlagRows = py::array_t<bool, py::array::c_style | py::array::forcecast>;
+
+constexpr const char* kTransitionRewardsDoc =
+    "The reward of n steps of the true pose from before[i] to after[i] (x, y, theta) towards "
+    "goals[i], with or without a contact: the task's own (taskTransitionReward, "
+    "rl/TaskReward.h), for the environments' compute_reward.";
+
+// The reward of n transitions towards relabelled goals: one function for a task and a batch,
+// so that ParkingEnv's and VecParkingEnv's compute_reward are the same.
+py::array_t<double> transitionRewards(const ParkingTaskDef& def, const Scenario& scenario,
+                                      const PoseRows& before, const PoseRows& after,
+                                      const PoseRows& goals, const FlagRows& contact) {
+  const py::ssize_t n = contact.size();
+  for (const auto* a : {&before, &after, &goals}) {
+    if (a->ndim() != 2 || a->shape(0) != n || a->shape(1) != 3) {
+      throw py::value_error("transition_rewards: poses must be (n, 3) arrays for n = " +
+                            std::to_string(n) + " contact flags");
+    }
+  }
+  py::array_t<double> out(n);
+  auto r = out.mutable_unchecked<1>();
+  const auto b = before.unchecked<2>(), a = after.unchecked<2>(), g = goals.unchecked<2>();
+  const auto c = contact.unchecked<1>();
+  GoalRegion goal = scenario.goal;
+  for (py::ssize_t i = 0; i < n; ++i) {
+    goal.pose = {g(i, 0), g(i, 1), g(i, 2)};
+    r(i) = taskTransitionReward(def, goal, scenario.lot, {b(i, 0), b(i, 1), b(i, 2)},
+                                {a(i, 0), a(i, 1), a(i, 2)}, c(i));
+  }
+  return out;
+}
+
 py::array_t<float> observationArray(const TaskObservation& o) {
   py::array_t<float> out(static_cast<py::ssize_t>(o.size()));
   std::copy(o.begin(), o.end(), out.mutable_data());
@@ -224,36 +257,12 @@ void bindTask(py::module_& m) {
       .def("obstacle_poses", [](const TaskHandle& h) { return posesArray(h.task.obstaclePoses()); })
       .def(
           "transition_rewards",
-          [](const TaskHandle& h,
-             const py::array_t<double, py::array::c_style | py::array::forcecast>& before,
-             const py::array_t<double, py::array::c_style | py::array::forcecast>& after,
-             const py::array_t<double, py::array::c_style | py::array::forcecast>& goals,
-             const py::array_t<bool, py::array::c_style | py::array::forcecast>& contact) {
-            const py::ssize_t n = contact.size();
-            for (const auto* a : {&before, &after, &goals}) {
-              if (a->ndim() != 2 || a->shape(0) != n || a->shape(1) != 3) {
-                throw py::value_error("transition_rewards: poses must be (n, 3) arrays for n = " +
-                                      std::to_string(n) + " contact flags");
-              }
-            }
-            py::array_t<double> out(n);
-            auto r = out.mutable_unchecked<1>();
-            const auto b = before.unchecked<2>(), a = after.unchecked<2>(),
-                       g = goals.unchecked<2>();
-            const auto c = contact.unchecked<1>();
-            GoalRegion goal = h.scenario->goal;
-            for (py::ssize_t i = 0; i < n; ++i) {
-              goal.pose = {g(i, 0), g(i, 1), g(i, 2)};
-              r(i) = taskTransitionReward(h.task.def(), goal, h.scenario->lot,
-                                          {b(i, 0), b(i, 1), b(i, 2)}, {a(i, 0), a(i, 1), a(i, 2)},
-                                          c(i));
-            }
-            return out;
+          [](const TaskHandle& h, const PoseRows& before, const PoseRows& after,
+             const PoseRows& goals, const FlagRows& contact) {
+            return transitionRewards(h.task.def(), *h.scenario, before, after, goals, contact);
           },
           py::arg("before"), py::arg("after"), py::arg("goals"), py::arg("contact"),
-          "The reward of n steps of the true pose from before[i] to after[i] (x, y, theta) "
-          "towards goals[i], with or without a contact: the task's own (taskTransitionReward, "
-          "rl/TaskReward.h), for ParkingEnv.compute_reward.");
+          kTransitionRewardsDoc);
 }
 
 // A batch's results as Gymnasium's vector API returns them: observations (n, d) float32,
@@ -442,9 +451,17 @@ void bindBatch(py::module_& m) {
            })
       .def("pose", [](const BatchHandle& h,
                       std::size_t i) { return poseArray(h.batch->task(i).last().info.pose); })
-      .def("contacts", [](const BatchHandle& h, std::size_t i) {
-        return h.batch->task(i).last().info.contacts;
-      });
+      .def("contacts", [](const BatchHandle& h,
+                          std::size_t i) { return h.batch->task(i).last().info.contacts; })
+      .def(
+          "transition_rewards",
+          [](const BatchHandle& h, const PoseRows& before, const PoseRows& after,
+             const PoseRows& goals, const FlagRows& contact) {
+            return transitionRewards(h.batch->task(0).def(), *h.scenario, before, after, goals,
+                                     contact);
+          },
+          py::arg("before"), py::arg("after"), py::arg("goals"), py::arg("contact"),
+          kTransitionRewardsDoc);
 }
 
 }  // namespace

@@ -131,3 +131,109 @@ def test_compute_reward_without_the_steps_info_names_what_it_needs(car_world):
     obs, _ = env.reset(seed=0)
     with pytest.raises(ValueError, match=r"copy_info_dict=True"):
         env.compute_reward(obs["achieved_goal"][None], obs["desired_goal"][None], np.array([{}]))
+
+
+def same_dict(got, want, i=None):
+    """The goal dict `got` (row i of a batched one) equals the single environment's `want`."""
+    assert set(got) == set(want) == {"observation", "achieved_goal", "desired_goal"}
+    for key, value in want.items():
+        row = got[key] if i is None else got[key][i]
+        assert row.dtype == value.dtype and np.array_equal(row, value), key
+
+
+def row_info(infos, i):
+    return {"previous_achieved_goal": infos["previous_achieved_goal"][i],
+            "contacts": infos["contacts"][i]}
+
+
+@pytest.mark.parametrize("mode", ["next_step", "same_step"])
+@pytest.mark.parametrize("kind", ["differential", "car"])
+def test_vector_goal_dicts_equal_the_single_environments(kind, mode, head_in, car_world):
+    # Sub-environment i seeded s + i is ParkingEnv(seed=s + i), reset after each end: the same
+    # dict entries, previous_achieved_goal and compute_reward, across autoresets.
+    world = car_world if kind == "car" else head_in
+    n, steps, seed = 2, 14, 30
+    options = dict(fidelity="kinematic", observation="goal_dict", max_episode_steps=5)
+    actions = np.random.default_rng(5).uniform(-1.0, 1.0, (steps, n, 2))
+    envs = parksim.VecParkingEnv(n, world, autoreset_mode=mode, **options)
+    singles = [parksim.ParkingEnv(world, **options) for _ in range(n)]
+    assert envs.single_observation_space["observation"].shape == (6,)
+    assert envs.observation_space["achieved_goal"].shape == (n, 4)
+    obs, _ = envs.reset(seed=seed)
+    assert obs in envs.observation_space
+    for i, env in enumerate(singles):
+        same_dict(obs, env.reset(seed=seed + i)[0], i)
+    ended, resets = [False] * n, 0
+    for k in range(steps):
+        obs, rewards, terminated, truncated, infos = envs.step(actions[k])
+        assert obs in envs.observation_space
+        for i, env in enumerate(singles):
+            if ended[i]:  # next_step: this step reset sub-environment i
+                want, _ = env.reset()
+                assert not infos["_previous_achieved_goal"][i] and rewards[i] == 0.0
+                same_dict(obs, want, i)
+                ended[i], resets = False, resets + 1
+                continue
+            want, reward, term, trunc, info = env.step(actions[k][i])
+            assert rewards[i] == reward and terminated[i] == term and truncated[i] == trunc
+            single_reward = env.compute_reward(want["achieved_goal"], want["desired_goal"], info)
+            if mode == "same_step" and (term or trunc):
+                same_dict(infos["final_obs"][i], want)
+                final = infos["final_info"]
+                assert np.array_equal(final["previous_achieved_goal"][i],
+                                      info["previous_achieved_goal"])
+                got = envs.compute_reward(want["achieved_goal"], want["desired_goal"],
+                                          row_info(final, i))
+                assert not infos["_previous_achieved_goal"][i]
+                want, _ = env.reset()
+                resets += 1
+            else:
+                assert infos["_previous_achieved_goal"][i]
+                assert np.array_equal(infos["previous_achieved_goal"][i],
+                                      info["previous_achieved_goal"])
+                got = envs.compute_reward(obs["achieved_goal"][i], obs["desired_goal"][i],
+                                          row_info(infos, i))
+                ended[i] = term or trunc
+            assert got == single_reward == pytest.approx(reward, rel=1e-12, abs=1e-12)
+            same_dict(obs, want, i)
+    assert resets >= n  # the episodes of 5 steps ended and restarted
+    # Batched: one call for every sub-environment's step.
+    batch = envs.compute_reward(obs["achieved_goal"], obs["desired_goal"],
+                                [row_info(infos, i) for i in range(n)])
+    assert batch.shape == (n,)
+
+
+def test_sb3_vec_env_gives_the_goal_dicts_and_compute_reward(car_world):
+    from parksim.sb3 import SB3VecEnv
+
+    n, steps, seed = 2, 12, 7
+    options = dict(fidelity="kinematic", observation="goal_dict", max_episode_steps=4)
+    actions = np.random.default_rng(9).uniform(-1.0, 1.0, (steps, n, 2))
+    venv = SB3VecEnv(n, car_world, **options)
+    singles = [parksim.ParkingEnv(car_world, **options) for _ in range(n)]
+    assert venv.observation_space["desired_goal"].shape == (4,)
+    venv.seed(seed)
+    obs = venv.reset()
+    for i, env in enumerate(singles):
+        same_dict(obs, env.reset(seed=seed + i)[0], i)
+    dones_seen = 0
+    for k in range(steps):
+        obs, rewards, dones, infos = venv.step(actions[k])
+        for i, env in enumerate(singles):
+            want, reward, term, trunc, info = env.step(actions[k][i])
+            assert rewards[i] == np.float32(reward) and dones[i] == (term or trunc)
+            assert np.array_equal(infos[i]["previous_achieved_goal"],
+                                  info["previous_achieved_goal"])
+            achieved = want["achieved_goal"]
+            if dones[i]:
+                same_dict(infos[i]["terminal_observation"], want)
+                want, _ = env.reset()
+                dones_seen += 1
+            else:
+                assert np.array_equal(obs["achieved_goal"][i], achieved)
+            # As HerReplayBuffer calls it: on sub-environment 0, infos an array of dicts.
+            got = venv.env_method("compute_reward", achieved[None], want["desired_goal"][None],
+                                  np.array([infos[i]], dtype=object), indices=[0])[0]
+            assert got.shape == (1,) and got[0] == pytest.approx(reward, rel=1e-12, abs=1e-12)
+            same_dict(obs, want, i)
+    assert dones_seen >= n
