@@ -9,6 +9,8 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
 
@@ -19,9 +21,12 @@
 #include "parksim/compare/ComparedTable.h"
 #include "parksim/compare/ComparisonJson.h"
 #include "parksim/compare/ComparisonReport.h"
+#include "parksim/compare/ConfigurationDiff.h"
 #include "parksim/compare/RowPairing.h"
 #include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/pages/ComparisonPage.h"
+#include "parksim/sweep/shards/SweepManifest.h"
 
 namespace parksim::app {
 
@@ -44,6 +49,21 @@ std::string sweepDir(const std::string& table) {
   if (std::filesystem::is_directory(table)) return table;
   const std::string folder = std::filesystem::path(table).parent_path().string();
   return folder.empty() ? "." : folder;
+}
+
+// The text of the spec the sweep in `dir` was run from (its sweep.json names it, as given on
+// the sweep's command line), or "" when there is none or it cannot be read: the comparison
+// then lists the columns that differ only.
+std::string specTextOf(const std::string& dir) {
+  SweepManifest manifest;
+  try {
+    if (!readSweepManifest(dir, manifest) || manifest.spec_path.empty()) return "";
+  } catch (const Error&) {
+    return "";
+  }
+  std::ifstream in(manifest.spec_path, std::ios::binary);
+  if (!in) return "";
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 int runCompare(CompareOptions o) {
@@ -70,6 +90,15 @@ int runCompare(CompareOptions o) {
     page.comparison = comparisonJson(t, o.def, sources, baseline.rows, candidate.rows);
     page.baseline_dir = sweepDir(o.baseline);
     page.candidate_dir = sweepDir(o.candidate);
+    std::vector<ConfigurationDifference> differences =
+        columnDifferences(baseline.rows, candidate.rows);
+    const std::string baseline_spec = specTextOf(page.baseline_dir);
+    const std::string candidate_spec = specTextOf(page.candidate_dir);
+    if (!baseline_spec.empty() && !candidate_spec.empty()) {
+      const auto lines = specDifferences(baseline_spec, candidate_spec);
+      differences.insert(differences.end(), lines.begin(), lines.end());
+    }
+    page.comparison["differences"] = differencesJson(differences);
     writeComparisonPage(o.html, page);
   }
   std::printf("%s", cli::printableLines(markdown).c_str());

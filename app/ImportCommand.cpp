@@ -54,6 +54,7 @@ CommandRunner setupImportCommand(CLI::App& sub) {
       throw Error("--out " + def.world + ": exists; choose another file or add --force");
     }
     const MapImport imported = importMap(def);
+    for (const std::string& w : imported.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     writeFileAtomically(def.world, imported.text);
     const Scenario& s = imported.world.scenario;
     std::printf("imported %s (%s map, %zu obstacle%s) into %s: lot [%g, %g] x [%g, %g] m\n",

@@ -1,12 +1,16 @@
 // parksim report DIR: summary tables and figures of a sweep's results table (DIR/results.jsonl)
 // in DIR/report/ (or --out): summary.md and summary.csv per world x planner x realism preset,
 // box plots and a success matrix drawn by parksim's renderer, and one OMPL benchmark log per
-// world (ompl_<world>.log, with the cost-over-time progress) for Planner Arena.
+// world (ompl_<world>.log, with the cost-over-time progress) for Planner Arena; a file named
+// after a world or a parameter takes its name through fileStemOf (core/io/FileName.h).
 // DIR/report/index.html (or --out) is the same as a page (pages/SweepPage.h): every episode in a
 // table that sorts and filters, per-axis summaries, kept episodes linked to their own pages.
 // Every row's seal is checked (a changed row stops the report, naming its file and line); rows
-// of other world contents or builds are flagged on stderr and in summary.md.
-// Exit status: 0 when written, 2 on bad input.
+// of other world contents or builds, and episode folders cut short, emptied or overwritten
+// (pages/EpisodeFolderCheck.h: their pages are not linked), are warnings: one line each on
+// stderr, in summary.md and on the page, and their count last ("2 warnings"), as pytest
+// counts its warnings.
+// Exit status: 0 when written (warnings or not, as pytest's), 2 on bad input.
 
 #include <cstdio>
 #include <filesystem>
@@ -21,6 +25,8 @@
 #include "parksim/cli/TerminalText.h"
 #include "parksim/core/io/AtomicFile.h"
 #include "parksim/core/io/Error.h"
+#include "parksim/core/io/FileName.h"
+#include "parksim/pages/EpisodeFolderCheck.h"
 #include "parksim/pages/JUnitPageLinks.h"
 #include "parksim/pages/SweepPage.h"
 #include "parksim/pipeline/Verdict.h"
@@ -103,7 +109,7 @@ std::vector<std::string> writeOmplLogs(const std::vector<Json>& rows, const std:
     info.time_limit_s = longest;
     info.runs_per_planner = runs_per_planner;
     info.total_s = total_s[world];
-    const std::string path = out + "/ompl_" + world + ".log";
+    const std::string path = out + "/ompl_" + fileStemOf(world) + ".log";
     writeFileAtomically(path, bench::omplBenchmarkLog(info, records));
     written.push_back(path);
   }
@@ -113,7 +119,7 @@ std::vector<std::string> writeOmplLogs(const std::vector<Json>& rows, const std:
 // DIR/report/index.html: the table as a page, linking the episodes' pages (relative to `out`,
 // where the report ends up, not the staging directory it is written into).
 std::string writeIndexPage(const std::string& dir, const std::string& out, const std::string& name,
-                           const std::vector<Json>& rows, const std::vector<std::string>& mixes,
+                           const std::vector<Json>& rows, const std::vector<std::string>& warnings,
                            const std::string& staged) {
   SweepPage page;
   page.title = name;
@@ -123,7 +129,7 @@ std::string writeIndexPage(const std::string& dir, const std::string& out, const
   for (const EpisodeStatus s : allEpisodeStatuses()) page.statuses.push_back(toString(s));
   page.episodes_href = hrefOf(relativeHref(out, dir + "/episodes"));
   page.kept = keptEpisodePages(dir + "/episodes", rows);
-  page.warnings = mixes;
+  page.warnings = warnings;
   const std::string path = staged + "/index.html";
   writeSweepPage(path, page);
   return path;
@@ -137,8 +143,10 @@ int runReport(const std::string& dir, std::string out, const std::string& junit)
   const std::vector<Json>& rows = table.rows;
   if (rows.empty()) throw Error(path + ": no results yet");
   const std::vector<std::string> mixes = table.origins.mixes();
-  for (const std::string& mix : mixes)
-    std::fprintf(stderr, "warning: %s\n", printable(mix).c_str());
+  const std::vector<std::string> damaged = episodeFolderProblems(dir + "/episodes", rows);
+  std::vector<std::string> warnings = mixes;
+  warnings.insert(warnings.end(), damaged.begin(), damaged.end());
+  for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", printable(w).c_str());
   if (out.empty()) out = dir + "/report";
   SweepManifest manifest;
   std::string name = std::filesystem::path(dir).filename().string();
@@ -150,7 +158,7 @@ int runReport(const std::string& dir, std::string out, const std::string& junit)
   std::vector<std::string> written = writeReport(rows, name, staged.path());
   const std::vector<std::string> logs = writeOmplLogs(rows, name, staged.path());
   written.insert(written.end(), logs.begin(), logs.end());
-  written.push_back(writeIndexPage(dir, out, name, rows, mixes, staged.path()));
+  written.push_back(writeIndexPage(dir, out, name, rows, warnings, staged.path()));
   std::string summary;
   {
     std::FILE* f = std::fopen((staged.path() + "/summary.md").c_str(), "r");
@@ -166,8 +174,14 @@ int runReport(const std::string& dir, std::string out, const std::string& junit)
         "\n**Warning: this table mixes world contents or parksim builds** (`parksim verify` "
         "lists them):\n\n";
     for (const std::string& mix : mixes) summary += "- " + mix + "\n";
-    writeFileAtomically(staged.path() + "/summary.md", summary);
   }
+  if (!damaged.empty()) {
+    summary +=
+        "\n**Warning: episode folders cut short, emptied or overwritten** (their pages are "
+        "not linked):\n\n";
+    for (const std::string& d : damaged) summary += "- " + d + "\n";
+  }
+  if (!warnings.empty()) writeFileAtomically(staged.path() + "/summary.md", summary);
   staged.commit();
   if (!junit.empty()) {
     JUnitReport report = episodesJUnit(rows, name, rowGroupNameOf);
@@ -178,6 +192,10 @@ int runReport(const std::string& dir, std::string out, const std::string& junit)
   std::printf("%s\n", printableLines(summary).c_str());
   for (const std::string& w : written) {
     std::printf("wrote %s\n", printable(staged.shown(w)).c_str());
+  }
+  if (!warnings.empty()) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "%zu warning%s\n", warnings.size(), warnings.size() == 1 ? "" : "s");
   }
   return 0;
 }

@@ -303,6 +303,12 @@ int runSweepCommand(const SweepOptions& o) {
   const SweepPlan plan =
       prepareSweep(o.spec, extra.get(), {.limits = o.user_code.limits, .isolate = true});
   const SweepSpec& spec = plan.spec;
+  // Each world's warnings once, as read from its file (World::warnings).
+  for (const SweepWorld& w : plan.worlds) {
+    for (const std::string& line : w->world.warnings) {
+      std::fprintf(stderr, "warning: %s\n", line.c_str());
+    }
+  }
   const std::vector<SweepEpisode>& all = plan.episodes;
   const Shard shard = parseShard(o.shard);
   if (o.list) {

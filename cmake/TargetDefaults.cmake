@@ -61,6 +61,7 @@ set(PARKSIM_UNITY_SKIP
   tests/planner/CarPlanCheckerTest.cpp
   tests/planner/CarPlannersTest.cpp
   tests/planner/CarWorldsPlanningTest.cpp
+  tests/planner/GripCheckTest.cpp            # kDt, also in CarPlanCheckTest.cpp
   tests/planner/TimeCostTest.cpp             # piece, also in PathSmootherTest.cpp
   tests/renders/OffscreenContextTest.cpp     # distinctColours, also in FiguresTest.cpp
   tests/results/TrajectoryFileTest.cpp       # sample, also in NpzFileTest.cpp

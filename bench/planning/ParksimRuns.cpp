@@ -29,17 +29,10 @@ std::string budgetName(const SearchDef& planner) {
 }
 
 std::vector<std::pair<std::string, double>> phaseList(const PhaseTimes& t) {
-  return {{"sampling", t.sampling_s},
-          {"nearest", t.nearest_s},
-          {"steering", t.steering_s},
-          {"collision", t.collision_s},
-          {"goal_check", t.goal_check_s},
-          {"rewiring", t.rewiring_s},
-          {"connection", t.connection_s},
-          {"smoothing", t.smoothing_s},
-          {"heuristic", t.heuristic_s},
-          {"timing", t.timing_s},
-          {"total", t.total_s}};
+  std::vector<std::pair<std::string, double>> phases;
+  for (const auto& [name, s] : phaseTimeList(t)) phases.emplace_back(name, s);
+  phases.emplace_back("total", t.total_s);
+  return phases;
 }
 
 BenchRecord runParksim(const Scenario& scenario, const BulletCollisionWorld& world,

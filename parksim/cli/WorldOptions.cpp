@@ -1,5 +1,7 @@
 #include "parksim/cli/WorldOptions.h"
 
+#include <cstdio>
+
 #include "parksim/core/io/Error.h"
 
 namespace parksim::cli {
@@ -48,7 +50,9 @@ std::vector<std::string> WorldOverrideOptions::labels() const {
 
 std::shared_ptr<const World> loadWorldWith(const std::string& path,
                                            const WorldOverrideOptions& options) {
-  return std::make_shared<const World>(loadWorld(path, options.overrides()));
+  auto world = std::make_shared<const World>(loadWorld(path, options.overrides()));
+  for (const std::string& w : world->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  return world;
 }
 
 }  // namespace parksim::cli

@@ -32,7 +32,7 @@ struct WorldOverrideOptions {
 };
 
 /// The world file at `path` with the options' overrides applied (scenario/world/World.h's
-/// loadWorld).
+/// loadWorld); its warnings (World::warnings) printed to stderr, one "warning: " line each.
 std::shared_ptr<const World> loadWorldWith(const std::string& path,
                                            const WorldOverrideOptions& options);
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "parksim/compare/Quantile.h"
 #include "parksim/core/io/Error.h"
+#include "parksim/core/stats/Quantile.h"
 
 namespace parksim {
 

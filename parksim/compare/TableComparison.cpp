@@ -11,11 +11,11 @@
 #include "parksim/compare/Bootstrap.h"
 #include "parksim/compare/ExactTest.h"
 #include "parksim/compare/HolmCorrection.h"
-#include "parksim/compare/Quantile.h"
 #include "parksim/compare/RowPairing.h"
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/NumberFormat.h"
 #include "parksim/core/io/Text.h"
+#include "parksim/core/stats/Quantile.h"
 #include "parksim/report/Report.h"
 #include "parksim/sweep/spec/EpisodeParams.h"
 

@@ -11,7 +11,9 @@
 namespace parksim {
 
 struct ComparisonPage {
-  /// The comparison as data (compare/ComparisonJson.h's comparisonJson).
+  /// The comparison as data (compare/ComparisonJson.h's comparisonJson), with, when the
+  /// caller found them, "differences": what differs between the two configurations
+  /// (compare/ConfigurationDiff.h's differencesJson), which the page lists first.
   nlohmann::json comparison;
   /// The sweep directories whose episodes/<id>/report.html the page links to (the candidate's
   /// by an episode's candidate_id where it has one); empty for a table given as a

@@ -5,8 +5,10 @@
 
 #include "parksim/core/io/Error.h"
 #include "parksim/pages/ColumnCodec.h"
+#include "parksim/pages/EpisodeFolderCheck.h"
 #include "parksim/pages/PageDocument.h"
 #include "parksim/pages/TableColumns.h"
+#include "parksim/results/tables/EpisodeRecord.h"
 
 namespace parksim {
 
@@ -15,7 +17,7 @@ std::vector<std::string> parameterColumns(const std::vector<nlohmann::ordered_js
   if (rows.empty()) return axes;
   for (const auto& [key, value] : rows.front().items()) {
     if (key == "status") break;
-    if (key != "episode_id") axes.push_back(key);
+    if (key != "episode_id" && !isReplicateKey(key)) axes.push_back(key);
   }
   return axes;
 }
@@ -25,9 +27,8 @@ std::filesystem::path keptEpisodePage(const std::string& episodes_dir, const std
   if (id.empty() || id == "." || id == ".." || id.find_first_of("/\\") != std::string::npos) {
     return {};
   }
-  std::error_code ec;
   const fs::path page = fs::path(episodes_dir) / id / "report.html";
-  return fs::is_regular_file(page, ec) ? page : fs::path();
+  return isWholePage(page) ? page : fs::path();
 }
 
 std::vector<bool> keptEpisodePages(const std::string& episodes_dir,

@@ -37,11 +37,13 @@ struct SweepPage {
 };
 
 /// The parameters of a results table: the keys a row lists between episode_id and status, in
-/// that order (the layout sweep rows are written in: id, parameters, outcome, measurements).
+/// that order (the layout sweep rows are written in: id, parameters, outcome, measurements),
+/// but the replicates (isReplicateKey: seed, noise_seed, sample), which are no axis.
 std::vector<std::string> parameterColumns(const std::vector<nlohmann::ordered_json>& rows);
 
-/// `episodes_dir`/<id>/report.html when it is a file, else an empty path (also for an id that
-/// is not a folder name: empty, ".", "..", or holding a separator).
+/// `episodes_dir`/<id>/report.html when it is a whole page (isWholePage, EpisodeFolderCheck.h),
+/// else an empty path (also for an id that is not a folder name: empty, ".", "..", or holding
+/// a separator): a page cut short is not linked.
 std::filesystem::path keptEpisodePage(const std::string& episodes_dir, const std::string& id);
 
 /// For each row, whether its episode has a page (keptEpisodePage of its episode_id).

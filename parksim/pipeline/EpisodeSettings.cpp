@@ -11,6 +11,7 @@
 #include "parksim/core/io/NumberFormat.h"
 #include "parksim/core/io/Text.h"
 #include "parksim/planner/base/PlanCheck.h"
+#include "parksim/realism/DriveSizing.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/sim/episode/Episode.h"
 
@@ -61,7 +62,9 @@ EpisodeSettings resolveSettings(const EpisodeRequest& request) {
   s.plan = resolvedPlanSetup(request.plan, world.scenario, componentsOf(request).planners);
   s.execution = request.execution;
   if (request.realism != "world") {
-    s.execution.realism = presetRealism(request.realism);
+    // The preset's motors sized to the world's robot (a car's, realism/DriveSizing.h).
+    s.execution.realism =
+        presetRealismFor(request.realism, world.scenario.robot, world.scenario.physics);
   } else {
     s.execution.realism = world.sections.has_realism ? world.sections.realism : RealismDef{};
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "parksim/core/io/Error.h"
+#include "parksim/core/stats/Quantile.h"
 
 namespace parksim {
 
@@ -14,11 +15,9 @@ Distribution summarize(std::vector<double> values) {
     if (std::isnan(b)) return true;
     return a < b;
   });
-  const std::size_t n = values.size();
   Distribution d;
-  d.median = n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-  const auto rank = static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(n)));
-  d.p95 = values[std::max<std::size_t>(rank, 1) - 1];
+  d.median = quantileSorted7(values, 0.5);
+  d.p95 = quantileSorted7(values, 0.95);
   d.max = values.back();
   return d;
 }

@@ -3,24 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parksim/core/stats/Quantile.h"
 #include "parksim/renders/plots/TrackingPlot.h"
 #include "parksim/report/PlotCanvas.h"
 
 namespace parksim {
 
-double quantileSorted(const std::vector<double>& sorted, double q) {
-  const double pos = q * static_cast<double>(sorted.size() - 1);
-  const std::size_t lo = static_cast<std::size_t>(std::floor(pos));
-  const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
-  return sorted[lo] + (pos - static_cast<double>(lo)) * (sorted[hi] - sorted[lo]);
-}
-
 BoxStats boxStats(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   BoxStats s;
-  s.q1 = quantileSorted(values, 0.25);
-  s.median = quantileSorted(values, 0.5);
-  s.q3 = quantileSorted(values, 0.75);
+  s.q1 = quantileSorted7(values, 0.25);
+  s.median = quantileSorted7(values, 0.5);
+  s.q3 = quantileSorted7(values, 0.75);
   const double iqr = s.q3 - s.q1;
   const double lo_fence = s.q1 - 1.5 * iqr;
   const double hi_fence = s.q3 + 1.5 * iqr;

@@ -23,9 +23,6 @@ struct BoxStats {
   std::vector<double> outliers;
 };
 
-/// Quantile q in [0, 1] of `sorted` (ascending, non-empty), linear between ranks.
-double quantileSorted(const std::vector<double>& sorted, double q);
-
 /// BoxStats of `values` (non-empty; any order).
 BoxStats boxStats(std::vector<double> values);
 

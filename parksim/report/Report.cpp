@@ -1,7 +1,6 @@
 #include "parksim/report/Report.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -9,7 +8,9 @@
 #include <tuple>
 
 #include "parksim/core/io/AtomicFile.h"
+#include "parksim/core/io/FileName.h"
 #include "parksim/core/io/NumberFormat.h"
+#include "parksim/core/stats/Quantile.h"
 #include "parksim/renders/gl/Renderer.h"
 #include "parksim/renders/image/PngEncoder.h"
 #include "parksim/report/BoxPlot.h"
@@ -46,7 +47,7 @@ std::string medianP95(const std::vector<double>& v, const char* format) {
   std::vector<double> s = v;
   std::sort(s.begin(), s.end());
   char buf[64];
-  std::snprintf(buf, sizeof buf, format, quantileSorted(s, 0.5), quantileSorted(s, 0.95));
+  std::snprintf(buf, sizeof buf, format, quantileSorted7(s, 0.5), quantileSorted7(s, 0.95));
   return buf;
 }
 
@@ -55,7 +56,7 @@ std::string median(const std::vector<double>& v, const char* format) {
   std::vector<double> s = v;
   std::sort(s.begin(), s.end());
   char buf[64];
-  std::snprintf(buf, sizeof buf, format, quantileSorted(s, 0.5));
+  std::snprintf(buf, sizeof buf, format, quantileSorted7(s, 0.5));
   return buf;
 }
 
@@ -69,7 +70,7 @@ std::string csvNumber(const std::vector<double>& v, double q) {
   if (v.empty()) return "";
   std::vector<double> s = v;
   std::sort(s.begin(), s.end());
-  return nlohmann::json(quantileSorted(s, q)).dump();
+  return nlohmann::json(quantileSorted7(s, q)).dump();
 }
 
 std::string groupName(const ReportGroup& g, bool with_realism) {
@@ -223,10 +224,10 @@ std::pair<double, double> wilson(int k, int n) {
   return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
 }
 
-// Parameters whose variation is replication, not a question asked: not studied.
+// Parameters whose variation is replication (isReplicateKey), not a question asked, and
+// world_file (world names it): not studied.
 bool studied(std::string_view key) {
-  return key != "episode_id" && key != "world_file" && key != "seed" && key != "noise_seed" &&
-         key != "sample";
+  return key != "episode_id" && key != "world_file" && !isReplicateKey(key);
 }
 
 // The candidate columns: the record's parameter fields and the set: columns of the rows.
@@ -411,23 +412,17 @@ std::string parametersCsv(const std::vector<ParameterStudy>& studies) {
 
 namespace {
 
-// The file name of a parameter's plot: its column with every other character than letters,
-// digits, '.', '_' and '-' as '_'.
+// The file name of a parameter's plot: parameter_<column>.png, the column made safe and apart
+// from the others (fileStemOf).
 std::string plotFile(const std::string& parameter) {
-  std::string name = "parameter_";
-  for (const char c : parameter) {
-    name += std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '.' || c == '_' || c == '-'
-                ? c
-                : '_';
-  }
-  return name + ".png";
+  return "parameter_" + fileStemOf(parameter) + ".png";
 }
 
 std::optional<double> quantileOf(const std::vector<double>& v, double q) {
   if (v.empty()) return std::nullopt;
   std::vector<double> sorted = v;
   std::sort(sorted.begin(), sorted.end());
-  return quantileSorted(sorted, q);
+  return quantileSorted7(sorted, q);
 }
 
 }  // namespace

@@ -1,14 +1,17 @@
 // The dynamics fidelity: the task's actions are wheel commands held through Episode's step API
 // (sim/episode/Episode.h), so the robot is the one `parksim run` drives, realism included, and the
-// controller's view is the Episode's estimate. The Episode's plan is the start pose held still
-// for longer than the task can last: its tracking measurements mean nothing here, and its end
-// is never reached.
+// controller's view is the Episode's estimate. A car's action is a CarCommand (taskCarCommand:
+// acceleration and steering target, as the kinematic car's) given to Episode::step at every
+// physics step: the Episode ramps its commanded speed by accel * dt a step (by accel * the
+// control loop's period at a realism's ticks) within max_speed_mps, and the car's steering
+// servos turn its front wheels toward the target at max_steer_rate (sim/CarBody.h). The Episode's
+// plan is the start pose held still for longer than the task can last: its tracking measurements
+// mean nothing here, and its end is never reached.
 
 #include <algorithm>
 #include <climits>
 #include <cmath>
 
-#include "parksim/core/io/Error.h"
 #include "parksim/rl/TaskDrive.h"
 #include "parksim/sim/episode/Episode.h"
 
@@ -48,10 +51,16 @@ class DynamicDrive final : public TaskDrive {
   }
 
   void act(const TaskAction& action, long steps, DriveState& out) override {
-    const WheelSpeeds wheels = taskWheelSpeeds(action, scenario_.robot);
+    const bool car = scenario_.robot.isCar();
+    const WheelSpeeds wheels = car ? WheelSpeeds{} : taskWheelSpeeds(action, scenario_.robot);
+    const CarCommand command = car ? taskCarCommand(action, scenario_.robot) : CarCommand{};
     out.contacts.clear();
     for (long i = 0; i < steps; ++i) {
-      episode_->step(wheels);
+      if (car) {
+        episode_->step(command);
+      } else {
+        episode_->step(wheels);
+      }
       for (int index : episode_->world().chassisContacts()) {
         char& seen = touched_[static_cast<std::size_t>(index)];
         if (seen == 0) out.contacts.push_back(index);
@@ -73,6 +82,7 @@ class DynamicDrive final : public TaskDrive {
     const RobotState& robot = world.robot();
     out.pose = robot.pose;
     out.t_s = world.time();
+    out.steer_rad = robot.steer_rad;
     if (!execution_.realism.active()) {
       out.estimate = robot.pose;
       out.twist = robot.twist;
@@ -80,6 +90,7 @@ class DynamicDrive final : public TaskDrive {
     }
     const ExecutedRow& row = episode_->current();
     out.estimate = row.estimate;
+    out.steer_rad = row.steer_rad;  // measured
     out.twist = {};
     if (elapsed_s > 0.0) {
       const WheelSpeeds mean{(row.encoder_rad.left_radps - encoders_.left_radps) / elapsed_s,
@@ -102,13 +113,6 @@ class DynamicDrive final : public TaskDrive {
 
 std::unique_ptr<TaskDrive> makeDynamicDrive(const Scenario& scenario, const ParkingTaskDef& def,
                                             long max_actions, long steps) {
-  // The dynamics world has no steered wheels yet: driving a car's footprint as a differential
-  // drive would teach a policy motions the car cannot make.
-  if (scenario.robot.isCar()) {
-    throw Error(
-        "parking task: fidelity dynamics cannot drive a car yet (the Bullet world has no "
-        "steered wheels); use fidelity kinematic");
-  }
   return std::make_unique<DynamicDrive>(scenario, def, max_actions, steps);
 }
 

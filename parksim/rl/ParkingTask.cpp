@@ -103,9 +103,8 @@ struct ParkingTask::Impl {
     info.steer_rad = state.steer_rad;
     info.goal_pos_err_m = positionDistance(state.pose, scenario.goal.pose);
     info.goal_heading_err_rad = goalHeadingError(scenario.goal, state.pose.theta);
-    info.is_success = info.goal_pos_err_m <= def.success_position_m &&
-                      info.goal_heading_err_rad <= def.success_heading_rad &&
-                      state.contacts.empty();
+    info.is_success =
+        taskOutcome(def, scenario.goal, scenario.lot, state.pose, !state.contacts.empty()).success;
     info.contacts = state.contacts;
   }
 
@@ -130,12 +129,8 @@ struct ParkingTask::Impl {
 
   void judge() {
     const TaskInfo& info = last.info;
-    TaskOutcome outcome;
-    outcome.success = info.is_success;
-    outcome.contact = !info.contacts.empty();
-    outcome.exit = !scenario.lot.contains(info.pose.x, info.pose.y);
-    outcome.terminated =
-        outcome.success || outcome.exit || (outcome.contact && def.terminate_on_contact);
+    const TaskOutcome outcome =
+        taskOutcome(def, scenario.goal, scenario.lot, info.pose, !info.contacts.empty());
     const double before = potential;
     potential = currentPotential();
     last.reward = taskReward(def, before, potential, outcome);

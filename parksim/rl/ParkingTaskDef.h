@@ -61,12 +61,15 @@ struct ParkingTaskDef {
   /// distance to the goal position (m), e the heading error (rad). Shaping of this form does
   /// not change which policy is best for a learner discounting by `discount` (Ng, Harada and
   /// Russell 1999): from any start, every successful park returns more than every crash, exit
-  /// and time-out.
+  /// and time-out, discounted by `discount`.
   double distance_scale_m = 0.1;
   double heading_weight = 0.3;
-  /// The learner's discount factor, gamma, in (0, 1]: set it to the learner's (0.99 is
-  /// Stable-Baselines3's default).
-  double discount = 0.99;
+  /// The shaping's discount, gamma, in (0, 1]. 1 (phi(s') - phi(s)): the undiscounted return,
+  /// which episode statistics log, ranks every episode exactly, and a learner discounting by
+  /// its own gamma < 1 sees a park promptly made win too (docs/python.md, "Reward"); the
+  /// learner's gamma: exactly potential-based for that learner, but a robot standing far from
+  /// the goal then collects (1 - gamma) * D a step undiscounted (issue 39).
+  double discount = 1.0;
   /// Weight of the shaping potential, >= 0; 0 leaves the outcome's rewards alone (their order
   /// then holds for every discount).
   double shaping_weight = 1.0;

@@ -11,7 +11,14 @@
 // start) plus gamma^(T-1) times its outcome, or plus gamma^T phi(s_T) <= 0 for a time-out:
 // every successful park beats every crash, exit and time-out, in either fidelity and under
 // every realism (the reward judges the true pose).
+//
+// Why gamma is 1 by default: the return episode statistics log is undiscounted. With gamma <
+// 1 a robot standing far from the goal collects (1 - gamma) * D a step of it, without bound
+// (issue 39); with gamma 1 it collects nothing, and a learner discounting by its own gamma
+// sees an added cost (1 - gamma) * phi(s') <= 0 a step, 0 at the goal: a prompt park wins both.
 
+#include "parksim/core/geometry/Pose2.h"
+#include "parksim/core/model/Scenario.h"
 #include "parksim/rl/ParkingTaskDef.h"
 
 namespace parksim {
@@ -32,8 +39,19 @@ struct TaskOutcome {
   bool terminated = false;  ///< the episode ended here (success, exit, or a terminating contact)
 };
 
+/// How a step that ends at the true pose `pose` ends, towards `goal` in `lot`, with or
+/// without a contact during the step: ParkingTask's judgement.
+TaskOutcome taskOutcome(const ParkingTaskDef& def, const GoalRegion& goal, const LotBounds& lot,
+                        const Pose2& pose, bool contact);
+
 /// The reward of one step from potential `before` to potential `after` (taskPotential).
 double taskReward(const ParkingTaskDef& def, double before, double after,
                   const TaskOutcome& outcome);
+
+/// The reward of a step of the true pose from `before` to `after` towards `goal`, in `lot`:
+/// ParkingTask's, from the poses alone, so that a goal-conditioned learner can ask it again for
+/// another goal (hindsight experience replay, python/parksim/env.py's compute_reward).
+double taskTransitionReward(const ParkingTaskDef& def, const GoalRegion& goal, const LotBounds& lot,
+                            const Pose2& before, const Pose2& after, bool contact);
 
 }  // namespace parksim

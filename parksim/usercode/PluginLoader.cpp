@@ -1,5 +1,12 @@
 #include "parksim/usercode/PluginLoader.h"
 
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <utility>
@@ -61,6 +68,57 @@ std::string text(const char* s, const std::string& what, const std::string& file
   return s;
 }
 
+const PluginRecord& loadInThisProcess(Components& components, const std::string& path,
+                                      const std::string& file);
+
+// "SIGSEGV, Segmentation fault".
+std::string probeSignalText(int sig) {
+  const char* name = sigabbrev_np(sig);
+  const char* what = strsignal(sig);
+  return std::string("SIG") + (name != nullptr ? name : std::to_string(sig).c_str()) +
+         (what != nullptr ? std::string(", ") + what : std::string());
+}
+
+// A plugin's static initializers, entry point and registration run when it is loaded, before
+// parksim can watch them: a crash there would end the process loading it without a word. So it
+// is loaded first in a forked child (which only loads it, into a scratch Components, and exits),
+// and only a child that exited normally lets it be loaded here. What the child refuses, the
+// load here refuses again with its message. Its output goes to /dev/null: what the plugin
+// prints at load appears once, from the load here.
+void probeLoad(const std::string& path, const std::string& file) {
+  const pid_t pid = ::fork();
+  if (pid < 0) throw Error(path + ": cannot probe the plugin: fork: " + std::strerror(errno));
+  if (pid == 0) {
+    // The child: die of what kills it (not of a handler the parent installed), quietly.
+    for (const int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(sig, SIG_DFL);
+    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (null >= 0) {
+      ::dup2(null, STDOUT_FILENO);
+      ::dup2(null, STDERR_FILENO);
+    }
+    try {
+      Components scratch;
+      loadInThisProcess(scratch, path, file);
+    } catch (...) {  // refused: the load in the parent says why
+    }
+    ::_exit(0);  // no exit handlers: they are the parent's
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR)
+      throw Error(path + ": cannot probe the plugin: waitpid: " + std::strerror(errno));
+  }
+  if (WIFSIGNALED(status)) {
+    throw Error(path + ": the plugin crashed while it was loaded (" +
+                probeSignalText(WTERMSIG(status)) +
+                ": in its static initializers, entry point or registration); not loaded");
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    throw Error(path + ": the plugin ended the process while it was loaded (exit status " +
+                std::to_string(WEXITSTATUS(status)) + "); not loaded");
+  }
+}
+
 }  // namespace
 
 const PluginRecord& loadPlugin(Components& components, const std::string& path) {
@@ -72,6 +130,14 @@ const PluginRecord& loadPlugin(Components& components, const std::string& path) 
   for (const PluginRecord& r : components.plugins) {
     if (r.path == file) throw Error(path + ": plugin loaded twice");
   }
+  probeLoad(path, file);
+  return loadInThisProcess(components, path, file);
+}
+
+namespace {
+
+const PluginRecord& loadInThisProcess(Components& components, const std::string& path,
+                                      const std::string& file) {
   PluginRecord record;
   record.path = file;
   record.hash = fileHash(file);
@@ -125,6 +191,8 @@ const PluginRecord& loadPlugin(Components& components, const std::string& path) 
   components = std::move(staged);
   return components.plugins.back();
 }
+
+}  // namespace
 
 std::shared_ptr<const Components> loadComponents(const std::vector<std::string>& paths) {
   if (paths.empty()) return builtInComponents();

@@ -107,10 +107,14 @@ __version__ = "0.3.0"
 
 
 def _plain(value):
-    """NumPy scalars and arrays in a world dict, as JSON numbers and lists."""
+    """NumPy scalars and arrays in a world dict, as JSON numbers and lists; a RobotDef as the
+    world file's robot: section (RobotDef.to_world())."""
+    if isinstance(value, RobotDef):
+        return value.to_world()
     if hasattr(value, "tolist"):
         return value.tolist()
-    raise TypeError(f"a world dict holds numbers, strings, lists and dicts, not {type(value)}")
+    raise TypeError(f"a world dict holds numbers, strings, lists, dicts and RobotDefs, not "
+                    f"{type(value)}")
 
 
 def episode_fields():

@@ -5,12 +5,14 @@ DummyVecEnv, nor one process each in a SubprocVecEnv).
     from parksim.sb3 import SB3VecEnv
     from stable_baselines3 import SAC
     env = SB3VecEnv(8, fidelity="kinematic")        # VecParkingEnv's arguments
-    model = SAC("MlpPolicy", env, gamma=env.get_attr("discount")[0]).learn(100_000)
+    model = SAC("MlpPolicy", env).learn(100_000)  # any gamma (docs/python.md, "Reward")
 
 SB3's VecEnv contract (stable_baselines3.common.vec_env.VecEnv, its documentation "Vectorized
 Environments"), as DummyVecEnv keeps it:
-  reset() -> observations (num_envs, 10); seeds set by seed() and options by set_options() are
-      used by this reset only; reset_infos[i] holds sub-environment i's reset info.
+  reset() -> observations (num_envs, 10) (observation="goal_dict": VecParkingEnv's dict of
+      batched arrays, terminal_observation a dict, compute_reward through env_method); seeds
+      set by seed() and options by set_options() are used by this reset only; reset_infos[i]
+      holds sub-environment i's reset info.
   step_async(actions); step_wait() -> (observations, rewards float32, dones bool, infos), infos a
       list of dicts, one per sub-environment (ParkingEnv's info). A sub-environment whose episode
       ended is reset within the step: observations holds its new episode's first observation,
@@ -30,7 +32,6 @@ SB3's base class gives (step, seed, set_options, render, ...), with the same beh
 
 import numpy as np
 
-from .env import task_spaces
 from .vector import VecParkingEnv
 
 
@@ -137,6 +138,11 @@ class _SubEnv:
     def get_wrapper_attr(self, name):
         return getattr(self, name)
 
+    def compute_reward(self, achieved_goal, desired_goal, info):
+        """ParkingEnv.compute_reward (observation="goal_dict"), as HerReplayBuffer calls it
+        through env_method."""
+        return self._venv.compute_reward(achieved_goal, desired_goal, info)
+
     def render(self):
         """This task's frame (H x W x 3 uint8) with render_mode="rgb_array", else None."""
         if self.render_mode != "rgb_array":
@@ -166,15 +172,14 @@ class SB3VecEnv(_Base):
         self.venv = VecParkingEnv(num_envs, world, autoreset_mode="same_step", **options)
         self._sub_envs = [_SubEnv(self.venv, i) for i in range(num_envs)]
         self._actions = None
-        action_space, observation_space = task_spaces(self.venv._batch.observation_low,
-                                                      self.venv._batch.observation_high)
-        super().__init__(num_envs, observation_space, action_space)
+        super().__init__(num_envs, self.venv.single_observation_space,
+                         self.venv.single_action_space)
 
     def reset(self):
         if any(self._options):
             raise ValueError("SB3VecEnv.reset: reset options are not supported (set_options);"
                              " a VecParkingEnv sub-environment starts from its seed's draws")
-        obs, infos = self.venv.reset(seed=list(self._seeds))
+        obs, infos = self.venv.reset(seed=list(self._seeds))  # goal_dict: dict observations
         self.reset_infos = _info_dicts(infos, self.num_envs)
         self._reset_seeds()
         self._reset_options()
@@ -189,15 +194,20 @@ class SB3VecEnv(_Base):
             raise RuntimeError("SB3VecEnv.step_wait: call step_async(actions) first")
         if not all(self.venv._seeded):
             raise RuntimeError("SB3VecEnv.step_wait: call reset() before stepping")
-        batch = self.venv._batch  # its arrays as they are: VecParkingEnv's Gymnasium infos
+        venv, batch = self.venv, self.venv._batch  # its arrays: VecParkingEnv's infos
         last_obs, rewards, terminated, truncated, last_infos = batch.step(actions)
+        venv._add_previous_goal(last_infos, np.ones(self.num_envs, dtype=bool))
+        last_obs = venv._observed(last_obs, last_infos)
         obs, started_infos = batch.started()
+        obs = venv._observed(obs, started_infos)
         dones = terminated | truncated
         infos = _info_dicts(last_infos, self.num_envs)
         if dones.any():
             started = _info_dicts(started_infos, self.num_envs)
             for i in np.flatnonzero(dones):
-                infos[i]["terminal_observation"] = last_obs[i]
+                infos[i]["terminal_observation"] = (
+                    last_obs[i] if venv.observation == "array"
+                    else {key: value[i] for key, value in last_obs.items()})
                 self.reset_infos[i] = started[i]
         for i, info in enumerate(infos):
             info["TimeLimit.truncated"] = bool(truncated[i] and not terminated[i])

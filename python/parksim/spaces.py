@@ -1,5 +1,5 @@
-"""Minimal stand-ins for gymnasium.spaces.Box, used when gymnasium is not installed (Debian does
-not ship it). Same attributes and methods as far as ParkingEnv's users need them."""
+"""Minimal stand-ins for gymnasium.spaces.Box and Dict, used when gymnasium is not installed
+(Debian does not ship it). Same attributes and methods as far as ParkingEnv's users need them."""
 
 import numpy as np
 
@@ -42,3 +42,32 @@ class Box:
 
     def __repr__(self):
         return f"Box({self.low.min()}, {self.high.max()}, {self.shape}, {self.dtype})"
+
+
+class Dict:
+    """Named spaces (gymnasium.spaces.Dict): spaces, [key], sample(), contains()."""
+
+    def __init__(self, spaces, seed=None):
+        self.spaces = dict(spaces)
+        self.seed(seed)
+
+    def seed(self, seed=None):
+        for i, space in enumerate(self.spaces.values()):
+            space.seed(None if seed is None else seed + i)
+        return [seed]
+
+    def sample(self):
+        return {key: space.sample() for key, space in self.spaces.items()}
+
+    def contains(self, x):
+        return (isinstance(x, dict) and set(x) == set(self.spaces)
+                and all(space.contains(x[key]) for key, space in self.spaces.items()))
+
+    def __contains__(self, x):
+        return self.contains(x)
+
+    def __getitem__(self, key):
+        return self.spaces[key]
+
+    def __repr__(self):
+        return f"Dict({self.spaces!r})"

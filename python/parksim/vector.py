@@ -16,7 +16,8 @@ importable, VecParkingEnv is a gymnasium.vector.VectorEnv.
 import numpy as np
 
 from . import _parksim
-from .env import checked_seed, fresh_seed, own_step_limit, task_options, task_spaces, world_from
+from .env import (OBSERVATIONS, checked_seed, fresh_seed, goal_dict_space, goal_observation,
+                  goal_rewards, own_step_limit, pose_goal, task_options, task_spaces, world_from)
 
 try:  # pragma: no cover - depends on what is installed
     import gymnasium as _gym
@@ -51,8 +52,8 @@ class VecParkingEnv(_Base):
     autoreset_mode: "next_step" (Gymnasium's default) or "same_step" (the sub-environment is
     reset within the step that ended its episode; infos["final_obs"] and infos["final_info"]
     hold the last step's, as Gymnasium's SyncVectorEnv gives them); an AutoresetMode too.
-    max_episode_steps: as ParkingEnv's (300; None: no limit of the environment's own), and
-    what gymnasium.make_vec's max_episode_steps sets.
+    max_episode_steps: as ParkingEnv's (300; None or -1: no limit of the environment's own),
+    and what gymnasium.make_vec's max_episode_steps sets.
     world, realism, model and the ParkingTaskDef options: as ParkingEnv's; in particular
     fidelity="kinematic" (exact arcs against the collision checker, no Bullet dynamics: the
     pre-training fidelity) or "dynamics" (the default).
@@ -60,18 +61,26 @@ class VecParkingEnv(_Base):
     reset(seed=s) seeds sub-environment i with s + i (a list gives each its own seed, None
     keeps a sub-environment's sequence); sub-environment i then runs exactly the episodes of
     ParkingEnv().reset(seed=s + i) followed by reset() after each end.
+
+    observation="goal_dict": ParkingEnv's goal-conditioned dict, batched (observation (n, 6)
+    float32, achieved_goal and desired_goal (n, 4) float64), infos["previous_achieved_goal"]
+    (n, 4), masked off for a sub-environment reset at this step (its info is a reset's), and
+    compute_reward(achieved_goal, desired_goal, info), ParkingEnv's own function.
     """
 
     metadata = {"render_modes": ["rgb_array"], "autoreset_mode": _NEXT_STEP}
 
     def __init__(self, num_envs, world=None, *, threads=None, render_mode=None, realism=None,
-                 model=None, autoreset_mode=_NEXT_STEP, **options):
+                 model=None, autoreset_mode=_NEXT_STEP, observation="array", **options):
         num_envs = int(num_envs)
         if num_envs < 1:
             raise ValueError(f"num_envs must be at least 1, got {num_envs}")
         if render_mode not in (None, "rgb_array"):
             raise ValueError(f"render_mode must be None or 'rgb_array', got {render_mode!r}")
         mode = _autoreset_mode(autoreset_mode)
+        if observation not in OBSERVATIONS:
+            raise ValueError(f"observation must be one of {OBSERVATIONS}, got {observation!r}")
+        self.observation = observation
         self.world = world_from(world)
         self._batch = _parksim._TaskBatch(self.world, num_envs, threads=int(threads or 0),
                                           same_step=mode == _SAME_STEP,
@@ -84,12 +93,18 @@ class VecParkingEnv(_Base):
         self.fidelity = definition.fidelity
         self.control_period_s = self._batch.control_period_s
         self.max_episode_steps = own_step_limit(definition)
-        self.discount = definition.discount  # the reward's: a learner's gamma should be it
+        self.discount = definition.discount  # the shaping's gamma (docs/python.md, "Reward")
         self.metadata = dict(type(self).metadata, render_fps=1.0 / self.control_period_s,
                              autoreset_mode=mode)
         low, high = self._batch.observation_low, self._batch.observation_high
         self.single_action_space, self.single_observation_space = task_spaces(low, high)
         self.action_space, self.observation_space = task_spaces(low, high, num_envs)
+        if observation == "goal_dict":
+            self.single_observation_space = goal_dict_space(self.single_observation_space)
+            self.observation_space = goal_dict_space(self.observation_space)
+        self._desired_goal = pose_goal(self.world.goal["pose"])
+        self._achieved_goal = None  # (n, 4): the last observations', for the next step's infos
+        self._ended = np.zeros(num_envs, dtype=bool)  # the last step's ends (next-step autoreset)
         self.spec = None
         self.closed = False
         self._seeded = [False] * num_envs
@@ -125,25 +140,34 @@ class VecParkingEnv(_Base):
             if s is None and not self._seeded[i]:
                 seeds[i] = fresh_seed(self.np_random)
             self._seeded[i] = True
-        return self._batch.reset(seeds)
+        obs, infos = self._batch.reset(seeds)
+        self._ended[:] = False
+        return self._observed(obs, infos), infos
 
     def step(self, actions):
         """actions: (num_envs, 2) wheel speed fractions; ValueError on another shape, anything
         but real numbers or a non-finite value (nothing steps then)."""
         if not all(self._seeded):
             raise RuntimeError("VecParkingEnv.step: call reset() before step()")
-        result = self._batch.step(actions)
-        if self.metadata["autoreset_mode"] != _SAME_STEP:
-            return result
-        last_obs, rewards, terminated, truncated, last_infos = result
-        obs, infos = self._batch.started()
+        last_obs, rewards, terminated, truncated, last_infos = self._batch.step(actions)
         ended = terminated | truncated
+        if self.metadata["autoreset_mode"] != _SAME_STEP:
+            # A sub-environment that ended at the last step was reset by this one.
+            self._add_previous_goal(last_infos, ~self._ended)
+            self._ended = ended
+            return self._observed(last_obs, last_infos), rewards, terminated, truncated, last_infos
+        self._add_previous_goal(last_infos, np.ones(self.num_envs, dtype=bool))
+        last = self._observed(last_obs, last_infos)
+        obs, infos = self._batch.started()
+        self._add_previous_goal(infos, ~ended, last_infos.get("previous_achieved_goal"))
+        obs = self._observed(obs, infos)
         if ended.any():
             # As Gymnasium's vector environments add them: an object array of the ended
             # sub-environments' last observations, and their last infos under masks.
             final_obs = np.full(self.num_envs, None, dtype=object)
             for i in np.flatnonzero(ended):
-                final_obs[i] = last_obs[i]
+                final_obs[i] = (last[i] if self.observation == "array"
+                                else {key: value[i] for key, value in last.items()})
             final_info = {}
             for key, value in last_infos.items():
                 if not key.startswith("_"):
@@ -153,6 +177,29 @@ class VecParkingEnv(_Base):
             infos.update(final_obs=final_obs, _final_obs=ended.copy(), final_info=final_info,
                          _final_info=ended.copy())
         return obs, rewards, terminated, truncated, infos
+
+    def _add_previous_goal(self, infos, mask, values=None):
+        """goal_dict: infos["previous_achieved_goal"], the achieved goals before the step (or
+        `values`), under `mask` (its entries elsewhere are zero, as Gymnasium masks them)."""
+        if self.observation != "goal_dict":
+            return
+        previous = self._achieved_goal if values is None else values
+        infos["previous_achieved_goal"] = np.where(mask[:, None], previous, 0.0)
+        infos["_previous_achieved_goal"] = mask.copy()
+
+    def _observed(self, obs, infos):
+        """The batch's observations as this environment gives them (observation=...)."""
+        if self.observation == "array":
+            return obs
+        observed = goal_observation(obs, infos["pose"], self._desired_goal)
+        self._achieved_goal = observed["achieved_goal"].copy()
+        return observed
+
+    def compute_reward(self, achieved_goal, desired_goal, info):
+        """ParkingEnv.compute_reward (the same function): goals (..., 4), info a dict or a
+        sequence of dicts, one per goal, each with previous_achieved_goal and contacts (a
+        sub-environment's row of infos)."""
+        return goal_rewards(self._batch, achieved_goal, desired_goal, info)
 
     def render(self):
         if self.render_mode != "rgb_array" or not all(self._seeded):

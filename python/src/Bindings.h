@@ -22,6 +22,7 @@ namespace parksim::python {
 namespace py = pybind11;
 
 void bindDefs(py::module_& m);      // DefBindings.cpp: the ...Def structs, options as kwargs
+void bindRobot(py::module_& m);     // RobotBindings.cpp: RobotDef, checked as a world file
 void bindWorld(py::module_& m);     // WorldBindings.cpp: World, load_world, collision, C-space
 void bindPlan(py::module_& m);      // PlanBindings.cpp: plan(), PlanResult, trajectories
 void bindEpisode(py::module_& m);   // EpisodeBindings.cpp: run(), Episode, DynamicsWorld

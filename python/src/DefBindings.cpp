@@ -5,7 +5,6 @@
 
 #include <pybind11/stl.h>
 
-#include "parksim/core/model/RobotDef.h"
 #include "parksim/planner/base/PlanScenario.h"
 #include "parksim/realism/RealismDef.h"
 #include "parksim/renders/film/FrameRecorder.h"
@@ -94,17 +93,6 @@ SolverKernel solverFromName(const std::string& name) {
 }
 
 void bindPlanningDefs(py::module_& m) {
-  defClass<RobotDef>(m, "RobotDef",
-                     "The differential-drive robot (core/model/RobotDef.h), SI units.")
-      .def_readwrite("length_m", &RobotDef::length_m)
-      .def_readwrite("width_m", &RobotDef::width_m)
-      .def_readwrite("front_overhang_m", &RobotDef::front_overhang_m)
-      .def_readwrite("wheel_base_m", &RobotDef::wheel_base_m)
-      .def_readwrite("wheel_radius_m", &RobotDef::wheel_radius_m)
-      .def_readwrite("max_wheel_speed_radps", &RobotDef::max_wheel_speed_radps)
-      .def_readwrite("max_wheel_accel_radps2", &RobotDef::max_wheel_accel_radps2)
-      .def_readwrite("height_m", &RobotDef::height_m);
-
   defClass<SearchDef>(m, "SearchDef",
                       "What every planner's search is given besides its own parameters "
                       "(planner/base/SearchDef.h): seed, budget, cost weights, smoothing.")
@@ -228,6 +216,7 @@ void bindEpisodeDefs(py::module_& m) {
       .def_readwrite("msaa_samples", &FrameDef::msaa_samples)
       .def_readwrite("encode_threads", &FrameDef::encode_threads)
       .def_readwrite("queue_depth", &FrameDef::queue_depth)
+      .def_readwrite("frame_memory_bytes", &FrameDef::frame_memory_bytes)
       .def_property(
           "gl_backend", [](const FrameDef& d) { return std::string(toString(d.context.backend)); },
           [](FrameDef& d, const std::string& s) {

@@ -9,6 +9,7 @@ PYBIND11_MODULE(_parksim, m) {
   using namespace parksim::python;
   m.doc() = "parksim's C++ core: worlds, planning, episodes, rendering.";
   py::register_exception<parksim::Error>(m, "Error", PyExc_ValueError);
+  bindRobot(m);
   bindDefs(m);
   bindWorld(m);
   bindPlan(m);

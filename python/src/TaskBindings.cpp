@@ -12,6 +12,7 @@
 #include "parksim/pipeline/EpisodeSettings.h"
 #include "parksim/rl/ParkingTask.h"
 #include "parksim/rl/TaskBatch.h"
+#include "parksim/rl/TaskReward.h"
 #include "python/src/Bindings.h"
 
 namespace parksim::python {
@@ -33,6 +34,39 @@ ParkingTaskDef taskDefFrom(const WorldHandle& world, py::dict& options, const ch
   rejectUnknownOptions(options, function);
   def.realism = resolveSettings(request).execution.realism;
   return def;
+}
+
+using PoseRows = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using FlagRows = py::array_t<bool, py::array::c_style | py::array::forcecast>;
+
+constexpr const char* kTransitionRewardsDoc =
+    "The reward of n steps of the true pose from before[i] to after[i] (x, y, theta) towards "
+    "goals[i], with or without a contact: the task's own (taskTransitionReward, "
+    "rl/TaskReward.h), for the environments' compute_reward.";
+
+// The reward of n transitions towards relabelled goals: one function for a task and a batch,
+// so that ParkingEnv's and VecParkingEnv's compute_reward are the same.
+py::array_t<double> transitionRewards(const ParkingTaskDef& def, const Scenario& scenario,
+                                      const PoseRows& before, const PoseRows& after,
+                                      const PoseRows& goals, const FlagRows& contact) {
+  const py::ssize_t n = contact.size();
+  for (const auto* a : {&before, &after, &goals}) {
+    if (a->ndim() != 2 || a->shape(0) != n || a->shape(1) != 3) {
+      throw py::value_error("transition_rewards: poses must be (n, 3) arrays for n = " +
+                            std::to_string(n) + " contact flags");
+    }
+  }
+  py::array_t<double> out(n);
+  auto r = out.mutable_unchecked<1>();
+  const auto b = before.unchecked<2>(), a = after.unchecked<2>(), g = goals.unchecked<2>();
+  const auto c = contact.unchecked<1>();
+  GoalRegion goal = scenario.goal;
+  for (py::ssize_t i = 0; i < n; ++i) {
+    goal.pose = {g(i, 0), g(i, 1), g(i, 2)};
+    r(i) = taskTransitionReward(def, goal, scenario.lot, {b(i, 0), b(i, 1), b(i, 2)},
+                                {a(i, 0), a(i, 1), a(i, 2)}, c(i));
+  }
+  return out;
 }
 
 py::array_t<float> observationArray(const TaskObservation& o) {
@@ -75,7 +109,16 @@ Pose2 startFrom(const py::handle& start) { return poseFrom(start); }
 // What a refused action was, for the message: its kind of values or its shape.
 std::string describeAction(const py::handle& action, const py::array& a) {
   if (!a) {
-    std::string text = py::repr(action).cast<std::string>();
+    // One line: a list of arrays has a repr of many lines; each run of white space is a space.
+    std::string text;
+    for (const char c : py::repr(action).cast<std::string>()) {
+      const bool space = c == ' ' || c == '\n' || c == '\r' || c == '\t' || c == '\v' || c == '\f';
+      if (!space) {
+        text += c;
+      } else if (!text.empty() && text.back() != ' ') {
+        text += ' ';
+      }
+    }
     if (text.size() > 60) text = text.substr(0, 57) + "...";
     return text;
   }
@@ -211,8 +254,15 @@ void bindTask(py::module_& m) {
                              [](const TaskHandle& h) { return poseArray(h.task.last().info.pose); })
       .def_property_readonly("contacts",
                              [](const TaskHandle& h) { return h.task.last().info.contacts; })
-      .def("obstacle_poses",
-           [](const TaskHandle& h) { return posesArray(h.task.obstaclePoses()); });
+      .def("obstacle_poses", [](const TaskHandle& h) { return posesArray(h.task.obstaclePoses()); })
+      .def(
+          "transition_rewards",
+          [](const TaskHandle& h, const PoseRows& before, const PoseRows& after,
+             const PoseRows& goals, const FlagRows& contact) {
+            return transitionRewards(h.task.def(), *h.scenario, before, after, goals, contact);
+          },
+          py::arg("before"), py::arg("after"), py::arg("goals"), py::arg("contact"),
+          kTransitionRewardsDoc);
 }
 
 // A batch's results as Gymnasium's vector API returns them: observations (n, d) float32,
@@ -401,9 +451,17 @@ void bindBatch(py::module_& m) {
            })
       .def("pose", [](const BatchHandle& h,
                       std::size_t i) { return poseArray(h.batch->task(i).last().info.pose); })
-      .def("contacts", [](const BatchHandle& h, std::size_t i) {
-        return h.batch->task(i).last().info.contacts;
-      });
+      .def("contacts", [](const BatchHandle& h,
+                          std::size_t i) { return h.batch->task(i).last().info.contacts; })
+      .def(
+          "transition_rewards",
+          [](const BatchHandle& h, const PoseRows& before, const PoseRows& after,
+             const PoseRows& goals, const FlagRows& contact) {
+            return transitionRewards(h.batch->task(0).def(), *h.scenario, before, after, goals,
+                                     contact);
+          },
+          py::arg("before"), py::arg("after"), py::arg("goals"), py::arg("contact"),
+          kTransitionRewardsDoc);
 }
 
 }  // namespace

@@ -14,6 +14,8 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <pybind11/stl.h>
 
@@ -70,6 +72,14 @@ class PyPlanner : public Planner {
         r.status = PlanStatus::kIterationLimit;
         r.message = "the planner found no plan";
         return r;
+      }
+      // Only an array: a str is not read as a trajectory.csv path, as plan= of run() reads one.
+      if (!py::isinstance<py::array>(answer)) {
+        throw std::runtime_error(
+            "solve() returned a " +
+            std::string(py::str(py::type::of(answer).attr("__qualname__"))) +
+            ", not a trajectory (a structured array with fields t, x, y, theta, omega_left, "
+            "omega_right) or None");
       }
       r.trajectory = trajectoryFrom(answer);
     } catch (py::error_already_set& e) {
@@ -361,22 +371,24 @@ void bindUserCode(py::module_& m) {
           },
           py::arg("observation"));
 
-  py::class_<ControllerInput>(
+  // Field names are ControllerInput's own, unit suffix included (docs/your-code.md's table);
+  // the names of before (t, encoders, ...) still read, with a DeprecationWarning.
+  py::class_<ControllerInput> input(
       m, "ControllerInput",
-      "What a controller knows at one control tick (sim/control/Controller.h).")
-      .def_readonly("tick", &ControllerInput::tick)
-      .def_readonly("t", &ControllerInput::t_s, "episode time, s")
+      "What a controller knows at one control tick (sim/control/Controller.h).");
+  input.def_readonly("tick", &ControllerInput::tick)
+      .def_readonly("t_s", &ControllerInput::t_s, "episode time, s")
       .def_property_readonly(
           "pose", [](const ControllerInput& in) { return poseTuple(in.pose); },
           "(x, y, theta): the true pose, or the estimate under a realism; m, rad")
       .def_property_readonly(
-          "encoders",
+          "encoders_rad",
           [](const ControllerInput& in) {
             return py::make_tuple(in.encoders_rad.left_radps, in.encoders_rad.right_radps);
           },
           "the encoders' wheel angles (left, right), rad")
       .def_property_readonly(
-          "wheel_speeds",
+          "wheel_speeds_radps",
           [](const ControllerInput& in) {
             return py::make_tuple(in.wheel_speeds_radps.left_radps,
                                   in.wheel_speeds_radps.right_radps);
@@ -390,7 +402,7 @@ void bindUserCode(py::module_& m) {
           "(v, omega): the true twist (ideal robot), else that of the measured wheel speeds")
       .def_property_readonly(
           "reference", [](const ControllerInput& in) { return poseTuple(in.reference); },
-          "the plan's pose at t")
+          "the plan's pose at t_s")
       .def_property_readonly(
           "reference_twist",
           [](const ControllerInput& in) {
@@ -404,12 +416,32 @@ void bindUserCode(py::module_& m) {
           },
           "the plan's wheel speeds (left, right) over that interval, rad/s")
       .def_readonly("plan_ended", &ControllerInput::plan_ended)
-      .def_readonly("steer", &ControllerInput::steer_rad,
+      .def_readonly("steer_rad", &ControllerInput::steer_rad,
                     "a car's measured steering angle (bicycle model), rad; 0 otherwise")
-      .def_readonly("reference_steer", &ControllerInput::reference_steer_rad,
+      .def_readonly("reference_steer_rad", &ControllerInput::reference_steer_rad,
                     "a car's feed-forward steering angle from the plan, rad; 0 otherwise")
-      .def_readonly("commanded_speed", &ControllerInput::commanded_speed_mps,
+      .def_readonly("commanded_speed_mps", &ControllerInput::commanded_speed_mps,
                     "a car's speed commanded at the last tick, m/s");
+  for (const auto& [old_name, name] : std::vector<std::pair<const char*, const char*>>{
+           {"t", "t_s"},
+           {"encoders", "encoders_rad"},
+           {"wheel_speeds", "wheel_speeds_radps"},
+           {"steer", "steer_rad"},
+           {"reference_steer", "reference_steer_rad"},
+           {"commanded_speed", "commanded_speed_mps"}}) {
+    const std::string message = std::string("ControllerInput.") + old_name +
+                                " is deprecated: read ." + name + " (the same value)";
+    const std::string field = name;
+    input.def_property_readonly(
+        old_name,
+        [message, field](const py::object& self) {
+          if (PyErr_WarnEx(PyExc_DeprecationWarning, message.c_str(), 1) != 0) {
+            throw py::error_already_set();
+          }
+          return self.attr(field.c_str());
+        },
+        "deprecated: the same value under its unit-suffixed name");
+  }
 
   py::class_<CarCommand>(m, "CarCommand",
                          "A car's command (sim/Controller.h): a speed of its rear axle's middle "

@@ -73,9 +73,18 @@ py::dict obstacleDict(const Obstacle& o) {
   return d;
 }
 
+// What the readers ignored (World::warnings), as Python warnings: the command line prints them
+// as "warning: " lines.
+void warnAbout(const World& world) {
+  for (const std::string& line : world.warnings) {
+    if (PyErr_WarnEx(PyExc_UserWarning, line.c_str(), 1) != 0) throw py::error_already_set();
+  }
+}
+
 WorldHandle parsedWorld(const std::string& text, const std::string& source_name) {
-  return WorldHandle(std::make_shared<const World>(parseWorld(text, source_name)), text,
-                     source_name);
+  auto world = std::make_shared<const World>(parseWorld(text, source_name));
+  warnAbout(*world);
+  return WorldHandle(std::move(world), text, source_name);
 }
 
 // The footprint checker with its world kept alive (it copies what it needs, but a World
@@ -168,6 +177,7 @@ void bindWorld(py::module_& m) {
       "_load_world",
       [](const std::string& path) {
         auto world = std::make_shared<const World>(loadWorld(path));
+        warnAbout(*world);
         // Read again for pickling, after the loader's checks and messages.
         return WorldHandle(std::move(world), readInputFile(path, kMaxWorldFileBytes, "world file"),
                            path);

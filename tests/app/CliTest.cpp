@@ -113,6 +113,31 @@ TEST_F(Cli, MalformedWorldIsRefusedWithOneLineAndNoOutput) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// Regression (issue 39): a ROS map YAML key nav2's map_server ignores (a `centerline`) was
+// refused. It is ignored as map_server ignores it, with one warning line naming the file, line
+// and key, by plan and import alike.
+TEST_F(Cli, AMapKeyMapServerIgnoresIsWarnedAboutNotRefused) {
+  fs::create_directories(dir_ / "maps");
+  const std::string src = parksim::testing::sourceDir() + "/worlds/";
+  fs::copy_file(src + "ros_lab.yaml", dir_ / "ros_lab.yaml");
+  fs::copy_file(src + "maps/lab.pgm", dir_ / "maps" / "lab.pgm");
+  std::ofstream(dir_ / "maps" / "lab.yaml")
+      << slurp(src + "maps/lab.yaml") << "centerline: [[0, 0], [1, 0]]\n";
+  const int line = 8;  // lab.yaml's seven lines, then the key
+  const std::string warning = "warning: " + (dir_ / "maps" / "lab.yaml").string() + ":" +
+                              std::to_string(line) +
+                              ": centerline: not a key nav2's map_server reads";
+  const CliRun plan =
+      parksim("plan " + (dir_ / "ros_lab.yaml").string() + " -q --out " + (dir_ / "out").string());
+  EXPECT_EQ(plan.exit_code, 0) << plan.out;
+  EXPECT_EQ(plan.out.rfind(warning, 0), 0u) << plan.out;
+  EXPECT_EQ(std::count(plan.out.begin(), plan.out.end(), '\n'), 1) << plan.out;
+  const CliRun import = parksim("import " + (dir_ / "maps" / "lab.yaml").string() + " --out " +
+                                (dir_ / "imported.yaml").string());
+  EXPECT_EQ(import.exit_code, 0) << import.out;
+  EXPECT_NE(import.out.find(warning), std::string::npos) << import.out;
+}
+
 TEST_F(Cli, MissingWorldFileAndBadOptionsAreRefused) {
   const fs::path out = dir_ / "never";
   CliRun r = parksim("plan " + (dir_ / "missing.yaml").string() + " --out " + out.string());

@@ -1,5 +1,6 @@
 #include "parksim/core/model/Geometry.h"
 
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -105,6 +106,33 @@ TEST(Geometry, CircleAndPolygonSeparationsAgreeWithTheIndependentReference) {
     }
   }
   EXPECT_GT(overlapping, 1000);
+}
+
+// The overloads given the boxes' axes (for the search heuristic's grid) are the plain tests,
+// to the last bit: the study's plans must not move.
+TEST(Geometry, SeparationsWithGivenAxesAreTheSameToTheLastBit) {
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> pos(-3.0, 3.0);
+  std::uniform_real_distribution<double> size(0.05, 2.5);
+  std::uniform_real_distribution<double> angle(-2.0 * kPi, 2.0 * kPi);
+  auto randomBox = [&] {
+    OrientedBox b;
+    b.center = {pos(rng), pos(rng)};
+    b.half_extents = {size(rng), size(rng)};
+    b.yaw = angle(rng);
+    return b;
+  };
+  for (int k = 0; k < 20000; ++k) {
+    const OrientedBox a = randomBox();
+    const OrientedBox b = randomBox();
+    const BoxAxes own_a = axesOf(a);
+    EXPECT_EQ(own_a.x, Eigen::Vector2d(std::cos(a.yaw), std::sin(a.yaw)));
+    EXPECT_EQ(own_a.y, Eigen::Vector2d(-std::sin(a.yaw), std::cos(a.yaw)));
+    EXPECT_EQ(separationAlongAxes(a, own_a, b, axesOf(b.yaw)), separationAlongAxes(a, b)) << k;
+    const std::array<Eigen::Vector2d, 4> c = b.corners();
+    const std::vector<Eigen::Vector2d> polygon(c.begin(), c.end());
+    EXPECT_EQ(separationAlongAxes(a, own_a, polygon), separationAlongAxes(a, polygon)) << k;
+  }
 }
 
 TEST(Geometry, ConvexityNeedsCounterClockwiseStrictTurnsAndOneRevolution) {

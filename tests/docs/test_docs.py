@@ -215,3 +215,41 @@ def test_documented_command_exists(where, words):
                 option = token.split("=", 1)[0].rstrip("]")
                 assert re.search(rf"(^|[\s,]){re.escape(option)}\b", listed, re.MULTILINE), (
                     f"{where}: parksim {subcommand} has no option {option}")
+
+
+# Folders at the top of the source tree, and under parksim/ (where the docs name a source file
+# relative to parksim/, as `planner/base/PlanCheck.h`).
+TOP_FOLDERS = ("app/", "bench/", "cmake/", "docs/", "examples/", "parksim/", "python/",
+               "scripts/", "tests/", "worlds/")
+PATH_TOKEN = re.compile(r"[\w.-]+(/[\w.-]+)+\.(h|cpp|py|js|css|md|yaml|sh|txt|cmake|ipynb)")
+# Paths the docs name that are not this repository's: another project's file.
+NOT_OURS = {"docs/environments/parking.md"}  # highway-env's, docs/python.md
+
+
+def named_paths():
+    """(doc:line, path as written, where it must be) of every repository file a doc names in
+    backticks (a path under a top folder, or a source file under parksim/), and every relative
+    link's target."""
+    parksim_folders = {p.name for p in (SOURCE_DIR / "parksim").iterdir() if p.is_dir()}
+    found = []
+    for doc in DOCS:
+        for number, line in enumerate(doc.read_text(encoding="utf-8").splitlines(), 1):
+            where = f"{doc.relative_to(SOURCE_DIR)}:{number}"
+            for m in re.finditer(r"`([^`\s]+)`", line):
+                token = m.group(1).rstrip(".,:;")
+                if not PATH_TOKEN.fullmatch(token) or token in NOT_OURS:
+                    continue
+                if token.startswith(TOP_FOLDERS):
+                    found.append((where, token, SOURCE_DIR / token))
+                elif token.split("/")[0] in parksim_folders and token.endswith((".h", ".cpp")):
+                    found.append((where, token, SOURCE_DIR / "parksim" / token))
+            for m in re.finditer(r"\]\(([^)#\s]+)(#[^)]*)?\)", line):
+                if "://" not in m.group(1):
+                    found.append((where, m.group(1), doc.parent / m.group(1)))
+    return found
+
+
+def test_every_repository_path_the_docs_name_exists():
+    assert len(named_paths()) > 300  # the check sees the docs' paths
+    missing = [f"{where}: {token}" for where, token, path in named_paths() if not path.exists()]
+    assert not missing, "named in the docs but not in the repository:\n" + "\n".join(missing)

@@ -29,7 +29,8 @@ class ComparisonPageTest : public ::testing::Test {
           {"cand", {"e1", "e3", "e4"}}}) {
       for (const std::string& id : ids) {
         fs::create_directories(dir_ / side / "episodes" / id);
-        std::ofstream(dir_ / side / "episodes" / id / "report.html") << "<!DOCTYPE html>";
+        std::ofstream(dir_ / side / "episodes" / id / "report.html")
+            << "<!DOCTYPE html>\n</html>\n";
       }
     }
     fs::create_directories(dir_ / "ci");

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/core/io/Error.h"
+#include "parksim/pages/EpisodeFolderCheck.h"
 #include "parksim/pages/JUnitPageLinks.h"
 #include "tests/pages/PageTestSupport.h"
 #include "tests/support/TestPaths.h"
@@ -22,12 +23,13 @@ using Json = nlohmann::ordered_json;
 
 std::vector<Json> rows() {
   std::vector<Json> out;
-  for (const char* id : {"aaa", "bbb", "../x"}) {
+  for (const char* id : {"aaa", "bbb", "../x", "ccc"}) {
     Json r;
     r["episode_id"] = id;
     r["world"] = "head_in";
     r["set.robot.max_wheel_speed_radps"] = 6;
     r["seed"] = 1;
+    r["noise_seed"] = 1;
     r["status"] = "met";
     r["met_tolerance"] = true;
     r["max_pos_err_m"] = 1e-4;
@@ -45,25 +47,45 @@ class SweepPageTest : public ::testing::Test {
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "sweep" / "episodes" / "aaa");
     fs::create_directories(dir_ / "sweep" / "episodes" / "bbb");
-    std::ofstream(dir_ / "sweep" / "episodes" / "aaa" / "report.html") << "<!DOCTYPE html>";
+    fs::create_directories(dir_ / "sweep" / "episodes" / "ccc");
+    std::ofstream(dir_ / "sweep" / "episodes" / "aaa" / "report.html")
+        << "<!DOCTYPE html>\n<html>...</html>\n";
+    // Cut short: as a full disk or a stopped copy leaves it, it opens blank.
+    std::ofstream(dir_ / "sweep" / "episodes" / "ccc" / "report.html")
+        << "<!DOCTYPE html>\n<html>...";
     std::ofstream(dir_ / "x") << "not an episode";
   }
   fs::path dir_;
 };
 
-TEST_F(SweepPageTest, TheParametersAreTheKeysBeforeTheStatus) {
+TEST_F(SweepPageTest, TheParametersAreTheKeysBeforeTheStatusButTheReplicates) {
+  // A seed (as a noise seed or a sample) is a replicate of the same episode, never an axis.
   EXPECT_EQ(parameterColumns(rows()),
-            (std::vector<std::string>{"world", "set.robot.max_wheel_speed_radps", "seed"}));
+            (std::vector<std::string>{"world", "set.robot.max_wheel_speed_radps"}));
   EXPECT_TRUE(parameterColumns({}).empty());
 }
 
 TEST_F(SweepPageTest, OnlyEpisodesWithAPageAreLinked) {
   const std::string episodes = (dir_ / "sweep" / "episodes").string();
-  // bbb's folder has no page; "../x" names a file outside the folder and is never a page.
-  EXPECT_EQ(keptEpisodePages(episodes, rows()), (std::vector<bool>{true, false, false}));
+  // bbb's folder has no page; "../x" names a file outside the folder and is never a page;
+  // ccc's page is cut short.
+  EXPECT_EQ(keptEpisodePages(episodes, rows()), (std::vector<bool>{true, false, false, false}));
+  EXPECT_TRUE(keptEpisodePage(episodes, "ccc").empty());
   EXPECT_FALSE(keptEpisodePage(episodes, "aaa").empty());
   EXPECT_TRUE(keptEpisodePage(episodes, "..").empty());
   EXPECT_TRUE(keptEpisodePage(episodes, "").empty());
+}
+
+TEST_F(SweepPageTest, DamagedFoldersAreNamedOneLineEach) {
+  const std::string episodes = (dir_ / "sweep" / "episodes").string();
+  std::ofstream(dir_ / "sweep" / "episodes" / "ccc" / "metrics.json") << "{\"a\": 1";
+  std::ofstream(dir_ / "sweep" / "episodes" / "aaa" / "plan.json") << "{\"a\": 1}";
+  EXPECT_EQ(episodeFolderProblems(episodes, rows()),
+            (std::vector<std::string>{
+                episodes + "/bbb: report.html is missing",
+                episodes + "/ccc: report.html is cut short or not a page; metrics.json is not "
+                           "JSON"}));
+  EXPECT_EQ(episodeFolderProblem(dir_ / "x"), "not a folder");
 }
 
 TEST_F(SweepPageTest, LinksAreRelativeToThePage) {
@@ -92,17 +114,17 @@ TEST_F(SweepPageTest, TheDataHoldsTheTableTheAxesAndTheKeptFlags) {
   page.axes = parameterColumns(table);
   page.statuses = {"met", "contact"};
   page.episodes_href = "../episodes";
-  page.kept = {true, false, false};
+  page.kept = {true, false, false, false};
   const fs::path path = dir_ / "index.html";
   writeSweepPage(path.string(), page);
   std::ifstream in(path);
   const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const nlohmann::json data = testing::pageData(html);
   EXPECT_EQ(data["page"], "sweep");
-  EXPECT_EQ(data["table"]["rows"], 3);
+  EXPECT_EQ(data["table"]["rows"], 4);
   EXPECT_EQ(data["axes"], page.axes);
   EXPECT_EQ(data["statuses"], page.statuses);
-  EXPECT_EQ(testing::unpack(data["episodes"]["kept"]), (std::vector<double>{1, 0, 0}));
+  EXPECT_EQ(testing::unpack(data["episodes"]["kept"]), (std::vector<double>{1, 0, 0, 0}));
   page.kept = {true};
   EXPECT_THROW(sweepPageData(page), Error);
 }

@@ -27,8 +27,8 @@ EXE = os.environ.get("PARKSIM_EXE", str(SOURCE_DIR / "build" / "app" / "parksim"
 sys.path.insert(0, str(SOURCE_DIR / "scripts"))
 from page_browser import PageBrowser  # noqa: E402
 
-# No '/' in a world's name: `report` names a file after it (issue 39, point 6).
-WORLD_A = "<img src=x onerror=alert(11)> \"q\" 's javascript:alert(12)"
+# A '/' too: `report` names a file after the world (issue 39, point 6).
+WORLD_A = "<img src=x onerror=alert(11)> \"q\" 's javascript:alert(12) ../lots/a"
 WORLD_B = "<svg onload=alert(13)> &amp; \u00e9"
 WALL = "\"><img src=x onerror=alert(21)></script><script>alert(22)</script>"
 ISLAND = "<img src=x onerror=alert(23)> </script>"
@@ -143,8 +143,8 @@ def test_episode_pages_show_names_as_text(browser, out):
         assert any(d.endswith(FILE_A) for d in facts), facts
         if folder == "run":
             names = texts(browser, ".metrics th")
-            for parked in (PARKED_A, PARKED_B):
-                assert "parked_displacement_m." + parked in names
+            for parked in (PARKED_A, PARKED_B):  # lengths in mm: "_mm"
+                assert "parked_displacement_mm." + parked in names
         else:
             verdict = browser.js("return document.getElementById('verdict').textContent")
             assert verdict.endswith("the footprint overlaps " + ISLAND), verdict
@@ -169,9 +169,10 @@ def test_sweep_page_shows_names_as_text(browser, out):
     items = texts(browser, ".tabulator-edit-list-item")
     assert set(items) >= {WORLD_A, WORLD_B}, items
     browser.js("document.activeElement.blur()")
-    # The parked robots' columns (one world has each): chosen, their titles are the names.
+    # The parked robots' columns (one world has each): chosen, their titles are the names
+    # (lengths in mm: "_mm").
     for parked in (PARKED_A, PARKED_B, PARKED_C):
-        name = "parked_displacement_m." + parked
+        name = "parked_displacement_mm." + parked
         browser.js("[...document.querySelectorAll('.chooser label')]"
                    ".find(l => l.textContent.trim() === arguments[0]).querySelector('input').click()",
                    name)

@@ -140,10 +140,43 @@ def test_episode_page_replays_the_record(browser, out):
     assert browser.js("return document.getElementById('verdict').textContent") == "met its tolerance"
     record = record_of(run)
     assert browser.js("return parksimReplay.rows") == len(record["t"])
+    # One length unit, mm, as on the sweep's table: metrics.json's metres shown under "_mm".
+    metrics = json.loads((run / "metrics.json").read_text())
+    shown = dict(browser.js("return [...document.querySelectorAll('.metrics tr')]"
+                            ".map(tr => [tr.children[0].textContent, tr.children[1].textContent])"))
+    assert not [k for k in shown if k.endswith("_m")]
+    assert float(shown["max_pos_err_mm"]) == pytest.approx(1e3 * metrics["max_pos_err_m"], rel=1e-5)
+    assert float(shown["final_x_mm"]) == pytest.approx(1e3 * metrics["final_x_m"], rel=1e-5)
     # Three plots over time: position error with its tolerance, heading error, wheel speeds.
     assert browser.js("return document.querySelectorAll('.plots .uplot').length") == 3
     for t in (0.0, 3.3, 6.0, 11.75, 1e9):
         check_replay_at(browser, record, t)
+    # A legend says what each colour of the replay means, in the colours it draws with.
+    legend = browser.js("return [...document.querySelectorAll('#replay-legend li')]"
+                        ".map(li => [li.dataset.key, li.dataset.color, li.textContent])")
+    style = browser.js("return parksimReplay.style")
+    assert [k for k, _, _ in legend] == ["planned", "executed", "robot", "reference", "start",
+                                         "goal", "contact"]
+    assert all(color == style[key] and text for key, color, text in legend)
+    # A scale bar in mm: a 1, 2 or 5 x 10^k length at most 120 px wide, drawn where it says,
+    # and shorter after zooming in.
+    def scale_bar():
+        bar, scale = browser.js("const r = parksimReplay; return [r.scaleBar(), r.view.scale]")
+        assert bar["px"] == pytest.approx(bar["mm"] / 1000 * scale)
+        assert 48 <= bar["px"] <= 120
+        assert bar["mm"] / 10 ** math.floor(math.log10(bar["mm"]) + 1e-9) in (1, 2, 5)
+        assert bar["label"] == "%g mm" % bar["mm"]
+        dark = browser.js("""
+            const r = parksimReplay, b = r.scaleBar(), d = r.view.dpr;
+            const p = r.canvas.getContext('2d').getImageData(Math.round((12 + b.px / 2) * d),
+                Math.round((r.view.h - 14) * d), 1, 1).data;
+            return p[0] + p[1] + p[2] < 200;""")
+        assert dark
+        return bar["mm"]
+    before = scale_bar()
+    browser.js("parksimReplay.view.scale *= 4; parksimReplay.view.dirty = true; parksimReplay.draw()")
+    assert scale_bar() < before
+    browser.js("parksimReplay.fit()")
     # A click on a plot moves the replay to the time under the pointer.
     plot = browser.driver.find_elements(By.CSS_SELECTOR, ".plots .u-over")[0]
     browser.driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", plot)
@@ -165,10 +198,25 @@ def test_episode_page_replays_the_record(browser, out):
 def test_episode_page_under_a_realism_plots_the_estimate(browser, out):
     lab = out / "lab"
     open_clean(browser, lab / "report.html", lab)
+    record = record_of(lab)
     assert browser.js("return document.querySelectorAll('.plots .uplot').length") == 4
+    assert "estimate" in browser.js("return [...document.querySelectorAll('#replay-legend li')].map(li => li.dataset.key)")
     titles = browser.js("return [...document.querySelectorAll('.u-title')].map(e => e.textContent)")
     assert any("Estimate against the truth" in t for t in titles)
-    record = record_of(lab)
+    # Every y axis is labelled with its one unit; the estimate's plot has one axis per unit.
+    labels = browser.js("return parksimPlots.map(u => u.axes.slice(1).map(a => a.label))")
+    assert labels == [["error (mm)"], ["error (deg)"], ["speed (rad/s)"],
+                      ["position error (mm)", "heading error (deg)"]]
+    # The hover legend shows significant digits with the unit, not 0.00029 mm rounded to "0";
+    # the position error's legend shows the record's value, not the log plot's floor.
+    i = int(np.argmax(record["pos_err"]))
+    legend = browser.js("const u = parksimPlots[0], e = parksimPlots[3];"
+                        "return [u.series[1].value(u, 0.00029, 1, null), u.series[1].value(u, 1e-4, 1, arguments[0]),"
+                        " e.series[2].value(e, 0.0123, 2, null)]", i)
+    assert legend[0] == "0.00029 mm"
+    assert legend[1].endswith(" mm")
+    assert float(legend[1][:-3]) == pytest.approx(1e3 * record["pos_err"][i], rel=5e-3)
+    assert legend[2] == "0.0123 deg"
     state_index = check_replay_at(browser, record, 4.0)
     estimate = browser.js("const r = parksimReplay, i = r.index;"
                           "return [r.track.xe[i], r.track.ye[i], r.track.the[i]]")
@@ -212,8 +260,9 @@ def test_sorting_and_filtering_change_what_is_shown(browser, out):
     report = out / "study" / "report"
     open_clean(browser, report / "index.html", report)
     rows = rows_of(out / "study")
-    errors = sorted(r["max_pos_err_m"] for r in rows if "max_pos_err_m" in r)
-    field = column_field(browser, "max_pos_err_m")
+    # Lengths in mm, as on the episode pages: the column max_pos_err_m is titled "_mm".
+    errors = sorted(1e3 * r["max_pos_err_m"] for r in rows if "max_pos_err_m" in r)
+    field = column_field(browser, "max_pos_err_mm")
 
     def click_header():
         title = browser.driver.find_element(
@@ -231,13 +280,13 @@ def test_sorting_and_filtering_change_what_is_shown(browser, out):
     assert float(first_shown()) == pytest.approx(errors[-1], rel=1e-3)
     # A number filter under the header: only the episodes above 0.1 mm stay.
     box = browser.driver.find_element(By.CSS_SELECTOR, '.tabulator-col[tabulator-field="%s"] input' % field)
-    box.send_keys(">0.0001")
-    expected = sum(1 for e in errors if e > 0.0001)
+    box.send_keys(">0.1")
+    expected = sum(1 for e in errors if e > 0.1)
     wait_for(browser, "return document.body.dataset.shown", str(expected))
-    assert all(v > 0.0001 for v in shown_values(browser, field))
+    assert all(v > 0.1 for v in shown_values(browser, field))
     # The per-axis summaries follow the filter.
     shown_total = sum(int(td) for td in browser.js(
-        "return [...document.querySelectorAll('[data-axis=\"world\"] tbody tr td:nth-child(2)')].map(e => e.textContent)"))
+        "return [...document.querySelectorAll('[data-axis=\"world\"] table.summary tbody tr td:nth-child(2)')].map(e => e.textContent)"))
     assert shown_total == expected
     box.clear()
     box.send_keys("\b")
@@ -257,6 +306,37 @@ def test_sorting_and_filtering_change_what_is_shown(browser, out):
     field = column_field(browser, "plan_iterations")
     click_header()
     assert float(first_shown()) == min(r["plan_iterations"] for r in rows)
+
+
+def test_few_valued_numbers_filter_by_comparison_and_a_third_click_restores_failures_first(browser, out):
+    # Eight episodes: each number column has at most eight values, which were offered as a
+    # list of raw floats, so ">0.0001" matched nothing (issue 39, point 6).
+    report = out / "held" / "report"
+    open_clean(browser, report / "index.html", report)
+    rows = rows_of(out / "held")
+    statuses = browser.js("return [...document.querySelectorAll('#status-filter .chip')].map(c => c.dataset.status)")
+    rank = {s: (len(statuses) + 1 if s == "met" else k + 1) for k, s in enumerate(statuses)}
+    failures_first = sorted(range(len(rows)), key=lambda i: (rank[rows[i]["status"]], i))
+    assert failures_first != list(range(len(rows)))  # the file's order is not the failures-first one
+    order = "return parksimTable.getRows('active').map(r => r.getData()._i)"
+    assert browser.js(order) == failures_first
+    field = column_field(browser, "max_pos_err_mm")
+    title = browser.driver.find_element(
+        By.CSS_SELECTOR, '.tabulator-col[tabulator-field="%s"] .tabulator-col-title' % field)
+    browser.driver.execute_script("arguments[0].scrollIntoView({block: 'center', inline: 'center'})", title)
+    for _ in range(3):
+        ActionChains(browser.driver).move_to_element(title).click().perform()
+    assert browser.js(order) == failures_first
+    errors = [1e3 * r["max_pos_err_m"] for r in rows if "max_pos_err_m" in r]  # mm
+    for query, keep in ((">0.1", lambda e: e > 0.1), ("<=10", lambda e: e <= 10),
+                        ("0..1", lambda e: 0 <= e <= 1)):
+        box = browser.driver.find_element(By.CSS_SELECTOR, '.tabulator-col[tabulator-field="%s"] input' % field)
+        assert box.get_attribute("readonly") is None
+        box.send_keys(Keys.CONTROL, "a")
+        box.send_keys(query)
+        expected = sum(1 for e in errors if keep(e))
+        wait_for(browser, "return document.body.dataset.shown", str(expected))
+    assert 0 < sum(1 for e in errors if e > 0.1) < len(rows)
 
 
 def wait_for(browser, script, value, tries=200):
@@ -279,13 +359,14 @@ def test_axis_summaries_agree_with_the_table(browser, out):
     report = out / "study" / "report"
     open_clean(browser, report / "index.html", report)
     rows = rows_of(out / "study")
-    cells = browser.js("return [...document.querySelectorAll('[data-axis=\"planner\"] tbody tr')]"
+    cells = browser.js("return [...document.querySelectorAll('[data-axis=\"planner\"] table.summary tbody tr')]"
                        ".map(tr => [...tr.children].map(td => td.textContent))")
     planners = sorted({r["planner"] for r in rows})
     assert [c[0] for c in cells] == planners
-    # world_file groups the episodes as world does: no second summary.
+    # world_file groups the episodes as world does: no second summary; the seed is a
+    # replicate, not an axis (issue 39, point 6).
     axes = browser.js("return [...document.querySelectorAll('#axes .axis')].map(a => a.dataset.axis)")
-    assert axes == ["world", "planner", "seed"]
+    assert axes == ["world", "planner"]
     for planner, cell in zip(planners, cells):
         group = [r for r in rows if r["planner"] == planner]
         met = sum(r["met_tolerance"] for r in group)
@@ -295,6 +376,32 @@ def test_axis_summaries_agree_with_the_table(browser, out):
         errors = np.array([r["max_pos_err_m"] for r in group if "max_pos_err_m" in r])
         assert cell[4] == "%.3f / %.3f / %.3f mm" % (1e3 * np.quantile(errors, 0.5),
                                                     1e3 * np.quantile(errors, 0.95), 1e3 * errors.max())
+
+
+def test_max_error_histograms_per_group(browser, out):
+    report = out / "study" / "report"
+    open_clean(browser, report / "index.html", report)
+    rows = rows_of(out / "study")
+    hist = browser.js("return parksimHistograms.planner")
+    encoding = browser.js("return parksim.data().table.columns.find(c => c.name === 'max_pos_err_m').encoding")
+    # The page's values: float32 when packed as numbers (ColumnCodec), shown in mm.
+    def mm(x):
+        return 1e3 * (float(np.float32(x)) if encoding == "number" else x)
+    errors = [mm(r["max_pos_err_m"]) for r in rows if "max_pos_err_m" in r]
+    edges = np.array(hist["edges"])
+    # 12 bins spaced evenly in log10 from the smallest error to the largest.
+    assert len(edges) == 13
+    assert edges[0] == min(errors) and edges[-1] == max(errors)
+    steps = np.diff(np.log10(edges))
+    assert np.allclose(steps, steps[0], rtol=1e-9)
+    # Each planner's counts are NumPy's histogram of its errors over those edges.
+    planners = sorted({r["planner"] for r in rows})
+    assert sorted(g["label"] for g in hist["groups"]) == planners
+    for g in hist["groups"]:
+        mine = [mm(r["max_pos_err_m"]) for r in rows if r["planner"] == g["label"] and "max_pos_err_m" in r]
+        assert g["counts"] == np.histogram(mine, edges)[0].tolist(), g["label"]
+    titles = browser.js("return [...document.querySelectorAll('[data-axis=\"planner\"] .u-title')].map(e => e.textContent)")
+    assert any(t.startswith("Max tracking error per planner") for t in titles), titles
 
 
 def test_failed_kept_episodes_of_a_held_out_sweep_are_reachable_and_replay(browser, out):
@@ -342,6 +449,11 @@ def test_comparison_page_links_the_regressed_groups_episodes(browser, out):
     page = out / "ci" / "compare.html"
     open_clean(browser, page, out / "ci")
     assert browser.js("return document.getElementById('verdict').textContent") == "1 of 5 tests found a regression"
+    # What differs between the two configurations: the candidate's spec adds a tolerance; the
+    # rows' parameters, build and worlds are the same.
+    differences = browser.js("return [...document.querySelectorAll('#differences tbody tr')]"
+                             ".map(tr => [...tr.children].map(td => td.textContent))")
+    assert differences == [["spec", "", "tolerance: {max_pos_err_m: 0.0011}"]]
     groups = browser.js("return [...document.querySelectorAll('#pairs .pairs')].map(g => g.dataset.group)")
     assert groups[0].startswith("head_in /")
     assert browser.js("return document.body.dataset.rows") == "5"

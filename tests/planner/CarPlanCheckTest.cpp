@@ -29,7 +29,7 @@ class OpenLot : public FootprintChecker {
 struct Row {
   double v = 0.0;
   double steer = 0.0;
-  std::optional<double> omega;
+  std::optional<double> omega = std::nullopt;
 };
 
 Scenario carScenario() {

@@ -1,7 +1,9 @@
 // Shared libraries that are not plugins parksim can load, one per way of being wrong; built
 // several times with BROKEN_KIND set (CMakeLists.txt): the loader must refuse each in one line.
 
+#include <csignal>
 #include <cstdint>
+#include <cstdlib>
 
 #include "parksim/usercode/PluginApi.h"
 
@@ -39,6 +41,16 @@ parksim_plugin() {
 PARKSIM_PLUGIN("empty", "1", registerNothing)
 #elif BROKEN_KIND == 4  // registers a name parksim already has
 PARKSIM_PLUGIN("taken", "1", registerTakenName)
+#elif BROKEN_KIND == 5  // its static initializer dies of a segmentation fault while it is loaded
+namespace {
+const int crash = std::raise(SIGSEGV);
+}
+PARKSIM_PLUGIN("crashing", "1", registerNothing)
+#elif BROKEN_KIND == 6  // its static initializer aborts while it is loaded
+namespace {
+const int abort_at_load = (std::abort(), 0);
+}
+PARKSIM_PLUGIN("aborting", "1", registerNothing)
 #else                   // no entry point at all
 extern "C" __attribute__((visibility("default"))) int not_a_parksim_plugin() { return 0; }
 #endif

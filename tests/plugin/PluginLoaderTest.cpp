@@ -82,6 +82,22 @@ TEST(PluginLoader, RefusesInOneLineWhatItCannotLoad) {
   }
 }
 
+// A plugin whose static initializer dies while it is loaded is refused in one line naming the
+// signal; the loading process lives on (it was probed in a child process first).
+TEST(PluginLoader, APluginThatCrashesWhileLoadingIsRefusedNotFatal) {
+  Components c;
+  const std::string segv = loadError(c, testPlugin("parksim_broken_plugin_5"));
+  EXPECT_THAT(segv, HasSubstr("libparksim_broken_plugin_5.so: the plugin crashed while it was "
+                              "loaded (SIGSEGV"));
+  EXPECT_EQ(segv.find('\n'), std::string::npos);
+  EXPECT_THAT(loadError(c, testPlugin("parksim_broken_plugin_6")),
+              HasSubstr("libparksim_broken_plugin_6.so: the plugin crashed while it was loaded "
+                        "(SIGABRT"));
+  EXPECT_TRUE(c.plugins.empty());
+  // A good plugin still loads after them.
+  EXPECT_EQ(loadError(c, examplePlugin()), "");
+}
+
 TEST(PluginLoader, AFileOrANameLoadsOnce) {
   Components c;
   loadPlugin(c, examplePlugin());

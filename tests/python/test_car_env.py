@@ -97,9 +97,23 @@ def test_spaces_are_the_cars(car_world):
     assert env.observation_space.high[5] == np.float32(MAX_STEER_RAD)
 
 
-def test_the_dynamics_fidelity_refuses_a_car_by_name(car_world):
-    with pytest.raises(Exception, match="cannot drive a car.*fidelity kinematic"):
-        parksim.ParkingEnv(car_world)
+def test_the_dynamics_fidelity_drives_the_car_in_bullet(car_world):
+    # The default fidelity: the car's body in Bullet, the kinematic task's actions. At a constant
+    # acceleration fraction f the speed ramps at f * max_accel (within a physics step's change)
+    # and the steering turns at max_steer_rate toward its target.
+    env = parksim.ParkingEnv(car_world, max_episode_steps=None)
+    assert env.fidelity == "dynamics"
+    obs, _ = env.reset(options={"start": (30.0, 30.0, 0.0)})
+    for _ in range(10):
+        obs, _, terminated, _, info = env.step([0.5, 0.0])
+        assert not terminated
+    accel = 0.5 * MAX_ACCEL_MPS2
+    assert obs[4] == pytest.approx(accel * info["t"], abs=accel * DT_S)
+    assert info["pose"][1] == pytest.approx(30.0, abs=1e-3)
+    steer_s = 0.5
+    for _ in range(round(steer_s / env.control_period_s)):
+        obs, *_ = env.step([0.0, 1.0])
+    assert obs[5] == pytest.approx(MAX_STEER_RATE_RADPS * steer_s, abs=0.02)
 
 
 def test_gymnasium_make_and_its_checker_take_a_car(car_world):

@@ -7,9 +7,12 @@ import importlib.util
 import math
 import os
 import pickle
+import re
 import subprocess
 import sys
 import textwrap
+
+import re
 
 import numpy as np
 import pytest
@@ -75,6 +78,17 @@ def test_actions_are_numbers_only(head_in, env):
             env.step("left")  # NumPy makes a 0-d array of it
         with pytest.raises(ValueError, match=EXPECTED + r"\[\[0.1\], \[0.2, 0.3\]\]$"):
             env.step([[0.1], [0.2, 0.3]])  # no array at all: its repr
+        # A repr of many lines (a list of arrays of NumPy's wrapped repr) is one line too.
+        ragged = [np.linspace(0.0, 1.0, 30), np.zeros(2)]
+        assert "\n" in repr(ragged)
+        for step, bad in ((env.step, ragged), (vec.step, [ragged, ragged])):
+            with pytest.raises(ValueError) as refused:
+                step(bad)
+            assert "\n" not in str(refused.value) and "  " not in str(refused.value)
+            assert str(refused.value).endswith("...")
+        with pytest.raises(ValueError, match=EXPECTED + re.escape(
+                "[array([0. , 0.03448276, 0.06896552, 0.10344828, 0.137931...") + "$"):
+            env.step(ragged)
     # Integers and floats of any width are numbers: the same step as the float64 pair.
     fresh = parksim.ParkingEnv(world=head_in)
     fresh.reset(seed=3)

@@ -74,6 +74,14 @@ def test_max_episode_steps_means_gymnasiums_in_every_way_of_making_the_environme
                                fidelity="kinematic")
         assert idle_episode_length(default, vector=True) == 300, mode
         default.close()
+        # -1: no limit in every mode (issue 39: the vector entry point refused it).
+        unlimited = gym.make_vec("parksim/Parking-v0", num_envs=2, vectorization_mode=mode,
+                                 max_episode_steps=-1, fidelity="kinematic")
+        assert idle_episode_length(unlimited, vector=True) is None, mode
+        unlimited.close()
+    # And where the environment is made directly, -1 is None too.
+    assert parksim.VecParkingEnv(2, max_episode_steps=-1).max_episode_steps is None
+    assert parksim.ParkingEnv(max_episode_steps=-1).max_episode_steps is None
 
 
 def test_time_limit_around_an_unlimited_env_is_the_envs_own_limit(gym):

@@ -136,3 +136,32 @@ def test_the_reward_changes_no_state(head_in):
                     obs, info = env.reset()
             traces.append(np.array(trace))
         assert traces[0].tobytes() == traces[1].tobytes(), config
+
+
+@pytest.mark.parametrize("config", ["kinematic", "dynamics"])
+def test_with_the_default_reward_a_prompt_park_wins_with_and_without_discounting(head_in, config):
+    # What RecordEpisodeStatistics and SB3's Monitor log is the undiscounted return; a learner
+    # maximises the discounted one (gamma 0.99, SB3's default). Idling for 500 steps in the
+    # lot's south-west corner (head_in's start) or next to the slot must return less than a
+    # prompt park (STARTS[0], 34 steps) under both. With the shaping's discount at 0.99 the
+    # idler collected (1 - 0.99) * D a step: 17.56 undiscounted against the park's 12.12.
+    env = parksim.ParkingEnv(world=head_in, max_episode_steps=500, **CONFIGS[config])
+    gamma = 0.99
+
+    def returns(start, policy):
+        obs, info = env.reset(options={"start": start, "noise_seed": 7})
+        rewards = []
+        while True:
+            obs, reward, terminated, truncated, info = env.step(policy(obs))
+            rewards.append(reward)
+            if terminated or truncated:
+                return (sum(rewards), sum(gamma ** k * r for k, r in enumerate(rewards)),
+                        info["is_success"], len(rewards))
+
+    park = returns(STARTS[0], POLICIES["park"])
+    assert park[2] and park[3] < 60, park
+    for start in ((0.1, 0.1, math.pi / 2), (0.1, 1.1, 0.0), STARTS[0]):
+        idle = returns(start, POLICIES["idle"])
+        assert idle[3] == 500 and not idle[2]
+        assert park[0] > idle[0], (start, park, idle)  # undiscounted: as logged
+        assert park[1] > idle[1], (start, park, idle)  # discounted by the learner's gamma

@@ -105,7 +105,7 @@ def test_attributes_and_methods_of_the_sub_environments(head_in):
     assert env.render_mode == "rgb_array" and env.get_attr("render_mode") == ["rgb_array"] * 3
     assert env.get_attr("fidelity", indices=1) == ["kinematic"]
     assert env.get_attr("max_episode_steps", [0, 2]) == [300, 300]
-    assert env.get_attr("discount") == [0.99] * 3
+    assert env.get_attr("discount") == [1.0] * 3
     assert env.get_attr("observation_space")[0].shape == (10,)
     assert env.has_attr("control_period_s") and not env.has_attr("no_such_attribute")
     with pytest.raises(AttributeError):

@@ -3,11 +3,14 @@ as well as names; they are checked as any user code is (plan_invalid, planner_er
 controller_error), and one that does exactly what a built-in does gives the built-in's rows."""
 
 import math
+import re
+import warnings
 
 import numpy as np
 import pytest
 
 import parksim
+from conftest import SOURCE_DIR
 
 
 class Straight:
@@ -138,7 +141,7 @@ def test_a_python_controller_equal_to_the_built_in_drives_the_same_rows(head_in)
 ])
 def test_a_python_controllers_failures_are_controller_errors(head_in, answer, reason):
     def faulty(obs):
-        return obs.feedforward if obs.t < 0.5 else answer(obs)
+        return obs.feedforward if obs.t_s < 0.5 else answer(obs)
 
     r = parksim.run(head_in, controller=faulty)
     assert r.status == "controller_error"
@@ -152,7 +155,7 @@ def test_a_python_controller_under_lab_realism_sees_the_estimate_at_its_rate(hea
     ticks = []
 
     def hold(obs):
-        ticks.append((obs.t, obs.pose, obs.encoders))
+        ticks.append((obs.t_s, obs.pose, obs.encoders_rad))
         return obs.feedforward
 
     r = parksim.run(head_in, controller=hold, realism="lab")
@@ -276,8 +279,78 @@ def test_a_differential_robots_observation_has_no_steering(head_in):
     seen = []
 
     def feedforward(obs):
-        seen.append((obs.steer, obs.reference_steer, obs.commanded_speed))
+        seen.append((obs.steer_rad, obs.reference_steer_rad, obs.commanded_speed_mps))
         return obs.feedforward
 
     assert parksim.run(head_in, controller=feedforward).status == "met"
     assert seen and all(s == (0.0, 0.0, 0.0) for s in seen)
+
+
+# docs/your-code.md's table of a controller's inputs and its car sentence, the names a Python
+# controller reads: the same names (unit suffix included) as ControllerInput's C++ fields.
+DOCUMENTED_INPUTS = ["t_s", "pose", "encoders_rad", "wheel_speeds_radps", "twist", "reference",
+                     "reference_twist", "feedforward", "plan_ended", "steer_rad",
+                     "reference_steer_rad", "commanded_speed_mps"]
+RENAMED_INPUTS = {"t": "t_s", "encoders": "encoders_rad", "wheel_speeds": "wheel_speeds_radps",
+                  "steer": "steer_rad", "reference_steer": "reference_steer_rad",
+                  "commanded_speed": "commanded_speed_mps"}
+
+
+def test_a_python_controller_reads_its_inputs_under_the_documented_names(head_in):
+    docs = (SOURCE_DIR / "docs" / "your-code.md").read_text()
+    for name in DOCUMENTED_INPUTS:
+        assert f"`{name}`" in docs, name
+    seen = []
+
+    def record(obs):
+        seen.append({name: getattr(obs, name) for name in DOCUMENTED_INPUTS})
+        return obs.feedforward
+
+    assert parksim.run(head_in, controller=record).status == "met"
+    assert len(seen) > 100
+    assert [s["t_s"] for s in seen[:3]] == pytest.approx([0.0, 1 / 240, 2 / 240])
+    assert seen[-1]["encoders_rad"][0] > 1.0 and len(seen[-1]["wheel_speeds_radps"]) == 2
+
+
+def test_a_controllers_inputs_of_before_still_read_with_a_deprecation_warning(head_in):
+    seen = []
+
+    def record(obs):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            old = {o: getattr(obs, o) for o in RENAMED_INPUTS}
+        seen.append((old, {o: getattr(obs, n) for o, n in RENAMED_INPUTS.items()},
+                     [str(w.message) for w in caught if w.category is DeprecationWarning]))
+        return obs.feedforward
+
+    assert parksim.run(head_in, controller=record).status == "met"
+    for old, new, messages in seen[:5]:
+        assert old == new
+        assert messages == [f"ControllerInput.{o} is deprecated: read .{n} (the same value)"
+                            for o, n in RENAMED_INPUTS.items()]
+
+
+@pytest.mark.parametrize("answer,type_name", [
+    ("solved", "str"), ("", "str"), (b"plan.csv", "bytes"), ({"t": [0.0]}, "dict"),
+])
+def test_a_python_planner_returning_no_trajectory_is_a_planner_error_naming_the_type(
+        head_in, answer, type_name):
+    class Answers:
+        def solve(self, problem):
+            return answer
+
+    r = parksim.plan(head_in, planner=Answers())
+    assert r.status == "planner_error"
+    assert r.message == (f"planner Answers threw: solve() returned a {type_name}, not a "
+                         "trajectory (a structured array with fields t, x, y, theta, "
+                         "omega_left, omega_right) or None")
+    assert "cannot open" not in r.message
+
+
+@pytest.mark.parametrize("path,message", [
+    ("no/such/plan.csv", "no/such/plan.csv: cannot open plan file: No such file or directory"),
+    ("", "cannot open plan file: the path is empty"),
+])
+def test_a_plan_file_that_cannot_be_opened_is_named(head_in, path, message):
+    with pytest.raises(parksim.Error, match="^" + re.escape(message) + "$"):
+        parksim.run(head_in, plan=path)

@@ -109,6 +109,22 @@ def test_a_plugins_failing_planner_is_a_planner_error_from_plan(planner, reason)
     assert r["message"].startswith(reason), r
 
 
+@pytest.mark.skipif(not PLUGIN, reason="PARKSIM_TEST_PLUGIN is not set (run through ctest)")
+def test_a_plugin_that_crashes_while_loaded_is_an_error_not_the_end_of_the_interpreter():
+    crashing = os.path.join(os.path.dirname(PLUGIN), "libparksim_broken_plugin_5.so")
+    r = in_child(f"""
+        try:
+            parksim.plan(world, plugins=[{crashing!r}])
+            error = None
+        except parksim.Error as e:
+            error = str(e)
+        print(json.dumps([error, parksim.plan(world).solved]))
+    """)
+    assert r == [crashing + ": the plugin crashed while it was loaded (SIGSEGV, Segmentation "
+                 "fault: in its static initializers, entry point or registration); not loaded",
+                 True]
+
+
 @pytest.mark.parametrize("call,status,reason", [
     ("parksim.plan(world, planner=Hangs(), isolate=True, planner_timeout=1)", "planner_error",
      "planner Hangs ran past its time limit of 1 s (its process was killed)"),

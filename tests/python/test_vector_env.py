@@ -3,6 +3,7 @@ the next step, per-sub-environment seeds, the same trajectories with 1 and 2 thr
 released while stepping, and the kinematic fidelity selectable for both environments."""
 
 import math
+import sys
 import threading
 import time
 
@@ -133,7 +134,11 @@ def test_bad_actions_are_refused_before_anything_steps(head_in):
 
 
 def test_the_gil_is_released_while_stepping(head_in):
-    # One long step (8 Bullet worlds, 1 s each); a Python thread records the time meanwhile.
+    # A Python thread appends ticks while the main thread is inside step() (8 Bullet worlds,
+    # 1 s each). The switch interval is made far longer than a step, so a step that held the
+    # GIL would let no tick in: ticks inside a step come only from a released GIL, whatever
+    # the machine's load. A thread the OS has not scheduled during one step gets more steps
+    # (a count, not a time limit); holding the GIL gives 0 ticks in all of them.
     envs = parksim.VecParkingEnv(8, world=head_in, threads=1, control_period_s=1.0)
     envs.reset(seed=0)
     ticks, stop = [], threading.Event()
@@ -141,17 +146,27 @@ def test_the_gil_is_released_while_stepping(head_in):
     def count():
         while not stop.is_set():
             ticks.append(time.perf_counter())
+            time.sleep(0)  # hands the GIL back at once, so the main thread never waits for it
 
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1000.0)
     counter = threading.Thread(target=count)
-    counter.start()
-    time.sleep(0.01)
-    begin = time.perf_counter()
-    envs.step(np.full((8, 2), 0.3))
-    end = time.perf_counter()
-    stop.set()
-    counter.join()
-    inside = [t for t in ticks if begin < t < end]
-    assert len(inside) > 100  # the other thread ran during the step
+    try:
+        counter.start()
+        time.sleep(0.01)
+        inside = 0
+        for _ in range(10):
+            begin = time.perf_counter()
+            envs.step(np.full((8, 2), 0.3))
+            end = time.perf_counter()
+            inside = sum(1 for t in list(ticks) if begin < t < end)
+            if inside > 0:
+                break
+    finally:
+        stop.set()
+        counter.join()
+        sys.setswitchinterval(interval)
+    assert inside > 0  # the other thread ran while step() was in C++
 
 
 def test_kinematic_fidelity_is_exact_arcs_in_both_environments(head_in):

@@ -100,3 +100,15 @@ def test_a_dict_may_hold_numpy_values(head_in_path):
     data["start"] = np.array(data["start"], dtype=np.float64)
     data["goal"]["position_tolerance"] = np.float64(data["goal"]["position_tolerance"])
     assert parksim.load_world(data).start == parksim.load_world(head_in_path).start
+
+
+def test_a_map_key_map_server_ignores_is_a_warning_not_an_error(tmp_path, source_dir):
+    """Issue 39: a ROS map YAML's `centerline` (nav2's map_server ignores it) was refused."""
+    (tmp_path / "maps").mkdir()
+    (tmp_path / "maps" / "lab.pgm").write_bytes((source_dir / "worlds/maps/lab.pgm").read_bytes())
+    (tmp_path / "maps" / "lab.yaml").write_text(
+        (source_dir / "worlds/maps/lab.yaml").read_text() + "centerline: [[0, 0], [1, 0]]\n")
+    (tmp_path / "w.yaml").write_text((source_dir / "worlds/ros_lab.yaml").read_text())
+    with pytest.warns(UserWarning, match=r"lab\.yaml:8: centerline: not a key nav2's map_server"):
+        world = parksim.load_world(tmp_path / "w.yaml")
+    assert world.name == "ros_lab"

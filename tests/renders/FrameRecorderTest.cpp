@@ -200,23 +200,27 @@ TEST_F(FrameRecorderTest, ObstaclesCreepingInvisiblyAreShownWhereTheyRest) {
 }
 
 // One encoder is told which rows of a top view changed (Renderer::renderChanges); two take
-// whole images: the bytes are the same.
+// whole images; one with no memory to spare (frame_memory_bytes 0: one frame in flight, no last
+// frame kept) takes whole images and compresses every band: the bytes are the same.
 TEST_F(FrameRecorderTest, OutputDoesNotDependOnThreads) {
   for (FrameView view : {FrameView::kTop, FrameView::kBoth}) {
     for (PngCompression png :
          {PngCompression::kDefault, PngCompression::kFast, PngCompression::kStored}) {
       const std::string name = std::string(view == FrameView::kTop ? "top" : "both") + "_";
       std::vector<std::string> dirs;
-      for (int threads : {1, 2}) {
+      for (const auto& [threads, memory] :
+           {std::pair{1, FrameDef{}.frame_memory_bytes},
+            std::pair{2, FrameDef{}.frame_memory_bytes}, std::pair{1, std::size_t{0}}}) {
         FrameDef def;
         def.fps = 5.0;
         def.width_px = 200;
         def.height_px = 150;
         def.view = view;
         def.encode_threads = threads;
+        def.frame_memory_bytes = memory;
         def.png_compression = png;
-        def.out_dir = outputDir("FrameRecorderTest_threads" + name + std::to_string(threads) + "_" +
-                                toString(png));
+        def.out_dir = outputDir("FrameRecorderTest_threads" + name + std::to_string(threads) +
+                                (memory == 0 ? "_nomemory_" : "_") + toString(png));
         FrameRecorder rec(lot_, def);
         rec.setPlan(plan_);
         record(rec, lot_, plan_);
@@ -229,6 +233,7 @@ TEST_F(FrameRecorderTest, OutputDoesNotDependOnThreads) {
         const std::vector<char> a = fileBytes(dirs[0] + file);
         ASSERT_FALSE(a.empty());
         EXPECT_EQ(a, fileBytes(dirs[1] + file)) << name << toString(png) << file;
+        EXPECT_EQ(a, fileBytes(dirs[2] + file)) << name << toString(png) << file << ", no memory";
       }
       const RgbImage first = readPng(dirs[0] + "/000000.png");
       EXPECT_EQ(first.width, view == FrameView::kTop ? 200 : 400);  // views side by side

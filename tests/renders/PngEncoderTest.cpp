@@ -160,6 +160,29 @@ TEST(PngEncoderTest, BandedBytesDoNotDependOnTheLastImage) {
   }
 }
 
+// An encoder that keeps no last image (a film whose frames would not fit twice in its memory
+// budget) compresses every band, RGB or RGBA, and gives the bytes of one that copies bands; it
+// takes no changed rows.
+TEST(PngEncoderTest, AnEncoderKeepingNoLastImageGivesTheSameBytes) {
+  for (PngCompression c : kAll) {
+    SCOPED_TRACE(toString(c));
+    PngEncoder keeping(c);
+    PngEncoder not_keeping(c, false);
+    EXPECT_EQ(keeping.keepsLast(), keepsLastImage(c));
+    EXPECT_FALSE(not_keeping.keepsLast());
+    for (int k : {0, 1, 1, 4, 2}) {
+      const RgbImage rgb = filmFrame(k, 470);
+      EXPECT_EQ(bytesOf(not_keeping.encode(rgb)), bytesOf(keeping.encode(rgb))) << "frame " << k;
+      const RgbaImage rgba = withAlpha(rgb, 7);
+      EXPECT_EQ(bytesOf(not_keeping.encode(rgba)), bytesOf(keeping.encode(rgba)))
+          << "RGBA frame " << k;
+    }
+    const RgbaImage rgba = withAlpha(filmFrame(3, 470), 7);
+    const RowSpan rows[] = {{0, 10}};
+    EXPECT_THROW(not_keeping.encode(rgba, rows), Error);
+  }
+}
+
 // Films hand their encoders RGBA as read back: the bytes are the RGB image's whatever the alpha,
 // for every compression, on an encoder that saw RGB and RGBA images of other frames before; a
 // frame that differs from the last in alpha only is still right.

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -109,6 +110,32 @@ TEST(SceneBuilderTest, ACarsFrontWheelsAreDrawnTurned) {
   // The front wheels turned, the rear ones not.
   EXPECT_DOUBLE_EQ(scene.boxes[lot.boxes.size() + 1].footprint.yaw, 0.3);
   EXPECT_GT(scene.boxes[lot.boxes.size() + 3].footprint.yaw, 0.3 + 0.4);
+  // Seen from above the wheels lie under the body (track 1.6 m, width 1.942 m): each is drawn
+  // again on the roof, its four corners the wheel's own, so a top view shows the steering.
+  std::vector<const ScenePolygon*> on_roof;
+  for (const ScenePolygon& p : scene.polygons) {
+    if (p.color == style.wheel) on_roof.push_back(&p);
+  }
+  ASSERT_EQ(on_roof.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) {
+    const OrientedBox& wheel = scene.boxes[lot.boxes.size() + 1 + k].footprint;
+    EXPECT_GT(on_roof[k]->z_m, s.robot.height_m);
+    ASSERT_EQ(on_roof[k]->points.size(), 4u);
+    // The corners from the wheel's centre, half-extents and yaw, computed here.
+    const Eigen::Vector2d along(std::cos(wheel.yaw), std::sin(wheel.yaw));
+    const Eigen::Vector2d across(-along.y(), along.x());
+    for (const double u : {-1.0, 1.0}) {
+      for (const double v : {-1.0, 1.0}) {
+        const Eigen::Vector2d corner =
+            wheel.center + u * wheel.half_extents.x() * along + v * wheel.half_extents.y() * across;
+        double nearest = 1e9;
+        for (const Eigen::Vector2d& q : on_roof[k]->points) {
+          nearest = std::min(nearest, (q - corner).norm());
+        }
+        EXPECT_LT(nearest, 1e-12) << k;
+      }
+    }
+  }
 }
 
 // A film keeps the back layer while the robot drives: it must change with the obstacles and

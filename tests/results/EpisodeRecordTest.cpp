@@ -4,6 +4,7 @@
 
 #include "parksim/results/tables/EpisodeRecord.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -13,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "parksim/results/episode/MetricsFile.h"
+#include "parksim/results/episode/PlanFile.h"
 #include "parksim/results/tables/ResultsFile.h"
 #include "tests/support/TestPaths.h"
 
@@ -98,6 +100,45 @@ TEST(EpisodeRecord, FieldsAreReadFromTheFactsTheyName) {
     }
   }
   EXPECT_EQ(keys, order);
+}
+
+// A row's phase times are plan.json's, every phase of them (the A* planners' heuristic, every
+// planner's timing), under the same names and in the same order.
+TEST(EpisodeRecord, PhaseTimesAreEveryPhaseOfPlanJson) {
+  PlanResult plan;
+  PhaseTimes& t = plan.stats.times;
+  t.sampling_s = 0.01;
+  t.nearest_s = 0.02;
+  t.steering_s = 0.03;
+  t.collision_s = 0.04;
+  t.goal_check_s = 0.05;
+  t.rewiring_s = 0.06;
+  t.connection_s = 0.07;
+  t.smoothing_s = 0.08;
+  t.heuristic_s = 0.25;
+  t.timing_s = 0.5;
+  Scenario scenario;
+  const nlohmann::json summary = planSummary(scenario, PlanSetup{}, plan);
+  EpisodeFacts facts;
+  facts.plan = &plan;
+  facts.plan_summary = &summary;
+  nlohmann::ordered_json row;
+  appendRecord(facts, row);
+  const nlohmann::ordered_json& phases = row.at("plan_phase_times_s");
+  EXPECT_EQ(phases.at("heuristic"), 0.25);
+  EXPECT_EQ(phases.at("timing"), 0.5);
+  std::vector<std::pair<std::string, double>> in_row, in_plan_json;
+  for (const auto& [name, s] : phases.items()) in_row.emplace_back(name, s.get<double>());
+  for (const auto& [name, s] : summary.at("phase_times_s").items()) {
+    in_plan_json.emplace_back(name, s.get<double>());
+  }
+  std::sort(in_plan_json.begin(), in_plan_json.end());  // nlohmann::json sorts its keys
+  std::vector<std::pair<std::string, double>> sorted_row = in_row;
+  std::sort(sorted_row.begin(), sorted_row.end());
+  EXPECT_EQ(sorted_row, in_plan_json);
+  ASSERT_EQ(in_row.size(), 10u);
+  EXPECT_EQ(in_row.front().first, "sampling");
+  EXPECT_EQ(in_row.back().first, "timing");
 }
 
 TEST(EpisodeRecord, SetColumnsComeAfterTheParameters) {

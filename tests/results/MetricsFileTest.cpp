@@ -2,7 +2,12 @@
 
 #include "parksim/results/episode/MetricsFile.h"
 
+#include <algorithm>
+#include <vector>
+
 #include <gtest/gtest.h>
+
+#include "parksim/core/stats/Quantile.h"
 
 namespace parksim {
 namespace {
@@ -72,6 +77,31 @@ TEST(MetricsFile, TheDocumentCarriesTheVerdictTheToleranceAndTheRealisations) {
   EXPECT_EQ(two["realisation.1.success"], false);
   EXPECT_EQ(two["realisations.success_fraction"], 0.5);
   EXPECT_EQ(two["realisations.max_pos_err_m.max"], 0.003);
+}
+
+// metrics.json's median and p95 of the realisations are the quantiles the report, the pages and
+// `parksim compare` give (type 7, NumPy's default), computed here from their definition: for
+// 20 values 1..20 mm, h = 0.95 * 19 = 18.05, so p95 = 19 + 0.05 * (20 - 19) = 19.05 mm (the
+// nearest rank would be 19), the median 10.5 mm.
+TEST(MetricsFile, TheRealisationsQuantilesAreTheOneDefinition) {
+  MetricsDocument doc;
+  doc.metrics = goodMetrics();
+  std::vector<double> errors_m;
+  for (int k = 20; k >= 1; --k) {  // any order
+    EpisodeMetrics m = goodMetrics();
+    m.max_pos_err_m = 1e-3 * k;
+    errors_m.push_back(m.max_pos_err_m);
+    doc.realisations.push_back({static_cast<std::uint64_t>(k), m, "met", true});
+  }
+  std::sort(errors_m.begin(), errors_m.end());
+  const double h = 0.95 * 19.0;
+  const double predicted_p95 = errors_m[18] + (h - 18.0) * (errors_m[19] - errors_m[18]);
+  const nlohmann::json j = metricsDocumentJson(doc);
+  EXPECT_NEAR(j["realisations.max_pos_err_m.p95"].get<double>(), 19.05e-3, 1e-15);
+  EXPECT_DOUBLE_EQ(j["realisations.max_pos_err_m.p95"].get<double>(), predicted_p95);
+  EXPECT_DOUBLE_EQ(j["realisations.max_pos_err_m.p95"].get<double>(), quantile7(errors_m, 0.95));
+  EXPECT_NEAR(j["realisations.max_pos_err_m.median"].get<double>(), 10.5e-3, 1e-15);
+  EXPECT_EQ(j["realisations.max_pos_err_m.max"], 20e-3);
 }
 
 }  // namespace

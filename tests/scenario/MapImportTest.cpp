@@ -3,6 +3,7 @@
 
 #include "parksim/scenario/world/MapImport.h"
 
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -67,6 +68,98 @@ TEST(MapImport, WritesAWorldThatLoadsWithTheMapOrItsObstacles) {
   const MapImport cells = importMap(def);
   def.list_obstacles = false;
   expectSameObstacles(importMap(def).world.scenario, cells.world.scenario);
+}
+
+// A Moving AI maze of `cells` x `cells` with corridors and walls two cells wide (as the
+// benchmark's maze-32-32-2) inside a wall two cells thick, carved by a seeded depth-first
+// search.
+std::string mazeText(int cells, unsigned seed) {
+  const int rooms = (cells - 2) / 4;
+  std::vector<std::string> rows(static_cast<std::size_t>(cells), std::string(cells, '@'));
+  const auto open = [&](int x, int y) {  // a 2 x 2 block at cell (x, y)
+    for (int dy = 0; dy < 2; ++dy)
+      for (int dx = 0; dx < 2; ++dx)
+        rows[static_cast<std::size_t>(y + dy)][static_cast<std::size_t>(x + dx)] = '.';
+  };
+  std::mt19937 rng(seed);
+  std::vector<bool> seen(static_cast<std::size_t>(rooms * rooms));
+  std::vector<std::pair<int, int>> stack{{0, 0}};
+  seen[0] = true;
+  open(2, 2);
+  while (!stack.empty()) {
+    const auto [i, j] = stack.back();
+    std::vector<std::pair<int, int>> next;
+    for (const auto& [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+      const int a = i + di;
+      const int b = j + dj;
+      if (a >= 0 && b >= 0 && a < rooms && b < rooms &&
+          !seen[static_cast<std::size_t>(b * rooms + a)])
+        next.emplace_back(a, b);
+    }
+    if (next.empty()) {
+      stack.pop_back();
+      continue;
+    }
+    const auto [a, b] = next[rng() % next.size()];
+    seen[static_cast<std::size_t>(b * rooms + a)] = true;
+    open(2 + 4 * a, 2 + 4 * b);
+    open(2 + 2 * (i + a), 2 + 2 * (j + b));  // the wall between them
+    stack.emplace_back(a, b);
+  }
+  std::string text = "type octile\nheight " + std::to_string(cells) + "\nwidth " +
+                     std::to_string(cells) + "\nmap\n";
+  for (const std::string& row : rows) text += row + "\n";
+  return text;
+}
+
+// Regression (issue 39): free places were sought on an 80 x 80 lattice of the lot, which at
+// 0.165 m cells falls on no place the maze's corridors leave the robot.
+TEST(MapImport, FindsTheRoomAMazeHasAtAnyCellSize) {
+  const fs::path dir = testing::freshDir("map_import_maze");
+  testing::writeText(dir / "maze-32-32-2.map", mazeText(32, 5));
+  MapImportDef def;
+  def.map = (dir / "maze-32-32-2.map").string();
+  def.world = (dir / "maze.yaml").string();
+  for (const double cell : {0.16, 0.165, 0.17, 0.2, 0.5}) {
+    def.cell_m = cell;
+    const MapImport m = importMap(def);
+    const Scenario& s = m.world.scenario;
+    const double room = footprintRadius(s.robot);
+    EXPECT_FALSE(placementProblem(s, s.start, room)) << cell;
+    EXPECT_FALSE(placementProblem(s, s.goal.pose, room)) << cell;
+    // From the corner corridors: more than half the lot's diagonal apart.
+    EXPECT_GT(positionDistance(s.start, s.goal.pose), 0.5 * std::sqrt(2.0) * 32 * cell) << cell;
+  }
+}
+
+// A room just larger than the footprint with its room, at an offset no lattice is tuned to.
+TEST(MapImport, FindsTheOnlyPlaceThatFits) {
+  const fs::path dir = testing::freshDir("map_import_pocket");
+  const RobotDef robot;  // the import's robot
+  const double room = footprintRadius(robot);
+  // The footprint grown by its room, in 1 cm cells, and a little slack.
+  const double cell = 0.01;
+  const int w = static_cast<int>(std::ceil((robot.length_m + 2 * room) / cell)) + 2;
+  const int h = static_cast<int>(std::ceil((robot.width_m + 2 * room) / cell)) + 2;
+  std::string text = "type octile\nheight 100\nwidth 100\nmap\n";
+  for (int r = 0; r < 100; ++r) {
+    for (int c = 0; c < 100; ++c)
+      text += r >= 41 && r < 41 + h && c >= 37 && c < 37 + w ? '.' : '@';
+    text += "\n";
+  }
+  testing::writeText(dir / "pocket.map", text);
+  MapImportDef def;
+  def.map = (dir / "pocket.map").string();
+  def.world = (dir / "pocket.yaml").string();
+  def.cell_m = cell;
+  const MapImport m = importMap(def);
+  const Scenario& s = m.world.scenario;
+  EXPECT_FALSE(placementProblem(s, s.start, room));
+  // Inside the pocket (the map's first row is on top: rows 41.. from the top).
+  EXPECT_GT(s.start.x, 0.37);
+  EXPECT_LT(s.start.x, 0.37 + w * cell);
+  EXPECT_GT(s.start.y, 1.0 - (41 + h) * cell);
+  EXPECT_LT(s.start.y, 1.0 - 41 * cell);
 }
 
 TEST(MapImport, RefusesWhatItCannotImport) {

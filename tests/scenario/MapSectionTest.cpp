@@ -78,6 +78,21 @@ TEST(MapSection, MapsBesideHandWrittenObstaclesWithTheLotFromTheirExtent) {
   EXPECT_EQ(loadWorld((dir / "w2.yaml").string()).scenario.lot.x_max_m, 5.0);
 }
 
+// The ROS reader's warnings reach the world, for the front ends to print.
+TEST(MapSection, AWorldCarriesItsMapsWarnings) {
+  const fs::path dir = writeLab("map_section_warnings");
+  testing::writeText(dir / "lab.yaml",
+                     "image: lab.pgm\nresolution: 0.1\norigin: [1, 1, 0]\ncenterline: []\n");
+  testing::writeText(dir / "w.yaml",
+                     "format: parksim-world/1\nname: w\nmap:\n  - {ros: lab.yaml}\n" + kRest);
+  const World w = loadWorld((dir / "w.yaml").string());
+  ASSERT_EQ(w.warnings.size(), 1u);
+  EXPECT_EQ(
+      w.warnings[0].rfind((dir / "lab.yaml").lexically_normal().string() + ":4: centerline: ", 0),
+      0u)
+      << w.warnings[0];
+}
+
 TEST(MapSection, OverridesReachMapFieldsAndUnknownCellsFollowTheWorld) {
   const fs::path dir = writeLab("map_section_set");
   testing::writeText(dir / "w.yaml",

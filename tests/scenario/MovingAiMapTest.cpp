@@ -55,9 +55,43 @@ TEST(MovingAiMap, RefusesWhatItCannotHonourInOneLocatedLine) {
   testing::writeText(dir / "e.map", "type tile\n");
   EXPECT_EQ(errorOf(dir / "e.map"),
             d + "e.map:1: expected 'type octile' (a Moving AI .map file), got 'type tile'");
-  testing::writeText(dir / "f.map", "type octile\nheight 1\nwidth 1\nmap\n.\n.\n");
-  EXPECT_EQ(errorOf(dir / "f.map"),
-            d + "f.map:6: size mismatch: more rows than the header's height 1");
+}
+
+// Regression (issue 39): text after the grid was "more rows than the header's height". Moving
+// AI's readers read the header's rows and ignore the rest; so does parksim, saying so.
+TEST(MovingAiMap, TextAfterTheGridIsIgnoredWithAWarningNamingItsLine) {
+  const auto dir = testing::freshDir("movingai_trailing");
+  const std::string d = dir.string() + "/";
+  testing::writeText(dir / "f.map",
+                     "type octile\nheight 1\nwidth 2\nmap\n.@\n\n# drawn by hand\n.\n");
+  std::vector<std::string> warnings;
+  const auto g = readMovingAiMap(d + "f.map", 0.1, {}, &warnings);
+  EXPECT_EQ(g->height, 1);
+  EXPECT_EQ(g->at(1, 0), MapCell::kOccupied);
+  EXPECT_EQ(
+      warnings,
+      (std::vector<std::string>{d + "f.map:7: trailing text after the header's 1 rows; ignored, as "
+                                    "Moving AI's readers ignore it"}));
+}
+
+// Regression (issue 39): a grid beyond the limits was read whole before its header refused
+// it. A sparse file of 1 GiB, four times the file limit, whose header declares too many cells:
+// refused by the cell limit, so the header was read, and nothing after it.
+TEST(MovingAiMap, AGridBeyondTheLimitsIsRefusedFromItsHeaderAlone) {
+  const auto dir = testing::freshDir("movingai_huge");
+  const std::string d = dir.string() + "/";
+  for (const auto& [name, size] : {std::pair{"huge.map", "30000"}, {"many.map", "6000"}}) {
+    testing::writeText(dir / name,
+                       std::string("type octile\nheight ") + size + "\nwidth " + size + "\nmap\n");
+    std::filesystem::resize_file(dir / name, std::uintmax_t{1} << 30);
+    ASSERT_EQ(std::filesystem::file_size(dir / name), std::uintmax_t{1} << 30);
+  }
+  EXPECT_EQ(errorOf(dir / "huge.map"),
+            d + "huge.map:3: the map is 30000 x 30000 cells; a map has at least one and at most "
+                "20000 a side and 25000000 in all (docs/limits.md)");
+  EXPECT_EQ(errorOf(dir / "many.map"),
+            d + "many.map:3: the map is 6000 x 6000 cells; a map has at least one and at most "
+                "20000 a side and 25000000 in all (docs/limits.md)");
 }
 
 }  // namespace

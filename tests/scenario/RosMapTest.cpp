@@ -125,6 +125,60 @@ TEST(RosMap, TheOriginsYawTurnsTheMapAboutItsCorner) {
   EXPECT_NEAR(far.y(), 2.0, 1e-12);
 }
 
+// Regression (issue 39): keys map_server does not read were refused; it ignores them, and so
+// does parksim, with a warning line naming the file, line and key.
+TEST(RosMap, KeysMapServerIgnoresAreWarnedAboutAndIgnored) {
+  const fs::path dir = freshDir("ros_map_extra_keys");
+  const std::string d = dir.string() + "/";
+  writePgm(dir / "m.pgm", {{0, 254}});
+  writeText(dir / "m.yaml",
+            "image: m.pgm\nresolution: 0.5\ncenterline: [[0, 0], [1, 0]]\norigin: [0, 0, 0]\n"
+            "free_thresh: 0.196\nsaved_by: slam_toolbox\n");
+  std::vector<std::string> warnings;
+  const auto g = readRosMap(d + "m.yaml", 100, &warnings);
+  EXPECT_EQ(rowsOf(*g), (std::vector<std::vector<int>>{{kO, kF}}));
+  const std::string known =
+      " (image, resolution, origin, negate, occupied_thresh, free_thresh, mode); ignored as it "
+      "ignores it";
+  EXPECT_EQ(warnings, (std::vector<std::string>{
+                          d + "m.yaml:3: centerline: not a key nav2's map_server reads" + known,
+                          d + "m.yaml:6: saved_by: not a key nav2's map_server reads" + known}));
+  // A known key's bad value is still refused.
+  writeText(dir / "bad.yaml",
+            "image: m.pgm\nresolution: 0.5\ncenterline: 1\norigin: [0, 0, 0]\nnegate: 2\n");
+  EXPECT_EQ(errorOf(d + "bad.yaml").rfind(d + "bad.yaml:5: negate: ", 0), 0u)
+      << errorOf(d + "bad.yaml");
+}
+
+// Regression (issue 39): an image beyond the limits was read whole before its header refused
+// it. Sparse files of 1 GiB, four times the file limit, whose headers declare too many pixels:
+// refused by the pixel limit, so the header was read, and nothing after it.
+TEST(RosMap, AnImageBeyondTheLimitsIsRefusedFromItsHeaderAlone) {
+  const fs::path dir = freshDir("ros_map_huge");
+  const std::string d = dir.string() + "/";
+  const std::string yaml = "resolution: 0.05\norigin: [0, 0, 0]\n";
+  writeText(dir / "huge.pgm", "P5\n# a comment\n30000 30000\n255\n");
+  writePng(dir / "huge.png", 1, 1, 1, {0});
+  {
+    // The 1 x 1 PNG's IHDR says 100000 x 100000 (bytes 16..23, big-endian).
+    std::fstream png(dir / "huge.png", std::ios::in | std::ios::out | std::ios::binary);
+    png.seekp(16);
+    const char size[8] = {0, 1, static_cast<char>(0x86), static_cast<char>(0xa0),
+                          0, 1, static_cast<char>(0x86), static_cast<char>(0xa0)};
+    png.write(size, 8);
+  }
+  for (const char* image : {"huge.pgm", "huge.png"}) {
+    fs::resize_file(dir / image, std::uintmax_t{1} << 30);
+    writeText(dir / (std::string(image) + ".yaml"), "image: " + std::string(image) + "\n" + yaml);
+  }
+  EXPECT_EQ(errorOf(d + "huge.pgm.yaml"),
+            d + "huge.pgm: the image is 30000 x 30000 pixels, more than the limit of 20000 a "
+                "side and 25000000 in all for a map (docs/limits.md)");
+  EXPECT_EQ(errorOf(d + "huge.png.yaml"),
+            d + "huge.png: the image is 100000 x 100000 pixels, more than the limit of 20000 a "
+                "side and 25000000 in all for a map (docs/limits.md)");
+}
+
 TEST(RosMap, BadMapsAreRefusedInOneLineNamingTheFile) {
   const fs::path dir = freshDir("ros_map_bad");
   const std::string d = dir.string() + "/";

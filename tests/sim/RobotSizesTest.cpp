@@ -109,9 +109,10 @@ TEST(RobotSizes, AWheelBulletWouldHoldStillIsRefused) {
   EXPECT_NEAR(world.robot().wheels.left_radps, 2.0, 0.1);
   EXPECT_NEAR(world.robot().wheels.right_radps, 2.0, 0.1);
 
-  const Scenario micro =
-      loadScenario(parksim::testing::sourceDir() + "/tests/sim/worlds/head_in_1cm.yaml");
-  EXPECT_THROW(DynamicsWorld(micro, micro.start), Error);
+  // The micro robot is refused when its world is read (PhysicalRanges.h, jointInertiaProblem).
+  EXPECT_THROW(
+      (void)loadScenario(parksim::testing::sourceDir() + "/tests/sim/worlds/head_in_1cm.yaml"),
+      Error);
 }
 
 }  // namespace

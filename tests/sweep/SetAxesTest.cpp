@@ -110,6 +110,20 @@ TEST(SetAxes, ABadValueOrPathIsRefusedAtItsLineOfTheSpec) {
             0u);
 }
 
+// Regression (issue 39): a wheel too light for Bullet to turn was refused only when the episode
+// built its simulation, after planning, so a sweep stopped mid-way. Now the sweep refuses the
+// point while it expands, before any episode runs. The least mass computed here: Bullet's
+// single-precision epsilon over a solid sphere's 2/5 r^2 at the study's 20 mm wheels.
+TEST(SetAxes, AWheelBulletCannotTurnIsRefusedBeforeAnyEpisodeRuns) {
+  const double least_kg = 1.1920929e-7 / (0.4 * 0.02 * 0.02);
+  EXPECT_NEAR(least_kg, 7.45e-4, 1e-6);
+  const std::string e = errorOf("set:\n  physics.wheel_mass_kg: [0.02, 0.0005]\n");
+  EXPECT_EQ(e.rfind("spec.yaml:5: set: physics.wheel_mass_kg=5e-04: ", 0), 0u) << e;
+  EXPECT_NE(e.find("inertia about its axis, 8e-08 kg m^2"), std::string::npos) << e;
+  EXPECT_NE(e.find("a wheel needs 0.000745 kg or more"), std::string::npos) << e;
+  EXPECT_EQ(errorOf("set:\n  physics.wheel_mass_kg: [0.02, 0.001]\n"), "accepted");
+}
+
 std::vector<std::pair<std::string, std::string>> drawn(const std::vector<SweepEpisode>& episodes) {
   std::vector<std::pair<std::string, std::string>> out;
   for (const SweepEpisode& e : episodes) {

@@ -4,6 +4,7 @@
 // a file larger than the limit is refused by its size, so no input makes a reader's memory or
 // time grow without bound.
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
@@ -11,8 +12,13 @@ namespace parksim {
 
 /// The bytes of the regular file at `path`, at most `max_bytes` of them. Throws Error with one
 /// line "<path>: <what> ..." when the file cannot be opened, is not a regular file, or is
-/// larger than `max_bytes` (the message states the limit). `what` names the kind of file
-/// ("plan file", "world file").
+/// larger than `max_bytes` (the message states the limit), or "cannot open <what>: the path is
+/// empty". `what` names the kind of file ("plan file", "world file").
 std::string readInputFile(const std::string& path, std::uintmax_t max_bytes, const char* what);
+
+/// The first `head_bytes` bytes of the regular file at `path` (all of it when shorter), with
+/// readInputFile's checks but whatever the file's size: for a reader whose header alone
+/// decides whether the file is within its limits, before the file is read whole.
+std::string readInputFileHead(const std::string& path, std::size_t head_bytes, const char* what);
 
 }  // namespace parksim

@@ -12,9 +12,9 @@ Eigen::Vector2d axisX(double yaw) { return {std::cos(yaw), std::sin(yaw)}; }
 Eigen::Vector2d axisY(double yaw) { return {-std::sin(yaw), std::cos(yaw)}; }
 
 // Half-length of the box's projection onto a unit axis.
-double projectedRadius(const OrientedBox& b, const Eigen::Vector2d& axis) {
-  return b.half_extents.x() * std::abs(axisX(b.yaw).dot(axis)) +
-         b.half_extents.y() * std::abs(axisY(b.yaw).dot(axis));
+double projectedRadius(const OrientedBox& b, const BoxAxes& own, const Eigen::Vector2d& axis) {
+  return b.half_extents.x() * std::abs(own.x.dot(axis)) +
+         b.half_extents.y() * std::abs(own.y.dot(axis));
 }
 
 double pointSegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
@@ -47,6 +47,9 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 
 }  // namespace
 
+BoxAxes axesOf(double yaw) { return {axisX(yaw), axisY(yaw)}; }
+BoxAxes axesOf(const OrientedBox& b) { return axesOf(b.yaw); }
+
 std::array<Eigen::Vector2d, 4> OrientedBox::corners() const {
   const Eigen::Vector2d ex = axisX(yaw) * half_extents.x();
   const Eigen::Vector2d ey = axisY(yaw) * half_extents.y();
@@ -54,12 +57,17 @@ std::array<Eigen::Vector2d, 4> OrientedBox::corners() const {
 }
 
 double separationAlongAxes(const OrientedBox& a, const OrientedBox& b) {
-  const std::array<Eigen::Vector2d, 4> axes = {axisX(a.yaw), axisY(a.yaw), axisX(b.yaw),
-                                               axisY(b.yaw)};
+  return separationAlongAxes(a, axesOf(a), b, axesOf(b));
+}
+
+double separationAlongAxes(const OrientedBox& a, const BoxAxes& own_a, const OrientedBox& b,
+                           const BoxAxes& own_b) {
+  const std::array<Eigen::Vector2d, 4> axes = {own_a.x, own_a.y, own_b.x, own_b.y};
   const Eigen::Vector2d d = b.center - a.center;
   double best = -std::numeric_limits<double>::infinity();
   for (const Eigen::Vector2d& axis : axes) {
-    const double gap = std::abs(d.dot(axis)) - projectedRadius(a, axis) - projectedRadius(b, axis);
+    const double gap =
+        std::abs(d.dot(axis)) - projectedRadius(a, own_a, axis) - projectedRadius(b, own_b, axis);
     best = std::max(best, gap);
   }
   return best;
@@ -81,6 +89,11 @@ double separation(const OrientedBox& a, const Circle& c) {
 }
 
 double separationAlongAxes(const OrientedBox& a, const std::vector<Eigen::Vector2d>& polygon) {
+  return separationAlongAxes(a, axesOf(a), polygon);
+}
+
+double separationAlongAxes(const OrientedBox& a, const BoxAxes& own,
+                           const std::vector<Eigen::Vector2d>& polygon) {
   const std::size_t n = polygon.size();
   double best = -std::numeric_limits<double>::infinity();
   const auto gapAlong = [&](const Eigen::Vector2d& axis) {
@@ -91,11 +104,11 @@ double separationAlongAxes(const OrientedBox& a, const std::vector<Eigen::Vector
       lo = std::min(lo, v);
       hi = std::max(hi, v);
     }
-    const double r = projectedRadius(a, axis);
+    const double r = projectedRadius(a, own, axis);
     return std::max(lo - r, -r - hi);
   };
-  best = std::max(best, gapAlong(axisX(a.yaw)));
-  best = std::max(best, gapAlong(axisY(a.yaw)));
+  best = std::max(best, gapAlong(own.x));
+  best = std::max(best, gapAlong(own.y));
   for (std::size_t i = 0; i < n; ++i) {
     const Eigen::Vector2d edge = polygon[(i + 1) % n] - polygon[i];
     const double len = edge.norm();

@@ -39,6 +39,20 @@ bool boxesOverlap(const OrientedBox& a, const OrientedBox& b);
 /// penetration depth along the axis of least overlap).
 double separationAlongAxes(const OrientedBox& a, const OrientedBox& b);
 
+/// A box's unit axes, its own x and y: (cos yaw, sin yaw) and (-sin yaw, cos yaw).
+struct BoxAxes {
+  Eigen::Vector2d x;
+  Eigen::Vector2d y;
+};
+BoxAxes axesOf(double yaw);
+BoxAxes axesOf(const OrientedBox& b);
+
+/// separationAlongAxes(a, b) with both boxes' axes given (`own_a` = axesOf(a), `own_b` =
+/// axesOf(b)), the same to the last bit: for callers that test one box against many, or many
+/// against one, without their sines and cosines each time (the search heuristic's grid).
+double separationAlongAxes(const OrientedBox& a, const BoxAxes& own_a, const OrientedBox& b,
+                           const BoxAxes& own_b);
+
 /// Signed separation of a box and a disc, exact: the distance from the box to the disc's
 /// centre minus the radius (positive when apart, negative when overlapping, 0 when touching).
 double separation(const OrientedBox& a, const Circle& c);
@@ -48,6 +62,9 @@ double separation(const OrientedBox& a, const Circle& c);
 /// of the true gap), negative when overlapping (minus the penetration along the axis of least
 /// overlap), 0 when touching.
 double separationAlongAxes(const OrientedBox& a, const std::vector<Eigen::Vector2d>& polygon);
+/// The same with the box's axes given (`own` = axesOf(a)), to the last bit.
+double separationAlongAxes(const OrientedBox& a, const BoxAxes& own,
+                           const std::vector<Eigen::Vector2d>& polygon);
 
 /// Exact planar distance between a box and a convex polygon, m (0 when touching or overlapping).
 double distance(const OrientedBox& a, const std::vector<Eigen::Vector2d>& polygon);

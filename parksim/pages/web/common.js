@@ -58,6 +58,13 @@ const parksim = {};
     return String(Number(x.toPrecision(d)));
   };
 
+  // One length unit on every page, mm: a number under a key that names metres (its unit
+  // suffix "_m", at the end or before a name: max_pos_err_m, parked_displacement_m.robot_5,
+  // set.robot.width_m) is shown times 1000 under the key with "_mm" (P.mmKey).
+  const metres = /_m(?=$|\.)/;
+  P.isMetresKey = (key) => metres.test(key);
+  P.mmKey = (key) => key.replace(metres, '_mm');
+
   // Metres as millimetres with three decimals ("0.063 mm"), as the command line prints them.
   P.mm = function (m) {
     if (m === null || m === undefined || isNaN(m)) return '-';

@@ -91,6 +91,21 @@
           ': rows pair when every other parameter is equal' })] : []),
       [...data.only_baseline.map((g) => el('p', { class: 'warning', text: 'only in the baseline: ' + g })),
         ...data.only_candidate.map((g) => el('p', { class: 'warning', text: 'only in the candidate: ' + g }))]));
+    // What differs between the two configurations: the columns whose values differ, the
+    // lines of the spec files only one has (compare/ConfigurationDiff.h).
+    if (data.differences) {
+      const diff = el('section', { class: 'differences', id: 'differences' },
+        el('h2', { text: 'What differs between the configurations' }));
+      if (data.differences.length === 0) {
+        diff.append(el('p', { class: 'note', text: 'Nothing: the same parameters, build, worlds and spec lines.' }));
+      } else {
+        diff.append(el('table', { class: 'summary' },
+          el('thead', {}, el('tr', {}, el('th', { text: 'what' }), el('th', { text: 'baseline' }), el('th', { text: 'candidate' }))),
+          el('tbody', {}, data.differences.map((d) => el('tr', {}, el('td', { text: d.what }),
+            el('td', { text: d.baseline }), el('td', { text: d.candidate }))))));
+      }
+      root.append(diff);
+    }
     const rows = [];
     for (const g of groups) {
       for (const m of g.metrics) {

@@ -33,7 +33,7 @@
     if (ps) {
       fact('plan', [ps.planner, ps.steering, 'seed ' + ps.seed, ps.status,
         ps.duration_s !== undefined ? P.fmt(ps.duration_s, 4) + ' s' : null,
-        ps.path_length_m !== undefined ? P.fmt(ps.path_length_m, 4) + ' m' : null,
+        ps.path_length_m !== undefined ? P.fmt(1e3 * ps.path_length_m, 4) + ' mm' : null,
         ps.cusps !== undefined ? ps.cusps + ' cusps' : null].filter((s) => s !== null && s !== undefined).join(', '));
     }
     if (data.realisations && data.realisations.count > 1) {
@@ -48,16 +48,28 @@
       el('dl', { class: 'facts' }, facts));
   }
 
-  // uPlot options for one plot over time; `log`: a logarithmic y axis.
-  function plotOptions(title, series, width, contacts, onPick, log) {
+  // A series' value in the hover legend: three significant digits and its unit (uPlot's own
+  // keeps three decimals, and 0.00029 mm read "0"); `raw`, when given, the values shown in
+  // place of those drawn (a log plot draws them floored).
+  function legendValue(unit, raw) {
+    return (u, v, si, i) => {
+      const x = raw && i !== null && i !== undefined ? raw[i] : v;
+      return x === null || x === undefined || Number.isNaN(x) ? '--' : P.fmt(x, 3) + ' ' + unit;
+    };
+  }
+
+  // uPlot options for one plot over time: `yLabel` names the left axis's quantity and unit
+  // (one unit per axis); `log`: a logarithmic y axis.
+  function plotOptions(title, yLabel, series, width, contacts, onPick, log) {
     return {
       title,
       width,
       height: 170,
       cursor: { sync: { key: 'episode' }, drag: { x: true, y: false } },
       scales: { x: { time: false }, y: log ? { distr: 3 } : {} },
-      axes: [{ label: 't (s)' }, { size: 60, values: (u, splits) => splits.map((v) => P.fmt(v, 3)) }],
-      series: [{ label: 't (s)' }, ...series],
+      axes: [{ label: 't (s)' },
+        { label: yLabel, size: 60, values: (u, splits) => splits.map((v) => P.fmt(v, 3)) }],
+      series: [{ label: 't', value: legendValue('s') }, ...series],
       hooks: {
         ready: [(u) => {
           u.over.addEventListener('click', (e) => onPick(u.posToVal(e.offsetX, 'x')));
@@ -98,32 +110,37 @@
     // Errors far below the tolerance and the tolerance itself both show on a log scale; its
     // floor, 0.1 um, stands for anything smaller (a log axis has no zero).
     const floored = (a) => Float64Array.from(a, (x) => Math.max(1e-4, 1e3 * x));
+    const pos = col('pos_err');
+    const posMm = scaled(pos, 1e3);
+    // Each plot: title, left axis label, series (each with its unit), values, log scale.
     const specs = [
-      ['Position error against the plan (mm, log scale)',
-        [{ label: 'position error', stroke: '#0969da', width: 1.5 },
-          { label: 'tolerance', stroke: '#cf222e', dash: [6, 4] }],
-        [floored(col('pos_err')), constant(1e3 * tol.max_pos_err_m)], true],
-      ['Heading error against the plan (deg)',
-        [{ label: 'heading error', stroke: '#8250df', width: 1.5 }],
+      ['Position error against the plan (log scale)', 'error (mm)',
+        [{ label: 'position error', stroke: '#0969da', width: 1.5, value: legendValue('mm', posMm) },
+          { label: 'tolerance', stroke: '#cf222e', dash: [6, 4], value: legendValue('mm') }],
+        [floored(pos), constant(1e3 * tol.max_pos_err_m)], true],
+      ['Heading error against the plan', 'error (deg)',
+        [{ label: 'heading error', stroke: '#8250df', width: 1.5, value: legendValue('deg') }],
         [scaled(col('heading_err'), DEG)]],
-      ['Wheel speeds (rad/s)',
-        [{ label: 'left commanded', stroke: '#1f6feb', dash: [5, 3] },
-          { label: 'left measured', stroke: '#1f6feb' },
-          { label: 'right commanded', stroke: '#d4610b', dash: [5, 3] },
-          { label: 'right measured', stroke: '#d4610b' }],
+      ['Wheel speeds', 'speed (rad/s)',
+        [{ label: 'left commanded', stroke: '#1f6feb', dash: [5, 3], value: legendValue('rad/s') },
+          { label: 'left measured', stroke: '#1f6feb', value: legendValue('rad/s') },
+          { label: 'right commanded', stroke: '#d4610b', dash: [5, 3], value: legendValue('rad/s') },
+          { label: 'right measured', stroke: '#d4610b', value: legendValue('rad/s') }],
         [col('omega_left_cmd'), col('omega_left'), col('omega_right_cmd'), col('omega_right')]],
     ];
     if (c.est_pos_err) {
-      specs.push(['Estimate against the truth: position (mm), heading (deg)',
-        [{ label: 'position error (mm)', stroke: '#0b7285', width: 1.5 },
-          { label: 'heading error (deg)', stroke: '#a40e26', scale: 'deg' }],
+      // Two units, two axes: the position on the left, the heading on the right.
+      specs.push(['Estimate against the truth: position (left axis), heading (right axis)',
+        'position error (mm)',
+        [{ label: 'position error', stroke: '#0b7285', width: 1.5, value: legendValue('mm') },
+          { label: 'heading error', stroke: '#a40e26', scale: 'deg', value: legendValue('deg') }],
         [scaled(col('est_pos_err'), 1e3), scaled(col('est_heading_err'), DEG)]]);
     }
     const made = [];
-    for (const [title, series, values, log] of specs) {
-      const opts = plotOptions(title, series, width, contacts, onPick, log);
+    for (const [title, yLabel, series, values, log] of specs) {
+      const opts = plotOptions(title, yLabel, series, width, contacts, onPick, log);
       if (series.some((s) => s.scale === 'deg')) {
-        opts.axes.push({ scale: 'deg', side: 1, grid: { show: false }, size: 60,
+        opts.axes.push({ scale: 'deg', side: 1, grid: { show: false }, size: 60, label: 'heading error (deg)',
           values: (u, splits) => splits.map((v) => P.fmt(v, 3)) });
       }
       made.push(new uPlot(opts, [t, ...values], box));
@@ -201,11 +218,16 @@
           't = ' + c.t_s.toFixed(3) + ' s'), ': ' + c.body))));
   }
 
+  // Every measurement, lengths in mm under "_mm" keys (P.mmKey) as on the sweep's table.
   function metricsTable(data) {
     if (!data.metrics) return null;
-    return el('details', { class: 'metrics' }, el('summary', { text: 'Every measurement (metrics.json)' }),
-      el('table', {}, el('tbody', {}, Object.entries(data.metrics).map(([k, v]) =>
-        el('tr', {}, el('th', { text: k }), el('td', { text: Array.isArray(v) ? v.join(', ') : P.fmt(v, 6) }))))));
+    const row = ([k, v]) => {
+      const mm = typeof v === 'number' && P.isMetresKey(k);
+      return el('tr', {}, el('th', { text: mm ? P.mmKey(k) : k }),
+        el('td', { text: Array.isArray(v) ? v.join(', ') : P.fmt(mm ? 1e3 * v : v, 6) }));
+    };
+    return el('details', { class: 'metrics' }, el('summary', { text: 'Every measurement (metrics.json; lengths in mm)' }),
+      el('table', {}, el('tbody', {}, Object.entries(data.metrics).map(row))));
   }
 
   function main(data, root) {
@@ -229,7 +251,7 @@
       }
     };
     const ctl = controls(replay, onTime);
-    stage.append(ctl.box);
+    stage.append(ctl.box, P.replayLegend(replay));
     if (!data.record) {
       stage.append(el('p', { class: 'note', text: 'Not driven: the replay shows the plan.' }));
     } else if (data.record.stride > 1) {
@@ -241,6 +263,7 @@
       ctl.update();
     };
     if (data.record) made = plots(data, root, seek);
+    window.parksimPlots = made;
     const list = contactList(data, seek);
     if (list) root.append(list);
     const details = metricsTable(data);

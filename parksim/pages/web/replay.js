@@ -382,16 +382,55 @@
       }
     }
 
+    // The scale bar at this zoom: the longest 1, 2 or 5 x 10^k mm no wider than 120 CSS px,
+    // {mm, px, label} (lengths in mm, as on every page).
+    scaleBar() {
+      const pxPerMm = this.view.scale / 1000;
+      const most = 120 / pxPerMm;
+      let mm = Math.pow(10, Math.floor(Math.log10(most)));
+      if (5 * mm <= most) mm *= 5;
+      else if (2 * mm <= most) mm *= 2;
+      return { mm, px: mm * pxPerMm, label: mm + ' mm' };
+    }
+
+    // The scale bar, bottom left, in screen space (it stays while the lot pans).
+    drawScaleBar(ctx) {
+      const bar = this.scaleBar();
+      const x = 12;
+      const y = this.view.h - 14;
+      ctx.save();
+      ctx.fillStyle = 'rgba(255,255,255,0.8)';
+      ctx.fillRect(x - 6, y - 20, bar.px + 12, 28);
+      ctx.strokeStyle = '#24292f';
+      ctx.lineWidth = 2;
+      ctx.beginPath();
+      ctx.moveTo(x, y - 5);
+      ctx.lineTo(x, y);
+      ctx.lineTo(x + bar.px, y);
+      ctx.lineTo(x + bar.px, y - 5);
+      ctx.stroke();
+      ctx.fillStyle = '#24292f';
+      ctx.font = '12px sans-serif';
+      ctx.fillText(bar.label, x, y - 8);
+      ctx.restore();
+    }
+
     draw() {
       if (!this.view) return;
       if (this.view.dirty) this.drawBack();
       const v = this.view;
-      const st = this.style;
       const ctx = this.canvas.getContext('2d');
       ctx.setTransform(1, 0, 0, 1, 0, 0);
       ctx.drawImage(this.back, 0, 0);
       ctx.setTransform(v.dpr, 0, 0, v.dpr, 0, 0);
-      if (!this.track) return;
+      if (this.track) this.drawTrack(ctx);
+      this.drawScaleBar(ctx);  // last: nothing covers it
+    }
+
+    // What moves as the episode plays: the contacts so far, the path driven, the reference
+    // pose, the robot, the estimate.
+    drawTrack(ctx) {
+      const st = this.style;
       const i = this.index;
       const tr = this.track;
       const t = tr.t[i];
@@ -438,6 +477,27 @@
       }
     }
   }
+
+  // What the replay's colours mean, as a list to put beside it: each item a swatch in the
+  // colour the replay draws with (a dashed one for a dashed line) and its meaning.
+  P.replayLegend = function (replay) {
+    const st = replay.style;
+    const items = [
+      ['planned', st.planned, 'plan', false],
+      ['executed', st.executed, 'path driven', false],
+      ['robot', st.robot, 'robot', false],
+      ['reference', st.reference, 'reference pose (outline)', false],
+      ['start', st.start, 'start', false],
+      ['goal', st.goal, 'goal and its tolerance', false],
+      ['contact', st.contact, 'contact: obstacle touched, where it began', false],
+    ];
+    if (replay.track && replay.track.xe) items.splice(4, 0, ['estimate', '#0b7285', 'estimate (dashed outline)', true]);
+    return P.el('ul', { class: 'legend', id: 'replay-legend' }, items.map(([key, color, text, dashed]) => {
+      const swatch = P.el('span', { class: 'swatch' + (dashed ? ' dashed' : '') });
+      swatch.style.borderColor = color;
+      return P.el('li', { 'data-key': key, 'data-color': color }, swatch, text);
+    }));
+  };
 
   P.Replay = Replay;
 })(parksim);

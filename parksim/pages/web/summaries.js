@@ -1,7 +1,7 @@
 // Statistics the sweep and comparison pages compute over the rows they show: a success rate's
 // 95 % interval (Wilson's score interval, which stays inside [0, 1] and is honest at 0 and at
 // n successes out of n) and quantiles as parksim's reports take them (type 7, the linear
-// interpolation of compare/Quantile.h's quantile7, NumPy's default).
+// interpolation of core/stats/Quantile.h's quantile7, NumPy's default).
 'use strict';
 
 (function (P) {
@@ -31,6 +31,43 @@
     const out = values.filter((x) => typeof x === 'number' && isFinite(x));
     return out.sort((a, b) => a - b);
   }
+
+  // `bins` edges spaced evenly in log10 from the smallest positive value of `values` to the
+  // largest (exactly those two at the ends); one bin [v, v] when they are one value; null when
+  // there is no positive value.
+  P.logEdges = function (values, bins) {
+    const pos = values.filter((x) => typeof x === 'number' && isFinite(x) && x > 0);
+    if (pos.length === 0) return null;
+    const lo = Math.min(...pos);
+    const hi = Math.max(...pos);
+    if (lo === hi) return [lo, hi];
+    const a = Math.log10(lo);
+    const w = (Math.log10(hi) - a) / bins;
+    const edges = Array.from({ length: bins + 1 }, (_, k) => Math.pow(10, a + k * w));
+    edges[0] = lo;
+    edges[bins] = hi;
+    return edges;
+  };
+
+  // Counts of `values` in the bins of ascending `edges` as NumPy's histogram counts them: bin k
+  // holds edges[k] <= x < edges[k + 1], the last one its right edge too; values outside (and
+  // missing ones) are not counted.
+  P.histogram = function (values, edges) {
+    const counts = new Array(edges.length - 1).fill(0);
+    const last = edges.length - 1;
+    for (const x of values) {
+      if (typeof x !== 'number' || !(x >= edges[0] && x <= edges[last])) continue;
+      let lo = 0;
+      let hi = last - 1;
+      while (lo < hi) {
+        const mid = (lo + hi + 1) >> 1;
+        if (edges[mid] <= x) lo = mid;
+        else hi = mid - 1;
+      }
+      counts[lo]++;
+    }
+    return counts;
+  };
 
   // Rows grouped by the value of `key`, each group summarised: episodes, met, the met
   // fraction and its interval, and the median, p95 and largest of each error in `errors`

@@ -15,16 +15,24 @@
   const maxValues = 24;
   const bins = 10;
 
-  // A column's values as a plain array: numbers, text, booleans, or null where a row has none
-  // (which the table sorts last).
+  // Lengths in mm, as on every page (P.mmKey): a number column whose key names metres is
+  // shown times 1000 and titled with "_mm".
+  const isLength = (col) => col.kind === 'number' && P.isMetresKey(col.name);
+  const shownName = (col) => (isLength(col) ? P.mmKey(col.name) : col.name);
+
+  // A column's values as a plain array (lengths in mm): numbers, text, booleans, or null where a
+  // row has none (which the table sorts last).
   function values(col, n) {
-    if (col.encoding === 'const') return new Array(n).fill(col.value);
+    const k = isLength(col) ? 1e3 : 1;
+    const scale = (v) => (typeof v === 'number' ? v * k : v);
+    if (col.encoding === 'const') return new Array(n).fill(scale(col.value));
     if (col.encoding === 'levels') {
       const codes = P.column(col);
-      return Array.from(codes, (c) => col.levels[c]);
+      const levels = col.levels.map(scale);
+      return Array.from(codes, (c) => levels[c]);
     }
     const a = P.column(col);
-    return a.length === n ? Array.from(a, (x) => (isNaN(x) ? null : x)) : new Array(n).fill(null);
+    return a.length === n ? Array.from(a, (x) => (isNaN(x) ? null : x * k)) : new Array(n).fill(null);
   }
 
   // A header filter for numbers: "0.002", ">0.001", "<= 5", "!=0", "1..3" (inclusive).
@@ -55,7 +63,7 @@
   // A column of the table. Its width is set from its name's length rather than measured from
   // its cells, which took most of a 120-row page's start-up.
   function columnDef(col, field, state) {
-    const name = col.name;
+    const name = shownName(col);
     let chars = Math.max(name.length, col.kind === 'number' ? 8 : 12);
     if (col.encoding === 'levels' && col.kind !== 'number') {
       for (const v of col.levels.slice(0, 500)) chars = Math.max(chars, Math.min(40, String(v).length));
@@ -64,7 +72,7 @@
     // column titles (parked_displacement_m.<robot>) and values (world), shown as text.
     const def = { title: name, field, headerSortTristate: true, width: Math.min(380, 34 + 8.5 * chars),
       titleFormatter: () => P.text(name) };
-    if (name === 'status') {
+    if (col.name === 'status') {
       const rank = statusRank(state.statuses);
       def.sorter = (a, b) => rank(a) - rank(b);
       def.formatter = (cell) => P.badge(String(cell.getValue()));
@@ -77,7 +85,7 @@
       def.sorter = (a, b) => String(a).localeCompare(String(b), undefined, { numeric: true });
       def.formatter = (cell) => P.text(cell.getValue());
     }
-    if (name === 'episode_id') {
+    if (col.name === 'episode_id') {
       def.frozen = true;
       def.formatter = (cell) => {
         const row = cell.getRow().getData();
@@ -86,8 +94,10 @@
         return el('a', { href: state.href + '/' + encodeURIComponent(id) + '/report.html', text: id });
       };
     }
-    const few = col.encoding === 'levels' && col.levels.length <= 64;
-    if (few && name !== 'episode_id') {
+    // A list of values for text and booleans with few; numbers, however few their values, get
+    // the typed filter (a list of raw floats is no way to ask for ">0.0001").
+    const few = col.encoding === 'levels' && col.levels.length <= 64 && col.kind !== 'number';
+    if (few && col.name !== 'episode_id') {
       def.headerFilter = 'list';
       const labels = {};
       for (const v of col.levels) labels[String(v)] = v === null ? '(none)' : String(v);
@@ -149,7 +159,7 @@
     const head = el('tr', {}, el('th', { text: name }), el('th', { text: 'episodes' }),
       el('th', { text: 'met' }), el('th', { text: 'met fraction (95 % interval)' }),
       el('th', { text: 'max tracking error median / p95 / max' }), el('th', { text: 'goal error median / p95' }));
-    const mm = (x) => (isNaN(x) ? '-' : (1e3 * x).toFixed(3));
+    const mm = (x) => (isNaN(x) ? '-' : x.toFixed(3));  // the table's lengths are in mm
     const body = summary.map((s) => {
       const te = s[errorFields[0]] || {};
       const ge = s[errorFields[1]] || {};
@@ -167,7 +177,7 @@
     if (!groups.numeric || points.length < 3) return;
     const x = points.map((s) => (groups.centre ? groups.centre(s.value) : Number(s.value)));
     const pct = (f) => points.map((s) => 100 * s[f]);
-    const err = points.map((s) => (s[errorField] ? 1e3 * s[errorField].p95 : NaN));
+    const err = points.map((s) => (s[errorField] ? s[errorField].p95 : NaN));
     new uPlot({
       title: 'Met fraction (95 % interval) and p95 of the max tracking error against ' + name,
       width: Math.min(720, Math.max(320, box.clientWidth - 8)),
@@ -181,6 +191,42 @@
         { label: 'max error p95 (mm)', scale: 'mm', stroke: '#cf222e', dash: [5, 3], points: { show: true } }],
       bands: [{ series: [3, 2], fill: 'rgba(26,127,55,0.12)' }],
     }, [x, pct('fraction'), pct('low'), pct('high'), err], box);
+  }
+
+  // The distribution of the max tracking error in each group of an axis: counts in 12 bins
+  // spaced evenly in log10 over the errors shown (a step line per group, at most 12 groups,
+  // the largest); what parksimHistograms[axis] holds for tests and readers of the page.
+  function errorHistogram(name, axis, groups, rows, errorField, box) {
+    const all = rows.map((r) => r[errorField]);
+    const edges = P.logEdges(all, 12);
+    window.parksimHistograms[axis] = null;
+    if (!edges || edges.length < 3) return;
+    const members = new Map();
+    for (const r of rows) {
+      const v = r[groups.key];
+      if (!members.has(v)) members.set(v, []);
+      members.get(v).push(r[errorField]);
+    }
+    const order = groups.order.filter((v) => members.has(v));
+    for (const v of members.keys()) if (!order.includes(v)) order.push(v);
+    const shown = order.map((v) => ({ value: v, label: groups.label(v), counts: P.histogram(members.get(v), edges) }))
+      .sort((a, b) => b.counts.reduce((x, y) => x + y, 0) - a.counts.reduce((x, y) => x + y, 0))
+      .slice(0, 12);
+    window.parksimHistograms[axis] = { edges, groups: shown };
+    const centres = edges.slice(0, -1).map((e, k) => Math.sqrt(e * edges[k + 1]));
+    const colors = ['#0969da', '#cf222e', '#1a7f37', '#8250df', '#d4610b', '#0b7285', '#b08800',
+      '#a40e26', '#6e4aa8', '#57606a', '#1f6feb', '#c2185b'];
+    new uPlot({
+      title: 'Max tracking error per ' + name + ': episodes per bin (log-spaced)',
+      width: Math.min(720, Math.max(320, box.clientWidth - 8)),
+      height: 200,
+      scales: { x: { time: false, distr: 3 } },
+      axes: [{ label: 'max tracking error (mm)', values: (u, splits) => splits.map((v) => P.fmt(v, 3)) },
+        { label: 'episodes' }],
+      series: [{ label: 'error (mm)', value: (u, v) => (v === null || v === undefined ? '--' : P.fmt(v, 3) + ' mm') },
+        ...shown.map((g, k) => ({ label: g.label, stroke: colors[k % colors.length], width: 1.5,
+          points: { show: true } }))],
+    }, [centres, ...shown.map((g) => g.counts)], box);
   }
 
   function main(data, root) {
@@ -213,6 +259,11 @@
     const counts = new Map();
     for (const r of rows) counts.set(r[statusField], (counts.get(r[statusField]) || 0) + 1);
     for (const s of counts.keys()) if (!state.statuses.includes(s)) state.statuses.push(s);
+    // The failures first (by status in judging order, met last; file order within a status) as
+    // the table's own order, not a sort: what a third click on a header, which clears the
+    // sort, comes back to.
+    const rank = statusRank(state.statuses);
+    rows.sort((a, b) => rank(a[statusField]) - rank(b[statusField]) || a._i - b._i);
     const met = rows.filter((r) => r.met).length;
     const [low, high] = P.wilson(met, n);
     const kept = state.kept.reduce((a, b) => a + b, 0);
@@ -221,13 +272,15 @@
       el('p', { class: 'lead', text: n + ' episodes in ' + data.source + ': ' + met + ' met their tolerance (' +
         (100 * met / n).toFixed(1) + ' %, 95 % interval ' + (100 * low).toFixed(1) + ' .. ' + (100 * high).toFixed(1) +
         ' %); ' + kept + ' kept their files, linked from their ids.' }),
+      data.warnings.length ? el('p', { class: 'warning', id: 'warning-count',
+        text: data.warnings.length + (data.warnings.length === 1 ? ' warning' : ' warnings') + ':' }) : null,
       data.warnings.map((w) => el('p', { class: 'warning', text: w }))));
     const shownCount = el('span', { id: 'shown' });
     const chooser = el('details', { class: 'chooser' }, el('summary', { text: 'Columns' }));
     const tableBox = el('div', { id: 'episodes' });
-    const help = el('p', { class: 'note', text: 'Click a header to sort (again to reverse, a third time to undo). ' +
+    const help = el('p', { class: 'note', text: 'Click a header to sort (again to reverse, a third time back to failures first). ' +
       'Filters under the headers: a value from the list, text to look for, or for numbers ">0.001", "<=5", "1..3". ' +
-      'Numbers show 4 significant digits; results.jsonl has them exact.' });
+      'Numbers show 4 significant digits, lengths in mm (a column "_mm"; results.jsonl has them exact, in m).' });
     const chips = statusChips(state, counts, () => tab.refreshFilter());
     root.append(el('section', { class: 'table' }, el('h2', { text: 'Episodes' }),
       el('div', { class: 'toolbar' }, chips, shownCount, chooser), help, tableBox));
@@ -236,8 +289,8 @@
     if (constants.length) {
       root.append(el('details', { class: 'constants' },
         el('summary', { text: 'The same in every episode (' + constants.length + ' columns)' }),
-        el('table', {}, el('tbody', {}, constants.map((c) => el('tr', {}, el('th', { text: c.name }),
-          el('td', { text: c.value === null ? '(none)' : P.fmt(c.value, 8) })))))));
+        el('table', {}, el('tbody', {}, constants.map((c) => el('tr', {}, el('th', { text: shownName(c) }),
+          el('td', { text: c.value === null ? '(none)' : P.fmt(values(c, 1)[0], 8) })))))));
     }
     if (table.omitted.length) {
       root.append(el('p', { class: 'note', text: 'Lists of lists, in results.jsonl only: ' + table.omitted.join(', ') }));
@@ -257,16 +310,19 @@
       return [a, axisGroups(col, rows, field.get(a))];
     }));
     const errorFields = errorKeys.map((k) => field.get(k));
+    window.parksimHistograms = {};
     const drawAxes = (shown) => {
       axesBox.replaceChildren(axesBox.firstChild);
       if (summarised.length === 0) axesBox.append(el('p', { class: 'note', text: 'No axis varies in this table.' }));
       for (const a of summarised) {
         const g = groups.get(a);
         const summary = P.summarise(shown, g.key, g.order, errorFields.filter(Boolean));
-        const box = el('div', { class: 'axis', 'data-axis': a }, el('h3', { text: a }));
+        const title = shownName(cols.find((c) => c.name === a));
+        const box = el('div', { class: 'axis', 'data-axis': a }, el('h3', { text: title }));
         axesBox.append(box);
-        box.append(summaryTable(a, g, summary, errorFields));
-        summaryPlot(a, g, summary, errorFields[0], box);
+        box.append(summaryTable(title, g, summary, errorFields));
+        summaryPlot(title, g, summary, errorFields[0], box);
+        if (errorFields[0]) errorHistogram(title, a, g, shown, errorFields[0], box);
       }
     };
     const tab = new Tabulator(tableBox, {
@@ -279,7 +335,6 @@
       // Only the columns shown: each column costs start-up time whether shown or not; the
       // others are added when chosen.
       columns: cols.filter((c) => state.shown.has(c.name)).map((c) => columnDef(c, field.get(c.name), state)),
-      initialSort: [{ column: statusField, dir: 'asc' }],
     });
     window.parksimTable = tab;
     document.body.dataset.rows = String(n);
@@ -313,7 +368,7 @@
         chooser.append(el('div', { class: 'choices' }, cols.map((c) => el('label', {},
           el('input', { type: 'checkbox', checked: state.shown.has(c.name),
             onchange: (e) => showColumn(c, e.target.checked) }),
-          ' ' + c.name))));
+          ' ' + shownName(c)))));
         tab.on('dataFiltered', onFiltered);
         const shown = tab.getData('active');
         shownCount.textContent = shown.length + ' of ' + n + ' shown';

@@ -7,6 +7,7 @@
 #include "parksim/core/io/NumberFormat.h"
 #include "parksim/core/model/DiffDrive.h"
 #include "parksim/core/model/Geometry.h"
+#include "parksim/planner/base/GripCheck.h"
 
 namespace parksim {
 
@@ -199,6 +200,7 @@ std::optional<PlanViolation> checkPlan(const Scenario& scenario, const Footprint
                       : wheelLimitProblem(robot, pts, i, wheels_before);
     if (problem) return violation(p, *problem);
   }
+  if (std::optional<PlanViolation> slip = gripViolation(scenario, plan)) return slip;
   const MotionValidator validator(checker, robot, scenario.lot, validation);
   if (const std::optional<MotionValidator::Failure> f = validator.firstFailure(plan)) {
     const TrajectoryPoint p{f->t_s, f->pose, {}};

@@ -3,8 +3,9 @@
 // (a plugin's, a Python object's, a command's), in planScenario (PlanScenario.h) whatever front
 // end plans, and a plan file's or array's, in the episode pipeline. parksim's own planners
 // validate each trajectory as they build it (MotionValidator.h), so a differential drive's
-// plans from them are not checked again; a car's plans are checked whoever made them. A plan that fails is never driven: the episode's verdict is plan_invalid, with the
-// first offending time, pose and obstacle or limit (pipeline/Verdict.h).
+// plans from them are not checked again; a car's plans are checked whoever made them. A plan that
+// fails is never driven: the episode's verdict is plan_invalid, with the first offending time, pose
+// and obstacle or limit (pipeline/Verdict.h).
 
 #include <optional>
 #include <string>
@@ -55,6 +56,7 @@ struct PlanViolation {
 ///   previous row, moving or stopped; the speed within max_speed and, from rest at the start
 ///   to rest at the end, changing by at most max_accel times that period; a stop between
 ///   driving forward and in reverse (a gear change);
+/// - no driven wheel needs more grip than it has (GripCheck.h);
 /// - the swept footprint, without gaps, free of every obstacle and the reference point inside
 ///   the lot: the motion check parksim's planners use (MotionValidator.h, the same margin);
 /// - it ends inside the goal region (position and heading tolerance).

@@ -15,6 +15,14 @@ const char* toString(PlanStatus status) {
   return "?";
 }
 
+std::vector<std::pair<const char*, double>> phaseTimeList(const PhaseTimes& t) {
+  return {{"sampling", t.sampling_s},      {"nearest_neighbour", t.nearest_s},
+          {"steering", t.steering_s},      {"collision_checking", t.collision_s},
+          {"goal_checks", t.goal_check_s}, {"rewiring", t.rewiring_s},
+          {"connection", t.connection_s},  {"smoothing", t.smoothing_s},
+          {"heuristic", t.heuristic_s},    {"timing", t.timing_s}};
+}
+
 const char* toString(PlanObjective objective) {
   switch (objective) {
     case PlanObjective::kPathCost: return "path_cost";

@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "parksim/core/geometry/Pose2.h"
@@ -40,6 +41,11 @@ struct PhaseTimes {
   double timing_s = 0.0;      ///< re-timing the plan and its duration bound (planScenario)
   double total_s = 0.0;
 };
+
+/// Every phase (not total_s) by name with its time, s, in one order: the one list that
+/// plan.json's phase_times_s, a result row's plan_phase_times_s and the benchmark's
+/// phase_<name>_s columns are made from.
+std::vector<std::pair<const char*, double>> phaseTimeList(const PhaseTimes& times);
 
 /// What a plan's cost measures.
 enum class PlanObjective {

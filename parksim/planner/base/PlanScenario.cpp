@@ -11,6 +11,7 @@
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/NumberFormat.h"
 #include "parksim/planner/base/FreeSpaceBound.h"
+#include "parksim/planner/base/GripCheck.h"
 #include "parksim/planner/base/PlanCheck.h"
 #include "parksim/planner/motion/SpeedProfile.h"
 
@@ -285,6 +286,13 @@ PlanResult planScenario(const Scenario& scenario, const FootprintChecker& checke
   if (result.solved() && (!entry.info.trusted || scenario.robot.isCar())) {
     if (const std::optional<PlanViolation> v =
             checkPlan(scenario, checker, result.trajectory, setup.validation)) {
+      result.status = PlanStatus::kPlanInvalid;
+      result.message = v->reason;
+    }
+  } else if (result.solved()) {
+    // parksim's own plans keep the robot's limits, but the grip those limits ask may be more
+    // than the tyres have (GripCheck.h): such a plan is refused, not driven into a slip.
+    if (const std::optional<PlanViolation> v = gripViolation(scenario, result.trajectory)) {
       result.status = PlanStatus::kPlanInvalid;
       result.message = v->reason;
     }

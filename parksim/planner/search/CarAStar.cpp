@@ -16,304 +16,122 @@
 #include "parksim/planner/motion/CarPlanAlong.h"
 #include "parksim/planner/motion/CarTimeCost.h"
 #include "parksim/planner/motion/MotionPrimitives.h"
+#include "parksim/planner/search/CellSearch.h"
 #include "parksim/planner/search/FootprintFit.h"
-#include "parksim/planner/search/ObstacleHeuristic.h"
-#include "parksim/planner/search/SearchCells.h"
 #include "parksim/planner/steering/ReedsSheppSteering.h"
 
 namespace parksim {
 
 namespace {
 
-using CarClock = std::chrono::steady_clock;
+using detail::CellSearchConfig;
+using detail::CellSearchOutcome;
+using detail::secondsSince;
+using CarClock = detail::SearchClock;
 
-double secondsSince(CarClock::time_point since) {
-  return std::chrono::duration<double>(CarClock::now() - since).count();
-}
-
-// A move, its curvature and what it costs to drive, precomputed.
-struct CarMove {
-  MotionPrimitive primitive;
-  PathPiece piece;  // in the search's direction
-  double kappa = 0.0;
-  double time_s = 0.0;
-};
-
-// What one search (in one window) is given.
-struct CarSearchConfig {
-  RobotDef car;
-  LotBounds window;
-  const MotionValidator* validator = nullptr;
-  const FootprintFit* fit = nullptr;  // null: the validator's footprint queries
-  const CarAStarDef* def = nullptr;
-  const CarTimeCost* cost = nullptr;
-  const ReedsSheppSteering* curves = nullptr;
-  bool trust_grid = true;  // see TimeAStarSearch.h's TimeSearchConfig
-  long max_expansions = 0;
-  CarClock::time_point deadline = CarClock::time_point::max();
-  const SearchDef* search = nullptr;  // its cancel flag
-  const PlanProgress* progress = nullptr;
-  long progress_offset = 0;
-  long progress_budget = 0;
-};
-
-struct CarSearchOutcome {
-  enum class Status { kFound, kExhausted, kBudget, kTimeLimit };
-  Status status = Status::kExhausted;
-  std::vector<PathPiece> pieces;  // found: driven from the start
-  long expansions = 0;
-  long nodes = 0;
-  long analytic_attempts = 0;
-  double heuristic_s = 0.0;
-  double analytic_s = 0.0;
-  double collision_s = 0.0;
-};
-
-class CarSearch {
+// The car in the cell search (CellSearch.h): arcs of a few curvatures up to its tightest and
+// straights, forward and reverse; junctions priced by CarTimeCost; Reeds-Shepp lengths and
+// curves at its tightest radius.
+class CarModel {
  public:
-  CarSearch(const CarSearchConfig& c, const std::vector<Pose2>& sources,
-            const std::vector<Pose2>& targets)
-      : c_(c), def_(*c.def), validator_(*c.validator), targets_(targets) {
-    const double radius = footprintRadius(c.car);
-    cell_ = def_.cell_m > 0.0 ? def_.cell_m : 0.125 * radius;
-    step_ = def_.step_m > 0.0 ? def_.step_m : 1.5 * cell_;
-    speed_ = c.cost->limits().max_speed_mps;
-    coarse_ = movesOf(step_);
-    const double fine = def_.fine_zone_m < 0.0 ? 2.0 * radius : def_.fine_zone_m;
-    cell_keys_ = SearchCells(c.window, {cell_, def_.heading_bins}, fineCells(1), fine, sources);
-  }
-
-  CarSearchOutcome run(bool backward);
-
- private:
-  struct Node {
-    Pose2 pose;
-    double g = 0.0;
-    int parent = -1;
-    int move = -1;
-    bool fine_move = false;
-    int direction = 0;  // of the move into the node; 0 at the sources
+  // A move, its curvature and what it costs to drive, precomputed.
+  struct Move {
+    MotionPrimitive primitive;
+    PathPiece piece;  // in the search's direction
+    double kappa = 0.0;
+    double time_s = 0.0;
+  };
+  // The move into a node: its gear (0 at the sources) and curvature.
+  struct Arrival {
+    int direction = 0;
     double kappa = 0.0;
   };
-  struct Cell {
-    double g = std::numeric_limits<double>::infinity();
-    bool closed = false;
-  };
-  using Item = std::pair<double, int>;  // f, node; ties by node id (deterministic)
 
-  std::vector<CarMove> movesOf(double step) const;
-  CellSize fineCells(int level) const;
-  double heuristic(const Pose2& p) const;
-  void reset();
-  bool expandNext();
-  bool tryAnalytic(int id, double h);
-  void pushChildren(int id);
-  bool edgeValid(const Node& n);
-  const std::vector<CarMove>& movesFor(bool fine) const { return fine ? fine_ : coarse_; }
+  CarModel(const RobotDef& car, const CarAStarDef& def, const CarTimeCost& cost,
+           const ReedsSheppSteering& curves, const std::vector<Pose2>& targets)
+      : car_(car), def_(def), cost_(cost), curves_(curves), targets_(targets) {
+    const double radius = footprintRadius(car);
+    cell_ = def_.cell_m > 0.0 ? def_.cell_m : 0.125 * radius;
+    step_ = def_.step_m > 0.0 ? def_.step_m : 1.5 * cell_;
+    speed_ = cost.limits().max_speed_mps;
+    coarse_ = movesOf(step_);
+    fine_zone_m_ = def_.fine_zone_m < 0.0 ? 2.0 * radius : def_.fine_zone_m;
+  }
 
-  const CarSearchConfig& c_;
+  const RobotDef& robot() const { return car_; }
+
+  detail::CellSearchLayout layout(const LotBounds& window) const {
+    const double longer =
+        std::max(window.x_max_m - window.x_min_m, window.y_max_m - window.y_min_m);
+    const double grid_cell =
+        std::max(def_.heuristic_cell_m > 0.0 ? def_.heuristic_cell_m : 2.0 * cell_,
+                 longer / def_.max_heuristic_cells_per_side);
+    return {{cell_, def_.heading_bins},
+            fine_zone_m_,
+            grid_cell,
+            def_.analytic_near_s,
+            def_.analytic_interval};
+  }
+
+  // Level 1, 2, ...: cells and moves fine_scale^level times as large, heading bins as many
+  // times more.
+  CellSize fineLevel(int level) {
+    const double scale = std::pow(def_.fine_scale, level);
+    fine_ = movesOf(scale * step_);
+    return {scale * cell_, static_cast<int>(std::lround(def_.heading_bins / scale))};
+  }
+
+  const std::vector<Move>& moves(bool fine) const { return fine ? fine_ : coarse_; }
+
+  // The sources are where the search starts: no junction there.
+  double junction(const Arrival& from, const Move& move) const {
+    return from.direction == 0
+               ? 0.0
+               : cost_.junctionTime(from.direction, from.kappa, move.primitive.direction,
+                                    move.kappa, 0.5 * move.primitive.length_m);
+  }
+  Arrival arrival(const Move& move) const { return {move.primitive.direction, move.kappa}; }
+
+  // Seconds to the nearest target at the speed limit: the larger of the Reeds-Shepp length and
+  // the grid distance.
+  double heuristic(const Pose2& p, double grid) const {
+    double curve = std::numeric_limits<double>::infinity();
+    for (const Pose2& t : targets_) curve = std::min(curve, curves_.distance(p, t));
+    return std::max(curve, grid) / speed_;
+  }
+  double gridHeuristic(double grid) const { return grid / speed_; }
+
+  std::vector<PathPiece> curve(const Pose2& from, const Pose2& target) const {
+    return curves_.pieces(from, target);
+  }
+
+ private:
+  std::vector<Move> movesOf(double step) const {
+    const double kappa_max = car_.maxCurvature();
+    std::vector<double> radii;
+    for (int j = 1; j <= def_.curvature_steps; ++j) {
+      radii.push_back(1.0 / (kappa_max * j / def_.curvature_steps));
+    }
+    std::vector<Move> moves;
+    for (const MotionPrimitive& p : makePrimitives(step, radii, std::vector<double>{})) {
+      const double kappa = p.motion.omega_radps / p.motion.v_mps;
+      moves.push_back({p, pieceOf(p, car_), kappa, cost_.pieceTime(p.length_m, kappa)});
+    }
+    return moves;
+  }
+
+  const RobotDef& car_;
   const CarAStarDef& def_;
-  const MotionValidator& validator_;
+  const CarTimeCost& cost_;
+  const ReedsSheppSteering& curves_;
   std::vector<Pose2> targets_;
   double cell_ = 0.0;
   double step_ = 0.0;
   double speed_ = 0.0;
-  SearchCells cell_keys_;
-  std::vector<CarMove> coarse_;
-  std::vector<CarMove> fine_;
-  std::unique_ptr<ObstacleHeuristic> grid_;
-  double grid_slack_m_ = 0.0;
-
-  std::vector<Node> nodes_;
-  std::unordered_map<std::int64_t, Cell> cells_;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> open_;
-  std::vector<PathPiece> analytic_;
-  int reached_ = -1;
-  CarSearchOutcome out_;
+  double fine_zone_m_ = 0.0;
+  std::vector<Move> coarse_;
+  std::vector<Move> fine_;
 };
-
-std::vector<CarMove> CarSearch::movesOf(double step) const {
-  const double kappa_max = c_.car.maxCurvature();
-  std::vector<double> radii;
-  for (int j = 1; j <= def_.curvature_steps; ++j) {
-    radii.push_back(1.0 / (kappa_max * j / def_.curvature_steps));
-  }
-  std::vector<CarMove> moves;
-  for (const MotionPrimitive& p : makePrimitives(step, radii, std::vector<double>{})) {
-    const double kappa = p.motion.omega_radps / p.motion.v_mps;
-    moves.push_back({p, pieceOf(p, c_.car), kappa, c_.cost->pieceTime(p.length_m, kappa)});
-  }
-  return moves;
-}
-
-CellSize CarSearch::fineCells(int level) const {
-  const double scale = std::pow(def_.fine_scale, level);
-  return {scale * cell_, static_cast<int>(std::lround(def_.heading_bins / scale))};
-}
-
-// Seconds to the nearest target at the speed limit: the larger of the Reeds-Shepp length and the
-// grid distance around obstacles (less the grid's own slack); infinite where the grid sees no
-// way, unless it is not trusted.
-double CarSearch::heuristic(const Pose2& p) const {
-  double grid = grid_->distance(p.x, p.y) - grid_slack_m_;
-  if (!std::isfinite(grid)) {
-    if (c_.trust_grid) return grid;
-    grid = 0.0;
-  }
-  double curve = std::numeric_limits<double>::infinity();
-  for (const Pose2& t : targets_) curve = std::min(curve, c_.curves->distance(p, t));
-  return std::max(curve, grid) / speed_;
-}
-
-void CarSearch::reset() {
-  nodes_.clear();
-  cells_.clear();
-  open_ = {};
-  for (const Pose2& p : cell_keys_.sources()) {
-    const std::int64_t k = cell_keys_.key(p);
-    if (cells_.count(k)) continue;
-    const double h = heuristic(p);
-    if (!std::isfinite(h)) continue;
-    cells_[k].g = 0.0;
-    open_.push({c_.def->heuristic_weight * h, static_cast<int>(nodes_.size())});
-    nodes_.push_back({p, 0.0, -1, -1, false, 0, 0.0});
-  }
-}
-
-bool CarSearch::edgeValid(const Node& n) {
-  if (n.parent < 0) return true;
-  const CarClock::time_point t0 = CarClock::now();
-  const bool ok = validator_.isValid(
-      geometryOf(nodes_[n.parent].pose, {movesFor(n.fine_move)[n.move].piece}, c_.car));
-  out_.collision_s += secondsSince(t0);
-  return ok;
-}
-
-bool CarSearch::tryAnalytic(int id, double h) {
-  const long n = out_.expansions;
-  if (!(h < def_.analytic_near_s) && def_.analytic_interval > 1 &&
-      n % def_.analytic_interval != 1) {
-    return false;
-  }
-  const CarClock::time_point t0 = CarClock::now();
-  const Pose2 from = nodes_[id].pose;
-  for (const Pose2& t : targets_) {
-    ++out_.analytic_attempts;
-    std::vector<PathPiece> curve = c_.curves->pieces(from, t);
-    if (validator_.isValid(geometryOf(from, curve, c_.car))) {
-      analytic_ = std::move(curve);
-      reached_ = id;
-      break;
-    }
-  }
-  out_.analytic_s += secondsSince(t0);
-  return reached_ >= 0;
-}
-
-void CarSearch::pushChildren(int id) {
-  const Node n = nodes_[id];
-  const bool fine = cell_keys_.inFineZone(n.pose);
-  const std::vector<CarMove>& moves = movesFor(fine);
-  for (int m = 0; m < static_cast<int>(moves.size()); ++m) {
-    const CarMove& move = moves[m];
-    const Pose2 next = applyPrimitive(n.pose, move.primitive);
-    if (!c_.window.contains(next.x, next.y)) continue;
-    const std::int64_t k = cell_keys_.key(next);
-    auto it = cells_.find(k);
-    if (it != cells_.end() && it->second.closed) continue;
-    // The sources are where the search starts: no junction there.
-    const double junction =
-        n.direction == 0 ? 0.0
-                         : c_.cost->junctionTime(n.direction, n.kappa, move.primitive.direction,
-                                                 move.kappa, 0.5 * move.primitive.length_m);
-    const double g = n.g + move.time_s + junction;
-    if (it != cells_.end() && it->second.g <= g) continue;
-    const double h = heuristic(next);
-    if (!std::isfinite(h)) continue;
-    cells_[k].g = g;
-    open_.push({g + c_.def->heuristic_weight * h, static_cast<int>(nodes_.size())});
-    nodes_.push_back({next, g, id, m, fine, move.primitive.direction, move.kappa});
-  }
-}
-
-bool CarSearch::expandNext() {
-  while (!open_.empty()) {
-    const auto [f, id] = open_.top();
-    open_.pop();
-    const Node& n = nodes_[id];
-    Cell& cell = cells_[cell_keys_.key(n.pose)];
-    if (cell.closed || n.g > cell.g) continue;
-    if (!edgeValid(n)) {
-      cell.g = std::numeric_limits<double>::infinity();  // others may reach the cell after all
-      continue;
-    }
-    cell.closed = true;
-    ++out_.expansions;
-    if (c_.progress && *c_.progress) {
-      (*c_.progress)(c_.progress_offset + out_.expansions, c_.progress_budget);
-    }
-    if (tryAnalytic(id, (f - nodes_[id].g) / c_.def->heuristic_weight)) return false;
-    pushChildren(id);
-    return true;
-  }
-  return false;
-}
-
-CarSearchOutcome CarSearch::run(bool backward) {
-  const CarClock::time_point t0 = CarClock::now();
-  const double longer = std::max(cell_keys_.width_m(), cell_keys_.height_m());
-  const double grid_cell =
-      std::max(def_.heuristic_cell_m > 0.0 ? def_.heuristic_cell_m : 2.0 * cell_,
-               longer / def_.max_heuristic_cells_per_side);
-  grid_ = c_.fit ? std::make_unique<ObstacleHeuristic>(
-                       [&](double x, double y) { return c_.fit->fitsSomeHeading(x, y); }, c_.window,
-                       grid_cell, targets_.front())
-                 : std::make_unique<ObstacleHeuristic>(validator_, c_.window, grid_cell,
-                                                       targets_.front());
-  grid_slack_m_ = std::sqrt(2.0) * grid_cell;
-  out_.heuristic_s = secondsSince(t0);
-  // Coarse, then finer near the sources twice.
-  for (int attempt = 0; attempt < 3 && reached_ < 0; ++attempt) {
-    if (attempt >= 1) {
-      if (cell_keys_.fineZone_m() <= 0.0) break;
-      cell_keys_.enableFineZone();
-      cell_keys_.setFine(fineCells(attempt));
-      fine_ = movesOf(std::pow(def_.fine_scale, attempt) * step_);
-    }
-    reset();
-    while (expandNext()) {
-      if (out_.expansions >= c_.max_expansions) {
-        out_.status = CarSearchOutcome::Status::kBudget;
-        out_.nodes += static_cast<long>(nodes_.size());
-        return std::move(out_);
-      }
-      if (CarClock::now() > c_.deadline || c_.search->cancelled()) {
-        out_.status = CarSearchOutcome::Status::kTimeLimit;
-        out_.nodes += static_cast<long>(nodes_.size());
-        return std::move(out_);
-      }
-    }
-    out_.nodes += static_cast<long>(nodes_.size());
-  }
-  if (reached_ < 0) {
-    out_.status = CarSearchOutcome::Status::kExhausted;
-    return std::move(out_);
-  }
-  std::vector<int> chain;
-  for (int i = reached_; nodes_[i].parent >= 0; i = nodes_[i].parent) chain.push_back(i);
-  std::reverse(chain.begin(), chain.end());
-  std::vector<PathPiece> pieces;
-  for (int i : chain) pieces.push_back(movesFor(nodes_[i].fine_move)[nodes_[i].move].piece);
-  pieces.insert(pieces.end(), analytic_.begin(), analytic_.end());
-  if (backward) {
-    // Driven the other way round: the pieces in reverse order, each with its wheels reversed.
-    std::reverse(pieces.begin(), pieces.end());
-    for (PathPiece& p : pieces) p.direction = {-p.direction.left_radps, -p.direction.right_radps};
-  }
-  for (const PathPiece& p : pieces) appendPiece(out_.pieces, p);
-  out_.status = CarSearchOutcome::Status::kFound;
-  return std::move(out_);
-}
 
 }  // namespace
 
@@ -379,19 +197,15 @@ PlanResult CarAStar::solve(const Pose2& start, const GoalRegion& goal,
   }
   const ReedsSheppSteering curves(car_);  // at the car's tightest radius
   const CarTimeCost cost(car_, limits_, search_.gear_change_penalty_s);
-  CarSearchConfig config;
-  config.car = car_;
+  CellSearchConfig config;
   config.validator = &validator_;
   config.fit = fit.get();
-  config.def = &search_;
-  config.cost = &cost;
-  config.curves = &curves;
-  config.max_expansions = def_.max_iterations;
+  config.weight = search_.heuristic_weight;
   if (def_.max_time_s > 0.0) {
     config.deadline = t_begin + std::chrono::duration_cast<CarClock::duration>(
                                     std::chrono::duration<double>(def_.max_time_s));
   }
-  config.search = &def_;
+  config.cancel = def_.cancel;
   config.progress = &progress;
   config.progress_budget = def_.max_iterations;
   const bool backward = search_.from_goal;
@@ -399,38 +213,24 @@ PlanResult CarAStar::solve(const Pose2& start, const GoalRegion& goal,
   const std::vector<Pose2> targets = backward ? std::vector<Pose2>{start} : roots;
   double margin = firstMargin(search_.window, start, goal.pose);
   PlanStats& st = result.stats;
-  CarSearchOutcome out;
-  while (true) {
-    config.window = searchWindow(lot_, start, goal.pose, margin);
-    config.progress_offset = st.iterations;
-    config.max_expansions = def_.max_iterations - st.iterations;
-    out = CarSearch(config, sources, targets).run(backward);
-    st.iterations += static_cast<int>(out.expansions);
-    st.tree_size += static_cast<int>(out.nodes);
-    st.goal_attempts += static_cast<int>(out.analytic_attempts);
-    st.times.heuristic_s += out.heuristic_s;
-    st.times.goal_check_s += out.analytic_s;
-    st.times.collision_s += out.collision_s;
-    if (out.status != CarSearchOutcome::Status::kExhausted) break;
-    if (coversLot(config.window, lot_)) {
-      if (!config.trust_grid) break;
-      config.trust_grid = false;  // a passage may have hidden from the grid: look there too
-      continue;
-    }
-    margin *= 2.0;  // hemmed in by the window: look wider
-  }
+  const CellSearchOutcome out =
+      detail::searchWidening(config, lot_, start, goal.pose, margin, st, [&] {
+        config.max_expansions = def_.max_iterations - st.iterations;
+        CarModel model(car_, search_, cost, curves, targets);
+        return detail::runCellSearch(config, model, sources, targets, backward);
+      });
   st.goal_tree_size = static_cast<int>(roots.size());
-  if (out.status != CarSearchOutcome::Status::kFound) {
+  if (out.status != CellSearchOutcome::Status::kFound) {
     if (def_.cancelled()) {
       return finish(PlanStatus::kCancelled,
                     "cancelled before a collision-free trajectory to the goal was found");
     }
-    if (out.status == CarSearchOutcome::Status::kTimeLimit) {
+    if (out.status == CellSearchOutcome::Status::kTimeLimit) {
       return finish(PlanStatus::kTimeLimit, "no collision-free trajectory to the goal within " +
                                                 std::to_string(def_.max_time_s) + " s");
     }
     return finish(PlanStatus::kIterationLimit,
-                  out.status == CarSearchOutcome::Status::kExhausted
+                  out.status == CellSearchOutcome::Status::kExhausted
                       ? "no collision-free trajectory to the goal: every reachable cell was "
                         "expanded"
                       : "no collision-free trajectory to the goal within " +

@@ -15,13 +15,18 @@ FootprintFit::FootprintFit(const std::vector<Obstacle>& obstacles, const RobotDe
     throw Error("footprint fit: margin must be >= 0 and headings >= 1");
   }
   reach_m_ = footprintRadius(robot) + std::sqrt(2.0) * margin_m;
+  for (int h = 0; h < headings_; ++h) {
+    footprints_.push_back(
+        footprintAt(robot_, Pose2{0.0, 0.0, 2.0 * kPi * h / headings_}, margin_m_));
+    footprint_axes_.push_back(axesOf(footprints_.back()));
+  }
   bucket_m_ = 2.0 * reach_m_;
   for (const Obstacle& o : obstacles) {
     if (!blocksRobot(o, robot)) continue;
     if (o.shape == ObstacleShape::kCompound) {
       for (std::size_t p = 0; p < o.compound->parts.size(); ++p) {
         const Eigen::AlignedBox2d& b = o.compound->bounds[p];
-        add({Obstacle{}, o.compound, p, b.min().x(), b.min().y(), b.max().x(), b.max().y()});
+        add({Obstacle{}, o.compound, p, b.min().x(), b.min().y(), b.max().x(), b.max().y(), {}});
       }
       continue;
     }
@@ -41,7 +46,7 @@ FootprintFit::FootprintFit(const std::vector<Obstacle>& obstacles, const RobotDe
       x1 = o.box.center.x() + o.radius_m;
       y1 = o.box.center.y() + o.radius_m;
     }
-    add({o, nullptr, 0, x0, y0, x1, y1});
+    add({o, nullptr, 0, x0, y0, x1, y1, axesOf(o.box)});
   }
 }
 
@@ -58,8 +63,17 @@ void FootprintFit::add(Shape shape) {
   }
 }
 
-double FootprintFit::separationOf(const OrientedBox& footprint, const Shape& shape) const {
-  if (shape.compound) return separationAlongAxes(footprint, shape.compound->parts[shape.part]);
+double FootprintFit::separationOf(const OrientedBox& footprint, const BoxAxes& axes,
+                                  const Shape& shape) const {
+  if (shape.compound) {
+    return separationAlongAxes(footprint, axes, shape.compound->parts[shape.part]);
+  }
+  if (shape.obstacle.shape == ObstacleShape::kBox) {
+    return separationAlongAxes(footprint, axes, shape.obstacle.box, shape.axes);
+  }
+  if (shape.obstacle.shape == ObstacleShape::kPolygon) {
+    return separationAlongAxes(footprint, axes, shape.obstacle.vertices);
+  }
   return separation(footprint, shape.obstacle);
 }
 
@@ -77,10 +91,12 @@ bool FootprintFit::fitsSomeHeading(double x, double y) const {
     return true;
   }
   for (int h = 0; h < headings_; ++h) {
-    const OrientedBox fp = footprintAt(robot_, Pose2{x, y, 2.0 * kPi * h / headings_}, margin_m_);
+    // footprintAt(robot_, Pose2{x, y, heading}, margin_m_), to the last bit.
+    OrientedBox fp = footprints_[h];
+    fp.center = {x + fp.center.x(), y + fp.center.y()};
     bool free = true;
     for (int id : it->second) {
-      if (near(shapes_[id]) && separationOf(fp, shapes_[id]) < 0.0) {
+      if (near(shapes_[id]) && separationOf(fp, footprint_axes_[h], shapes_[id]) < 0.0) {
         free = false;
         break;
       }

@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "parksim/core/model/Geometry.h"
 #include "parksim/core/model/RobotDef.h"
 #include "parksim/core/model/Scenario.h"
 
@@ -34,9 +35,10 @@ class FootprintFit {
     std::shared_ptr<const CompoundShape> compound;  // a part's obstacle
     std::size_t part = 0;                           // its index there
     double x_min, y_min, x_max, y_max;              // bounding box
+    BoxAxes axes{};                                 // a box's own axes
   };
   void add(Shape shape);
-  double separationOf(const OrientedBox& footprint, const Shape& shape) const;
+  double separationOf(const OrientedBox& footprint, const BoxAxes& axes, const Shape& shape) const;
   std::int64_t bucketKey(std::int64_t i, std::int64_t j) const { return i * 4194304 + j; }
 
   RobotDef robot_;
@@ -44,6 +46,11 @@ class FootprintFit {
   int headings_;
   double reach_m_;   // farthest grown-footprint point from the reference point
   double bucket_m_;  // bucket side
+  // The grown footprint at each heading with its reference point at the origin, and its axes:
+  // the grid asks every cell in every heading, and their sines and cosines were most of its
+  // time.
+  std::vector<OrientedBox> footprints_;
+  std::vector<BoxAxes> footprint_axes_;
   std::vector<Shape> shapes_;
   std::unordered_map<std::int64_t, std::vector<int>> buckets_;
 };

@@ -109,25 +109,9 @@ TimeSearchOutcome Solve::search(const Pose2& start, const Pose2& goal,
   const bool backward = search_.from_goal;
   const std::vector<Pose2> sources = backward ? roots : std::vector<Pose2>{start};
   const std::vector<Pose2> targets = backward ? std::vector<Pose2>{start} : roots;
-  PlanStats& st = result_.stats;
-  while (true) {
-    config.window = searchWindow(lot_, start, goal, margin_m_);
-    config.progress_offset = st.iterations;
-    TimeSearchOutcome out = detail::runTimeSearch(config, sources, targets, backward);
-    st.iterations += static_cast<int>(out.expansions);
-    st.tree_size += static_cast<int>(out.nodes);
-    st.goal_attempts += static_cast<int>(out.analytic_attempts);
-    st.times.heuristic_s += out.heuristic_s;
-    st.times.goal_check_s += out.analytic_s;
-    st.times.collision_s += out.collision_s;
-    if (out.status != TimeSearchOutcome::Status::kExhausted) return out;
-    if (coversLot(config.window, lot_)) {
-      if (!config.trust_grid) return out;
-      config.trust_grid = false;  // a passage may have hidden from the grid: look there too
-      continue;
-    }
-    margin_m_ *= 2.0;  // hemmed in by the window: look wider
-  }
+  return detail::searchWidening(config, lot_, start, goal, margin_m_, result_.stats, [&] {
+    return detail::runTimeSearch(config, sources, targets, backward);
+  });
 }
 
 // Smooths a path found and keeps it when it is the fastest so far.

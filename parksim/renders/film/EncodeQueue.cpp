@@ -43,10 +43,13 @@ void writeFrame(const std::string& path, std::span<const unsigned char> bytes) {
 
 }  // namespace
 
-EncodeQueue::EncodeQueue(int threads, int depth, int width, int height, PngCompression png)
-    : takes_changed_rows_(threads == 1 && keepsLastImage(png)) {
+EncodeQueue::EncodeQueue(int threads, int depth, int width, int height, PngCompression png,
+                         bool keep_last)
+    : takes_changed_rows_(threads == 1 && keep_last && keepsLastImage(png)) {
   for (int i = 0; i < depth; ++i) free_.push_back(std::make_unique<RgbaImage>(width, height));
-  for (int i = 0; i < threads; ++i) workers_.emplace_back([this, png] { work(png); });
+  for (int i = 0; i < threads; ++i) {
+    workers_.emplace_back([this, png, keep_last] { work(png, keep_last); });
+  }
 }
 
 EncodeQueue::~EncodeQueue() { stop(); }
@@ -114,10 +117,10 @@ std::string EncodeQueue::error() const {
   return error_;
 }
 
-void EncodeQueue::work(PngCompression png) {
+void EncodeQueue::work(PngCompression png, bool keep_last) {
   pthread_setname_np(pthread_self(), "parksim-png");  // for top -H and profilers
   // One encoder per thread: its zlib state and buffers serve every frame.
-  PngEncoder encoder(png);
+  PngEncoder encoder(png, keep_last);
   while (true) {
     Job job;
     {

@@ -20,8 +20,9 @@ namespace parksim {
 
 class EncodeQueue {
  public:
-  /// `threads` encoders; `depth` images of width x height in the pool.
-  EncodeQueue(int threads, int depth, int width, int height, PngCompression png);
+  /// `threads` encoders; `depth` images of width x height in the pool. `keep_last`: each
+  /// encoder keeps the last image it wrote (PngEncoder's keep_last_image), one more image each.
+  EncodeQueue(int threads, int depth, int width, int height, PngCompression png, bool keep_last);
   ~EncodeQueue();
   EncodeQueue(const EncodeQueue&) = delete;
   EncodeQueue& operator=(const EncodeQueue&) = delete;
@@ -31,7 +32,7 @@ class EncodeQueue {
   /// Encodes `image` to `path` on an encoder thread; the image then returns to the pool.
   void submit(std::string path, std::unique_ptr<RgbaImage> image);
   /// Whether submit may say which rows changed: one encoder, so it encodes the frames in order,
-  /// with a compression that keeps the last image (PngEncoder::encode with rows).
+  /// with a compression that keeps the last image, and keeps it (PngEncoder::encode with rows).
   bool takesChangedRows() const { return takes_changed_rows_; }
   /// submit for the frame after the last one submitted, of which only rows `changed` are
   /// valid in `image`: the others are the last frame's. Only when takesChangedRows().
@@ -55,7 +56,7 @@ class EncodeQueue {
   };
 
   void push(Job job);
-  void work(PngCompression png);
+  void work(PngCompression png, bool keep_last);
 
   mutable std::mutex mutex_;
   std::condition_variable job_cv_, free_cv_, idle_cv_;

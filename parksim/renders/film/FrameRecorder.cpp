@@ -461,9 +461,10 @@ FrameRecorder::FrameRecorder(const Scenario& scenario, const FrameDef& def)
   render_def.msaa_samples = def.msaa_samples;
   render_def.context = def.context;
   const int image_width = def.view == FrameView::kBoth ? 2 * def.width_px : def.width_px;
+  const FilmBuffers buffers = filmBuffers(def);
   impl_->queue =
-      std::make_unique<EncodeQueue>(def.encode_threads, def.queue_depth + def.encode_threads,
-                                    image_width, def.height_px, def.png_compression);
+      std::make_unique<EncodeQueue>(def.encode_threads, buffers.images, image_width, def.height_px,
+                                    def.png_compression, buffers.kept > 0);
   // Frames are drawn on a thread of their own, which first makes the renderer (loads the GL
   // libraries, compiles the shaders): the caller's simulation goes on meanwhile.
   impl_->drawer = std::thread([m = impl_.get()] { m->drawLoop(); });

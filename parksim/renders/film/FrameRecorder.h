@@ -14,6 +14,7 @@
 // are encoded and written on worker threads while the next frame renders. File names come from
 // the frame index, so the files and their bytes do not depend on the threading.
 
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -75,7 +76,14 @@ struct FrameDef {
   /// PNG encoder threads (>= 1). One keeps a 2-core machine busy: the drawing thread renders
   /// while it encodes. A second one measured slower (more CPU per frame from contention).
   int encode_threads = 1;
-  int queue_depth = 3;  ///< frames rendered ahead of the encoders (>= 1)
+  int queue_depth = 3;  ///< frames rendered ahead of the encoders (>= 1), memory allowing
+  /// Memory for frames' pixels, bytes: the frames in flight (queue_depth + encode_threads at
+  /// most) and, when two more fit, the encoders' copies of their last frame (which lets them copy
+  /// unchanged bands and the top view read back only the rows that changed). Fewer frames are
+  /// rendered ahead where they would need more; one is always in flight, so a film holds
+  /// max(frame_memory_bytes, one frame) (filmBuffers, docs/limits.md). The bytes of the files do
+  /// not depend on it.
+  std::size_t frame_memory_bytes = std::size_t{512} << 20;
   /// PNG compression of the frames. kDefault (zlib level 1, chosen by measurement) is small
   /// (~25 kB a 640x480 frame); kFast (a run-length deflate) encodes in about 60 % of the CPU
   /// for files of about the same size on films, larger on busy images; both copy the bands of
@@ -93,6 +101,20 @@ struct FrameDef {
 /// The frames an episode of `duration_s` simulated seconds takes at def.fps (one per 1/fps and
 /// the last sample). Throws Error naming fps, duration and def.max_frames when that is more.
 double checkFrameLimits(const FrameDef& def, double duration_s);
+
+/// The frames' pixels a recording holds (FrameDef::frame_memory_bytes).
+struct FilmBuffers {
+  /// One frame as drawn, RGBA: its width (twice width_px for kBoth) x height_px x 4 bytes.
+  std::size_t frame_bytes = 0;
+  int images = 1;  ///< frames in flight: drawn and waiting, or being encoded (>= 1)
+  int kept = 0;    ///< last frames the encoders keep: encode_threads, or 0
+  std::size_t bytes() const { return static_cast<std::size_t>(images + kept) * frame_bytes; }
+};
+
+/// How a recording made with `def` spends def.frame_memory_bytes: the encoders keep their last
+/// frame when that and one frame in flight fit (kDefault and kFast only), then as many frames are
+/// in flight as fit, from 1 to queue_depth + encode_threads.
+FilmBuffers filmBuffers(const FrameDef& def);
 
 /// One simulation sample, as plain data (mirrors sim's EpisodeSample).
 struct FrameInput {

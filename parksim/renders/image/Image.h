@@ -1,7 +1,7 @@
 #pragma once
 // 8-bit images, rows top to bottom, no padding: RGB, what the renderer gives and the PNG encoder
 // writes; RGBA, as the GL reads back, which films hand to their encoders as it is (the alpha is
-// dropped there, only from the rows that changed since the last frame).
+// dropped there, a band at a time, only from the bands compressed).
 
 #include <cstddef>
 #include <cstdint>

@@ -63,6 +63,8 @@ std::uint32_t filteredRowAdler(std::uint32_t adler, const unsigned char* row,
 
 constexpr unsigned char kSignature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
 constexpr std::size_t kIdatStart = 8 + 12 + 13 + 8;  // signature, IHDR chunk, IDAT length and tag
+// After the deflate data: its Adler-32, the IDAT chunk's CRC and the IEND chunk.
+constexpr std::size_t kTrailerBytes = 4 + 4 + 12;
 
 constexpr int kZlibLevel = 1;  // PngCompression::kDefault
 // kDefault and kFast compress bands of this many rows, each on its own (encodeBands). Smaller
@@ -78,7 +80,9 @@ constexpr unsigned char kZlibHeader[2] = {0x78, 0x01};
 
 // The PNG is built in place in `out`: signature, IHDR, one IDAT chunk holding the zlib stream
 // (header, raw deflate, Adler-32), IEND. The filtered image (each row a 0 byte, filter "none",
-// then its pixels) is never assembled: rows go to deflate, or into stored blocks, as they are.
+// then its pixels) is never assembled: rows go to deflate, or into stored blocks, as they are,
+// an RGBA image's converted a band (or a row) at a time. Nothing the size of the image is held
+// but the last image (kDefault and kFast, when kept) and the output.
 struct PngEncoder::Impl {
   // kDefault and kFast: what is kept of a band of the last image to copy it into the next.
   struct Band {
@@ -89,32 +93,40 @@ struct PngEncoder::Impl {
   };
 
   PngCompression compression = PngCompression::kDefault;
+  bool keep_last = true;  // kDefault and kFast: keep the last image, copy its unchanged bands
   z_stream zs{};
   bool deflating = false;  // zs initialized (kDefault)
   // Two outputs, used in turn: the last one stays readable while the next is made. They only
-  // grow, and out_size says how much is the PNG: growing a vector zeroes its new bytes, a
-  // megabyte (the bound) a frame had it been shrunk to the PNG's size.
+  // grow (doubling, band by band as the PNG needs), and out_size says how much is the PNG:
+  // growing a vector zeroes its new bytes, which costs a frame nothing once they fit.
   std::vector<unsigned char> outs[2];
   std::size_t out_size[2] = {0, 0};
   int current = 0;
-  RgbImage last;  // the last image encoded, RGB (no size: none, or it failed)
-  // kDefault and kFast: the last image as it came when it was RGBA (last_channels 4), so only
-  // the bands that changed are converted to RGB.
-  std::vector<std::uint8_t> last_rgba;
+  // kDefault and kFast with keep_last: the last image encoded, as it came (RGB or RGBA), to
+  // compare the next one's bands with and to take the rows a changed-rows call does not give.
+  // last_width 0: none, or it failed.
+  std::vector<std::uint8_t> last;
+  int last_width = 0;
+  int last_height = 0;
   int last_channels = 0;
-  RgbImage rgb;                         // kStored and kSmall: an RGBA image as RGB
-  std::vector<Band> band_cache;         // the last image's bands
-  std::vector<unsigned char> filtered;  // kFast: the last image's rows, each after its filter byte
+  RgbImage rgb;                           // kSmall: an RGBA image as RGB (stb takes it whole)
+  std::vector<std::uint8_t> rows_rgb;     // an RGBA image's rows of one band (or row) as RGB
+  std::vector<Band> band_cache;           // the last image's bands
+  std::vector<unsigned char> filtered;    // kFast: a band's rows and the row above, filtered
   std::vector<unsigned char> band_bytes;  // kFast: one band's deflate blocks
   std::uint32_t adler = 1;                // of the filtered rows
 
   std::span<const unsigned char> encode(const Pixels& image);
-  void begin(const Pixels& image, std::size_t idat_bound);
+  void begin(const Pixels& image);
+  // Makes out() hold at least `bytes` of PNG data, and the trailer after them.
+  void reserveOut(std::size_t bytes);
+  const std::uint8_t* rgbRows(const std::uint8_t* source, const Pixels& image, int y0, int y1);
   template <class CompressBand>
-  std::size_t encodeBands(const Pixels& image, bool matches_row_above, CompressBand compress);
-  std::size_t deflateRows(const Pixels& image);
+  std::size_t encodeBands(const Pixels& image, bool matches_row_above, std::size_t band_bound,
+                          CompressBand compress);
+  std::size_t deflateRows(const Pixels& image, std::size_t band_bound);
   std::size_t storeRows(const Pixels& image);
-  std::size_t runLengthRows(const Pixels& image);
+  std::size_t runLengthRows(const Pixels& image, std::size_t band_bound);
   void checksumRow(const unsigned char* row, std::size_t row_bytes) {
     adler = filteredRowAdler(adler, row, row_bytes);
   }
@@ -122,9 +134,13 @@ struct PngEncoder::Impl {
   std::vector<unsigned char>& out() { return outs[current]; }
 };
 
-void PngEncoder::Impl::begin(const Pixels& image, std::size_t idat_bound) {
-  const std::size_t capacity = kIdatStart + idat_bound + 4 + 12;
-  if (out().size() < capacity) out().resize(capacity);
+void PngEncoder::Impl::reserveOut(std::size_t bytes) {
+  const std::size_t need = bytes + kTrailerBytes;
+  if (out().size() < need) out().resize(std::max(need, 2 * out().size()));
+}
+
+void PngEncoder::Impl::begin(const Pixels& image) {
+  reserveOut(kIdatStart + 2);
   unsigned char* o = out().data();
   std::memcpy(o, kSignature, 8);
   put32(o + 8, 13);
@@ -140,41 +156,48 @@ void PngEncoder::Impl::begin(const Pixels& image, std::size_t idat_bound) {
   o[kIdatStart + 1] = kZlibHeader[1];
 }
 
+// Rows [y0, y1) of `source` (laid out as `image`) as RGB, one after the other: the rows
+// themselves when the image is RGB, else converted into rows_rgb.
+const std::uint8_t* PngEncoder::Impl::rgbRows(const std::uint8_t* source, const Pixels& image,
+                                              int y0, int y1) {
+  const std::size_t width = static_cast<std::size_t>(image.width);
+  const std::size_t first = static_cast<std::size_t>(y0) * width * image.channels;
+  if (image.channels == 3) return source + first;
+  const std::size_t pixels = static_cast<std::size_t>(y1 - y0) * width;
+  if (rows_rgb.size() < pixels * 3) rows_rgb.resize(pixels * 3);
+  rgbaToRgb(source + first, rows_rgb.data(), pixels);
+  return rows_rgb.data();
+}
+
 // kDefault and kFast: the image in bands of kBandRows rows, each compressed on its own and ended
 // on a byte boundary (a sync flush), so its bytes depend on its rows alone and, where its
 // matches reach the row above (kFast), on the row before it. A film's frames share most rows
-// (the lot stays, the robot moves): a band that the last image had too is copied from the last
-// output with its Adler-32 instead of compressed, and the bytes are the same as compressing it.
-// An RGBA image is compared as it came, and only its changed bands are converted to RGB.
-// `compress(y0, y1, o, end)` writes rows [y0, y1) of `last` (by then this image, RGB) at `o`
-// (room up to `end`) and returns the bytes written.
+// (the lot stays, the robot moves): with keep_last, a band that the last image had too is
+// copied from the last output with its Adler-32 instead of compressed, and the bytes are the
+// same as compressing it. An image is compared and kept as it came; an RGBA image's bands are
+// converted to RGB only where they are compressed. `compress(y0, y1, rows, above, o, end)`
+// writes rows [y0, y1) (RGB at `rows`; `above`: the row before them, or null) at `o` (room up
+// to `end`, at least band_bound) and returns the bytes written.
 template <class CompressBand>
 std::size_t PngEncoder::Impl::encodeBands(const Pixels& image, bool matches_row_above,
-                                          CompressBand compress) {
+                                          std::size_t band_bound, CompressBand compress) {
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
   const std::size_t in_row_bytes = static_cast<std::size_t>(image.width) * image.channels;
   const auto bands = static_cast<std::size_t>((image.height + kBandRows - 1) / kBandRows);
-  const bool same_size =
-      last.width == image.width && last.height == image.height && last_channels == image.channels;
-  last.width = last.height = 0;  // until this image is done
-  if (!same_size) {
-    last.pixels.assign(row_bytes * static_cast<std::size_t>(image.height), 0);
-    if (image.channels == 4) last_rgba.assign(image.size, 0);
-  }
-  std::vector<std::uint8_t>& kept = image.channels == 4 ? last_rgba : last.pixels;
-  // Rows [y0, y1) as they came: compared with the last image's and, where they differ, kept
-  // and converted. True when they differ.
+  const bool same_size = keep_last && last_width == image.width && last_height == image.height &&
+                         last_channels == image.channels;
+  last_width = last_height = 0;  // until this image is done
+  if (keep_last && !same_size) last.assign(image.size, 0);
+  // Rows [y0, y1) as they came: compared with the last image's and, where they differ, kept.
+  // True when they differ (always, with no last image).
   const auto take = [&](int y0, int y1) {
+    if (!keep_last) return true;
     const std::size_t first = static_cast<std::size_t>(y0) * in_row_bytes;
     const std::size_t bytes = static_cast<std::size_t>(y1 - y0) * in_row_bytes;
-    if (same_size && std::memcmp(image.data + first, kept.data() + first, bytes) == 0) {
+    if (same_size && std::memcmp(image.data + first, last.data() + first, bytes) == 0) {
       return false;
     }
-    std::memcpy(kept.data() + first, image.data + first, bytes);
-    if (image.channels == 4) {
-      rgbaToRgb(image.data + first, last.pixels.data() + static_cast<std::size_t>(y0) * row_bytes,
-                bytes / 4);
-    }
+    std::memcpy(last.data() + first, image.data + first, bytes);
     return true;
   };
   band_cache.resize(bands);
@@ -194,74 +217,92 @@ std::size_t PngEncoder::Impl::encodeBands(const Pixels& image, bool matches_row_
       band.changed |= take(std::max(y0, rows[k].begin), std::min(y1, rows[k].end));
     }
   }
+  // The image's rows: all of them kept by now, or all given.
+  const std::uint8_t* const source = keep_last ? last.data() : image.data;
   const std::vector<unsigned char>& last_out = outs[1 - current];
-  unsigned char* const start = out().data() + kIdatStart + 2;
-  unsigned char* o = start;
-  const unsigned char* const end = out().data() + out().size() - 4 - 12;
+  const std::size_t start = kIdatStart + 2;
+  std::size_t at = start;
   for (std::size_t b = 0; b < bands; ++b) {
     const int y0 = static_cast<int>(b) * kBandRows;
     const int y1 = std::min(image.height, y0 + kBandRows);
     Band& band = band_cache[b];
     if (band.changed || (matches_row_above && b > 0 && band_cache[b - 1].changed)) {
+      const int from = matches_row_above && y0 > 0 ? y0 - 1 : y0;
+      const std::uint8_t* const above = rgbRows(source, image, from, y1);
+      const std::uint8_t* const rows = above + static_cast<std::size_t>(y0 - from) * row_bytes;
       band.adler = 1;
       for (int y = y0; y < y1; ++y) {
-        band.adler = filteredRowAdler(band.adler, last.pixels.data() + y * row_bytes, row_bytes);
+        band.adler = filteredRowAdler(band.adler, rows + (y - y0) * row_bytes, row_bytes);
       }
-      band.length = compress(y0, y1, o, end);
+      reserveOut(at + band_bound);
+      band.length = compress(y0, y1, rows, from < y0 ? above : nullptr, out().data() + at,
+                             out().data() + out().size() - kTrailerBytes);
     } else {
-      std::memcpy(o, last_out.data() + band.offset, band.length);
+      reserveOut(at + band.length);
+      std::memcpy(out().data() + at, last_out.data() + band.offset, band.length);
     }
-    band.offset = static_cast<std::size_t>(o - out().data());
-    o += band.length;
+    band.offset = at;
+    at += band.length;
     adler =
         adler32_combine(adler, band.adler,
                         static_cast<z_off_t>(static_cast<std::size_t>(y1 - y0) * (row_bytes + 1)));
   }
   // The last block: empty, fixed codes, final.
-  o[0] = 0x03;
-  o[1] = 0x00;
-  o += 2;
-  last.width = image.width;
-  last.height = image.height;
-  last_channels = image.channels;
-  return static_cast<std::size_t>(o - start);
+  reserveOut(at + 2);
+  out()[at] = 0x03;
+  out()[at + 1] = 0x00;
+  at += 2;
+  if (keep_last) {
+    last_width = image.width;
+    last_height = image.height;
+    last_channels = image.channels;
+  }
+  return at - start;
 }
 
 // kDefault: each band a raw deflate stream of zlib level 1 (the state reset before it).
-std::size_t PngEncoder::Impl::deflateRows(const Pixels& image) {
+std::size_t PngEncoder::Impl::deflateRows(const Pixels& image, std::size_t band_bound) {
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
-  return encodeBands(image, false, [&](int y0, int y1, unsigned char* o, const unsigned char* end) {
-    if (deflateReset(&zs) != Z_OK) throw Error("PNG: zlib cannot reset its state");
-    zs.next_out = o;
-    zs.avail_out = static_cast<uInt>(end - o);
-    unsigned char filter = 0;
-    auto feed = [this](unsigned char* data, std::size_t n, int flush) {
-      zs.next_in = data;
-      zs.avail_in = static_cast<uInt>(n);
-      // The output has room for the bound of the whole image: all input is taken.
-      if (deflate(&zs, flush) != Z_OK || zs.avail_in != 0) {
-        throw Error("PNG: zlib failed to compress");
-      }
-    };
-    for (int y = y0; y < y1; ++y) {
-      unsigned char* row = last.pixels.data() + y * row_bytes;
-      feed(&filter, 1, Z_NO_FLUSH);
-      feed(row, row_bytes, y + 1 == y1 ? Z_SYNC_FLUSH : Z_NO_FLUSH);
-    }
-    // A full output would leave part of the flush inside zlib (it returns Z_OK then too).
-    if (zs.avail_out == 0) throw Error("PNG: zlib outgrew its bound");
-    return static_cast<std::size_t>(zs.next_out - o);
-  });
+  return encodeBands(image, false, band_bound,
+                     [&](int y0, int y1, const std::uint8_t* rows, const std::uint8_t*,
+                         unsigned char* o, const unsigned char* end) {
+                       if (deflateReset(&zs) != Z_OK) {
+                         throw Error("PNG: zlib cannot reset its state");
+                       }
+                       zs.next_out = o;
+                       zs.avail_out = static_cast<uInt>(end - o);
+                       unsigned char filter = 0;
+                       auto feed = [this](const unsigned char* data, std::size_t n, int flush) {
+                         zs.next_in = const_cast<unsigned char*>(data);  // zlib reads only
+                         zs.avail_in = static_cast<uInt>(n);
+                         // The output has room for the band's bound: all input is taken.
+                         if (deflate(&zs, flush) != Z_OK || zs.avail_in != 0) {
+                           throw Error("PNG: zlib failed to compress");
+                         }
+                       };
+                       for (int y = y0; y < y1; ++y) {
+                         feed(&filter, 1, Z_NO_FLUSH);
+                         feed(rows + (y - y0) * row_bytes, row_bytes,
+                              y + 1 == y1 ? Z_SYNC_FLUSH : Z_NO_FLUSH);
+                       }
+                       // A full output would leave part of the flush inside zlib (it returns
+                       // Z_OK then too).
+                       if (zs.avail_out == 0) throw Error("PNG: zlib outgrew its bound");
+                       return static_cast<std::size_t>(zs.next_out - o);
+                     });
 }
 
-// kStored: blocks of at most 65535 bytes (RFC 1951 3.2.4), copied straight from the rows.
+// kStored: blocks of at most 65535 bytes (RFC 1951 3.2.4), copied straight from the rows (an
+// RGBA image's converted a row at a time).
 std::size_t PngEncoder::Impl::storeRows(const Pixels& image) {
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
   const std::size_t total = (row_bytes + 1) * static_cast<std::size_t>(image.height);
+  reserveOut(kIdatStart + 2 + total + 5 * (total / 65535 + 1));
   unsigned char* o = out().data() + kIdatStart + 2;
   unsigned char* const start = o;
   std::size_t row = 0;
-  std::size_t in_row = 0;  // position in the current row, its filter byte counted
+  const std::uint8_t* rgb_row = nullptr;  // the current row's pixels
+  std::size_t in_row = 0;                 // position in the current row, its filter byte counted
   for (std::size_t done = 0; done < total;) {
     const std::size_t block = std::min<std::size_t>(65535, total - done);
     *o++ = done + block == total ? 1 : 0;  // BFINAL on the last, BTYPE 00
@@ -273,17 +314,18 @@ std::size_t PngEncoder::Impl::storeRows(const Pixels& image) {
     for (std::size_t left = block; left > 0;) {
       if (in_row == 0) {
         *o++ = 0;  // filter: none
+        rgb_row = rgbRows(image.data, image, static_cast<int>(row), static_cast<int>(row) + 1);
         ++in_row;
         --left;
         continue;
       }
       const std::size_t n = std::min(left, row_bytes + 1 - in_row);
-      std::memcpy(o, image.data + row * row_bytes + (in_row - 1), n);
+      std::memcpy(o, rgb_row + (in_row - 1), n);
       o += n;
       left -= n;
       in_row += n;
       if (in_row == row_bytes + 1) {
-        checksumRow(image.data + row * row_bytes, row_bytes);
+        checksumRow(rgb_row, row_bytes);
         in_row = 0;
         ++row;
       }
@@ -293,26 +335,32 @@ std::size_t PngEncoder::Impl::storeRows(const Pixels& image) {
   return static_cast<std::size_t>(o - start);
 }
 
-// kFast: the filtered image kept (the encoder looks back across rows); each band a block of
-// the run-length deflate, which matches into the row above it.
-std::size_t PngEncoder::Impl::runLengthRows(const Pixels& image) {
+// kFast: each band a block of the run-length deflate, which matches into the row above it: the
+// band is filtered with that row before it.
+std::size_t PngEncoder::Impl::runLengthRows(const Pixels& image, std::size_t band_bound) {
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
   const std::size_t stride = row_bytes + 1;
-  filtered.resize(stride * static_cast<std::size_t>(image.height));
-  return encodeBands(image, true, [&](int y0, int y1, unsigned char* o, const unsigned char* end) {
-    for (int y = y0; y < y1; ++y) {
-      unsigned char* dst = filtered.data() + y * stride;
-      dst[0] = 0;
-      std::memcpy(dst + 1, last.pixels.data() + y * row_bytes, row_bytes);
-    }
-    band_bytes.clear();
-    runLengthDeflate(filtered.data(), y0 * stride, y1 * stride, 3, stride, false, band_bytes);
-    if (band_bytes.size() > static_cast<std::size_t>(end - o)) {
-      throw Error("PNG: the run-length deflate outgrew its bound");
-    }
-    std::memcpy(o, band_bytes.data(), band_bytes.size());
-    return band_bytes.size();
-  });
+  return encodeBands(
+      image, true, band_bound,
+      [&](int y0, int y1, const std::uint8_t* rows, const std::uint8_t* above, unsigned char* o,
+          const unsigned char* end) {
+        const std::size_t first = above != nullptr ? 1 : 0;  // rows in `filtered` before y0
+        const std::size_t count = static_cast<std::size_t>(y1 - y0);
+        filtered.resize(stride * (first + count));
+        for (std::size_t i = 0; i < first + count; ++i) {
+          unsigned char* dst = filtered.data() + i * stride;
+          dst[0] = 0;
+          std::memcpy(dst + 1, i < first ? above : rows + (i - first) * row_bytes, row_bytes);
+        }
+        band_bytes.clear();
+        runLengthDeflate(filtered.data(), first * stride, (first + count) * stride, 3, stride,
+                         false, band_bytes);
+        if (band_bytes.size() > static_cast<std::size_t>(end - o)) {
+          throw Error("PNG: the run-length deflate outgrew its bound");
+        }
+        std::memcpy(o, band_bytes.data(), band_bytes.size());
+        return band_bytes.size();
+      });
 }
 
 // Adler-32 after the deflate data, then the IDAT length and CRC, then IEND.
@@ -351,8 +399,10 @@ PngCompression pngCompressionFromString(const std::string& name) {
   throw Error("PNG compression must be default, fast, stored or small, got '" + name + "'");
 }
 
-PngEncoder::PngEncoder(PngCompression compression) : impl_(std::make_unique<Impl>()) {
+PngEncoder::PngEncoder(PngCompression compression, bool keep_last_image)
+    : impl_(std::make_unique<Impl>()) {
   impl_->compression = compression;
+  impl_->keep_last = keep_last_image && keepsLastImage(compression);
   if (compression == PngCompression::kDefault) {
     // As compress2 at level 1: a 32 kB window, memory level 8, the default strategy; raw (the
     // zlib header and checksum are written here, the checksum faster).
@@ -366,6 +416,8 @@ PngEncoder::PngEncoder(PngCompression compression) : impl_(std::make_unique<Impl
 PngEncoder::~PngEncoder() {
   if (impl_->deflating) deflateEnd(&impl_->zs);
 }
+
+bool PngEncoder::keepsLast() const { return impl_->keep_last; }
 
 std::span<const unsigned char> PngEncoder::encode(const RgbImage& image) {
   Impl& m = *impl_;
@@ -394,12 +446,12 @@ std::span<const unsigned char> PngEncoder::encode(const RgbaImage& image,
     }
     end = rows.end;
   }
-  if (!keepsLastImage(impl_->compression)) {
-    throw Error(std::string("PNG: ") + toString(impl_->compression) +
-                " compression keeps no last image to take unchanged rows from");
+  if (!impl_->keep_last) {
+    throw Error(std::string("PNG: this encoder (") + toString(impl_->compression) +
+                " compression) keeps no last image to take unchanged rows from");
   }
   const Impl& m = *impl_;
-  if (m.last.width != image.width || m.last.height != image.height || m.last_channels != 4) {
+  if (m.last_width != image.width || m.last_height != image.height || m.last_channels != 4) {
     throw Error("PNG: changed rows need the last image, of the same size");
   }
   return impl_->encode(
@@ -408,46 +460,37 @@ std::span<const unsigned char> PngEncoder::encode(const RgbaImage& image,
 
 std::span<const unsigned char> PngEncoder::Impl::encode(const Pixels& image) {
   checkImage(image);
-  const bool banded = keepsLastImage(compression);
-  // The others read RGB rows as they are; they keep nothing from one image to the next. (An RGB
-  // image for kSmall went to stb in encode(const RgbImage&).)
-  Pixels whole = image;
-  if (!banded && image.channels == 4) {
+  if (compression == PngCompression::kSmall) {
+    // stb takes an RGB image whole. (An RGB image for kSmall went to stb in
+    // encode(const RgbImage&).)
     rgb.resize(image.width, image.height);
     rgbaToRgb(image.data, rgb.pixels.data(), static_cast<std::size_t>(image.width) * image.height);
-    whole = {rgb.pixels.data(), rgb.pixels.size(), image.width, image.height, 3, std::nullopt};
-  }
-  if (compression == PngCompression::kSmall) {
     out() = detail::encodePngStbDefault(rgb);
     out_size[current] = out().size();
     return {out().data(), out_size[current]};
   }
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
-  const std::size_t filtered_bytes = (row_bytes + 1) * static_cast<std::size_t>(image.height);
-  // Banded: each band's bound (deflateBound assumes no flush; the run-length deflate spends at
-  // most 9 bits a byte), the block ends and sync flush, and the final empty block.
+  // Banded: a band's bound (deflateBound assumes no flush; the run-length deflate spends at
+  // most 9 bits a byte) and its block ends and sync flush.
   const std::size_t band_filtered = (row_bytes + 1) * static_cast<std::size_t>(kBandRows);
-  const std::size_t bands = (static_cast<std::size_t>(image.height) + kBandRows - 1) / kBandRows;
-  std::size_t bound = filtered_bytes + 5 * (filtered_bytes / 65535 + 1);  // kStored
+  std::size_t band_bound = band_filtered / 8 * 9 + 16;  // kFast
   if (compression == PngCompression::kDefault) {
-    bound = bands * (deflateBound(&zs, static_cast<uLong>(band_filtered)) + 6) + 2;
-  } else if (compression == PngCompression::kFast) {
-    bound = bands * (band_filtered / 8 * 9 + 16) + 2;
+    band_bound = deflateBound(&zs, static_cast<uLong>(band_filtered)) + 6;
   }
   // The banded compressions copy from the last output: write the other buffer.
-  if (banded) current = 1 - current;
+  if (keep_last) current = 1 - current;
   try {
-    begin(image, 2 + bound + 4);
+    begin(image);
     adler = 1;
     switch (compression) {
-      case PngCompression::kDefault: finish(deflateRows(image)); break;
-      case PngCompression::kFast: finish(runLengthRows(image)); break;
-      case PngCompression::kStored: finish(storeRows(whole)); break;
+      case PngCompression::kDefault: finish(deflateRows(image, band_bound)); break;
+      case PngCompression::kFast: finish(runLengthRows(image, band_bound)); break;
+      case PngCompression::kStored: finish(storeRows(image)); break;
       case PngCompression::kSmall: break;  // above
     }
   } catch (...) {
     // Half an image: nothing of it, nor of the image before, may be copied into the next.
-    last.width = last.height = 0;
+    last_width = last_height = 0;
     throw;
   }
   return {out().data(), out_size[current]};

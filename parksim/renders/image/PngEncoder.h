@@ -48,11 +48,17 @@ PngCompression pngCompressionFromString(const std::string& name);
 
 /// Encodes PNGs (8-bit RGB; filter 0 but for kSmall), reusing its zlib state and buffers from one
 /// image to the next: for a thread that writes many frames. kDefault and kFast also keep the last
-/// image and its compressed bands, and copy each band that is unchanged instead of compressing
-/// it. The bytes depend only on the image and the compression, never on what was encoded before.
+/// image (as it came, RGB or RGBA) and its compressed bands, and copy each band that is unchanged
+/// instead of compressing it. The bytes depend only on the image and the compression, never on
+/// what was encoded before. Besides that last image, an encoder holds its output (twice, the last
+/// one and the next, when it keeps the last image) and a band of rows; kSmall also an RGB copy and
+/// stb's whole filtered image.
 class PngEncoder {
  public:
-  explicit PngEncoder(PngCompression compression = PngCompression::kDefault);
+  /// `keep_last_image` false: kDefault and kFast keep no last image and compress every band (the
+  /// same bytes; for images too large to hold twice), and encode with changed rows throws.
+  explicit PngEncoder(PngCompression compression = PngCompression::kDefault,
+                      bool keep_last_image = true);
   ~PngEncoder();
   PngEncoder(const PngEncoder&) = delete;
   PngEncoder& operator=(const PngEncoder&) = delete;
@@ -65,10 +71,13 @@ class PngEncoder {
   std::span<const unsigned char> encode(const RgbaImage& image);
   /// The same for the next frame of a film, of which only rows `changed` (sorted and apart,
   /// Renderer::renderChanges) are read: the others are the last image's. Throws Error when
-  /// there is no last image of this size (or encoding it failed), for kStored and kSmall, which
-  /// keep none, and for rows out of order or outside the image. The bytes are those of
-  /// encode() of the whole frame.
+  /// there is no last image of this size (or encoding it failed), when it keeps none (kStored,
+  /// kSmall, keep_last_image false), and for rows out of order or outside the image. The bytes are
+  /// those of encode() of the whole frame.
   std::span<const unsigned char> encode(const RgbaImage& image, std::span<const RowSpan> changed);
+
+  /// Whether it keeps the last image: kDefault or kFast, and keep_last_image.
+  bool keepsLast() const;
 
  private:
   struct Impl;

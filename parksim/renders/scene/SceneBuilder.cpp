@@ -1,6 +1,7 @@
 #include "parksim/renders/scene/SceneBuilder.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <utility>
@@ -203,6 +204,15 @@ void addRobot(Scene& scene, const RobotDef& robot, const Pose2& pose, const Scen
       wheel.half_extents = {robot.wheel_radius_m, 0.5 * wheel_width};
       wheel.yaw = pose.theta + angle;
       scene.boxes.push_back({wheel, 0.0, 2.0 * robot.wheel_radius_m, style.wheel});
+    }
+    // A car's wheels lie under its body (its track is narrower than its width), so a camera
+    // from above would never show the steering: each wheel is drawn again as a flat shape on
+    // the roof, like the heading marker, as schematic car drawings do.
+    const std::size_t wheels = scene.boxes.size();
+    for (std::size_t i = wheels - 4; i < wheels; ++i) {
+      const std::array<Eigen::Vector2d, 4> c = scene.boxes[i].footprint.corners();
+      scene.polygons.push_back(
+          {{c.begin(), c.end()}, robot.height_m + 0.0005 * scale, style.wheel});
     }
   }
   // Heading marker: a triangle in the front part of the top face. It stays ahead of the

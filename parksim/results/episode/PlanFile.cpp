@@ -71,18 +71,10 @@ nlohmann::json planSummary(const Scenario& scenario, const PlanSetup& setup,
       {"smoothing_shortcuts", result.stats.smoothing_shortcuts},
       {"collision_queries", result.stats.collision_queries},
       {"planning_time_s", t.total_s},
-      {"phase_times_s",
-       {{"sampling", t.sampling_s},
-        {"nearest_neighbour", t.nearest_s},
-        {"steering", t.steering_s},
-        {"collision_checking", t.collision_s},
-        {"goal_checks", t.goal_check_s},
-        {"rewiring", t.rewiring_s},
-        {"connection", t.connection_s},
-        {"smoothing", t.smoothing_s},
-        {"heuristic", t.heuristic_s},
-        {"timing", t.timing_s}}},
   });
+  nlohmann::json phases = nlohmann::json::object();
+  for (const auto& [name, s] : phaseTimeList(t)) phases[name] = s;
+  j["phase_times_s"] = phases;
   if (result.stats.first_solution_iteration >= 0) {
     j["first_solution_s"] = result.stats.first_solution_s;
     j["first_solution_iteration"] = result.stats.first_solution_iteration;

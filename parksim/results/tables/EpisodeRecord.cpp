@@ -314,22 +314,13 @@ const std::array kFields = {
             return history;
           },
           kTable),
-    field("plan_phase_times_s", "", G::kTiming, T::kObject, "s", "planning time per phase",
+    field("plan_phase_times_s", "", G::kTiming, T::kObject, "s",
+          "planning time per phase, every phase of plan.json's phase_times_s",
           [](const F& f) {
             if (f.plan == nullptr) return Json();
-            const PhaseTimes& t = f.plan->stats.times;
             Json phases = Json::object();
-            // Listed in this order (an ordered row keeps it).
-            for (const auto& [name, s] : {std::pair{"sampling", t.sampling_s},
-                                          {"nearest_neighbour", t.nearest_s},
-                                          {"steering", t.steering_s},
-                                          {"collision_checking", t.collision_s},
-                                          {"goal_checks", t.goal_check_s},
-                                          {"rewiring", t.rewiring_s},
-                                          {"connection", t.connection_s},
-                                          {"smoothing", t.smoothing_s}}) {
-              phases[name] = s;
-            }
+            // In phaseTimeList's order (an ordered row keeps it).
+            for (const auto& [name, s] : phaseTimeList(f.plan->stats.times)) phases[name] = s;
             return phases;
           },
           kTable),
@@ -390,6 +381,10 @@ const EpisodeField* findField(std::string_view key) {
 }
 
 bool isSetKey(std::string_view key) { return !key.empty() && findField(key) == nullptr; }
+
+bool isReplicateKey(std::string_view key) {
+  return key == "seed" || key == "noise_seed" || key == "sample";
+}
 
 void appendRecord(const EpisodeFacts& facts, nlohmann::ordered_json& row) {
   for (const EpisodeField& f : kFields) {

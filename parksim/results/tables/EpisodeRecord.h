@@ -96,6 +96,10 @@ const EpisodeField* findField(std::string_view key);
 /// field's. Such keys are columns after the fixed parameters, sorted.
 bool isSetKey(std::string_view key);
 
+/// A parameter whose values are replicates, not a question asked: seed, noise_seed and sample
+/// (draws of the same episode). Never an axis a report or a page summarises episodes against.
+bool isReplicateKey(std::string_view key);
+
 /// Adds every table field the facts have, read from them, in the table's order: the outcome,
 /// the plan, the simulation, the realism layers, the timing and world_hash. (A row's id and
 /// parameters come first, its provenance after: the table writer's.)

@@ -4,7 +4,9 @@
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <string_view>
+#include <utility>
 
 #include <stb/stb_image.h>  // implementation linked from libstb
 
@@ -16,6 +18,10 @@
 namespace parksim {
 
 namespace {
+
+// Bytes read first for the header: a PNG's size is in its first 24, a PGM's after its magic
+// number and any comments.
+constexpr std::size_t kImageHeadBytes = 65536;
 
 [[noreturn]] void imageFail(const std::string& path, const std::string& what, int line = 0) {
   throw Error(
@@ -39,6 +45,20 @@ void checkMapSize(const std::string& path, std::int64_t width, std::int64_t heig
 class PgmReader {
  public:
   PgmReader(const std::string& path, std::string_view bytes) : path_(path), bytes_(bytes) {}
+
+  // The header's width and height when `bytes` (a file's first bytes) hold them whole; nothing
+  // when they end inside it (the full read then says what is wrong).
+  std::optional<std::pair<std::int64_t, std::int64_t>> size() {
+    pos_ = 2;
+    std::int64_t dims[2] = {0, 0};
+    for (std::int64_t& d : dims) {
+      skipSpace(true);
+      if (pos_ >= bytes_.size()) return std::nullopt;
+      d = number(&d == dims ? "width" : "height");
+      if (pos_ >= bytes_.size()) return std::nullopt;  // the number may go on
+    }
+    return std::pair{dims[0], dims[1]};
+  }
 
   MapImage read() {
     const bool plain = bytes_[1] == '2';
@@ -206,11 +226,29 @@ MapImage readPng(const std::string& path, const std::string& bytes) {
 }  // namespace
 
 MapImage readMapImage(const std::string& path) {
-  const std::string bytes = readInputFile(path, kMaxMapFileBytes, "map image");
-  if (bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '2' || bytes[1] == '5')) {
-    return PgmReader(path, bytes).read();
-  }
   static constexpr std::string_view kPngSignature("\x89PNG\r\n\x1a\n", 8);
+  const auto is_pgm = [](std::string_view b) {
+    return b.size() >= 2 && b[0] == 'P' && (b[1] == '2' || b[1] == '5');
+  };
+  {
+    // The header alone decides the size limits: checked before the pixels are read.
+    const std::string head = readInputFileHead(path, kImageHeadBytes, "map image");
+    if (is_pgm(head)) {
+      if (const auto wh = PgmReader(path, head).size()) checkMapSize(path, wh->first, wh->second);
+    } else if (std::string_view(head).substr(0, 8) == kPngSignature && head.size() >= 24 &&
+               std::string_view(head).substr(12, 4) == "IHDR") {
+      // The first chunk, IHDR: width and height big-endian at bytes 16 and 20 (stb's own
+      // reader refuses a size beyond 2^30 pixels with a message that does not name ours).
+      const auto be32 = [&](std::size_t at) {
+        std::int64_t v = 0;
+        for (std::size_t k = 0; k < 4; ++k) v = (v << 8) | static_cast<unsigned char>(head[at + k]);
+        return v;
+      };
+      checkMapSize(path, be32(16), be32(20));
+    }
+  }
+  const std::string bytes = readInputFile(path, kMaxMapFileBytes, "map image");
+  if (is_pgm(bytes)) return PgmReader(path, bytes).read();
   if (std::string_view(bytes).substr(0, 8) == kPngSignature) return readPng(path, bytes);
   imageFail(path,
             "not a PGM (P2 or P5) or PNG image; a map server image must be one of those "

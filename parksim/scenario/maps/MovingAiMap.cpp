@@ -56,26 +56,49 @@ class MovingAiLines {
   int line_ = 0;
 };
 
-}  // namespace
+struct MovingAiHeader {
+  std::int64_t height = 0;
+  std::int64_t width = 0;
+};
 
-std::shared_ptr<const OccupancyGrid> readMovingAiMap(const std::string& path, double cell_m,
-                                                     const Pose2& origin) {
-  const std::string text = readInputFile(path, kMaxMapFileBytes, "Moving AI map");
-  MovingAiLines lines(path, text);
+// The header's lines up to `map`, checked against the limits.
+MovingAiHeader readHeader(MovingAiLines& lines) {
   std::string_view line;
   if (!lines.next(line) || line != "type octile") {
     lines.fail("expected 'type octile' (a Moving AI .map file), got '" + std::string(line) + "'");
   }
-  const std::int64_t height = lines.header("height");
-  const std::int64_t width = lines.header("width");
-  if (width < 1 || height < 1 || width > kMaxMapSideCells || height > kMaxMapSideCells ||
-      width * height > kMaxMapCells) {
-    lines.fail("the map is " + std::to_string(width) + " x " + std::to_string(height) +
+  MovingAiHeader h;
+  h.height = lines.header("height");
+  h.width = lines.header("width");
+  if (h.width < 1 || h.height < 1 || h.width > kMaxMapSideCells || h.height > kMaxMapSideCells ||
+      h.width * h.height > kMaxMapCells) {
+    lines.fail("the map is " + std::to_string(h.width) + " x " + std::to_string(h.height) +
                " cells; a map has at least one and at most " + std::to_string(kMaxMapSideCells) +
                " a side and " + std::to_string(kMaxMapCells) + " in all (docs/limits.md)");
   }
   if (!lines.next(line) || line != "map")
     lines.fail("expected 'map', got '" + std::string(line) + "'");
+  return h;
+}
+
+// Bytes enough for any header a reader accepts: its four lines are short.
+constexpr std::size_t kHeaderBytes = 4096;
+
+}  // namespace
+
+std::shared_ptr<const OccupancyGrid> readMovingAiMap(const std::string& path, double cell_m,
+                                                     const Pose2& origin,
+                                                     std::vector<std::string>* warnings) {
+  {
+    // The header alone decides the limits: checked before the grid's bytes are read.
+    const std::string head = readInputFileHead(path, kHeaderBytes, "Moving AI map");
+    MovingAiLines head_lines(path, head);
+    (void)readHeader(head_lines);
+  }
+  const std::string text = readInputFile(path, kMaxMapFileBytes, "Moving AI map");
+  MovingAiLines lines(path, text);
+  const auto [height, width] = readHeader(lines);
+  std::string_view line;
   auto grid = std::make_shared<OccupancyGrid>();
   grid->width = static_cast<int>(width);
   grid->height = static_cast<int>(height);
@@ -109,10 +132,16 @@ std::shared_ptr<const OccupancyGrid> readMovingAiMap(const std::string& path, do
       grid->cells[j * static_cast<std::size_t>(width) + i] = static_cast<std::uint8_t>(cell);
     }
   }
+  // Moving AI's own readers read the header's rows and stop: text after them is ignored, and
+  // said so, since it may be rows the header does not count.
   while (lines.next(line)) {
-    if (!line.empty()) {
-      lines.fail("size mismatch: more rows than the header's height " + std::to_string(height));
+    if (line.empty()) continue;
+    if (warnings) {
+      warnings->push_back(escapeText(
+          path + ":" + std::to_string(lines.line()) + ": trailing text after the header's " +
+          std::to_string(height) + " rows; ignored, as Moving AI's readers ignore it"));
     }
+    break;
   }
   return grid;
 }

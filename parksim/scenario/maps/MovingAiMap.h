@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "parksim/core/geometry/OccupancyGrid.h"
 
@@ -14,9 +15,12 @@ namespace parksim {
 
 /// The grid at `path`, its cells `cell_m` wide, its lower-left corner at `origin` (yaw
 /// included). Throws Error naming the file and line on anything else: a wrong header, a row
-/// of another length, a letter outside the format, fewer or more rows than the header says, a
-/// size beyond the limits.
+/// of another length, a letter outside the format, fewer rows than the header says, a size
+/// beyond the limits (decided from the header before the rest of the file is read). Text
+/// after the header's rows is ignored, as Moving AI's readers ignore it, with one line in
+/// `warnings` (when given) naming the file and its line.
 std::shared_ptr<const OccupancyGrid> readMovingAiMap(const std::string& path, double cell_m,
-                                                     const Pose2& origin);
+                                                     const Pose2& origin,
+                                                     std::vector<std::string>* warnings = nullptr);
 
 }  // namespace parksim

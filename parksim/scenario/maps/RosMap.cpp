@@ -5,6 +5,7 @@
 
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/InputFile.h"
+#include "parksim/core/io/Text.h"
 #include "parksim/scenario/maps/MapImage.h"
 #include "parksim/scenario/maps/MapLimits.h"
 #include "parksim/scenario/yaml/YamlField.h"
@@ -14,6 +15,10 @@ namespace parksim {
 namespace {
 
 enum class RosMapMode { kTrinary, kScale, kRaw };
+
+// The keys nav2's map_server (map_io's loadMapYaml) reads.
+constexpr const char* kRosMapKeys[] = {"image",           "resolution",  "origin", "negate",
+                                       "occupied_thresh", "free_thresh", "mode"};
 
 // nav2 accepts negate as 0/1 or as a boolean.
 bool readNegate(const YamlField& f) {
@@ -25,14 +30,25 @@ bool readNegate(const YamlField& f) {
 
 }  // namespace
 
-std::shared_ptr<const OccupancyGrid> readRosMap(const std::string& yaml_path,
-                                                int lethal_threshold) {
+std::shared_ptr<const OccupancyGrid> readRosMap(const std::string& yaml_path, int lethal_threshold,
+                                                std::vector<std::string>* warnings) {
   const std::string text = readInputFile(yaml_path, kMaxMapYamlBytes, "ROS map YAML");
   const YAML::Node document = loadSingleYamlDocument(text, yaml_path, "ROS map YAML",
                                                      "image: <file>, resolution: <m>, ...");
   const YamlField root(document, "", 1, yaml_path);
-  const YamlMap m = root.map(
-      {"image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh", "mode"});
+  const YamlMap m(root);
+  // Keys nav2's map_server does not read (a `centerline`, a tool's notes) it ignores; so does
+  // parksim, with a warning, since a misspelt key is ignored the same way.
+  for (const std::string& key : m.keys()) {
+    bool known = false;
+    for (const char* k : kRosMapKeys) known = known || key == k;
+    if (known || !warnings) continue;
+    std::string names;
+    for (const char* k : kRosMapKeys) names += std::string(names.empty() ? "" : ", ") + k;
+    warnings->push_back(escapeText(yaml_path + ":" + std::to_string(m.optional(key)->line()) +
+                                   ": " + key + ": not a key nav2's map_server reads (" + names +
+                                   "); ignored as it ignores it"));
+  }
   const YamlField image_field = m.required("image");
   const std::string image = image_field.text();
   const YamlField res_field = m.required("resolution");

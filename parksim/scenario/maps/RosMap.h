@@ -16,6 +16,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "parksim/core/geometry/OccupancyGrid.h"
 
@@ -24,8 +25,11 @@ namespace parksim {
 /// The map at `yaml_path` as classified cells. Throws Error naming the file (and line) on
 /// anything it cannot honour: a missing or unreadable image, an image that is not PGM or PNG,
 /// truncated or larger than the limits, a resolution that is not a positive finite number,
-/// thresholds out of order, an unknown mode or key.
+/// thresholds out of order, an unknown mode. A key map_server does not read is ignored, as
+/// map_server ignores it, with one line in `warnings` (when given) naming the file, line and
+/// key.
 std::shared_ptr<const OccupancyGrid> readRosMap(const std::string& yaml_path,
-                                                int lethal_threshold = 100);
+                                                int lethal_threshold = 100,
+                                                std::vector<std::string>* warnings = nullptr);
 
 }  // namespace parksim

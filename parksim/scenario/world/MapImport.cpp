@@ -7,6 +7,7 @@
 
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/Text.h"
+#include "parksim/scenario/world/FreePlace.h"
 #include "parksim/scenario/world/MapSection.h"
 #include "parksim/scenario/world/ScenarioReader.h"
 #include "parksim/scenario/yaml/YamlField.h"
@@ -54,28 +55,14 @@ std::string mapKind(const std::string& path) {
                                 "YAML (.yaml), an SVG drawing (.svg) or a Moving AI grid (.map)"));
 }
 
-// Two free places for the default robot, far apart: scanning a grid of the lot from the lower
-// left for the start and from the upper right for the goal, keeping a footprint's radius of
-// room around each.
+// Two free places for the default robot, far apart: the free place nearest the lot's lower
+// left for the start and the one nearest its upper right for the goal (FreePlace.h), keeping a
+// footprint's radius of room around each.
 std::pair<Pose2, Pose2> placeholders(const Scenario& s) {
-  const LotBounds& lot = s.lot;
   const double room = footprintRadius(s.robot);
-  const double step =
-      std::max(2.0 * room, std::max(lot.x_max_m - lot.x_min_m, lot.y_max_m - lot.y_min_m) / 80.0);
-  const int nx = std::max(1, static_cast<int>((lot.x_max_m - lot.x_min_m) / step));
-  const int ny = std::max(1, static_cast<int>((lot.y_max_m - lot.y_min_m) / step));
-  const auto at = [&](int i, int j) {
-    return Pose2{lot.x_min_m + (i + 0.5) * (lot.x_max_m - lot.x_min_m) / nx,
-                 lot.y_min_m + (j + 0.5) * (lot.y_max_m - lot.y_min_m) / ny, 0.0};
-  };
-  const auto free = [&](const Pose2& p) { return !placementProblem(s, p, room); };
-  std::optional<Pose2> start;
-  for (int k = 0; k < nx + ny - 1 && !start; ++k) {  // diagonals from the lower-left corner
-    for (int i = 0; i <= k && !start; ++i) {
-      const int j = k - i;
-      if (i < nx && j < ny && free(at(i, j))) start = at(i, j);
-    }
-  }
+  FreePlaceQuery query;
+  query.room_m = room;
+  const std::optional<Pose2> start = findFreePlace(s, query);
   if (!start) {
     throw Error("the map leaves no free place for parksim's default robot (" +
                 formatNumber(s.robot.length_m) + " x " + formatNumber(s.robot.width_m) +
@@ -83,12 +70,9 @@ std::pair<Pose2, Pose2> placeholders(const Scenario& s) {
                 " m of room); a drawing's frame or background may "
                 "be among its shapes: select the obstacles' layers or ids");
   }
-  for (int k = 0; k < nx + ny - 1; ++k) {  // and from the upper-right corner
-    for (int i = 0; i <= k; ++i) {
-      const Pose2 p = at(nx - 1 - i, ny - 1 - (k - i));
-      if (k - i < ny && i < nx && free(p) && positionDistance(p, *start) > room) return {*start, p};
-    }
-  }
+  query.from_upper_right = true;
+  query.accept = [&](const Pose2& p) { return positionDistance(p, *start) > room; };
+  if (const std::optional<Pose2> goal = findFreePlace(s, query)) return {*start, *goal};
   return {*start, {start->x, start->y, start->theta + kPi}};  // one free place: turn on it
 }
 
@@ -212,6 +196,7 @@ MapImport importMap(const MapImportDef& def) {
   t += "goal:\n  pose: [" + num(goal.x) + ", " + num(goal.y) + ", " + num(radToDeg(goal.theta)) +
        "]\n";
   out.world = parseWorld(t, def.world);
+  out.warnings = maps.warnings;
   return out;
 }
 

@@ -35,6 +35,8 @@ struct MapImport {
   std::string text;  ///< the world file
   World world;       ///< the text read back (as it will load)
   std::string kind;  ///< "ros", "svg" or "movingai"
+  /// What the map's reader ignored (World::warnings), one line each.
+  std::vector<std::string> warnings;
 };
 
 /// Throws Error in one line when the map cannot be read (the readers' messages), its kind is

@@ -107,11 +107,13 @@ void readRosEntry(MapSection& out, const YamlField& entry, const std::string& wo
     }
     def.unknown_blocks = s == "occupied";
   }
-  auto grid = located(file_field, [&] { return readRosMap(file, lethal); });
+  std::vector<std::string> warnings;
+  auto grid = located(file_field, [&] { return readRosMap(file, lethal, &warnings); });
   // The image's name comes from the YAML, which the reader has just checked.
   const YAML::Node yaml = YAML::Load(readInputFile(file, kMaxMapYamlBytes, "ROS map YAML"));
   const std::string image = besideWorld(file, yaml["image"].as<std::string>());
   addGrid(out, file_field, std::move(grid), def, hashFiles({file, image}, kMaxMapFileBytes));
+  out.warnings.insert(out.warnings.end(), warnings.begin(), warnings.end());
 }
 
 void readMovingAiEntry(MapSection& out, const YamlField& entry, const std::string& world) {
@@ -124,10 +126,12 @@ void readMovingAiEntry(MapSection& out, const YamlField& entry, const std::strin
   const double cell = cell_field.inRange(1e-4, 100.0, " m");
   const Eigen::Vector2d origin = readOrigin(m.optional("origin"));
   const GridMapDef def{common.name, file, common.kind, common.height_m, true, readInflation(m)};
+  std::vector<std::string> warnings;
   auto grid = located(file_field, [&] {
-    return readMovingAiMap(file, cell, Pose2{origin.x(), origin.y(), 0.0});
+    return readMovingAiMap(file, cell, Pose2{origin.x(), origin.y(), 0.0}, &warnings);
   });
   addGrid(out, file_field, std::move(grid), def, hashFiles({file}, kMaxMapFileBytes));
+  out.warnings.insert(out.warnings.end(), warnings.begin(), warnings.end());
 }
 
 void readSvgEntry(MapSection& out, const YamlField& entry, const std::string& world) {

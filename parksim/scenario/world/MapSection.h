@@ -22,6 +22,9 @@ struct MapSection {
   std::vector<MapLayer> layers;
   /// All maps' extent in the lot (the lot's bounds when the world leaves them out), m.
   Eigen::AlignedBox2d extent;
+  /// What the maps' readers ignored, one line each naming the file and line (RosMap.h,
+  /// MovingAiMap.h).
+  std::vector<std::string> warnings;
 };
 
 /// Reads the `map:` list. Problems are one line at the entry's field, carrying the map file's

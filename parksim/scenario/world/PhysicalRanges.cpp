@@ -5,6 +5,7 @@
 
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/NumberFormat.h"
+#include "parksim/sim/world/CarModelDef.h"
 
 namespace parksim {
 namespace {
@@ -121,7 +122,26 @@ WheelDemand wheelDemand(const RobotDef& r, const PhysicsDef& p) {
   return w;
 }
 
+std::optional<std::string> jointInertiaProblem(const RobotDef& r, const PhysicsDef& p) {
+  const double radius = r.wheel_radius_m;
+  const double wheel = 0.4 * p.wheel_mass_kg * radius * radius;
+  const double knuckle_fraction = CarModelDef{}.knuckle_mass_fraction;
+  // The knuckle: 2/5 (f m) (r/2)^2, below the wheel's own for any fraction under 4.
+  const double knuckle = 0.4 * knuckle_fraction * p.wheel_mass_kg * 0.25 * radius * radius;
+  const bool by_knuckle = r.isCar() && knuckle < wheel;
+  const double least = by_knuckle ? knuckle : wheel;
+  if (least >= kMinJointInertia_kgm2) return std::nullopt;
+  const double per_kg = least / p.wheel_mass_kg;
+  return std::string(by_knuckle ? "a steering knuckle's" : "a wheel's") +
+         " inertia about its axis, " + brief(least) + " kg m^2 (physics.wheel_mass_kg " +
+         brief(p.wheel_mass_kg) + " kg at robot.wheel_radius " + brief(radius) +
+         " m), is below Bullet's " + brief(kMinJointInertia_kgm2) +
+         " kg m^2, under which a joint never turns: at this radius a wheel needs " +
+         brief(kMinJointInertia_kgm2 / per_kg) + " kg or more (docs/limits.md)";
+}
+
 std::optional<std::string> driveProblem(const RobotDef& r, const PhysicsDef& p) {
+  if (std::optional<std::string> problem = jointInertiaProblem(r, p)) return problem;
   const WheelDemand w = wheelDemand(r, p);
   const double grip = kGripMargin * w.grip_n;
   const bool turning = w.turn_n > w.straight_n;

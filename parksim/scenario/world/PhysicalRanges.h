@@ -59,10 +59,23 @@ WheelDemand wheelDemand(const RobotDef& robot, const PhysicsDef& physics);
 /// 151 mm off (parksim 0.3.0, `run` on a 3 m lot, a 1 m x 1 m move with a quarter turn).
 inline constexpr double kGripMargin = 2.5;
 
+/// Bullet's least inertia about a joint's axis: btMultiBody gives a revolute joint below it
+/// (SIMD_EPSILON, FLT_EPSILON in the single-precision Bullet parksim builds with) no
+/// acceleration at all, so the wheel never turns (sim/world/RobotBody.cpp, which checks the
+/// body as built again).
+inline constexpr double kMinJointInertia_kgm2 = 1.1920928955078125e-07;
+
+/// Why the simulation cannot turn the robot's wheels, or nothing: a wheel's inertia about its
+/// axle (a solid sphere of physics.wheel_mass_kg and robot.wheel_radius, 2/5 m r^2), or a
+/// car's steering knuckle's (sim/world/CarModelDef.h: a sphere of knuckle_mass_fraction of a
+/// wheel's mass and half its radius), below kMinJointInertia_kgm2. Checked with the other
+/// values when the world is read, so that a sweep refuses such a point before any episode runs.
+std::optional<std::string> jointInertiaProblem(const RobotDef& robot, const PhysicsDef& physics);
+
 /// Why the robot cannot follow plans made to its own limits, or nothing: the grip is smaller
 /// than the force its acceleration limit needs by more than kGripMargin (a 5 x 5 m body
 /// turning on an 85 mm wheel base), or max_wheel_torque_nm is smaller than that force at the
-/// wheel's radius.
+/// wheel's radius, or jointInertiaProblem.
 std::optional<std::string> driveProblem(const RobotDef& robot, const PhysicsDef& physics);
 
 }  // namespace parksim

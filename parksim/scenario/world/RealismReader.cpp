@@ -6,6 +6,7 @@
 #include "parksim/core/geometry/Angle.h"
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/Text.h"
+#include "parksim/realism/DriveSizing.h"
 #include "parksim/scenario/world/RealismSections.h"
 
 namespace parksim {
@@ -115,7 +116,7 @@ void readControl(const YamlField& field, ControlLoopDef& d) {
   s.nonNegative("settle_s", d.settle_s);
 }
 
-RealismDef readRealism(const YamlField& field) {
+RealismDef readRealism(const YamlField& field, const RobotDef& robot, const PhysicsDef& physics) {
   const YamlMap m = field.map({"preset", "motor", "wheel_loop", "calibration", "encoder",
                                "pose_sensor", "estimator", "control"});
   RealismDef d;
@@ -125,7 +126,7 @@ RealismDef readRealism(const YamlField& field) {
     if (std::find(presets.begin(), presets.end(), name) == presets.end()) {
       f->fail("unknown preset \"" + name + "\"; expected one of: " + joinNames(presets));
     }
-    d = presetRealism(name);
+    d = presetRealismFor(name, robot, physics);
   }
   bool changed = false;
   const auto section = [&](std::string_view key, auto reader, auto& out) {
@@ -171,11 +172,12 @@ TrackingTolerance readTolerance(const YamlField& field, const RobotDef& robot) {
 
 }  // namespace
 
-WorldRealism readRealismSections(const YamlMap& top, const RobotDef& robot) {
+WorldRealism readRealismSections(const YamlMap& top, const RobotDef& robot,
+                                 const PhysicsDef& physics) {
   WorldRealism w;
   w.tolerance = defaultTolerance(robot);
   if (const std::optional<YamlField> f = top.optional("realism")) {
-    w.realism = readRealism(*f);
+    w.realism = readRealism(*f, robot, physics);
     w.has_realism = true;
   }
   if (const std::optional<YamlField> f = top.optional("tolerance")) {

@@ -7,7 +7,9 @@
 
 namespace parksim {
 
-/// `robot` is the world's: its size scales the default tolerance (core/TrackingTolerance.h).
-WorldRealism readRealismSections(const YamlMap& top, const RobotDef& robot);
+/// `robot` is the world's: its size scales the default tolerance (core/TrackingTolerance.h),
+/// and a preset's drive is sized to it with `physics` (realism/DriveSizing.h).
+WorldRealism readRealismSections(const YamlMap& top, const RobotDef& robot,
+                                 const PhysicsDef& physics);
 
 }  // namespace parksim

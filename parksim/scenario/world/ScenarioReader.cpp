@@ -17,9 +17,9 @@
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/Text.h"
 #include "parksim/core/model/Geometry.h"
-#include "parksim/scenario/world/RealismSections.h"
 #include "parksim/scenario/world/MapSection.h"
 #include "parksim/scenario/world/PhysicalRanges.h"
+#include "parksim/scenario/world/RealismSections.h"
 #include "parksim/scenario/world/RobotReader.h"
 #include "parksim/scenario/world/WorldDocument.h"
 #include "parksim/scenario/yaml/YamlField.h"
@@ -421,6 +421,7 @@ World readWorldDocument(const YAML::Node& document, const std::string& source_na
   if (const std::optional<YamlField> list = top.optional("map")) {
     maps = readMapSection(*list, source_name);
     s.maps = std::move(maps->layers);
+    world.warnings = std::move(maps->warnings);
   }
   if (top.optional("lot") || !maps || maps->extent.isEmpty()) {
     s.lot = readLot(top.required("lot"));
@@ -439,7 +440,7 @@ World readWorldDocument(const YAML::Node& document, const std::string& source_na
     (robot ? *robot : physics ? *physics : root).fail(*problem);
   }
   // The default tolerance follows the robot's size.
-  world.sections = readRealismSections(top, s.robot);
+  world.sections = readRealismSections(top, s.robot, s.physics);
 
   if (maps) {
     const YamlField list = *top.optional("map");

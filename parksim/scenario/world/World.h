@@ -22,6 +22,9 @@ struct World {
   /// each override's path and value: two worlds with one name but other contents differ here.
   /// A sweep's results rows carry it (world_hash) so that an edited world file is noticed.
   std::string content_hash;
+  /// What was read but ignored, one line each naming the file, line and key (a ROS map YAML's
+  /// key that map_server does not read): the front ends print them as warnings.
+  std::vector<std::string> warnings;
 };
 
 /// Reads the world file at `path`, applies `overrides` in order and validates the result as a

@@ -1,6 +1,6 @@
 // Sample quantiles (type 7), as NumPy computes them.
 
-#include "parksim/compare/Quantile.h"
+#include "parksim/core/stats/Quantile.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "parksim/compare/Quantile.h"
+#include "parksim/core/stats/Quantile.h"
 
 #include <algorithm>
 #include <cmath>
