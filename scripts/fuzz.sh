@@ -59,9 +59,9 @@ group[core]=$(sources_under parksim/core | grep -v '/Provenance\.cpp$')
 # (parksim/realism/, all of it).
 group[scenario]=$(sources_under parksim/scenario; sources_under parksim/realism)
 # The results tables' readers and what they share (the episode record's fields, seals, ids,
-# manifests, merge's sources).
+# manifests, merge's sources; the plan's status and phase names, PlanResult.cpp).
 group[tables]=$(src ResultsFile.cpp RowSeal.cpp TableVerify.cpp EpisodeRecord.cpp ExecutionDef.cpp \
-  EpisodeParams.cpp SetValues.cpp SweepManifest.cpp Shard.cpp Merge.cpp)
+  EpisodeParams.cpp SetValues.cpp SweepManifest.cpp Shard.cpp Merge.cpp PlanResult.cpp)
 # The sweep-spec reader (with the tables group: the record's fields, the axes' values).
 group[spec]=$(src SweepSpecReader.cpp ComponentChoiceReader.cpp CommandLine.cpp EpisodeSetup.cpp \
   EpisodeRequest.cpp)
