@@ -5,15 +5,19 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 #include <utility>
 
 #include "parksim/core/io/Error.h"
 #include "parksim/core/io/Fnv1a.h"
+#include "parksim/core/io/NumberFormat.h"
 #include "parksim/core/io/Text.h"
+#include "parksim/core/system/ChildProcess.h"
 #include "parksim/core/system/SharedLibrary.h"
 #include "parksim/usercode/PluginApi.h"
 
@@ -80,15 +84,19 @@ std::string probeSignalText(int sig) {
 }
 
 // A plugin's static initializers, entry point and registration run when it is loaded, before
-// parksim can watch them: a crash there would end the process loading it without a word. So it
-// is loaded first in a forked child (which only loads it, into a scratch Components, and exits),
-// and only a child that exited normally lets it be loaded here. What the child refuses, the
-// load here refuses again with its message. Its output goes to /dev/null: what the plugin
-// prints at load appears once, from the load here.
-void probeLoad(const std::string& path, const std::string& file) {
+// parksim can watch them: a crash there would end the process loading it without a word, a hang
+// would hang it. So it is loaded first in a forked child (which only loads it, into a scratch
+// Components, and exits), in a process group of its own that is killed when it is not done
+// within `limit_s`, and only a child that exited normally lets it be loaded here. What the
+// child refuses, the load here refuses again with its message. Its output goes to /dev/null:
+// what the plugin prints at load appears once, from the load here.
+void probeLoad(const std::string& path, const std::string& file, double limit_s) {
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) throw Error(path + ": cannot probe the plugin: fork: " + std::strerror(errno));
   if (pid == 0) {
+    ::setpgid(0, 0);
+    resetForkedChild(parent);  // dies with the thread that forked it
     // The child: die of what kills it (not of a handler the parent installed), quietly.
     for (const int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(sig, SIG_DFL);
     const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
@@ -103,10 +111,26 @@ void probeLoad(const std::string& path, const std::string& file) {
     }
     ::_exit(0);  // no exit handlers: they are the parent's
   }
+  ::setpgid(pid, pid);  // also here: whichever runs first
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(limit_s);
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR)
-      throw Error(path + ": cannot probe the plugin: waitpid: " + std::strerror(errno));
+  for (;;) {
+    const pid_t r = ::waitpid(pid, &status, WNOHANG);
+    if (r == pid) break;
+    if (r < 0 && errno != EINTR) {
+      const std::string why = std::strerror(errno);
+      ::kill(-pid, SIGKILL);
+      throw Error(path + ": cannot probe the plugin: waitpid: " + why);
+    }
+    if (std::chrono::steady_clock::now() >= deadline) {
+      ::kill(-pid, SIGKILL);
+      while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+      throw Error(path + ": the plugin did not finish loading within " + formatGeneral(limit_s) +
+                  " s (its process was killed: its static initializers, entry point or "
+                  "registration hang); not loaded");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   if (WIFSIGNALED(status)) {
     throw Error(path + ": the plugin crashed while it was loaded (" +
@@ -121,7 +145,13 @@ void probeLoad(const std::string& path, const std::string& file) {
 
 }  // namespace
 
-const PluginRecord& loadPlugin(Components& components, const std::string& path) {
+const PluginRecord& loadPlugin(Components& components, const std::string& path,
+                               double load_limit_s) {
+  if (!(load_limit_s >= UserCodeLimits::kMin && load_limit_s <= UserCodeLimits::kMax)) {
+    throw Error(path + ": plugin load time limit: must be in [" +
+                formatGeneral(UserCodeLimits::kMin) + ", " + formatGeneral(UserCodeLimits::kMax) +
+                "] s, got " + formatGeneral(load_limit_s));
+  }
   std::error_code ec;
   const std::string file = std::filesystem::absolute(path, ec).lexically_normal().string();
   if (ec || !std::filesystem::is_regular_file(file, ec)) {
@@ -130,7 +160,7 @@ const PluginRecord& loadPlugin(Components& components, const std::string& path) 
   for (const PluginRecord& r : components.plugins) {
     if (r.path == file) throw Error(path + ": plugin loaded twice");
   }
-  probeLoad(path, file);
+  probeLoad(path, file, load_limit_s);
   return loadInThisProcess(components, path, file);
 }
 

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <cstdlib>
 
+#include <unistd.h>
+
 #include "parksim/usercode/PluginApi.h"
 
 namespace {
@@ -51,6 +53,14 @@ namespace {
 const int abort_at_load = (std::abort(), 0);
 }
 PARKSIM_PLUGIN("aborting", "1", registerNothing)
+#elif BROKEN_KIND == 7  // its static initializer never returns while it is loaded
+namespace {
+int waitForever() {
+  for (;;) ::pause();
+}
+const int hang = waitForever();
+}  // namespace
+PARKSIM_PLUGIN("hanging", "1", registerNothing)
 #else                   // no entry point at all
 extern "C" __attribute__((visibility("default"))) int not_a_parksim_plugin() { return 0; }
 #endif

@@ -1,5 +1,9 @@
 #include "parksim/usercode/PluginLoader.h"
 
+#include <sys/wait.h>
+
+#include <cerrno>
+#include <chrono>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -96,6 +100,47 @@ TEST(PluginLoader, APluginThatCrashesWhileLoadingIsRefusedNotFatal) {
   EXPECT_TRUE(c.plugins.empty());
   // A good plugin still loads after them.
   EXPECT_EQ(loadError(c, examplePlugin()), "");
+}
+
+// A plugin whose static initializer never returns is refused once the load time limit has
+// passed; its probing process is killed and reaped, so the loading process has no child left.
+TEST(PluginLoader, APluginThatHangsWhileLoadingIsRefusedAfterTheLimit) {
+  Components c;
+  const auto start = std::chrono::steady_clock::now();
+  std::string error;
+  try {
+    loadPlugin(c, testPlugin("parksim_broken_plugin_7"), 1.0);
+  } catch (const Error& e) {
+    error = e.what();
+  }
+  const double elapsed_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_THAT(error, HasSubstr("libparksim_broken_plugin_7.so: the plugin did not finish loading "
+                               "within 1 s (its process was killed"));
+  EXPECT_THAT(error, HasSubstr("; not loaded"));
+  EXPECT_EQ(error.find('\n'), std::string::npos);
+  EXPECT_GE(elapsed_s, 1.0);  // it waited the limit out, no less
+  EXPECT_TRUE(c.plugins.empty());
+  // No child is left, running or unreaped: this process forks nothing else.
+  errno = 0;
+  EXPECT_EQ(::waitpid(-1, nullptr, WNOHANG), -1);
+  EXPECT_EQ(errno, ECHILD);
+  // A good plugin still loads after it.
+  EXPECT_EQ(loadError(c, examplePlugin()), "");
+}
+
+// The load time limit is checked like the other user-code limits.
+TEST(PluginLoader, RefusesALoadTimeLimitOutOfRange) {
+  Components c;
+  for (const double bad : {0.0, -1.0, 1e9}) {
+    try {
+      loadPlugin(c, examplePlugin(), bad);
+      ADD_FAILURE() << bad;
+    } catch (const Error& e) {
+      EXPECT_THAT(e.what(), HasSubstr("plugin load time limit: must be in [0.001, 1e+06] s"));
+    }
+  }
+  EXPECT_TRUE(c.plugins.empty());
 }
 
 TEST(PluginLoader, AFileOrANameLoadsOnce) {

@@ -23,7 +23,12 @@ struct UserCodeLimits {
   /// Longest a user's controller may take for one command (its reset included).
   double controller_tick_s = 10.0;
 
-  /// The range of either limit, s.
+  /// Longest a plugin's loading may take in the child that probes it (usercode/PluginLoader.h):
+  /// its static initializers, entry point and registration. Of the order of a controller
+  /// command's start (CommandControllerDef::start_timeout_s): loading is a start, not work.
+  static constexpr double kPluginLoadS = 30.0;
+
+  /// The range of every limit, s.
   static constexpr double kMin = 0.001;
   static constexpr double kMax = 1e6;
 };
