@@ -100,6 +100,7 @@ std::vector<ComponentParams> checkEpisodeValues(const EpisodeRequest& request) {
     throw Error("executed_rate_hz: must be in [0, 1e+06], got " +
                 formatGeneral(request.record.executed_rate_hz));
   }
+  if (request.film.when != FilmWhen::kNever) checkFilmMemory(request.film.frames);
   if (request.given_plan) {
     checkGivenPlan(request, scenario);
     if (request.drive) {

@@ -203,6 +203,25 @@ TEST_F(Cli, PngCompressionChangesTheFilesNotThePixels) {
             2);
 }
 
+// A film whose memory would pass the bound (docs/limits.md) is refused before any work: stored
+// frames of the largest size hold their whole file besides the framebuffers and the frame.
+TEST_F(Cli, AFilmOverTheMemoryBoundIsRefusedBeforeAnyWork) {
+  const fs::path out = dir_ / "never";
+  for (const std::string& options :
+       {std::string(" --png-compression stored"), std::string(" --png-compression small")}) {
+    const CliRun r =
+        parksim("run " + world("head_in.yaml") + " --frames --size 8192x8192 --view both" +
+                options + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    EXPECT_NE(r.out.find("size 8192x8192, view both, png_compression " + options.substr(19)),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("more than the bound of 1700000000"), std::string::npos) << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
 // The file names in OUT/figures, sorted; empty when there is no such directory.
 std::vector<std::string> figureFiles(const fs::path& out) {
   std::vector<std::string> names;

@@ -91,6 +91,21 @@ def test_frame_recorder_writes_frames(tmp_path, head_in, head_in_plan):
     assert sorted(p.name for p in (tmp_path / "frames").iterdir())[0] == "000000.png"
 
 
+def test_frame_recorder_refuses_a_film_over_the_memory_bound(tmp_path, head_in):
+    # Stored frames of 8192x8192, both views, would hold their whole file besides the
+    # framebuffers and the frame (docs/limits.md): refused before anything is written.
+    out = tmp_path / "never"
+    with pytest.raises(ValueError, match=r"png_compression stored, msaa_samples 1, "
+                       r"encode_threads 1 would hold \d+ bytes, more than the bound of 1700000000"):
+        parksim.FrameRecorder(head_in, out_dir=str(out), width_px=8192, height_px=8192,
+                              view="both", png_compression="stored")
+    assert not out.exists()
+    with pytest.raises(ValueError, match="msaa_samples 4"):
+        parksim.FrameRecorder(head_in, out_dir=str(out), width_px=8192, height_px=8192,
+                              view="both", msaa_samples=4)
+    assert not out.exists()
+
+
 def test_frames_choose_their_gl_backend(tmp_path, head_in):
     d = parksim.FrameDef()
     assert d.gl_backend == "auto"  # PARKSIM_GL_BACKEND, else egl, then osmesa

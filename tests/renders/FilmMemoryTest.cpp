@@ -8,9 +8,11 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "RenderTestUtil.h"
+#include "parksim/core/io/Error.h"
 #include "parksim/renders/film/FrameRecorder.h"
 #include "tests/support/Sanitizers.h"
 
@@ -76,6 +78,74 @@ TEST(FilmBuffersTest, TheLargestFilmFitsInTwoGigabytes) {
     const std::size_t total = framebufferBytes(std::size_t{8192} * 8192) + filmBuffers(def).bytes();
     EXPECT_LE(total, std::size_t{2'000'000'000} - 300'000'000) << toString(view);
   }
+}
+
+// Each combination the options allow at the largest size is filmed within the bound, or refused
+// before any work with one line naming the options, the computed bytes and the bound.
+TEST(FilmBuffersTest, EveryCombinationFitsTheBoundOrIsRefused) {
+  const std::size_t pixels = std::size_t{8192} * 8192;  // one view
+  const std::size_t frame = 2 * pixels * 4;             // both views, RGBA
+  FrameDef def;
+  def.width_px = def.height_px = 8192;
+  def.view = FrameView::kBoth;
+  // The default: framebuffers (16 bytes a pixel), one frame in flight and the queued samples.
+  EXPECT_EQ(filmPeakBytes(def), 16 * pixels + frame + 32 * kMiB);
+  EXPECT_LE(filmPeakBytes(def), kFilmMemoryBoundBytes);
+  EXPECT_NO_THROW(checkFilmMemory(def));
+  def.png_compression = PngCompression::kFast;
+  EXPECT_NO_THROW(checkFilmMemory(def));
+
+  // Stored: the encoder's whole file besides (3 bytes a pixel), over the bound.
+  def.png_compression = PngCompression::kStored;
+  EXPECT_EQ(filmPeakBytes(def), 16 * pixels + frame + frame / 4 * 3 + 32 * kMiB);
+  try {
+    checkFilmMemory(def);
+    ADD_FAILURE() << "stored at 8192x8192, both views, was not refused";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    EXPECT_NE(what.find("size 8192x8192, view both, png_compression stored"), std::string::npos)
+        << what;
+    EXPECT_NE(what.find(std::to_string(filmPeakBytes(def)) + " bytes"), std::string::npos) << what;
+    EXPECT_NE(what.find(std::to_string(kFilmMemoryBoundBytes)), std::string::npos) << what;
+  }
+  // Small: an RGB copy, stb's filtered image and its output.
+  def.png_compression = PngCompression::kSmall;
+  EXPECT_EQ(filmPeakBytes(def), 16 * pixels + frame + 3 * (frame / 4 * 3) + 32 * kMiB);
+  EXPECT_THROW(checkFilmMemory(def), Error);
+  // Four samples: 16 x 4 + 4 bytes a pixel of framebuffers.
+  def.png_compression = PngCompression::kDefault;
+  def.msaa_samples = 4;
+  EXPECT_EQ(filmPeakBytes(def), 68 * pixels + frame + 32 * kMiB);
+  EXPECT_THROW(checkFilmMemory(def), Error);
+  // A budget larger than the bound.
+  def.msaa_samples = 1;
+  def.width_px = def.height_px = 4096;
+  def.frame_memory_bytes = std::size_t{4} << 30;
+  def.queue_depth = 40;
+  EXPECT_THROW(checkFilmMemory(def), Error);
+
+  // Where each fits: 640x480, and the largest stored and small top views that do.
+  for (PngCompression c : {PngCompression::kDefault, PngCompression::kFast, PngCompression::kStored,
+                           PngCompression::kSmall}) {
+    FrameDef fits;
+    fits.view = FrameView::kBoth;
+    fits.png_compression = c;
+    fits.msaa_samples = 4;
+    EXPECT_NO_THROW(checkFilmMemory(fits)) << toString(c);
+  }
+}
+
+// A recording refused for its memory makes nothing, not even its directory.
+TEST(FilmBuffersTest, ARefusedRecordingWritesNothing) {
+  FrameDef def;
+  def.width_px = def.height_px = 8192;
+  def.view = FrameView::kBoth;
+  def.png_compression = PngCompression::kStored;
+  def.out_dir = rendertest::outputDir("FilmMemoryTest_refused");
+  std::filesystem::remove_all(def.out_dir);
+  EXPECT_THROW({ FrameRecorder rec(rendertest::testLot(), def); }, Error);
+  EXPECT_FALSE(std::filesystem::exists(def.out_dir + "/frames"));
 }
 
 long maxResidentKiB() {

@@ -177,7 +177,7 @@ struct DrawJob {
 // so the two threads do not wake each other for every frame (a wake-up costs more than a
 // frame's simulation).
 constexpr std::size_t kMaxDrawJobs = 2048;
-constexpr std::size_t kMaxDrawBytes = std::size_t{32} << 20;
+constexpr std::size_t kMaxDrawBytes = kMaxQueuedSampleBytes;
 
 std::size_t bytesOf(const DrawJob& job) {
   std::size_t bytes = sizeof(DrawJob) + job.input.obstacle_poses.size() * sizeof(Pose2) +
@@ -449,6 +449,7 @@ FrameRecorder::FrameRecorder(const Scenario& scenario, const FrameDef& def)
   if (def.encode_threads < 1 || def.queue_depth < 1) {
     throw Error("frames: encode_threads and queue_depth must be at least 1");
   }
+  checkFilmMemory(def);  // before the frames' directory is made
   impl_->scenario = scenario;
   impl_->def = def;
   impl_->style = def.style.scaled(styleScaleFor(def.height_px)).forRobot(scenario.robot);

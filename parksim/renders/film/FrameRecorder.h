@@ -116,6 +116,24 @@ struct FilmBuffers {
 /// in flight as fit, from 1 to queue_depth + encode_threads.
 FilmBuffers filmBuffers(const FrameDef& def);
 
+/// Samples waiting for the drawing thread, bytes at most (besides a count limit).
+constexpr std::size_t kMaxQueuedSampleBytes = std::size_t{32} << 20;
+/// The most a film may hold, bytes, of what grows with its frame (filmPeakBytes): 2 GB less
+/// 300 MB for the rest of the process (`parksim run` measured 110 to 160 MB), docs/limits.md.
+constexpr std::size_t kFilmMemoryBoundBytes = 1'700'000'000;
+
+/// What a recording made with `def` holds at most that grows with the frame, bytes: the
+/// renderer's framebuffers (16 a pixel of one view at one sample; msaa_samples n > 1: 16n + 4),
+/// filmBuffers(def).bytes(), each encoder's image-sized buffers (kStored: its whole file, 3 bytes
+/// a pixel; kSmall: an RGB copy, stb's filtered image and its output, counted as 3 x 3 bytes a
+/// pixel) and the queued samples. kDefault's and kFast's outputs (a few % of a frame) are not
+/// counted: the bound leaves room for them.
+std::size_t filmPeakBytes(const FrameDef& def);
+
+/// Throws Error, one line naming the size, view, compression, msaa_samples, encode_threads,
+/// the computed bytes and kFilmMemoryBoundBytes, when filmPeakBytes(def) exceeds that bound.
+void checkFilmMemory(const FrameDef& def);
+
 /// One simulation sample, as plain data (mirrors sim's EpisodeSample).
 struct FrameInput {
   double t_s = 0.0;                ///< simulated time, s; non-decreasing across calls
