@@ -150,19 +150,8 @@ btCollisionShape* CarBody::own(std::unique_ptr<btCollisionShape> shape) {
 void CarBody::addColliders(btCollisionShape* chassis_shape, btCollisionShape* rear_left,
                            btCollisionShape* rear_right, btCollisionShape* front) {
   auto add = [&](int link, btCollisionShape* shape, double friction, int group, int mask) {
-    auto collider = std::make_unique<btMultiBodyLinkCollider>(body_.get(), link);
-    collider->setCollisionShape(shape);
-    collider->setFriction(btScalar(friction));
-    collider->setUserIndex(kNotObstacle);
-    if (link >= 0)
-      collider->setContactProcessingThreshold(btScalar(model_.wheel_contact_processing_m));
-    world_.addCollisionObject(collider.get(), group, mask);
-    if (link < 0) {
-      body_->setBaseCollider(collider.get());
-    } else {
-      body_->getLink(link).m_collider = collider.get();
-    }
-    colliders_.push_back(std::move(collider));
+    addEgoCollider(world_, *body_, link, shape, friction, group, mask,
+                   model_.wheel_contact_processing_m, colliders_);
   };
   add(-1, chassis_shape, physics_.obstacle_friction, kChassisGroup, kChassisMask);
   add(kRearLeft, rear_left, physics_.wheel_friction, kWheelGroup, kWheelMask);

@@ -2,12 +2,18 @@
 // The ego robot's multibody as the dynamics world drives it: a differential drive (RobotBody.h)
 // or a car (CarBody.h). Internal to sim/; Bullet's types are only declared here.
 
+#include <memory>
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "parksim/core/model/DiffDrive.h"
 
 class btCollisionObject;
+class btCollisionShape;
 class btMultiBody;
+class btMultiBodyDynamicsWorld;
+class btMultiBodyLinkCollider;
 
 namespace parksim {
 
@@ -30,6 +36,15 @@ struct DrivenAxle {
 };
 RobotState readAxleState(const btMultiBody& body, const DrivenAxle& axle,
                          const Eigen::Vector2d& origin);
+
+/// Makes `shape` the collider of `body`'s link `link` (-1: its base) with `friction`, in
+/// collision `group` and `mask`, and adds it to `world`; a wheel link's contacts are processed
+/// from `wheel_contact_processing_m` away. Both bodies build their colliders so
+/// (EgoColliders.cpp); `colliders` keeps it alive.
+void addEgoCollider(btMultiBodyDynamicsWorld& world, btMultiBody& body, int link,
+                    btCollisionShape* shape, double friction, int group, int mask,
+                    double wheel_contact_processing_m,
+                    std::vector<std::unique_ptr<btMultiBodyLinkCollider>>& colliders);
 
 class EgoBody {
  public:
