@@ -27,6 +27,15 @@ set(PARKSIM_UNITY_BATCH_SIZE 6 CACHE STRING
     "Sources per unity batch: larger builds faster cold, smaller rebuilds less after an edit")
 set(PARKSIM_TEST_UNITY_BATCH_SIZE 8 CACHE STRING
     "Test sources per unity batch (test programs; docs/building.md)")
+# The test programs' own optimisation flag, added after the build type's (the last -O wins), and
+# to the test precompiled header's: empty keeps the build type's. The sanitizer pass of
+# scripts/test.sh compiles the test programs and the test plugins at -O0, the libraries they
+# test staying at -O1: a test file's compile time is mostly GoogleTest's, nlohmann/json's and
+# Eigen's templates being optimised (render_tests: 27 CPU s at -O1, 10 at -O0). Programs whose
+# tests compute in their own code are marked OPTIMIZED (tests/CMakeLists.txt) and keep the
+# build type's: at -O0 they ran 2 to 8 times slower (docs/building.md, "CI in 10 minutes").
+set(PARKSIM_TEST_OPTIMIZATION "" CACHE STRING
+    "Optimisation flag of the test programs, e.g. -O0 (empty: the build type's)")
 # Sources compiled on their own in a unity build (paths relative to the top folder), each with the
 # reason: mostly a name it shares with another file of its target.
 set(PARKSIM_UNITY_SKIP
@@ -118,6 +127,15 @@ function(parksim_define_pch_hosts)
                       GTest::gtest_main GTest::gmock)
     target_precompile_headers(parksim_pch_test PRIVATE
       ${PARKSIM_PCH_COMMON} <gtest/gtest.h> <gmock/gmock.h>)
+    # A precompiled header is used only with the optimisation it was made with: the test
+    # programs' (PARKSIM_TEST_OPTIMIZATION), and the build type's for those marked OPTIMIZED.
+    target_compile_options(parksim_pch_test PRIVATE ${PARKSIM_TEST_OPTIMIZATION})
+    if(PARKSIM_TEST_OPTIMIZATION)
+      _parksim_pch_host(parksim_pch_test_optimized exe Eigen3::Eigen nlohmann_json::nlohmann_json
+                        yaml-cpp GTest::gtest_main GTest::gmock)
+      target_precompile_headers(parksim_pch_test_optimized PRIVATE
+        ${PARKSIM_PCH_COMMON} <gtest/gtest.h> <gmock/gmock.h>)
+    endif()
   endif()
 endfunction()
 
@@ -132,6 +150,8 @@ function(_parksim_apply_pch target)
   get_target_property(kind ${target} PARKSIM_PCH_KIND)
   if(kind STREQUAL "test" AND TARGET parksim_pch_test)
     target_precompile_headers(${target} REUSE_FROM parksim_pch_test)
+  elseif(kind STREQUAL "test_optimized" AND TARGET parksim_pch_test_optimized)
+    target_precompile_headers(${target} REUSE_FROM parksim_pch_test_optimized)
   elseif(type STREQUAL "MODULE_LIBRARY" AND target STREQUAL "parksim_python")
     # The Python module: Python.h must come before the standard headers; -fvisibility=hidden.
     set(headers <pybind11/pybind11.h> <pybind11/numpy.h> <pybind11/stl.h> ${PARKSIM_PCH_COMMON})
@@ -159,7 +179,7 @@ function(parksim_target_defaults target)
   get_target_property(kind ${target} PARKSIM_PCH_KIND)
   if(PARKSIM_UNITY)
     set(batch ${PARKSIM_UNITY_BATCH_SIZE})
-    if(kind STREQUAL "test")
+    if(kind MATCHES "^test")
       set(batch ${PARKSIM_TEST_UNITY_BATCH_SIZE})
     endif()
     set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${batch})

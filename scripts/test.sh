@@ -6,8 +6,9 @@
 #   2. front-ends: what the sanitizer build leaves out (the Python module, the benchmarks, the
 #      documentation's example programs, the installed package and its consumer), in Release
 #      against the shared libraries (build/, made PARKSIM_SHARED=ON), and their tests
-#      (`ctest -L front_end`); compiled with clang unless CXX names a compiler
-#      (scripts/build.sh);
+#      (`ctest -L front_end`), with the test programs whose assertions are rates over many
+#      seeds (`-L release`: run here once, not under the sanitizers); compiled with clang
+#      unless CXX names a compiler (scripts/build.sh);
 #   3. fuzzing: the readers' libFuzzer harnesses, bounded (scripts/fuzz.sh --ci).
 # Passes 2 and 3 are built behind pass 1, at the lowest priority (nice 19): their compiles take
 # what the sanitizer build and its tests leave of the cores (configuring, linking, tests that
@@ -40,10 +41,10 @@ front_ends_build() {  # front_ends_build BUILD_DIR: the front-ends (shared libra
     -DPARKSIM_BUILD_TESTS=ON -DPARKSIM_BUILD_BENCH=ON -DPARKSIM_PYTHON=ON \
     --target parksim_front_end_tests
 }
-front_ends_tests() {  # front_ends_tests BUILD_DIR: their tests
-  ctest --test-dir "$1" --output-on-failure --parallel "$jobs" --timeout "$test_timeout" -L front_end
+front_ends_tests() {  # front_ends_tests BUILD_DIR LABELS: their tests (a ctest -L expression)
+  ctest --test-dir "$1" --output-on-failure --parallel "$jobs" --timeout "$test_timeout" -L "$2"
 }
-shared_front_ends() { front_ends_build "$1" && front_ends_tests "$1"; }
+shared_front_ends() { front_ends_build "$1" && front_ends_tests "$1" front_end; }
 
 # Passes running behind the foreground one: each in its own process group (stopped, with its
 # children, when this script exits early), its output in a log printed when it is joined.
@@ -85,11 +86,13 @@ if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   # Larger unity batches than a build for editing (docs/building.md, "CI in 10 minutes"): this
   # pass compiles everything once. Libraries in batches of 16 (not 6): 230 instead of 280 CPU s;
   # each test program's files in one batch (PARKSIM_TEST_UNITY_BATCH_SIZE=0): the four
-  # programs with more than 8 files in 55 instead of 81 CPU s.
+  # programs with more than 8 files in 55 instead of 81 CPU s. Test programs at -O0 but those
+  # marked OPTIMIZED (PARKSIM_TEST_OPTIMIZATION, cmake/TargetDefaults.cmake).
   PARKSIM_CCACHE=$ccache scripts/build.sh build-sanitize -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPARKSIM_SANITIZE=ON -DPARKSIM_BUILD_BENCH=OFF \
     -DPARKSIM_PYTHON=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
-    -DPARKSIM_UNITY_BATCH_SIZE=16 -DPARKSIM_TEST_UNITY_BATCH_SIZE=0 --target parksim_tests
+    -DPARKSIM_UNITY_BATCH_SIZE=16 -DPARKSIM_TEST_UNITY_BATCH_SIZE=0 \
+    -DPARKSIM_TEST_OPTIMIZATION=-O0 --target parksim_tests
   # The longest tests first, in a fresh clone too: ctest starts tests by the durations it
   # recorded (Testing/Temporary/CTestCostData.txt), and without a record in test-number order, so
   # a 20-second test could start last and run alone at the end. tests/sanitizer_costs.txt seeds
@@ -115,9 +118,10 @@ if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
 
   echo "== Front-ends (Release, shared libraries) and the fuzzers: built behind the above"
   join build
-  echo "== The front-ends' tests, beside the bounded fuzzing of the readers (docs/limits.md)"
+  echo "== The front-ends' tests and the Release-only programs (rates over many seeds), beside"
+  echo "   the bounded fuzzing of the readers (docs/limits.md)"
   behind fuzz 10 scripts/fuzz.sh --ci
-  front_ends_tests build
+  front_ends_tests build '^(front_end|release)'
   join fuzz
 else
   echo "== Release build (static libraries): everything and every test"

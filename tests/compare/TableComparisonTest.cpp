@@ -1,13 +1,7 @@
-// `parksim compare`'s decision on tables with known truth, written through the results-table
-// writer and read back as the command reads them (issue 20's done-when):
-// - power: every tracking error of one group multiplied by 1.2, 20 paired realisations per
-//   group: detected in >= 90 % of seeded trials;
-// - false alarms: the same code under other noise seeds (other ids: unpaired): no alarm in
-//   >= 95 % of trials.
-// One trial is one pair of tables. The distributions are modelled on the `lab` preset's
-// measured spread (README: head_in, 20 noise seeds, max tracking error median 1.72 mm, p95
-// 1.86 mm; goal error median 0.061 mm, p95 0.158 mm), and, harder, a spread six times wider
-// with exponential goal errors and a fifth of the episodes failing.
+// `parksim compare`'s decision on tables with known truth (tests/compare/SyntheticTables.h),
+// written through the results-table writer and read back as the command reads them: pairing,
+// regressions and improvements, groups too small to test, bad tables, and `--across`. Its rates
+// over many trials are in TableComparisonRatesTest.cpp.
 
 #include "parksim/compare/TableComparison.h"
 
@@ -24,186 +18,21 @@
 #include "parksim/core/io/Error.h"
 #include "parksim/results/tables/ResultsTable.h"
 #include "parksim/sweep/spec/EpisodeParams.h"
+#include "tests/compare/SyntheticTables.h"
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
 namespace {
 
-using Json = nlohmann::ordered_json;
 using ::testing::HasSubstr;
-
-// A world's typical tracking error and how the realisations spread around it.
-struct Spread {
-  double tracking_sigma;  ///< of the log of the max tracking error
-  bool wide_goal;         ///< exponential goal errors (else half-normal)
-  double met_share;       ///< episodes that meet their tolerance
-};
-
-constexpr Spread kLab{0.05, false, 0.95};
-constexpr Spread kWide{0.30, true, 0.80};
-
-struct World {
-  const char* name;
-  double tracking_median_m;
-};
-
-constexpr World kWorlds[] = {
-    {"head_in", 1.72e-3}, {"parallel", 0.95e-3}, {"tight_parallel", 2.6e-3}};
-
-Json syntheticRow(const char* world, std::uint64_t noise_seed, const Spread& s,
-                  std::mt19937_64& rng, double tracking_median_m) {
-  EpisodeParams p;
-  p.world = world;
-  p.world_file = std::string("../") + world + ".yaml";
-  p.realism = "lab";
-  p.noise_seed = noise_seed;
-  Json row;
-  row["episode_id"] = episodeId(p);
-  appendParamColumns(p, row);
-  const bool met = std::uniform_real_distribution<double>(0.0, 1.0)(rng) < s.met_share;
-  row["status"] = met ? "met" : "goal_missed";
-  row["met_tolerance"] = met;
-  row["failure"] = met ? "" : "ended 3.4 mm / 0.2 deg from the goal (tolerance 3 mm / 1.5 deg)";
-  row["plan_status"] = "exact_solution";
-  row["plan_solved"] = true;
-  const double tracking =
-      tracking_median_m * std::exp(std::normal_distribution<double>(0.0, s.tracking_sigma)(rng));
-  row["max_pos_err_m"] = tracking;
-  row["rms_pos_err_m"] = 0.35 * tracking;
-  row["final_pos_err_m"] = 0.05 * tracking;
-  const double goal = s.wide_goal ? std::exponential_distribution<double>(1.0 / 0.09e-3)(rng)
-                                  : std::abs(std::normal_distribution<double>(0.0, 0.09e-3)(rng));
-  row["goal_pos_err_m"] = goal;
-  row["goal_reached"] = met;
-  row["contacts"] = 0;
-  row["episode_wall_s"] = 0.5;
-  return row;
-}
-
-std::vector<Json> syntheticTable(std::uint64_t first_noise_seed, const Spread& s,
-                                 std::mt19937_64& rng) {
-  std::vector<Json> rows;
-  for (const World& w : kWorlds) {
-    for (std::uint64_t k = 0; k < 20; ++k) {
-      rows.push_back(syntheticRow(w.name, first_noise_seed + k, s, rng, w.tracking_median_m));
-    }
-  }
-  return rows;
-}
-
-// The table as `parksim compare` gets it: written by the sweep's writer, read by its reader.
-// In a folder of the running test's own: ctest runs the tests in parallel processes.
-std::vector<Json> throughTheWriter(const std::vector<Json>& rows, const std::string& name) {
-  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  const std::filesystem::path dir =
-      parksim::testing::testOutputDir("TableComparison." + test) / name;
-  std::filesystem::remove_all(dir);
-  writeResultsTable(dir.string(), rows);
-  return readComparedTable(dir.string()).rows;
-}
-
-bool trackingFlagged(const TableComparison& t, const std::string& world) {
-  for (const GroupComparison& g : t.groups) {
-    if (g.world != world) continue;
-    for (const MetricComparison& m : g.metrics) {
-      if (m.key == "max_pos_err_m" && m.regression) return true;
-    }
-  }
-  return false;
-}
-
-int trials() {
-  const char* env = std::getenv("PARKSIM_COMPARE_TRIALS");
-  return env != nullptr ? std::max(10, std::atoi(env)) : 200;
-}
-
-// The command's settings but 2,000 bootstrap replicates (its default: 10,000): enough for
-// Holm's smallest threshold over 15 tests (0.05 / 15 > 1 / 2001), and five times faster. At
-// 2,000: 200 of 200 detected, 2 and 1 of 200 alarms (lab, wide); docs/ci.md.
-CompareDef trialDef(int trial) {
-  CompareDef def;
-  def.seed = static_cast<std::uint64_t>(trial) + 1;
-  def.resamples = 2000;
-  return def;
-}
-
-struct Rates {
-  int trials = 0;
-  int hits = 0;
-  double rate() const { return static_cast<double>(hits) / trials; }
-};
-
-// Trials of a planted change: baseline under noise seeds 1..20, candidate the same episodes
-// (same ids) with every tracking error of head_in multiplied by `factor`.
-Rates plantedTrials(const Spread& s, double factor, bool paired) {
-  Rates r;
-  r.trials = trials();
-  for (int k = 0; k < r.trials; ++k) {
-    std::mt19937_64 rng(1000 + static_cast<std::uint64_t>(k));
-    const std::vector<Json> baseline = syntheticTable(1, s, rng);
-    std::vector<Json> candidate = paired ? baseline : syntheticTable(21, s, rng);
-    for (Json& row : candidate) {
-      if (row["world"] != "head_in") continue;
-      for (const char* key : {"max_pos_err_m", "rms_pos_err_m", "final_pos_err_m"}) {
-        row[key] = factor * row[key].get<double>();
-      }
-    }
-    const CompareDef def = trialDef(k);
-    const TableComparison t =
-        compareTables(throughTheWriter(baseline, "base"), throughTheWriter(candidate, "cand"), def);
-    r.hits += trackingFlagged(t, "head_in") ? 1 : 0;
-  }
-  return r;
-}
-
-// Trials of unchanged code under other noise seeds: baseline 1..20, candidate 21..40.
-Rates alarmTrials(const Spread& s) {
-  Rates r;
-  r.trials = trials();
-  for (int k = 0; k < r.trials; ++k) {
-    std::mt19937_64 rng(5000 + static_cast<std::uint64_t>(k));
-    const std::vector<Json> baseline = syntheticTable(1, s, rng);
-    const std::vector<Json> candidate = syntheticTable(21, s, rng);
-    const CompareDef def = trialDef(k);
-    const TableComparison t =
-        compareTables(throughTheWriter(baseline, "base"), throughTheWriter(candidate, "cand"), def);
-    for (const GroupComparison& g : t.groups) EXPECT_FALSE(g.paired);
-    r.hits += t.regression() ? 1 : 0;
-  }
-  return r;
-}
-
-TEST(TableComparison, DetectsTrackingErrorsTimes1Point2With20PairedRealisations) {
-  const Rates r = plantedTrials(kLab, 1.2, true);
-  RecordProperty("power", std::to_string(r.rate()));
-  std::printf("planted x1.2, paired, lab spread: detected in %d of %d trials\n", r.hits, r.trials);
-  EXPECT_GE(r.rate(), 0.90);
-}
-
-TEST(TableComparison, NoAlarmUnderOtherNoiseSeeds) {
-  for (const Spread& s : {kLab, kWide}) {
-    const Rates r = alarmTrials(s);
-    RecordProperty(s.wide_goal ? "false_alarm_wide" : "false_alarm_lab", std::to_string(r.rate()));
-    std::printf("unchanged, unpaired (other noise seeds), %s spread: alarm in %d of %d trials\n",
-                s.wide_goal ? "wide" : "lab", r.hits, r.trials);
-    EXPECT_LE(r.rate(), 0.05);
-  }
-}
-
-// The figures docs/ci.md quotes beyond the two requirements, printed; run with
-// --gtest_also_run_disabled_tests --gtest_filter='*PowerTable*'.
-TEST(TableComparison, DISABLED_PowerTable) {
-  for (const Spread& s : {kLab, kWide}) {
-    for (const bool paired : {true, false}) {
-      for (const double f : {1.05, 1.1, 1.15, 1.2, 1.3, 1.5}) {
-        const Rates r = plantedTrials(s, f, paired);
-        std::printf("%s spread, %s, x%.2f: detected in %d of %d trials (%.1f %%)\n",
-                    s.wide_goal ? "wide" : "lab", paired ? "paired" : "unpaired", f, r.hits,
-                    r.trials, 100.0 * r.rate());
-      }
-    }
-  }
-}
+using synthetic::Json;
+using synthetic::kLab;
+using synthetic::kWide;
+using synthetic::kWorlds;
+using synthetic::syntheticRow;
+using synthetic::syntheticTable;
+using synthetic::throughTheWriter;
+using synthetic::trackingFlagged;
 
 TEST(TableComparison, SameTablesArePairedAndNeverAlarm) {
   std::mt19937_64 rng(3);
@@ -419,7 +248,7 @@ TEST(TableComparison, AcrossThePlannerEveryEpisodePairsWithItsOwn) {
   }
   EXPECT_FALSE(t.regression());
   const TableComparison w = compareTables(baseline, worse, def);
-  for (const World& world : kWorlds) EXPECT_TRUE(trackingFlagged(w, world.name)) << world.name;
+  for (const synthetic::World& world : kWorlds) EXPECT_TRUE(trackingFlagged(w, world.name)) << world.name;
 }
 
 // The user's controller against parksim's tracking: the groups match already (the controller
