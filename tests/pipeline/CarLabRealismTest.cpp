@@ -1,7 +1,8 @@
 // The realism presets with a car (issue 38): the presets' motors are the study robot's micro
 // gear-motors (0.098 N m), which cannot move a 1800 kg car; a car's preset motors are sized
 // from its mass, wheel radius and limits (realism/DriveSizing.h). The required torque is
-// computed here from the world's own numbers, m a r / driven wheels.
+// computed here from the world's own numbers, m a r / driven wheels. That the car then parks
+// in 19 of 20 noise seeds is CarLabRealismRateTest.cpp.
 
 #include <memory>
 #include <string>
@@ -65,22 +66,6 @@ TEST(CarLabRealism, AStudyRobotKeepsThePresetExactly) {
     EXPECT_EQ(resolved.wheel_loop.kp, plain.wheel_loop.kp);
     EXPECT_EQ(resolved.wheel_loop.ki, plain.wheel_loop.ki);
   }
-}
-
-// The issue's target: under lab realism the car reaches its goal in at least 95 % of 20 noise
-// seeds (before the sizing, 0 of 20: it did not move).
-TEST(CarLabRealism, ACarParksUnderTheLabPresetInNineteenOfTwentySeeds) {
-  EpisodeRequest r = request("car_bay_forward", "lab");
-  r.realisations = 20;
-  r.min_success_fraction = 0.95;
-  const EpisodeOutcome out = runEpisodePipeline(r);
-  EXPECT_TRUE(out.verdict.met()) << out.verdict.reason;
-  ASSERT_EQ(out.realisations.size(), 20u);
-  int reached = 0;
-  for (const RealisationOutcome& k : out.realisations) reached += k.metrics.goal_reached ? 1 : 0;
-  EXPECT_GE(reached, 19);
-  // The wheels were driven by torque well above the study's motors.
-  EXPECT_GT(out.episode.metrics.max_motor_torque_nm, 10.0);
 }
 
 }  // namespace

@@ -21,7 +21,9 @@
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace one_plan_check_test {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
@@ -146,5 +148,5 @@ TEST(OnePlanCheck, ParksimsOwnPlanHasNoOrigin) {
   EXPECT_FALSE(readJson(dir / "plan.json").contains("planner_origin"));
 }
 
-}  // namespace
+}  // namespace one_plan_check_test
 }  // namespace parksim

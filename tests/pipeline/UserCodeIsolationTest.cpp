@@ -20,7 +20,9 @@
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace user_code_isolation_test {
 
 using ::testing::HasSubstr;
 using Phase = UserCodeWatch::Phase;
@@ -180,5 +182,5 @@ TEST(UserCodeIsolation, EpisodesWithCrashingOrHangingComponentsGiveVerdicts) {
   }
 }
 
-}  // namespace
+}  // namespace user_code_isolation_test
 }  // namespace parksim

@@ -17,7 +17,9 @@
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace user_code_test {
 
 using ::testing::HasSubstr;
 using ::testing::MatchesRegex;
@@ -167,5 +169,5 @@ TEST(UserCode, AGivenPlanOverTheSpeedLimitIsInvalid) {
   EXPECT_FALSE(out.driven());
 }
 
-}  // namespace
+}  // namespace user_code_test
 }  // namespace parksim
