@@ -15,8 +15,10 @@
 #   namespaces, static functions) must then be unique within a target: a second definition of one
 #   is a compile error ("redefinition of ...") naming both files. Rename one, or add the file to
 #   PARKSIM_UNITY_SKIP below. Test programs are batched too, in batches of
-#   PARKSIM_TEST_UNITY_BATCH_SIZE; their files share helper names more often (`errorOf`, `kWorld`),
-#   and the files that would clash are in PARKSIM_UNITY_SKIP as well.
+#   PARKSIM_TEST_UNITY_BATCH_SIZE; their files share helper names more often (`errorOf`, `kWorld`):
+#   a test file whose helpers would meet another file's keeps them in a namespace named after
+#   the file (e.g. `parksim::world_test`) instead of an anonymous one, and no test file is
+#   compiled alone.
 #
 # Both are on by default and off with -DPARKSIM_PCH=OFF / -DPARKSIM_UNITY=OFF (e.g. to check that
 # every file includes what it uses, which a precompiled header can hide).
@@ -57,37 +59,6 @@ set(PARKSIM_UNITY_SKIP
   # Not a name: it includes ProvenanceGit.h, which a commit or a first edit rewrites; alone,
   # only this file is compiled again then, not its batch.
   parksim/core/system/Provenance.cpp
-  # Test files: each shares a name with an earlier file of its program (found by compiling each
-  # program's files as one batch: so any batch size and order compiles).
-  tests/bench/OmplLogTest.cpp                # splitLines, also in BenchCsvTest.cpp
-  tests/bench/PathCheckTest.cpp              # headIn, also in OmplPlannersTest.cpp
-  tests/collision/ShapeObstaclesTest.cpp     # kSweepDivisor, kMargins: BulletCollisionWorldTest.cpp
-  tests/command/CommandPlannerTest.cpp       # headIn, testDir: CommandCliTest, CommandControllerTest
-  tests/pipeline/OnePlanCheckTest.cpp        # headIn, plugins, also in IsolatedEpisodeTest.cpp
-  tests/pipeline/UserCodeTest.cpp            # headIn, plugins, also in IsolatedEpisodeTest.cpp
-  tests/pipeline/UserCodeIsolationTest.cpp   # kShort, also in UserCodeTest.cpp
-  # joined, Case: each car planning file has its own (CarPlanAlongTest.cpp is batched).
-  tests/planner/CarPlanCheckerTest.cpp
-  tests/planner/CarPlannersTest.cpp
-  tests/planner/CarWorldsPlanningTest.cpp
-  tests/planner/GripCheckTest.cpp            # kDt, also in CarPlanCheckTest.cpp
-  tests/planner/TimeCostTest.cpp             # piece, also in PathSmootherTest.cpp
-  tests/renders/OffscreenContextTest.cpp     # distinctColours, also in FiguresTest.cpp
-  tests/results/TrajectoryFileTest.cpp       # sample, also in NpzFileTest.cpp
-  tests/rl/ParkingTaskTest.cpp               # kinematic, also in CarTaskTest.cpp
-  # errorOf (in 11 files, each its own) and kWorld (in 3): the rest of the program is batched.
-  tests/scenario/MovingAiMapTest.cpp
-  tests/scenario/PhysicalRangesTest.cpp      # and world, also in CarRobotReaderTest.cpp
-  tests/scenario/RealismReaderTest.cpp
-  tests/scenario/RosMapTest.cpp
-  tests/scenario/ScenarioOverridesTest.cpp
-  tests/scenario/ScenarioReaderTest.cpp
-  tests/scenario/SvgPathTest.cpp
-  tests/scenario/WorldTest.cpp
-  tests/sim/StudyWorldsTest.cpp              # Case, also in FastMultiBodySolverTest.cpp
-  tests/sweep/ResultsIntegrityTest.cpp       # row, errorOf: ParameterReportTest.cpp, SetAxesTest.cpp
-  tests/sweep/SweepSpecReaderTest.cpp        # errorOf, also in SetAxesTest.cpp
-  tests/sweep/SweepUserCodeTest.cpp          # sweepThenKill, also in SweepCliTest.cpp
 )
 
 if(PARKSIM_SANITIZE)

@@ -9,7 +9,9 @@
 #include <sstream>
 
 namespace parksim::bench {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace ompl_log_test {
 
 std::vector<std::string> splitLines(const std::string& text) {
   std::vector<std::string> lines;
@@ -109,5 +111,5 @@ TEST(OmplLog, StatusCodesFollowOmplsEnum) {
   EXPECT_EQ(omplStatusCode(record("ompl", "RRT", "t", false, "child killed by signal 9")), 7);
 }
 
-}  // namespace
+}  // namespace ompl_log_test
 }  // namespace parksim::bench

@@ -11,7 +11,9 @@
 #include "tests/support/TestPaths.h"
 
 namespace parksim::bench {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace path_check_test {
 
 Scenario headIn() { return loadScenario(parksim::testing::sourceDir() + "/worlds/head_in.yaml"); }
 
@@ -107,5 +109,5 @@ TEST(PathCheck, CuspsCountReversalsButNotTurningInPlace) {
   EXPECT_EQ(countCusps(line({0.2, 0.2, 0.0}, 0.1, 0.001)), 0);
 }
 
-}  // namespace
+}  // namespace path_check_test
 }  // namespace parksim::bench

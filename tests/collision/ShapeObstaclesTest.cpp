@@ -17,7 +17,9 @@
 #include "tests/support/StudyLot.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace shape_obstacles_test {
 
 using testing::exactSignedDistance;
 
@@ -202,5 +204,5 @@ TEST(ShapeObstacles, ObstaclesBelowTheGroundClearanceAreNotObstacles) {
   EXPECT_EQ(BulletCollisionWorld(s).obstacleCount(), 3u);
 }
 
-}  // namespace
+}  // namespace shape_obstacles_test
 }  // namespace parksim

@@ -27,7 +27,9 @@
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace command_planner_test {
 
 namespace fs = std::filesystem;
 using parksim::testing::sourceDir;
@@ -205,5 +207,5 @@ TEST(CommandPlannerTest, BadParametersAreInputErrorsBeforeAnythingRuns) {
   EXPECT_THROW(runEpisodePipeline(planWith("sh -c true")), Error);
 }
 
-}  // namespace
+}  // namespace command_planner_test
 }  // namespace parksim

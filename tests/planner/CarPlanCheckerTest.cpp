@@ -12,7 +12,9 @@
 #include "tests/support/CarScenes.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace car_plan_checker_test {
 
 using testing::carPlanViolations;
 
@@ -225,5 +227,5 @@ TEST(CarPlanChecker, SceneStartsAndGoalsAreFree) {
   }
 }
 
-}  // namespace
+}  // namespace car_plan_checker_test
 }  // namespace parksim

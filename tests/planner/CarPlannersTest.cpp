@@ -21,7 +21,9 @@
 #include "tests/support/StudyLot.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace car_planners_test {
 
 std::string joined(const std::vector<std::string>& lines) {
   std::string s;
@@ -117,5 +119,5 @@ TEST(CarPlanning, EachDrivesPlannerCostedByTimeRefusesTheOtherDrive) {
   EXPECT_EQ(resolvedPlanSetup(asked, diff).planner, "time-a-star");
 }
 
-}  // namespace
+}  // namespace car_planners_test
 }  // namespace parksim

@@ -18,7 +18,9 @@
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace car_worlds_planning_test {
 
 std::string joined(const std::vector<std::string>& lines) {
   std::string s;
@@ -88,5 +90,5 @@ TEST(CarWorlds, DefaultPlanInTheOpenLotIsWithinOnePointThreeOfTheFreeSpaceBound)
   EXPECT_NEAR(r.free_space_bound_s, bound, 0.05);
 }
 
-}  // namespace
+}  // namespace car_worlds_planning_test
 }  // namespace parksim

@@ -15,7 +15,9 @@
 #include "parksim/planner/base/PlanCheck.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace grip_check_test {
 
 constexpr double kDt = 0.05;
 
@@ -169,5 +171,5 @@ TEST(GripCheck, ACarTurningFasterThanItsGripAllowsIsRefused) {
   }
 }
 
-}  // namespace
+}  // namespace grip_check_test
 }  // namespace parksim

@@ -8,7 +8,9 @@
 #include "parksim/planner/steering/BalkcomMason.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace time_cost_test {
 
 PathPiece piece(const Twist& motion, const RobotDef& robot) {
   return pieceOf(toWheelSpeeds(motion, robot), 1.0);
@@ -53,5 +55,5 @@ TEST(TimeCost, EstimateIsCloseToTheExactTiming) {
   }
 }
 
-}  // namespace
+}  // namespace time_cost_test
 }  // namespace parksim

@@ -20,7 +20,9 @@
 #include "tests/support/LoadedLibraries.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace offscreen_context_test {
 
 // Sets (or unsets) PARKSIM_GL_BACKEND for one test and puts the old value back.
 class BackendEnv {
@@ -270,5 +272,5 @@ TEST(OffscreenContextDeathTest, BackendsLoadTheirLibrariesOnFirstUse) {
   testing::expectNoProblemInAFreshProcess(firstUseProblem);
 }
 
-}  // namespace
+}  // namespace offscreen_context_test
 }  // namespace parksim

@@ -15,7 +15,9 @@
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace trajectory_file_test {
 
 std::string tempPath(const std::string& name) {
   const std::filesystem::path dir = parksim::testing::testOutputDir("results");
@@ -172,5 +174,5 @@ TEST(TrajectoryFile, OnlyRegularFilesAreRead) {
   std::filesystem::remove(path);
 }
 
-}  // namespace
+}  // namespace trajectory_file_test
 }  // namespace parksim

@@ -16,7 +16,9 @@
 #include "tests/support/StudyLot.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace parking_task_test {
 
 // An empty 2 m x 2 m lot whose goal is far from `start` (emptyLot's goal is its start).
 Scenario openLot(const Pose2& start = {0.5, 0.5, 0.0}) {
@@ -251,5 +253,5 @@ TEST(ParkingTask, UnderARealismTheObservationIsTheEstimate) {
   EXPECT_NE(other.last().info.pose, task.last().info.pose);
 }
 
-}  // namespace
+}  // namespace parking_task_test
 }  // namespace parksim

@@ -8,7 +8,9 @@
 #include "tests/support/MapFiles.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace moving_ai_map_test {
 
 std::string errorOf(const std::filesystem::path& path) {
   try {
@@ -94,5 +96,5 @@ TEST(MovingAiMap, AGridBeyondTheLimitsIsRefusedFromItsHeaderAlone) {
                 "20000 a side and 25000000 in all (docs/limits.md)");
 }
 
-}  // namespace
+}  // namespace moving_ai_map_test
 }  // namespace parksim

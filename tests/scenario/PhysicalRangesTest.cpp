@@ -17,7 +17,9 @@
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace physical_ranges_test {
 
 namespace fs = std::filesystem;
 
@@ -223,5 +225,5 @@ TEST(PhysicalRanges, EveryShippedWorldStaysValid) {
   EXPECT_GE(n, 15);
 }
 
-}  // namespace
+}  // namespace physical_ranges_test
 }  // namespace parksim

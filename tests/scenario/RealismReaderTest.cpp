@@ -11,7 +11,9 @@
 #include "parksim/scenario/world/ScenarioReader.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace realism_reader_test {
 
 // Lines 1-5 of every test document.
 constexpr std::string_view kWorld =
@@ -108,5 +110,5 @@ TEST(RealismReader, BadEntriesAreLocated) {
             "t.yaml:6: realism.pose_sensor.dropout_probability: must lie in [0, 1], got 2");
 }
 
-}  // namespace
+}  // namespace realism_reader_test
 }  // namespace parksim

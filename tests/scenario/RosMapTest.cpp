@@ -12,7 +12,9 @@
 #include "tests/support/MapFiles.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace ros_map_test {
 
 namespace fs = std::filesystem;
 using testing::freshDir;
@@ -231,5 +233,5 @@ TEST(RosMap, BadMapsAreRefusedInOneLineNamingTheFile) {
             d + "plain.pgm:4: pixel value 300 is above the maximum value 255");
 }
 
-}  // namespace
+}  // namespace ros_map_test
 }  // namespace parksim

@@ -12,7 +12,9 @@
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace scenario_overrides_test {
 
 const std::string kWorld = parksim::testing::sourceDir() + "/worlds/head_in.yaml";
 
@@ -72,5 +74,5 @@ TEST(ScenarioOverrides, BadValuesGetTheFilesChecksAndNameTheOverride) {
   EXPECT_NE(other.find(": start: "), std::string::npos) << other;
 }
 
-}  // namespace
+}  // namespace scenario_overrides_test
 }  // namespace parksim

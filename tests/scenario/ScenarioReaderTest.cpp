@@ -14,7 +14,9 @@
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace scenario_reader_test {
 
 // Lines 1-3 of most test documents; a 2 m x 2 m lot.
 constexpr std::string_view kHead =
@@ -948,5 +950,5 @@ TEST(ScenarioReader, AnyPolygonWithHolesIsCutIntoConvexPartsExactly) {
             ObstacleShape::kPolygon);
 }
 
-}  // namespace
+}  // namespace scenario_reader_test
 }  // namespace parksim

@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace svg_path_test {
 
 using Ring = std::vector<Eigen::Vector2d>;
 
@@ -99,5 +101,5 @@ TEST(SvgPath, TransformListsComposeLeftToRight) {
   EXPECT_THROW(parseSvgTransform("translate(1"), SvgSyntaxError);
 }
 
-}  // namespace
+}  // namespace svg_path_test
 }  // namespace parksim

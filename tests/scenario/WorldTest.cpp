@@ -13,7 +13,9 @@
 #include "parksim/scenario/world/ScenarioReader.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace world_test {
 
 constexpr std::string_view kWorld =
     "format: parksim-world/1\n"
@@ -113,5 +115,5 @@ TEST(WorldFile, ReadsAsParseWorldWhateverTheOrderOfReads) {
   EXPECT_EQ(file.read().scenario.robot.wheel_radius_m, 0.02);
 }
 
-}  // namespace
+}  // namespace world_test
 }  // namespace parksim

@@ -21,7 +21,9 @@
 #include "tests/support/TestPaths.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace study_worlds_test {
 
 struct Case {
   const char* world;
@@ -140,5 +142,5 @@ INSTANTIATE_TEST_SUITE_P(Sim, StudyWorlds,
 // (a multi-reversal Hybrid A* manoeuvre), parks without contact and within the tolerance.
 INSTANTIATE_TEST_SUITE_P(Hard, StudyWorlds, ::testing::Values(Case{"tight_parallel", 1}), caseName);
 
-}  // namespace
+}  // namespace study_worlds_test
 }  // namespace parksim

@@ -19,7 +19,9 @@
 #include "tests/sweep/SweepTestSupport.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace results_integrity_test {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
@@ -283,5 +285,5 @@ TEST(ResultsIntegrity, UnsealedRowsAreRefusedAsNotParksims) {
                 "or earlier)");
 }
 
-}  // namespace
+}  // namespace results_integrity_test
 }  // namespace parksim

@@ -8,7 +8,9 @@
 #include "tests/sweep/SweepTestSupport.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace sweep_spec_reader_test {
 
 using ::testing::HasSubstr;
 using testing::studySpec;
@@ -160,5 +162,5 @@ TEST(SweepSpecReader, WorldsResolveAgainstTheSpecFolderAndGlobsExpandSorted) {
             g.world_files.end());
 }
 
-}  // namespace
+}  // namespace sweep_spec_reader_test
 }  // namespace parksim

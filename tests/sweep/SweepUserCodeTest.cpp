@@ -24,7 +24,9 @@
 #include "tests/sweep/SweepTestSupport.h"
 
 namespace parksim {
-namespace {
+// Named, not anonymous: its program is compiled as one unity batch, where another file's
+// helpers of the same names would meet these.
+namespace sweep_user_code_test {
 
 namespace fs = std::filesystem;
 using testing::runParksim;
@@ -295,5 +297,5 @@ TEST(SweepUserCode, ConstructorsThatCrashOrHangAreRefusedAtTheirLine) {
   }
 }
 
-}  // namespace
+}  // namespace sweep_user_code_test
 }  // namespace parksim
