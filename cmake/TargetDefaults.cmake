@@ -29,15 +29,18 @@ set(PARKSIM_UNITY_BATCH_SIZE 6 CACHE STRING
     "Sources per unity batch: larger builds faster cold, smaller rebuilds less after an edit")
 set(PARKSIM_TEST_UNITY_BATCH_SIZE 8 CACHE STRING
     "Test sources per unity batch (test programs; docs/building.md)")
-# The test programs' own optimisation flag, added after the build type's (the last -O wins), and
-# to the test precompiled header's: empty keeps the build type's. The sanitizer pass of
-# scripts/test.sh compiles the test programs and the test plugins at -O0, the libraries they
-# test staying at -O1: a test file's compile time is mostly GoogleTest's, nlohmann/json's and
-# Eigen's templates being optimised (render_tests: 27 CPU s at -O1, 10 at -O0). Programs whose
-# tests compute in their own code are marked OPTIMIZED (tests/CMakeLists.txt) and keep the
-# build type's: at -O0 they ran 2 to 8 times slower (docs/building.md, "CI in 10 minutes").
-set(PARKSIM_TEST_OPTIMIZATION "" CACHE STRING
-    "Optimisation flag of the test programs, e.g. -O0 (empty: the build type's)")
+# The optimisation of cold code: the test programs (but those marked OPTIMIZED in
+# tests/CMakeLists.txt), the test plugins, and the libraries and program marked COLD
+# (parksim_target_defaults below: the command line, result files, pages, reports, sweeps, user
+# code's loading; code that runs once per episode or per file, not per step or per query). The
+# flag comes after the build type's (the last -O wins) and goes into the precompiled headers
+# these targets share; empty keeps the build type's. The sanitizer pass of scripts/test.sh sets
+# -O0, the rest staying at -O1: their compile time is mostly templates (GoogleTest's,
+# nlohmann/json's, CLI11's, Eigen's) being optimised (render_tests: 27 CPU s at -O1, 10 at -O0).
+# Test programs whose tests compute in their own code are OPTIMIZED: at -O0 they ran 2 to 8
+# times slower (docs/building.md, "CI in 10 minutes").
+set(PARKSIM_COLD_OPTIMIZATION "" CACHE STRING
+    "Optimisation flag of cold code (test programs, targets marked COLD), e.g. -O0 (empty: the build type's)")
 # Sources compiled on their own in a unity build (paths relative to the top folder), each with the
 # reason: mostly a name it shares with another file of its target.
 set(PARKSIM_UNITY_SKIP
@@ -93,15 +96,20 @@ function(parksim_define_pch_hosts)
   endif()
   _parksim_pch_host(parksim_pch_lib lib Eigen3::Eigen nlohmann_json::nlohmann_json yaml-cpp)
   target_precompile_headers(parksim_pch_lib PRIVATE ${PARKSIM_PCH_COMMON})
+  if(PARKSIM_COLD_OPTIMIZATION)
+    _parksim_pch_host(parksim_pch_lib_cold lib Eigen3::Eigen nlohmann_json::nlohmann_json yaml-cpp)
+    target_precompile_headers(parksim_pch_lib_cold PRIVATE ${PARKSIM_PCH_COMMON})
+    target_compile_options(parksim_pch_lib_cold PRIVATE ${PARKSIM_COLD_OPTIMIZATION})
+  endif()
   if(TARGET GTest::gtest_main)
     _parksim_pch_host(parksim_pch_test exe Eigen3::Eigen nlohmann_json::nlohmann_json yaml-cpp
                       GTest::gtest_main GTest::gmock)
     target_precompile_headers(parksim_pch_test PRIVATE
       ${PARKSIM_PCH_COMMON} <gtest/gtest.h> <gmock/gmock.h>)
     # A precompiled header is used only with the optimisation it was made with: the test
-    # programs' (PARKSIM_TEST_OPTIMIZATION), and the build type's for those marked OPTIMIZED.
-    target_compile_options(parksim_pch_test PRIVATE ${PARKSIM_TEST_OPTIMIZATION})
-    if(PARKSIM_TEST_OPTIMIZATION)
+    # programs' (PARKSIM_COLD_OPTIMIZATION), and the build type's for those marked OPTIMIZED.
+    target_compile_options(parksim_pch_test PRIVATE ${PARKSIM_COLD_OPTIMIZATION})
+    if(PARKSIM_COLD_OPTIMIZATION)
       _parksim_pch_host(parksim_pch_test_optimized exe Eigen3::Eigen nlohmann_json::nlohmann_json
                         yaml-cpp GTest::gtest_main GTest::gmock)
       target_precompile_headers(parksim_pch_test_optimized PRIVATE
@@ -133,6 +141,9 @@ function(_parksim_apply_pch target)
   elseif("CLI11::CLI11" IN_LIST libs)
     # The command line: CLI11 is header-only and its headers take ~8 s to parse per file.
     target_precompile_headers(${target} PRIVATE ${PARKSIM_PCH_COMMON} <CLI/CLI.hpp>)
+  elseif(type MATCHES "^(STATIC|SHARED|OBJECT)_LIBRARY$" AND kind STREQUAL "cold"
+         AND TARGET parksim_pch_lib_cold)
+    target_precompile_headers(${target} REUSE_FROM parksim_pch_lib_cold)
   elseif(type MATCHES "^(STATIC|SHARED|OBJECT)_LIBRARY$")
     target_precompile_headers(${target} REUSE_FROM parksim_pch_lib)
   endif()
@@ -140,6 +151,12 @@ function(_parksim_apply_pch target)
 endfunction()
 
 function(parksim_target_defaults target)
+  # COLD: compiled at PARKSIM_COLD_OPTIMIZATION (above).
+  cmake_parse_arguments(ARG "COLD" "" "" ${ARGN})
+  if(ARG_COLD)
+    set_target_properties(${target} PROPERTIES PARKSIM_PCH_KIND cold)
+    target_compile_options(${target} PRIVATE ${PARKSIM_COLD_OPTIMIZATION})
+  endif()
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow)
   if(PARKSIM_WERROR)
     target_compile_options(${target} PRIVATE -Werror)

@@ -86,13 +86,14 @@ if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   # Larger unity batches than a build for editing (docs/building.md, "CI in 10 minutes"): this
   # pass compiles everything once. Libraries in batches of 16 (not 6): 230 instead of 280 CPU s;
   # each test program's files in one batch (PARKSIM_TEST_UNITY_BATCH_SIZE=0): the four
-  # programs with more than 8 files in 55 instead of 81 CPU s. Test programs at -O0 but those
-  # marked OPTIMIZED (PARKSIM_TEST_OPTIMIZATION, cmake/TargetDefaults.cmake).
+  # programs with more than 8 files in 55 instead of 81 CPU s. Cold code at -O0: the test
+  # programs but those marked OPTIMIZED, and the targets marked COLD (the command line, result
+  # files, pages, reports, sweeps): PARKSIM_COLD_OPTIMIZATION, cmake/TargetDefaults.cmake.
   PARKSIM_CCACHE=$ccache scripts/build.sh build-sanitize -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPARKSIM_SANITIZE=ON -DPARKSIM_BUILD_BENCH=OFF \
     -DPARKSIM_PYTHON=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
     -DPARKSIM_UNITY_BATCH_SIZE=16 -DPARKSIM_TEST_UNITY_BATCH_SIZE=0 \
-    -DPARKSIM_TEST_OPTIMIZATION=-O0 --target parksim_tests
+    -DPARKSIM_COLD_OPTIMIZATION=-O0 --target parksim_tests
   # The longest tests first, in a fresh clone too: ctest starts tests by the durations it
   # recorded (Testing/Temporary/CTestCostData.txt), and without a record in test-number order, so
   # a 20-second test could start last and run alone at the end. tests/sanitizer_costs.txt seeds
