@@ -94,26 +94,28 @@ function(parksim_define_pch_hosts)
   if(NOT PARKSIM_PCH)
     return()
   endif()
-  _parksim_pch_host(parksim_pch_lib lib Eigen3::Eigen nlohmann_json::nlohmann_json yaml-cpp)
-  target_precompile_headers(parksim_pch_lib PRIVATE ${PARKSIM_PCH_COMMON})
+  # A precompiled header is used only with the optimisation it was made with: where
+  # PARKSIM_COLD_OPTIMIZATION is set, cold targets share one made at it (parksim_pch_lib_cold,
+  # and parksim_pch_test for the test programs), the others one at the build type's
+  # (parksim_pch_lib, parksim_pch_test_optimized for test programs marked OPTIMIZED).
+  set(lib_deps Eigen3::Eigen nlohmann_json::nlohmann_json yaml-cpp)
+  set(lib_headers ${PARKSIM_PCH_COMMON})
+  _parksim_pch_host(parksim_pch_lib lib ${lib_deps})
+  target_precompile_headers(parksim_pch_lib PRIVATE ${lib_headers})
   if(PARKSIM_COLD_OPTIMIZATION)
-    _parksim_pch_host(parksim_pch_lib_cold lib Eigen3::Eigen nlohmann_json::nlohmann_json yaml-cpp)
-    target_precompile_headers(parksim_pch_lib_cold PRIVATE ${PARKSIM_PCH_COMMON})
+    _parksim_pch_host(parksim_pch_lib_cold lib ${lib_deps})
+    target_precompile_headers(parksim_pch_lib_cold PRIVATE ${lib_headers})
     target_compile_options(parksim_pch_lib_cold PRIVATE ${PARKSIM_COLD_OPTIMIZATION})
   endif()
   if(TARGET GTest::gtest_main)
-    _parksim_pch_host(parksim_pch_test exe Eigen3::Eigen nlohmann_json::nlohmann_json yaml-cpp
-                      GTest::gtest_main GTest::gmock)
-    target_precompile_headers(parksim_pch_test PRIVATE
-      ${PARKSIM_PCH_COMMON} <gtest/gtest.h> <gmock/gmock.h>)
-    # A precompiled header is used only with the optimisation it was made with: the test
-    # programs' (PARKSIM_COLD_OPTIMIZATION), and the build type's for those marked OPTIMIZED.
+    set(test_deps ${lib_deps} GTest::gtest_main GTest::gmock)
+    set(test_headers ${PARKSIM_PCH_COMMON} <gtest/gtest.h> <gmock/gmock.h>)
+    _parksim_pch_host(parksim_pch_test exe ${test_deps})
+    target_precompile_headers(parksim_pch_test PRIVATE ${test_headers})
     target_compile_options(parksim_pch_test PRIVATE ${PARKSIM_COLD_OPTIMIZATION})
     if(PARKSIM_COLD_OPTIMIZATION)
-      _parksim_pch_host(parksim_pch_test_optimized exe Eigen3::Eigen nlohmann_json::nlohmann_json
-                        yaml-cpp GTest::gtest_main GTest::gmock)
-      target_precompile_headers(parksim_pch_test_optimized PRIVATE
-        ${PARKSIM_PCH_COMMON} <gtest/gtest.h> <gmock/gmock.h>)
+      _parksim_pch_host(parksim_pch_test_optimized exe ${test_deps})
+      target_precompile_headers(parksim_pch_test_optimized PRIVATE ${test_headers})
     endif()
   endif()
 endfunction()

@@ -18,9 +18,7 @@
 #include "tests/support/StudyLot.h"
 
 namespace parksim {
-// Named, not anonymous: its program is compiled as one unity batch, where another file's
-// helpers of the same names would meet these.
-namespace shape_obstacles_test {
+namespace {
 
 using testing::exactSignedDistance;
 
@@ -205,5 +203,5 @@ TEST(ShapeObstacles, ObstaclesBelowTheGroundClearanceAreNotObstacles) {
   EXPECT_EQ(BulletCollisionWorld(s).obstacleCount(), 3u);
 }
 
-}  // namespace shape_obstacles_test
+}  // namespace
 }  // namespace parksim
