@@ -41,6 +41,8 @@ set(PARKSIM_TEST_UNITY_BATCH_SIZE 8 CACHE STRING
 # times slower (docs/building.md, "CI in 10 minutes").
 set(PARKSIM_COLD_OPTIMIZATION "" CACHE STRING
     "Optimisation flag of cold code (test programs, targets marked COLD), e.g. -O0 (empty: the build type's)")
+# One or more flags ("-O0 -g0" too): the cache string as a list, for every use below.
+separate_arguments(PARKSIM_COLD_OPTIMIZATION UNIX_COMMAND "${PARKSIM_COLD_OPTIMIZATION}")
 # Sources compiled on their own in a unity build (paths relative to the top folder), each with the
 # reason: mostly a name it shares with another file of its target.
 set(PARKSIM_UNITY_SKIP
