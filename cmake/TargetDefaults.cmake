@@ -66,9 +66,27 @@ set(PARKSIM_UNITY_SKIP
   parksim/core/system/Provenance.cpp
 )
 
+# The linker: lld where it is installed (scripts/install-deps.sh installs it), else the
+# compiler's default (GNU ld). The sanitizer build's 27 largest programs linked in 18 CPU s with
+# lld against 46 with GNU ld (docs/building.md, "Shards, lld, huge pages"); a program's
+# computations, and so its outputs, do not depend on the linker.
+option(PARKSIM_LLD "Link with lld where it is installed (faster links)" ON)
+if(PARKSIM_LLD)
+  include(CheckLinkerFlag)
+  check_linker_flag(CXX -fuse-ld=lld PARKSIM_HAVE_LLD)
+  if(PARKSIM_HAVE_LLD)
+    add_link_options(-fuse-ld=lld)
+  endif()
+endif()
+
 if(PARKSIM_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
   add_link_options(-fsanitize=address,undefined)
+  # Programs linked at fixed addresses (-no-pie): the sanitized `parksim` as a position-
+  # independent executable carries 485,000 relative relocations, which the dynamic loader
+  # applies, faulting in their pages, each time it starts (hundreds of times in the CLI tests):
+  # 0.134 -> 0.112 CPU s a start (docs/building.md, "Shards, lld, huge pages").
+  add_link_options($<$<STREQUAL:$<TARGET_PROPERTY:TYPE>,EXECUTABLE>:-no-pie>)
 endif()
 
 # The headers every precompiled header starts with: the standard headers parksim includes most,

@@ -26,6 +26,8 @@ demo_packages=(
   libegl-dev libgl1-mesa-dri libfontconfig-dev fonts-dejavu-core ffmpeg
   # scripts/build.sh compiles with clang unless CXX names a compiler (half of GCC's time).
   clang
+  # Links with lld where it is installed (cmake/TargetDefaults.cmake): about 2.5x faster.
+  lld
 )
 
 # Only the tests, benchmarks and the Python module (scripts/test.sh).
