@@ -63,6 +63,10 @@ if [ ! -f "$build_dir/CMakeCache.txt" ]; then
 elif [ ${#cmake_args[@]} -gt 0 ]; then
   cmake -S . -B "$build_dir" "${cmake_args[@]}" >/dev/null
 fi
+# The compilers' memory on transparent huge pages, where the kernel gives them on request
+# (madvise mode, as on Debian): a cold build's compiles take 8-14 % less CPU time, fewer page
+# faults and TLB misses (docs/building.md, "Shards, lld, huge pages"). Harmless elsewhere.
+export GLIBC_TUNABLES=${GLIBC_TUNABLES:+$GLIBC_TUNABLES:}glibc.malloc.hugetlb=1
 build=(cmake --build "$build_dir" --parallel "$(nproc)")
 [ ${#targets[@]} -gt 0 ] && build+=(--target "${targets[@]}")
 "${build[@]}"
