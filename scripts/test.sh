@@ -89,11 +89,17 @@ if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   # programs with more than 8 files in 55 instead of 81 CPU s. Cold code at -O0: the test
   # programs but those marked OPTIMIZED, and the targets marked COLD (the command line, result
   # files, pages, reports, sweeps): PARKSIM_COLD_OPTIMIZATION, cmake/TargetDefaults.cmake.
+  # Without line tables (-g0: 10 % less compile time): a sanitizer report names the functions
+  # of cold code, not their lines; GoogleTest's messages keep theirs (__FILE__, __LINE__).
+  # Each test program runs as 4 shards (GoogleTest's sharding, PARKSIM_TEST_SHARDS in
+  # tests/CMakeLists.txt), not a process per test: a sanitized process costs about 0.1 CPU s to
+  # start and check for leaks, more than most tests; the tests took 430 + 141 CPU s so, against
+  # 571 + 246 one per process (docs/building.md, "Shards, lld, huge pages").
   PARKSIM_CCACHE=$ccache scripts/build.sh build-sanitize -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPARKSIM_SANITIZE=ON -DPARKSIM_BUILD_BENCH=OFF \
     -DPARKSIM_PYTHON=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
     -DPARKSIM_UNITY_BATCH_SIZE=16 -DPARKSIM_TEST_UNITY_BATCH_SIZE=0 \
-    -DPARKSIM_COLD_OPTIMIZATION=-O0 --target parksim_tests
+    "-DPARKSIM_COLD_OPTIMIZATION=-O0 -g0" -DPARKSIM_TEST_SHARDS=4 --target parksim_tests
   # The longest tests first, in a fresh clone too: ctest starts tests by the durations it
   # recorded (Testing/Temporary/CTestCostData.txt), and without a record in test-number order, so
   # a 20-second test could start last and run alone at the end. tests/sanitizer_costs.txt seeds
