@@ -126,12 +126,16 @@ for name in "${!group[@]}"; do echo "$(wc -w <<<"${group[$name]}") $name"; done 
   cut -d' ' -f2 |
   FLAGS="$flags_line" xargs -P "$(nproc)" -I{} bash -c 'eval "flags=($FLAGS)"; compile "$1"' _ {}
 
+# lld where it is installed, as the CMake builds (cmake/TargetDefaults.cmake).
+linker=()
+command -v ld.lld >/dev/null && linker=(-fuse-ld=lld)
 link() {  # link READER: its harness and groups, into build-fuzz/fuzz_READER
   local reader=$1 objs=("$out/obj/fuzz_$1.o") name
   for name in ${groups[$reader]}; do objs+=("$out/obj/$name.o"); done
   local libs_var="libs_$reader[@]"
   echo "== linking $out/fuzz_$reader"
-  "$cxx" "${flags[@]}" "${objs[@]}" -Wl,--gc-sections "${!libs_var}" -o "$out/fuzz_$reader"
+  "$cxx" "${flags[@]}" "${objs[@]}" "${linker[@]}" -Wl,--gc-sections "${!libs_var}" \
+    -o "$out/fuzz_$reader"
 }
 for reader in "${readers[@]}"; do
   link "$reader"
