@@ -103,7 +103,7 @@ if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   # The longest tests first, in a fresh clone too: ctest starts tests by the durations it
   # recorded (Testing/Temporary/CTestCostData.txt), and without a record in test-number order, so
   # a 20-second test could start last and run alone at the end. tests/sanitizer_costs.txt seeds
-  # the record with the tests that took 3 s or more (docs/building.md says how to renew it).
+  # the record with the shards that took 3 s or more (docs/building.md says how to renew it).
   costs=build-sanitize/Testing/Temporary/CTestCostData.txt
   if [ ! -f "$costs" ]; then
     mkdir -p "$(dirname "$costs")"
