@@ -4,8 +4,11 @@
 #
 #   scripts/install-deps.sh demo   what `scripts/demo.sh` builds and runs: the compiler, the
 #                                  libraries the parksim program links, ffmpeg for the video
-#   scripts/install-deps.sh test   (the default) the above, and what the tests, benchmarks, the
-#                                  Python module, fuzzing and the Slurm test use
+#   scripts/install-deps.sh build  the above, and what the tests, the benchmarks, the Python
+#                                  module and the fuzzers are compiled against
+#   scripts/install-deps.sh test   (the default) the above, and what only running the tests
+#                                  needs (a browser, Slurm, pytest, pandas, Jupyter, a locale):
+#                                  scripts/test.sh installs these behind its first build
 # Both then fetch the pinned npm libraries the HTML reports draw with (parksim/pages/web:
 # package.json and package-lock.json) with `npm ci` into parksim/pages/web/node_modules/ (not
 # in the repository); the build embeds their files (docs/pages.md).
@@ -30,30 +33,39 @@ demo_packages=(
   lld
 )
 
-# Only the tests, benchmarks and the Python module (scripts/test.sh).
-test_packages=(
+# What the tests, the benchmarks, the Python module and the fuzzers compile against
+# (scripts/test.sh).
+build_packages=(
   # OSMesa: the tests compare its images with EGL's, byte for byte.
   libosmesa6-dev
-  libgtest-dev libgmock-dev libbenchmark-dev locales
+  libgtest-dev libgmock-dev libbenchmark-dev
   # bench/bench_render's BM_PngLibrary: the PNG libraries measured beside parksim's encoder.
   libspng-dev
-  # The sweep's Slurm path, tested on a one-node cluster (scripts/slurm-local.sh); procps:
-  # pkill, which stops a task mid-shard in tests/sweep/slurm_missing_test.sh.
-  slurm-wlm munge procps
-  pybind11-dev python3 python3-dev python3-numpy python3-pytest python3-yaml python3-pandas
-  # Gymnasium's dependencies: the Python tests run against Gymnasium 1.3.0's source in
-  # ../shared/third_party (PARKSIM_THIRD_PARTY; tests/python/conftest.py), not packaged here.
-  python3-cloudpickle python3-typing-extensions
-  jupyter-nbconvert python3-nbformat python3-ipykernel
-  # JUnit reports (`--junit`) read by a real consumer and checked with xmllint.
-  python3-junitparser libxml2-utils
-  # scripts/fuzz.sh: clang's libFuzzer runtime comes with libclang-rt-14-dev (Debian 12's clang).
+  pybind11-dev python3 python3-dev
+  # The sanitizers' runtimes, and clang's libFuzzer runtime (scripts/fuzz.sh), come with
+  # libclang-rt-14-dev (Debian 12's clang).
   libclang-rt-14-dev
   # bench/bench_mujoco: MuJoCo side by side with parksim (optional at configure time).
   libmujoco-dev
   # scripts/build.sh compiles through it where it is installed: a second build of the same
   # sources on one machine (a test.sh run again, another clone) costs seconds (CI does without).
   ccache
+)
+
+# What only running the tests needs (scripts/test.sh installs these while its first build
+# compiles: nothing is compiled against them, and configuring looks for none of them).
+test_packages=(
+  locales
+  # The sweep's Slurm path, tested on a one-node cluster (scripts/slurm-local.sh); procps:
+  # pkill, which stops a task mid-shard in tests/sweep/slurm_missing_test.sh.
+  slurm-wlm munge procps
+  python3-numpy python3-pytest python3-yaml python3-pandas
+  # Gymnasium's dependencies: the Python tests run against Gymnasium 1.3.0's source in
+  # ../shared/third_party (PARKSIM_THIRD_PARTY; tests/python/conftest.py), not packaged here.
+  python3-cloudpickle python3-typing-extensions
+  jupyter-nbconvert python3-nbformat python3-ipykernel
+  # JUnit reports (`--junit`) read by a real consumer and checked with xmllint.
+  python3-junitparser libxml2-utils
   # The HTML reports opened from file:// in a real browser (tests/pages/test_pages.py and
   # test_hostile_names.py, which also reads world files with python3-yaml).
   chromium chromium-driver python3-selenium
@@ -61,8 +73,9 @@ test_packages=(
 
 case "$set_name" in
   demo) packages=("${demo_packages[@]}") ;;
-  test) packages=("${demo_packages[@]}" "${test_packages[@]}") ;;
-  *) echo "usage: scripts/install-deps.sh [demo|test]" >&2; exit 2 ;;
+  build) packages=("${demo_packages[@]}" "${build_packages[@]}") ;;
+  test) packages=("${demo_packages[@]}" "${build_packages[@]}" "${test_packages[@]}") ;;
+  *) echo "usage: scripts/install-deps.sh [demo|build|test]" >&2; exit 2 ;;
 esac
 
 # The locale tests run parksim inside a decimal-comma locale (tests/app/LocaleRoundTripTest.cpp).
