@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what is missing (scripts/install-deps.sh test), then runs three passes:
+# Installs what is missing (scripts/install-deps.sh build, then test while the first build
+# compiles), then runs three passes:
 #   1. sanitizers: every GoogleTest program and the parksim program built with clang,
 #      AddressSanitizer (LeakSanitizer on, its suppressions in tests/lsan.supp) and
 #      UndefinedBehaviorSanitizer, against the static libraries; all their tests;
@@ -26,7 +27,9 @@
 # Timings and what each pass costs: docs/building.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh test
+# What the builds compile against first; what only the tests need (a browser, Slurm, pytest,
+# pandas, Jupyter, a locale) below, while the first build compiles.
+scripts/install-deps.sh build
 jobs=$(nproc)
 # A test that hangs fails after this long instead of holding CI until its limit (tests with a
 # TIMEOUT property of their own keep it). The slowest test takes about 60 s under the sanitizers.
@@ -56,7 +59,7 @@ behind() {  # behind NAME NICENESS COMMAND...: start COMMAND in the background
   local name=$1 niceness=$2
   shift 2
   set -m
-  nice -n "$niceness" "$@" > "$logs/$name.log" 2>&1 &
+  nice -n "$niceness" "$@" < /dev/null > "$logs/$name.log" 2>&1 &
   set +m
   behind_pids+=($!)
   eval "behind_$name=$!"
@@ -72,6 +75,10 @@ export -f front_ends_build
 export ccache
 
 if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
+  # The tests' own packages, installed while the sanitizer build compiles: on a fresh Debian 12
+  # they take 84 s to fetch and install (176 MB, mostly one core: dpkg, Python's byte-compiling),
+  # before anything could compile (docs/building.md). Joined before the first test.
+  behind deps 0 scripts/install-deps.sh test
   # In build/, where the documentation's commands find them. The libraries compile alike
   # static and shared (cmake/TargetDefaults.cmake), so after scripts/demo.sh this pass only
   # links them again; one pass builds the libraries in Release, where a static and a shared
@@ -104,6 +111,7 @@ if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   # recorded (Testing/Temporary/CTestCostData.txt), and without a record in test-number order, so
   # a 20-second test could start last and run alone at the end. tests/sanitizer_costs.txt seeds
   # the record with the shards that took 3 s or more (docs/building.md says how to renew it).
+  join deps
   costs=build-sanitize/Testing/Temporary/CTestCostData.txt
   if [ ! -f "$costs" ]; then
     mkdir -p "$(dirname "$costs")"
@@ -131,6 +139,7 @@ if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   front_ends_tests build '^(front_end|release)'
   join fuzz
 else
+  scripts/install-deps.sh test
   echo "== Release build (static libraries): everything and every test"
   PARKSIM_CCACHE=$ccache scripts/build.sh build -DPARKSIM_SHARED=OFF -DPARKSIM_BUILD_TESTS=ON \
     -DPARKSIM_BUILD_BENCH=ON -DPARKSIM_PYTHON=ON
