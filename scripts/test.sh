@@ -76,8 +76,9 @@ export ccache
 
 if [ "${PARKSIM_SKIP_SANITIZERS:-0}" != 1 ]; then
   # The tests' own packages, installed while the sanitizer build compiles: on a fresh Debian 12
-  # they take 84 s to fetch and install (176 MB, mostly one core: dpkg, Python's byte-compiling),
-  # before anything could compile (docs/building.md). Joined before the first test.
+  # they took 72 s to fetch and install (176 MB; one core: dpkg, Python's byte-compiling), in
+  # which nothing compiled (docs/building.md, "Packages behind the build"). Joined before the
+  # first test.
   behind deps 0 scripts/install-deps.sh test
   # In build/, where the documentation's commands find them. The libraries compile alike
   # static and shared (cmake/TargetDefaults.cmake), so after scripts/demo.sh this pass only
