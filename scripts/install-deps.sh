@@ -4,12 +4,13 @@
 #
 #   scripts/install-deps.sh demo   what `scripts/demo.sh` builds and runs: the compiler, the
 #                                  libraries the parksim program links, ffmpeg for the video
-#   scripts/install-deps.sh build  the above, and what the tests, the benchmarks, the Python
-#                                  module and the fuzzers are compiled against
+#   scripts/install-deps.sh build  what everything is compiled against: the demo's libraries
+#                                  (not what only runs it: Mesa's drivers, ffmpeg, the font),
+#                                  and the tests', benchmarks', Python module's and fuzzers'
 #   scripts/install-deps.sh test   (the default) the above, and what only running the tests
 #                                  needs (a browser, Slurm, pytest, pandas, Jupyter, a locale):
 #                                  scripts/test.sh installs these behind its first build
-# Both then fetch the pinned npm libraries the HTML reports draw with (parksim/pages/web:
+# Each then fetches the pinned npm libraries the HTML reports draw with (parksim/pages/web:
 # package.json and package-lock.json) with `npm ci` into parksim/pages/web/node_modules/ (not
 # in the repository); the build embeds their files (docs/pages.md).
 set -euo pipefail
@@ -17,7 +18,7 @@ cd "$(dirname "$0")/.."
 
 set_name=${1:-test}
 
-# The parksim program and the libraries it links (scripts/demo.sh).
+# The parksim program and the libraries it links (scripts/demo.sh): what it is compiled against,
 demo_packages=(
   build-essential cmake pkg-config ninja-build
   libbullet-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
@@ -26,12 +27,14 @@ demo_packages=(
   libdeflate-dev
   # SVG maps in world files (`map:`) are parsed by libxml2.
   libxml2-dev
-  libegl-dev libgl1-mesa-dri libfontconfig-dev fonts-dejavu-core ffmpeg
+  libegl-dev libfontconfig-dev
   # scripts/build.sh compiles with clang unless CXX names a compiler (half of GCC's time).
   clang
   # Links with lld where it is installed (cmake/TargetDefaults.cmake): about 2.5x faster.
   lld
 )
+# and what it needs to run: Mesa's drivers behind EGL (llvmpipe), a font, ffmpeg for the video.
+demo_run_packages=(libgl1-mesa-dri fonts-dejavu-core ffmpeg)
 
 # What the tests, the benchmarks, the Python module and the fuzzers compile against
 # (scripts/test.sh).
@@ -52,8 +55,9 @@ build_packages=(
   ccache
 )
 
-# What only running the tests needs (scripts/test.sh installs these while its first build
-# compiles: nothing is compiled against them, and configuring looks for none of them).
+# What only running the tests needs (scripts/test.sh installs these, with demo_run_packages,
+# while its first build compiles: nothing is compiled against them, and configuring looks for
+# none of them).
 test_packages=(
   locales
   # The sweep's Slurm path, tested on a one-node cluster (scripts/slurm-local.sh); procps:
@@ -72,9 +76,10 @@ test_packages=(
 )
 
 case "$set_name" in
-  demo) packages=("${demo_packages[@]}") ;;
+  demo) packages=("${demo_packages[@]}" "${demo_run_packages[@]}") ;;
   build) packages=("${demo_packages[@]}" "${build_packages[@]}") ;;
-  test) packages=("${demo_packages[@]}" "${build_packages[@]}" "${test_packages[@]}") ;;
+  test) packages=("${demo_packages[@]}" "${demo_run_packages[@]}" "${build_packages[@]}"
+                  "${test_packages[@]}") ;;
   *) echo "usage: scripts/install-deps.sh [demo|build|test]" >&2; exit 2 ;;
 esac
 
