@@ -21,6 +21,10 @@ set_name=${1:-test}
 # The parksim program and the libraries it links (scripts/demo.sh): what it is compiled against,
 demo_packages=(
   build-essential cmake pkg-config ninja-build
+  # The build records the commit it was built from (cmake/GitCommit.cmake; `parksim --version`,
+  # plan.json); without git it records "unknown", and Cli.EveryCommandPrintsTheVersionAndBuild
+  # fails (seen in a fresh Debian 12 with the source copied in).
+  git
   libbullet-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libnanoflann-dev libstb-dev zlib1g-dev libompl-dev
   # The PNG frames' Adler-32 (libdeflate's, 4x parksim's former SSE2 loop: docs/rendering.md).
