@@ -14,34 +14,19 @@
 #include "parksim/planner/base/PlanScenario.h"
 #include "tests/support/PlanChecks.h"
 #include "tests/support/StudyLot.h"
+#include "tests/support/TreePlannerSetup.h"
 
 namespace parksim {
 namespace tree_planner_study_lot {
 namespace {
 
+using testing::expectTreeRecorded;
 using testing::expectValidPlan;
 using testing::SatChecker;
+using testing::treeSetupFor;
 
-// RRT* is anytime and spends its whole budget, so it gets fewer iterations and seeds; the others
-// stop at their first solution.
-int iterationBudget(std::string kind) { return kind == "rrt-star" ? 150 : 2000; }
-int seedCount(std::string kind) { return kind == "rrt-star" ? 8 : 20; }
-
-PlanSetup setupFor(std::string kind, SteeringKind steering, std::uint64_t seed) {
-  PlanSetup setup;
-  setup.planner = kind;
-  setup.search.max_iterations = iterationBudget(kind);
-  setup.search.seed = seed;
-  setup.search.smooth = false;  // the tree planner alone (PathSmootherTest.cpp: smoothing)
-  setup.steering_kind = steering;
-  return setup;
-}
-
-// Every tree edge is recorded: start-tree nodes but the start, goal-tree nodes but the roots.
-void expectTreeRecorded(const PlanResult& r, int goal_roots) {
-  EXPECT_EQ(static_cast<int>(r.tree_edges.size()),
-            r.stats.tree_size - 1 + r.stats.goal_tree_size - goal_roots);
-}
+// RRT* spends its whole budget (testing::treeIterationBudget), so it gets fewer seeds.
+int seedCount(const std::string& kind) { return kind == "rrt-star" ? 8 : 20; }
 
 struct Case {
   std::string kind;
@@ -81,7 +66,7 @@ TEST_P(TreePlannerOnStudyLot, SolvesOverSeedsWithValidPlans) {
   const int seeds = seedCount(c.kind);
   int solved = 0;
   for (int seed = 1; seed <= seeds; ++seed) {
-    const PlanSetup setup = setupFor(c.kind, c.steering, seed);
+    const PlanSetup setup = treeSetupFor(c.kind, c.steering, seed);
     const PlanResult r = planScenario(s, checker, setup);
     if (!r.solved()) continue;
     ++solved;

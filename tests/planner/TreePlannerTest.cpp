@@ -8,32 +8,15 @@
 #include "parksim/planner/base/PlanScenario.h"
 #include "tests/support/PlanChecks.h"
 #include "tests/support/StudyLot.h"
+#include "tests/support/TreePlannerSetup.h"
 
 namespace parksim {
 namespace {
 
+using testing::expectTreeRecorded;
 using testing::expectValidPlan;
 using testing::SatChecker;
-
-// RRT* is anytime and spends its whole budget, so it gets fewer iterations; the others stop at
-// their first solution. (The same budgets as TreePlannerStudyLotTest.cpp's.)
-int iterationBudget(std::string kind) { return kind == "rrt-star" ? 150 : 2000; }
-
-PlanSetup setupFor(std::string kind, SteeringKind steering, std::uint64_t seed) {
-  PlanSetup setup;
-  setup.planner = kind;
-  setup.search.max_iterations = iterationBudget(kind);
-  setup.search.seed = seed;
-  setup.search.smooth = false;  // the tree planner alone (PathSmootherTest.cpp: smoothing)
-  setup.steering_kind = steering;
-  return setup;
-}
-
-// Every tree edge is recorded: start-tree nodes but the start, goal-tree nodes but the roots.
-void expectTreeRecorded(const PlanResult& r, int goal_roots) {
-  EXPECT_EQ(static_cast<int>(r.tree_edges.size()),
-            r.stats.tree_size - 1 + r.stats.goal_tree_size - goal_roots);
-}
+using testing::treeSetupFor;
 
 // Each planner's solve rate over seeds on the study lot: TreePlannerStudyLotTest.cpp (run once,
 // in the Release pass).
@@ -47,7 +30,7 @@ TEST(TreePlanner, RrtStarCostNeverIncreasesAndEndsNoWorseThanItsFirstSolution) {
       for (int seed = 1; seed <= 3; ++seed) {
         SCOPED_TRACE(std::string(toString(steering)) + (parallel ? " parallel" : " head-in") +
                      " seed " + std::to_string(seed));
-        PlanSetup setup = setupFor("rrt-star", steering, seed);
+        PlanSetup setup = treeSetupFor("rrt-star", steering, seed);
         setup.search.max_iterations = 250;
         setup.planner_params["informed_sampling"] = seed != 3 ? "true" : "false";  // plain RRT* too
         const PlanResult r = planScenario(s, checker, setup);
@@ -74,7 +57,7 @@ TEST(TreePlanner, RrtConnectGoalTreeEdgesRunForwardToTheirParents) {
   int grown = 0;
   for (SteeringKind steering : allSteeringKinds()) {
     for (int seed = 1; seed <= 10; ++seed) {
-      const PlanSetup setup = setupFor("rrt-connect", steering, seed);
+      const PlanSetup setup = treeSetupFor("rrt-connect", steering, seed);
       const PlanResult r = planScenario(s, checker, setup);
       SCOPED_TRACE("seed " + std::to_string(seed));
       expectValidPlan(s, checker, setup, r);
@@ -111,7 +94,7 @@ TEST(TreePlanner, SmoothingNeverMakesAPlanSlowerAndKeepsItValid) {
         for (int seed = 1; seed <= 2; ++seed) {
           SCOPED_TRACE(std::string(kind) + " " + toString(steering) + " seed " +
                        std::to_string(seed));
-          PlanSetup setup = setupFor(kind, steering, seed);
+          PlanSetup setup = treeSetupFor(kind, steering, seed);
           if (kind == "rrt-star") setup.search.max_iterations = 60;
           const PlanResult plain = planScenario(s, checker, setup);
           setup.search.smooth = true;
@@ -146,7 +129,7 @@ TEST(TreePlanner, SameSeedSameResultForEveryPlannerAndSteering) {
     if (kind == "hybrid-a-star" || kind == "time-a-star" || kind == "car-a-star") continue;
     for (SteeringKind steering : allSteeringKinds()) {
       SCOPED_TRACE(std::string(kind) + " " + toString(steering));
-      PlanSetup setup = setupFor(kind, steering, 11);
+      PlanSetup setup = treeSetupFor(kind, steering, 11);
       if (kind == "rrt-star") setup.search.max_iterations = 80;
       setup.search.smooth = true;
       const PlanResult a = planScenario(s, checker, setup);
@@ -169,7 +152,7 @@ TEST(TreePlanner, ProgressCountsEveryIterationUpToTheResult) {
   const SatChecker checker(s);
   for (const std::string& kind : builtInPlanners().names()) {
     SCOPED_TRACE(kind);
-    PlanSetup setup = setupFor(kind, SteeringKind::kReedsShepp, 3);
+    PlanSetup setup = treeSetupFor(kind, SteeringKind::kReedsShepp, 3);
     if (kind == "rrt-star") setup.search.max_iterations = 60;
     std::vector<long> done;
     long budget = -1;
@@ -216,7 +199,7 @@ TEST(TreePlanner, EitherHeadingGoalAcceptsHeadInAndBackIn) {
       for (int seed = 1; seed <= 4; ++seed) {
         SCOPED_TRACE(std::string(kind) + " " + toString(steering) + " seed " +
                      std::to_string(seed));
-        PlanSetup setup = setupFor(kind, steering, seed);
+        PlanSetup setup = treeSetupFor(kind, steering, seed);
         if (kind == "rrt-star") setup.search.max_iterations = 80;
         const PlanResult r = planScenario(s, checker, setup);
         if (!r.solved()) continue;
@@ -248,7 +231,7 @@ TEST(TreePlanner, EitherHeadingEndsTurnedWhenOnlyTheTurnedGoalIsFree) {
     if (kind == "hybrid-a-star" || kind == "time-a-star" || kind == "car-a-star") continue;
     for (SteeringKind steering : allSteeringKinds()) {
       SCOPED_TRACE(std::string(kind) + " " + toString(steering));
-      PlanSetup setup = setupFor(kind, steering, 3);
+      PlanSetup setup = treeSetupFor(kind, steering, 3);
       if (kind == "rrt-star") setup.search.max_iterations = 60;
       const PlanResult r = planScenario(s, checker, setup);
       expectValidPlan(s, checker, setup, r);
